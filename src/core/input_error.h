@@ -1,0 +1,23 @@
+#pragma once
+/// Errors for bad input (DESIGN §2, §6): every message names the file, the
+/// line (1-based) and/or the field, and the reason.
+
+#include <stdexcept>
+#include <string>
+
+namespace lpvid {
+
+/// Thrown for malformed or inconsistent input files and options.
+/// The CLI prints what() and exits with a non-zero code.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// "file:line: field: reason" (parts that are empty/0 are left out).
+std::string input_location(const std::string& file, long line, const std::string& field);
+
+[[noreturn]] void throw_input_error(const std::string& file, long line, const std::string& field,
+                                    const std::string& reason);
+
+}  // namespace lpvid

@@ -1,0 +1,192 @@
+#include "core/number_text.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <gmp.h>
+#include <mpfr.h>
+
+#include "core/input_error.h"
+
+namespace lpvid {
+namespace {
+
+/// Largest |decimal exponent| accepted: keeps 10^e representable without
+/// letting a hostile file allocate gigabytes.
+constexpr long kMaxExponent = 4000;
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+/// Parsed pieces of "[+-]digits[.digits][(e|E)[+-]digits]".
+struct Decimal {
+  bool negative = false;
+  std::string digits;  // integer and fraction digits concatenated
+  long scale = 0;      // value = digits * 10^(exponent - fraction_digits)
+};
+
+std::optional<std::string> parse_decimal(std::string_view s, Decimal* out) {
+  size_t i = 0;
+  Decimal d;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
+    d.negative = s[i] == '-';
+    ++i;
+  }
+  size_t int_digits = 0, frac_digits = 0;
+  while (i < s.size() && is_digit(s[i])) {
+    d.digits += s[i++];
+    ++int_digits;
+  }
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    while (i < s.size() && is_digit(s[i])) {
+      d.digits += s[i++];
+      ++frac_digits;
+    }
+  }
+  if (int_digits + frac_digits == 0) return "'" + std::string(s) + "' is not a number";
+  long exponent = 0;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    bool eneg = false;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
+      eneg = s[i] == '-';
+      ++i;
+    }
+    size_t start = i;
+    while (i < s.size() && is_digit(s[i])) {
+      if (exponent > kMaxExponent) return "exponent out of range in '" + std::string(s) + "'";
+      exponent = exponent * 10 + (s[i] - '0');
+      ++i;
+    }
+    if (i == start) return "missing exponent digits in '" + std::string(s) + "'";
+    if (exponent > kMaxExponent) return "exponent out of range in '" + std::string(s) + "'";
+    if (eneg) exponent = -exponent;
+  }
+  if (i != s.size()) return "unexpected character '" + std::string(1, s[i]) + "' in '" + std::string(s) + "'";
+  d.scale = exponent - static_cast<long>(frac_digits);
+  if (out) *out = std::move(d);
+  return std::nullopt;
+}
+
+std::optional<std::string> parse_integer(std::string_view s) {
+  size_t i = 0;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  if (i == s.size()) return "'" + std::string(s) + "' is not an integer";
+  for (; i < s.size(); ++i)
+    if (!is_digit(s[i])) return "'" + std::string(s) + "' is not an integer";
+  return std::nullopt;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+Rational decimal_to_rational(const Decimal& d) {
+  mpz_t num, pow10;
+  mpz_init_set_str(num, d.digits.c_str(), 10);
+  mpz_init(pow10);
+  mpz_ui_pow_ui(pow10, 10, static_cast<unsigned long>(d.scale < 0 ? -d.scale : d.scale));
+  mpq_t q;
+  mpq_init(q);
+  if (d.scale >= 0) {
+    mpz_mul(num, num, pow10);
+    mpq_set_z(q, num);
+  } else {
+    mpq_set_num(q, num);
+    mpq_set_den(q, pow10);
+    mpq_canonicalize(q);
+  }
+  if (d.negative) mpq_neg(q, q);
+  Rational r(q);
+  mpq_clear(q);
+  mpz_clear(num);
+  mpz_clear(pow10);
+  return r;
+}
+
+Rational integer_to_rational(std::string_view s) {
+  std::string t(s);
+  if (!t.empty() && t[0] == '+') t.erase(0, 1);
+  mpz_t z;
+  mpz_init_set_str(z, t.c_str(), 10);
+  mpq_t q;
+  mpq_init(q);
+  mpq_set_z(q, z);
+  Rational r(q);
+  mpq_clear(q);
+  mpz_clear(z);
+  return r;
+}
+
+}  // namespace
+
+std::optional<std::string> number_text_problem(std::string_view text) {
+  std::string_view s = trim(text);
+  if (s.empty()) return std::string("empty number");
+  size_t slash = s.find('/');
+  if (slash == std::string_view::npos) return parse_decimal(s, nullptr);
+  std::string_view p = trim(s.substr(0, slash)), q = trim(s.substr(slash + 1));
+  if (auto e = parse_integer(p)) return "numerator: " + *e;
+  if (auto e = parse_integer(q)) return "denominator: " + *e;
+  if (q.find_first_not_of("+-0") == std::string_view::npos) return "zero denominator in '" + std::string(s) + "'";
+  return std::nullopt;
+}
+
+Rational rational_from_text(std::string_view text) {
+  if (auto e = number_text_problem(text)) throw InputError(*e);
+  std::string_view s = trim(text);
+  size_t slash = s.find('/');
+  if (slash == std::string_view::npos) {
+    Decimal d;
+    parse_decimal(s, &d);
+    return decimal_to_rational(d);
+  }
+  return integer_to_rational(trim(s.substr(0, slash))) / integer_to_rational(trim(s.substr(slash + 1)));
+}
+
+double double_from_text(std::string_view text) {
+  if (auto e = number_text_problem(text)) throw InputError(*e);
+  std::string s(trim(text));
+  if (s.find('/') != std::string::npos) return nearest_double(rational_from_text(s));
+  double x = std::strtod(s.c_str(), nullptr);
+  if (!std::isfinite(x)) throw InputError("'" + s + "' overflows a double");
+  return x;
+}
+
+double nearest_double(const Rational& q) {
+  mpfr_t f;
+  mpfr_init2(f, 53);
+  mpfr_set_q(f, q.mpq(), MPFR_RNDN);
+  double x = mpfr_get_d(f, MPFR_RNDN);
+  mpfr_clear(f);
+  return x;
+}
+
+std::string rational_to_text(const Rational& q) {
+  char* str = mpq_get_str(nullptr, 10, q.mpq());
+  std::string out(str);
+  void (*freefunc)(void*, size_t);
+  mp_get_memory_functions(nullptr, nullptr, &freefunc);
+  freefunc(str, out.size() + 1);
+  return out;
+}
+
+std::string double_to_text(double x) {
+  char buf[64];
+  for (int prec = 1; prec <= 17; ++prec) {
+    std::snprintf(buf, sizeof buf, "%.*g", prec, x);
+    if (std::strtod(buf, nullptr) == x) return buf;
+  }
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+Rational exact_rational_of_double(double x) {
+  if (!std::isfinite(x)) throw InputError("not a finite number");
+  return Rational(x);  // mpq_set_d is exact
+}
+
+}  // namespace lpvid

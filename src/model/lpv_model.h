@@ -1,0 +1,81 @@
+#pragma once
+/// The LPV model of SPEC §2 (paper eq. 1 with G11 = 0, G21 = I, and eq. 8–10):
+///
+///   x_{k+1} = A(ρ_k) x_k + B(ρ_k) u_k
+///   z_k     = C1(ρ_k) x_k + D1(ρ_k) u_k      (uncertainty channel)
+///   y_k     = C2(ρ_k) x_k + D2(ρ_k) u_k + w_k + d_k + Φ(ρ_k)
+///
+/// A, B, C2, D2 hold the initial model S_I *and* any known correction terms
+/// (a certificate stores the identified model with θ folded in). The unknown
+/// correction S_C of Theorem 3.1 is described by `correction` (basis f_i and
+/// the fixed A_i, B_i); its C_i, D_i are solver unknowns, not stored here.
+
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "model/monomial.h"
+#include "model/param_matrix.h"
+
+namespace lpvid {
+
+/// Which columns of the data file hold u, y and ρ (SPEC §8 "columns").
+struct ColumnMap {
+  std::vector<std::string> u, y, rho;
+};
+
+enum class UncertaintyStructure {
+  kMultiplicative,  ///< z = W·ŷ: C1 = W·C2, D1 = W·D2 (default, W = 1)
+  kAdditive,        ///< z = W·u: C1 = 0, D1 = W·I (nz = nu)
+  kGeneral,         ///< C1, D1 given explicitly (`c1`, `d1` below)
+};
+
+const char* to_string(UncertaintyStructure s);
+
+template <typename T>
+struct Uncertainty {
+  UncertaintyStructure structure = UncertaintyStructure::kMultiplicative;
+  T weight = T(1);        ///< W (SPEC §9: "weight": 0.01 means 1 % relative)
+  ParamMatrix<T> C1, D1;  ///< only for kGeneral (nz × nx, nz × nu)
+};
+
+/// Unknown correction S_C (paper eq. 10): basis f_i and fixed A_i, B_i.
+template <typename T>
+struct Correction {
+  std::vector<Monomial> basis;
+  std::vector<Mat<T>> A;  ///< A_i (nx × nx) per basis function; zero by default
+  std::vector<Mat<T>> B;  ///< B_i (nx × nu) per basis function; zero by default
+};
+
+/// Output offset Φ(ρ) = Σ_j h_j(ρ) φ_j (paper eq. 20). `values` empty means
+/// the φ_j are unknown (identified); otherwise one ny-vector per basis fn.
+template <typename T>
+struct Offset {
+  std::vector<Monomial> basis;
+  std::vector<Vec<T>> values;
+};
+
+template <typename T>
+struct LpvModel {
+  int nx = 0, nu = 0, ny = 0;
+  std::vector<std::string> scheduling;  ///< names of ρ components (may be empty: LTI)
+  ColumnMap columns;
+
+  ParamMatrix<T> A, B, C, D;  ///< A (nx×nx), B (nx×nu), C = C2 (ny×nx), D = D2 (ny×nu)
+  Correction<T> correction;
+  Uncertainty<T> uncertainty;
+  Offset<T> offset;
+  Vec<T> x0;  ///< length nx; zero unless given
+
+  int n_rho() const { return static_cast<int>(scheduling.size()); }
+  /// Size of the uncertainty channel z (ny for multiplicative, nu for additive,
+  /// rows of C1 for general).
+  int nz() const;
+};
+
+/// Converts every number of a model from one scalar to another (e.g. the
+/// exact model to double for the solver path).
+template <typename To, typename From>
+LpvModel<To> convert_model(const LpvModel<From>& m);
+
+}  // namespace lpvid
