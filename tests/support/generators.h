@@ -1,0 +1,7 @@
+#pragma once
+/// The one header of rapidcheck generators for lpvid tests (DESIGN §8).
+/// Objects are built by construction (no rejection sampling) and sized by
+/// rapidcheck's size parameter so that shrinking finds tiny counterexamples.
+/// Each area keeps its generators in a gen_*.h file included from here.
+
+#include "support/gen_numbers.h"
