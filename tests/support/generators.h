@@ -5,3 +5,4 @@
 /// Each area keeps its generators in a gen_*.h file included from here.
 
 #include "support/gen_numbers.h"
+#include "support/gen_files.h"

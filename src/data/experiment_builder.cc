@@ -1,0 +1,91 @@
+#include "data/experiment_builder.h"
+
+#include "core/input_error.h"
+#include "core/number_text.h"
+#include "data/csv_reader.h"
+
+namespace lpvid {
+namespace {
+
+std::string available_columns(const TextTable& table) {
+  std::string out;
+  for (size_t i = 0; i < table.header.size(); ++i) {
+    if (i) out += ", ";
+    out += "'" + table.header[i] + "'";
+  }
+  return out.empty() ? "none" : out;
+}
+
+std::vector<size_t> column_indices(const TextTable& table, const std::vector<std::string>& names) {
+  std::vector<size_t> idx;
+  idx.reserve(names.size());
+  for (const std::string& name : names) {
+    auto i = find_column(table, name);
+    if (!i) throw_input_error(table.file, 0, "", "column '" + name + "' not found (available: " +
+                                                    available_columns(table) + ")");
+    idx.push_back(*i);
+  }
+  return idx;
+}
+
+template <typename T>
+Mat<T> read_columns(const TextTable& table, const std::vector<std::string>& names) {
+  const std::vector<size_t> idx = column_indices(table, names);
+  const auto n = static_cast<Eigen::Index>(table.rows.size());
+  Mat<T> m(n, static_cast<Eigen::Index>(idx.size()));
+  for (Eigen::Index r = 0; r < n; ++r) {
+    const auto& row = table.rows[static_cast<size_t>(r)];
+    const long line = static_cast<size_t>(r) < table.line_numbers.size() ? table.line_numbers[static_cast<size_t>(r)] : 0;
+    for (size_t c = 0; c < idx.size(); ++c) {
+      const std::string field = "column '" + names[c] + "'";
+      if (idx[c] >= row.size()) throw_input_error(table.file, line, field, "missing cell");
+      const std::string& cell = row[idx[c]];
+      if (cell.empty()) throw_input_error(table.file, line, field, "empty cell is not a number");
+      try {
+        m(r, static_cast<Eigen::Index>(c)) = number_from_text<T>(cell);
+      } catch (const InputError& e) {
+        throw_input_error(table.file, line, field, e.what());
+      }
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+template <typename T>
+Experiment<T> make_experiment(const TextTable& table, const ColumnMap& columns) {
+  if (table.rows.empty()) throw_input_error(table.file, 0, "", "no data rows");
+  // Report unknown columns before any number, whatever the order.
+  column_indices(table, columns.u);
+  column_indices(table, columns.y);
+  column_indices(table, columns.rho);
+  Experiment<T> exp;
+  exp.source = table.file;
+  exp.u = read_columns<T>(table, columns.u);
+  exp.y = read_columns<T>(table, columns.y);
+  exp.rho = read_columns<T>(table, columns.rho);
+  return exp;
+}
+
+template <typename T>
+Experiment<T> select_rows(const Experiment<T>& exp, Eigen::Index begin, Eigen::Index end) {
+  if (begin < 0 || end < begin || end > exp.n())
+    throw_input_error(exp.source, 0, "", "rows [" + std::to_string(begin) + ", " + std::to_string(end) +
+                                             ") out of range: the experiment has " + std::to_string(exp.n()) +
+                                             " rows");
+  Experiment<T> out;
+  out.source = exp.source;
+  const Eigen::Index len = end - begin;
+  out.u = exp.u.middleRows(begin, len);
+  out.y = exp.y.middleRows(begin, len);
+  out.rho = exp.rho.middleRows(begin, len);
+  return out;
+}
+
+template Experiment<double> make_experiment<double>(const TextTable&, const ColumnMap&);
+template Experiment<Rational> make_experiment<Rational>(const TextTable&, const ColumnMap&);
+template Experiment<double> select_rows<double>(const Experiment<double>&, Eigen::Index, Eigen::Index);
+template Experiment<Rational> select_rows<Rational>(const Experiment<Rational>&, Eigen::Index, Eigen::Index);
+
+}  // namespace lpvid

@@ -1,0 +1,667 @@
+#include "model/model_file.h"
+
+#include <cmath>
+#include <fstream>
+#include <gmp.h>
+#include <initializer_list>
+#include <stdexcept>
+
+#include "core/input_error.h"
+#include "core/number_text.h"
+#include "data/csv_reader.h"
+
+namespace lpvid {
+namespace {
+
+using Kind = JsonNode::Kind;
+using ojson = nlohmann::ordered_json;
+
+std::string member_path(const std::string& base, std::string_view key) {
+  return base.empty() ? std::string(key) : base + "." + std::string(key);
+}
+std::string index_path(const std::string& base, size_t i) { return base + "[" + std::to_string(i) + "]"; }
+
+const char* article_kind(Kind kind) {
+  switch (kind) {
+    case Kind::kObject: return "an object";
+    case Kind::kArray: return "an array";
+    case Kind::kString: return "a string";
+    case Kind::kNumber: return "a number";
+    case Kind::kBool: return "a boolean";
+    case Kind::kNull: return "null";
+  }
+  return "a value";
+}
+
+std::string dims(Eigen::Index r, Eigen::Index c) { return std::to_string(r) + "x" + std::to_string(c); }
+
+std::string structure_text(UncertaintyStructure s) {
+  switch (s) {
+    case UncertaintyStructure::kMultiplicative: return "multiplicative";
+    case UncertaintyStructure::kAdditive: return "additive";
+    case UncertaintyStructure::kGeneral: return "general";
+  }
+  return "multiplicative";
+}
+
+bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
+
+/// Reads the JSON tree of a model file, naming file, line and JSON path in
+/// every error.
+class ModelReader {
+ public:
+  explicit ModelReader(const std::string& file) : file_(file) {}
+
+  [[noreturn]] void fail(const JsonNode& n, const std::string& path, const std::string& reason) const {
+    throw_input_error(file_, n.line, path, reason);
+  }
+
+  void expect(const JsonNode& n, Kind kind, const std::string& path) const {
+    if (n.kind != kind)
+      fail(n, path, std::string("expected ") + article_kind(kind) + ", got " + article_kind(n.kind));
+  }
+
+  void check_keys(const JsonNode& obj, const std::string& path, std::initializer_list<const char*> allowed,
+                  const std::string& hint = "") const {
+    for (const auto& [key, value] : obj.members) {
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || key == a;
+      if (ok) continue;
+      std::string list;
+      for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      fail(value, member_path(path, key),
+           "unknown key \"" + key + "\" (allowed here: " + list + ")" + (hint.empty() ? "" : "; " + hint));
+    }
+  }
+
+  const JsonNode& required(const JsonNode& obj, const std::string& path, const char* key) const {
+    const JsonNode* n = obj.find(key);
+    if (!n) fail(obj, path, std::string("missing required key \"") + key + "\"");
+    return *n;
+  }
+
+  std::string string_at(const JsonNode& n, const std::string& path) const {
+    expect(n, Kind::kString, path);
+    return n.text;
+  }
+
+  /// An integer in [lo, hi], written as a JSON number or a numeric string.
+  int integer_at(const JsonNode& n, const std::string& path, int lo, int hi) const {
+    Rational q = number<Rational>(n, path);
+    if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) != 0) fail(n, path, "expected an integer, got " + n.text);
+    if (q < Rational(lo) || q > Rational(hi))
+      fail(n, path, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " + n.text);
+    return static_cast<int>(mpz_get_si(mpq_numref(q.mpq())));
+  }
+
+  template <typename T>
+  T number(const JsonNode& n, const std::string& path) const {
+    return number_from_json<T>(n, file_, path);
+  }
+
+  std::vector<std::string> string_list(const JsonNode& n, const std::string& path) const {
+    expect(n, Kind::kArray, path);
+    std::vector<std::string> out;
+    for (size_t i = 0; i < n.items.size(); ++i) out.push_back(string_at(n.items[i], index_path(path, i)));
+    return out;
+  }
+
+  /// A rows × cols matrix written as a list of rows. [] is accepted for any
+  /// matrix without entries.
+  template <typename T>
+  Mat<T> matrix(const JsonNode& n, const std::string& path, Eigen::Index rows, Eigen::Index cols) const {
+    expect(n, Kind::kArray, path);
+    const auto got_rows = static_cast<Eigen::Index>(n.items.size());
+    if (got_rows == 0 && rows * cols == 0) return Mat<T>(rows, cols);
+    Eigen::Index got_cols = -1;
+    for (size_t i = 0; i < n.items.size(); ++i) {
+      const JsonNode& row = n.items[i];
+      if (row.kind != Kind::kArray)
+        fail(row, index_path(path, i),
+             std::string("expected a matrix row (an array of numbers), got ") + article_kind(row.kind));
+      const auto c = static_cast<Eigen::Index>(row.items.size());
+      if (got_cols >= 0 && c != got_cols)
+        fail(row, index_path(path, i),
+             "ragged matrix: row " + std::to_string(i) + " has " + std::to_string(c) + " entries, row 0 has " +
+                 std::to_string(got_cols));
+      got_cols = c;
+    }
+    if (got_rows != rows || got_cols != cols)
+      fail(n, path, "expected " + dims(rows, cols) + " matrix, got " + dims(got_rows, got_cols));
+    Mat<T> m(rows, cols);
+    for (Eigen::Index i = 0; i < rows; ++i)
+      for (Eigen::Index j = 0; j < cols; ++j)
+        m(i, j) = number<T>(n.items[static_cast<size_t>(i)].items[static_cast<size_t>(j)],
+                            index_path(index_path(path, static_cast<size_t>(i)), static_cast<size_t>(j)));
+    return m;
+  }
+
+  template <typename T>
+  Vec<T> vector(const JsonNode& n, const std::string& path, Eigen::Index len) const {
+    expect(n, Kind::kArray, path);
+    if (static_cast<Eigen::Index>(n.items.size()) != len)
+      fail(n, path, "expected a vector of " + std::to_string(len) + " numbers, got " +
+                        std::to_string(n.items.size()) + " entries");
+    Vec<T> v(len);
+    for (Eigen::Index i = 0; i < len; ++i)
+      v(i) = number<T>(n.items[static_cast<size_t>(i)], index_path(path, static_cast<size_t>(i)));
+    return v;
+  }
+
+  Monomial monomial(const JsonNode& n, const std::string& path, const std::vector<std::string>& names) const {
+    if (n.kind != Kind::kString)
+      fail(n, path, std::string("expected a basis function as a string such as \"1\" or \"rho1*rho2\", got ") +
+                        article_kind(n.kind));
+    try {
+      return parse_monomial(n.text, names);
+    } catch (const InputError& e) {
+      fail(n, path, e.what());
+    }
+  }
+
+  /// A list of distinct basis functions.
+  std::vector<Monomial> basis_list(const JsonNode& n, const std::string& path,
+                                   const std::vector<std::string>& names) const {
+    expect(n, Kind::kArray, path);
+    std::vector<Monomial> out;
+    for (size_t i = 0; i < n.items.size(); ++i) {
+      Monomial m = monomial(n.items[i], index_path(path, i), names);
+      for (size_t j = 0; j < out.size(); ++j)
+        if (out[j] == m)
+          fail(n.items[i], index_path(path, i),
+               "basis function \"" + n.items[i].text + "\" is listed twice (also at index " + std::to_string(j) +
+                   ")");
+      out.push_back(std::move(m));
+    }
+    return out;
+  }
+
+  /// One term {"basis": text, "value": matrix}.
+  template <typename T>
+  ParamTerm<T> term(const JsonNode& n, const std::string& path, Eigen::Index rows, Eigen::Index cols,
+                    const std::vector<std::string>& names) const {
+    expect(n, Kind::kObject, path);
+    check_keys(n, path, {"basis", "value"});
+    ParamTerm<T> t;
+    t.basis = monomial(required(n, path, "basis"), member_path(path, "basis"), names);
+    t.value = matrix<T>(required(n, path, "value"), member_path(path, "value"), rows, cols);
+    return t;
+  }
+
+  /// A list of terms (absent: zero).
+  template <typename T>
+  ParamMatrix<T> param_matrix(const JsonNode* n, const std::string& path, Eigen::Index rows, Eigen::Index cols,
+                              const std::vector<std::string>& names) const {
+    ParamMatrix<T> pm(rows, cols);
+    if (!n) return pm;
+    expect(*n, Kind::kArray, path);
+    for (size_t i = 0; i < n->items.size(); ++i)
+      pm.terms.push_back(term<T>(n->items[i], index_path(path, i), rows, cols, names));
+    return pm;
+  }
+
+  /// Fixed correction matrices A_i or B_i: one per basis function, zero
+  /// unless a term gives it.
+  template <typename T>
+  std::vector<Mat<T>> correction_matrices(const JsonNode* n, const std::string& path,
+                                          const std::vector<Monomial>& basis, Eigen::Index rows, Eigen::Index cols,
+                                          const std::vector<std::string>& names,
+                                          const std::string& basis_path) const {
+    std::vector<Mat<T>> out;
+    std::vector<bool> given(basis.size(), false);
+    std::vector<ParamTerm<T>> terms;
+    std::vector<size_t> index;
+    if (n) {
+      expect(*n, Kind::kArray, path);
+      for (size_t i = 0; i < n->items.size(); ++i) {
+        const std::string p = index_path(path, i);
+        ParamTerm<T> t = term<T>(n->items[i], p, rows, cols, names);
+        size_t k = 0;
+        while (k < basis.size() && !(basis[k] == t.basis)) ++k;
+        const JsonNode& b = *n->items[i].find("basis");
+        if (k == basis.size())
+          fail(b, member_path(p, "basis"), "\"" + b.text + "\" is not in " + basis_path);
+        if (given[k]) fail(b, member_path(p, "basis"), "a second term for \"" + b.text + "\"");
+        given[k] = true;
+        terms.push_back(std::move(t));
+        index.push_back(k);
+      }
+    }
+    for (size_t k = 0; k < basis.size(); ++k) out.push_back(Mat<T>::Zero(rows, cols));
+    for (size_t i = 0; i < terms.size(); ++i) out[index[i]] = std::move(terms[i].value);
+    return out;
+  }
+
+  template <typename T>
+  LpvModel<T> model(const JsonNode& root, const std::string& path) const {
+    expect(root, Kind::kObject, path.empty() ? std::string("model") : path);
+    const std::string format = string_at(required(root, path, "format"), member_path(path, "format"));
+    if (format != kModelFormat)
+      fail(*root.find("format"), member_path(path, "format"),
+           "expected \"" + std::string(kModelFormat) + "\", got \"" + format + "\"");
+    check_keys(root, path,
+               {"format", "description", "states", "inputs", "outputs", "scheduling", "columns", "initial",
+                "correction", "uncertainty", "offset", "x0"});
+    if (const JsonNode* d = root.find("description")) string_at(*d, member_path(path, "description"));
+
+    LpvModel<T> m;
+    m.nx = integer_at(required(root, path, "states"), member_path(path, "states"), 0, kMaxModelDimension);
+    m.nu = integer_at(required(root, path, "inputs"), member_path(path, "inputs"), 1, kMaxModelDimension);
+    m.ny = integer_at(required(root, path, "outputs"), member_path(path, "outputs"), 1, kMaxModelDimension);
+    const Eigen::Index nx = m.nx, nu = m.nu, ny = m.ny;
+
+    // scheduling
+    if (const JsonNode* s = root.find("scheduling")) {
+      const std::string sp = member_path(path, "scheduling");
+      m.scheduling = string_list(*s, sp);
+      for (size_t i = 0; i < m.scheduling.size(); ++i) {
+        const std::string& name = m.scheduling[i];
+        bool ok = !name.empty() && is_name_start(name[0]);
+        for (char c : name) ok = ok && is_name_char(c);
+        if (!ok)
+          fail(s->items[i], index_path(sp, i),
+               "scheduling name \"" + name +
+                   "\" must start with a letter or '_' and contain only letters, digits and '_'");
+        for (size_t j = 0; j < i; ++j)
+          if (m.scheduling[j] == name) fail(s->items[i], index_path(sp, i), "scheduling name \"" + name + "\" is listed twice");
+      }
+    }
+    const std::vector<std::string>& names = m.scheduling;
+
+    // columns
+    {
+      const std::string cp = member_path(path, "columns");
+      const JsonNode& c = required(root, path, "columns");
+      expect(c, Kind::kObject, cp);
+      check_keys(c, cp, {"u", "y", "rho"});
+      auto column_list = [&](const char* key, size_t expected, const char* what) {
+        const std::string p = member_path(cp, key);
+        const JsonNode& n = required(c, cp, key);
+        std::vector<std::string> v = string_list(n, p);
+        if (v.size() != expected)
+          fail(n, p, "expected " + std::to_string(expected) + " column names (" + what + "), got " +
+                         std::to_string(v.size()));
+        for (size_t i = 0; i < v.size(); ++i)
+          if (v[i].empty()) fail(n.items[i], index_path(p, i), "empty column name");
+        return v;
+      };
+      m.columns.u = column_list("u", static_cast<size_t>(m.nu), "inputs");
+      m.columns.y = column_list("y", static_cast<size_t>(m.ny), "outputs");
+      if (c.find("rho"))
+        m.columns.rho = column_list("rho", names.size(), "scheduling variables");
+      else
+        m.columns.rho = names;
+    }
+
+    // initial model S_I
+    {
+      const std::string ip = member_path(path, "initial");
+      const JsonNode& in = required(root, path, "initial");
+      expect(in, Kind::kObject, ip);
+      check_keys(in, ip, {"A", "B", "C", "D"});
+      m.A = param_matrix<T>(in.find("A"), member_path(ip, "A"), nx, nx, names);
+      m.B = param_matrix<T>(in.find("B"), member_path(ip, "B"), nx, nu, names);
+      m.C = param_matrix<T>(in.find("C"), member_path(ip, "C"), ny, nx, names);
+      m.D = param_matrix<T>(in.find("D"), member_path(ip, "D"), ny, nu, names);
+    }
+
+    // correction S_C
+    if (const JsonNode* c = root.find("correction")) {
+      const std::string cp = member_path(path, "correction");
+      expect(*c, Kind::kObject, cp);
+      check_keys(*c, cp, {"basis", "A", "B"}, "the C_i, D_i corrections are unknowns, not model data");
+      const std::string bp = member_path(cp, "basis");
+      m.correction.basis = basis_list(required(*c, cp, "basis"), bp, names);
+      m.correction.A = correction_matrices<T>(c->find("A"), member_path(cp, "A"), m.correction.basis, nx, nx, names, bp);
+      m.correction.B = correction_matrices<T>(c->find("B"), member_path(cp, "B"), m.correction.basis, nx, nu, names, bp);
+    }
+
+    // uncertainty
+    if (const JsonNode* u = root.find("uncertainty")) {
+      const std::string up = member_path(path, "uncertainty");
+      expect(*u, Kind::kObject, up);
+      const std::string sp = member_path(up, "structure");
+      std::string s = "multiplicative";
+      if (const JsonNode* sn = u->find("structure")) s = string_at(*sn, sp);
+      if (s == "multiplicative" || s == "additive") {
+        m.uncertainty.structure =
+            s == "additive" ? UncertaintyStructure::kAdditive : UncertaintyStructure::kMultiplicative;
+        check_keys(*u, up, {"structure", "weight"}, "nz, C1 and D1 are only used with structure \"general\"");
+        if (const JsonNode* w = u->find("weight")) {
+          m.uncertainty.weight = number<T>(*w, member_path(up, "weight"));
+          if (!(m.uncertainty.weight > T(0))) fail(*w, member_path(up, "weight"), "weight must be positive, got " + w->text);
+        }
+      } else if (s == "general") {
+        m.uncertainty.structure = UncertaintyStructure::kGeneral;
+        check_keys(*u, up, {"structure", "nz", "C1", "D1"}, "with structure \"general\" scale C1 and D1 instead of giving a weight");
+        int nz = 0;
+        if (const JsonNode* z = u->find("nz")) {
+          nz = integer_at(*z, member_path(up, "nz"), 1, kMaxModelDimension);
+        } else {
+          // The rows of the first term's value fix nz.
+          for (const char* key : {"C1", "D1"}) {
+            const JsonNode* list = u->find(key);
+            if (nz == 0 && list && list->is_array() && !list->items.empty()) {
+              const JsonNode* value = list->items[0].find("value");
+              if (value && value->is_array()) nz = static_cast<int>(value->items.size());
+            }
+          }
+          if (nz < 1 || nz > kMaxModelDimension)
+            fail(*u, up, "structure \"general\" needs \"nz\" (or a C1/D1 term with at least one row)");
+        }
+        m.uncertainty.C1 = param_matrix<T>(u->find("C1"), member_path(up, "C1"), nz, nx, names);
+        m.uncertainty.D1 = param_matrix<T>(u->find("D1"), member_path(up, "D1"), nz, nu, names);
+      } else {
+        fail(*u->find("structure"), sp,
+             "expected \"multiplicative\", \"additive\" or \"general\", got \"" + s + "\"");
+      }
+    }
+
+    // offset Φ(ρ)
+    if (const JsonNode* o = root.find("offset")) {
+      const std::string op = member_path(path, "offset");
+      expect(*o, Kind::kObject, op);
+      check_keys(*o, op, {"basis", "values"});
+      m.offset.basis = basis_list(required(*o, op, "basis"), member_path(op, "basis"), names);
+      if (const JsonNode* v = o->find("values")) {
+        const std::string vp = member_path(op, "values");
+        expect(*v, Kind::kArray, vp);
+        if (v->items.size() != m.offset.basis.size())
+          fail(*v, vp, "expected " + std::to_string(m.offset.basis.size()) +
+                           " vectors (one per offset basis function), got " + std::to_string(v->items.size()));
+        for (size_t i = 0; i < v->items.size(); ++i)
+          m.offset.values.push_back(vector<T>(v->items[i], index_path(vp, i), ny));
+      }
+    }
+
+    // x0
+    if (const JsonNode* x = root.find("x0"))
+      m.x0 = vector<T>(*x, member_path(path, "x0"), nx);
+    else
+      m.x0 = Vec<T>::Zero(nx);
+    return m;
+  }
+
+ private:
+  const std::string& file_;
+};
+
+// ---------------------------------------------------------------- writing
+
+[[noreturn]] void bad_model(const std::string& what) {
+  throw std::invalid_argument("write_model_json: " + what);
+}
+
+template <typename T>
+ojson matrix_json(const Mat<T>& m) {
+  ojson rows = ojson::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    ojson row = ojson::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(number_to_json(m(i, j)));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+template <typename T>
+ojson vector_json(const Vec<T>& v) {
+  ojson out = ojson::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(number_to_json(v(i)));
+  return out;
+}
+
+std::string basis_text(const Monomial& f, const std::vector<std::string>& names, const std::string& where) {
+  if (f.powers.size() != names.size())
+    bad_model(where + ": basis function has " + std::to_string(f.powers.size()) + " powers, the model has " +
+              std::to_string(names.size()) + " scheduling variables");
+  for (int p : f.powers)
+    if (p < 0 || p > kMaxMonomialPower) bad_model(where + ": basis power " + std::to_string(p) + " out of range");
+  return f.text(names);
+}
+
+template <typename T>
+ojson terms_json(const ParamMatrix<T>& pm, Eigen::Index rows, Eigen::Index cols, const std::vector<std::string>& names,
+                 const std::string& where) {
+  ojson out = ojson::array();
+  for (size_t i = 0; i < pm.terms.size(); ++i) {
+    const ParamTerm<T>& t = pm.terms[i];
+    const std::string w = where + "[" + std::to_string(i) + "]";
+    if (t.value.rows() != rows || t.value.cols() != cols)
+      bad_model(w + ": value is " + dims(t.value.rows(), t.value.cols()) + ", expected " + dims(rows, cols));
+    ojson term = ojson::object();
+    term["basis"] = basis_text(t.basis, names, w);
+    term["value"] = matrix_json(t.value);
+    out.push_back(std::move(term));
+  }
+  return out;
+}
+
+template <typename T>
+bool is_zero(const Mat<T>& m) {
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j)
+      if (m(i, j) != T(0)) return false;
+  return true;
+}
+
+template <typename T>
+ojson fixed_correction_json(const std::vector<Mat<T>>& mats, const std::vector<Monomial>& basis, Eigen::Index rows,
+                            Eigen::Index cols, const std::vector<std::string>& names, const std::string& where) {
+  if (!mats.empty() && mats.size() != basis.size())
+    bad_model(where + ": " + std::to_string(mats.size()) + " matrices for " + std::to_string(basis.size()) +
+              " basis functions");
+  ojson out = ojson::array();
+  for (size_t i = 0; i < mats.size(); ++i) {
+    const std::string w = where + "[" + std::to_string(i) + "]";
+    if (mats[i].rows() != rows || mats[i].cols() != cols)
+      bad_model(w + ": is " + dims(mats[i].rows(), mats[i].cols()) + ", expected " + dims(rows, cols));
+    if (is_zero(mats[i])) continue;
+    ojson term = ojson::object();
+    term["basis"] = basis_text(basis[i], names, w);
+    term["value"] = matrix_json(mats[i]);
+    out.push_back(std::move(term));
+  }
+  return out;
+}
+
+template <typename T>
+ojson to_json(const LpvModel<T>& m) {
+  if (m.nx < 0 || m.nu < 0 || m.ny < 0) bad_model("negative dimension");
+  const Eigen::Index nx = m.nx, nu = m.nu, ny = m.ny;
+  const auto& names = m.scheduling;
+  ojson j = ojson::object();
+  j["format"] = kModelFormat;
+  j["states"] = m.nx;
+  j["inputs"] = m.nu;
+  j["outputs"] = m.ny;
+  j["scheduling"] = names;
+
+  if (m.columns.u.size() != static_cast<size_t>(m.nu) || m.columns.y.size() != static_cast<size_t>(m.ny) ||
+      m.columns.rho.size() != names.size())
+    bad_model("columns: need " + std::to_string(m.nu) + " u, " + std::to_string(m.ny) + " y and " +
+              std::to_string(names.size()) + " rho names");
+  ojson columns = ojson::object();
+  columns["u"] = m.columns.u;
+  columns["y"] = m.columns.y;
+  columns["rho"] = m.columns.rho;
+  j["columns"] = std::move(columns);
+
+  ojson initial = ojson::object();
+  initial["A"] = terms_json(m.A, nx, nx, names, "initial.A");
+  initial["B"] = terms_json(m.B, nx, nu, names, "initial.B");
+  initial["C"] = terms_json(m.C, ny, nx, names, "initial.C");
+  initial["D"] = terms_json(m.D, ny, nu, names, "initial.D");
+  j["initial"] = std::move(initial);
+
+  const Correction<T>& c = m.correction;
+  if (!c.basis.empty() || !c.A.empty() || !c.B.empty()) {
+    ojson corr = ojson::object();
+    ojson basis = ojson::array();
+    for (size_t i = 0; i < c.basis.size(); ++i)
+      basis.push_back(basis_text(c.basis[i], names, "correction.basis[" + std::to_string(i) + "]"));
+    corr["basis"] = std::move(basis);
+    ojson a = fixed_correction_json(c.A, c.basis, nx, nx, names, "correction.A");
+    ojson b = fixed_correction_json(c.B, c.basis, nx, nu, names, "correction.B");
+    if (!a.empty()) corr["A"] = std::move(a);
+    if (!b.empty()) corr["B"] = std::move(b);
+    j["correction"] = std::move(corr);
+  }
+
+  const Uncertainty<T>& u = m.uncertainty;
+  ojson unc = ojson::object();
+  unc["structure"] = structure_text(u.structure);
+  if (u.structure == UncertaintyStructure::kGeneral) {
+    if (u.weight != T(1)) bad_model("uncertainty: weight must be 1 with structure general (scale C1, D1 instead)");
+    Eigen::Index nz = std::max(u.C1.rows, u.D1.rows);
+    for (const auto& t : u.C1.terms) nz = std::max(nz, t.value.rows());
+    for (const auto& t : u.D1.terms) nz = std::max(nz, t.value.rows());
+    if (nz < 1) bad_model("uncertainty: structure general needs nz >= 1");
+    unc["nz"] = nz;
+    unc["C1"] = terms_json(u.C1, nz, nx, names, "uncertainty.C1");
+    unc["D1"] = terms_json(u.D1, nz, nu, names, "uncertainty.D1");
+  } else {
+    if (!(u.weight > T(0))) bad_model("uncertainty: weight must be positive");
+    unc["weight"] = number_to_json(u.weight);
+  }
+  j["uncertainty"] = std::move(unc);
+
+  if (!m.offset.basis.empty() || !m.offset.values.empty()) {
+    ojson off = ojson::object();
+    ojson basis = ojson::array();
+    for (size_t i = 0; i < m.offset.basis.size(); ++i)
+      basis.push_back(basis_text(m.offset.basis[i], names, "offset.basis[" + std::to_string(i) + "]"));
+    off["basis"] = std::move(basis);
+    if (!m.offset.values.empty()) {
+      if (m.offset.values.size() != m.offset.basis.size()) bad_model("offset: values and basis differ in length");
+      ojson values = ojson::array();
+      for (const auto& v : m.offset.values) {
+        if (v.size() != ny) bad_model("offset.values: vector of length " + std::to_string(v.size()) + ", expected " + std::to_string(ny));
+        values.push_back(vector_json(v));
+      }
+      off["values"] = std::move(values);
+    }
+    j["offset"] = std::move(off);
+  }
+
+  if (m.x0.size() != 0 && m.x0.size() != nx)
+    bad_model("x0 has length " + std::to_string(m.x0.size()) + ", expected " + std::to_string(nx));
+  bool x0_nonzero = false;
+  for (Eigen::Index i = 0; i < m.x0.size(); ++i) x0_nonzero = x0_nonzero || m.x0(i) != T(0);
+  if (x0_nonzero) j["x0"] = vector_json(m.x0);
+  return j;
+}
+
+template <typename T>
+void write_file(const std::string& path, const LpvModel<T>& model) {
+  const std::string text = write_model_json(model);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw_input_error(path, 0, "", "cannot open for writing");
+  out << text;
+  out.flush();
+  if (!out) throw_input_error(path, 0, "", "write error");
+}
+
+}  // namespace
+
+// ------------------------------------------------------------- numbers
+
+std::string exact_decimal_or_fraction(const Rational& q) {
+  constexpr unsigned long kMaxDecimals = 40;
+  mpz_srcptr num = mpq_numref(q.mpq());
+  mpz_srcptr den = mpq_denref(q.mpq());
+  if (mpz_cmp_ui(den, 1) == 0) return rational_to_text(q);
+  mpz_t rest, scaled, factor;
+  mpz_init_set(rest, den);
+  const unsigned long twos = mpz_scan1(rest, 0);
+  mpz_tdiv_q_2exp(rest, rest, twos);
+  unsigned long fives = 0;
+  while (fives <= kMaxDecimals && mpz_divisible_ui_p(rest, 5)) {
+    mpz_divexact_ui(rest, rest, 5);
+    ++fives;
+  }
+  const unsigned long k = std::max(twos, fives);
+  std::string out;
+  if (mpz_cmp_ui(rest, 1) != 0 || k > kMaxDecimals) {
+    out = rational_to_text(q);
+  } else {
+    // value = num / den = (num · 10^k / den) / 10^k, and 10^k / den = 2^(k-twos)·5^(k-fives).
+    mpz_init(scaled);
+    mpz_init(factor);
+    mpz_ui_pow_ui(factor, 5, k - fives);
+    mpz_mul_2exp(factor, factor, k - twos);
+    mpz_mul(scaled, num, factor);
+    const bool negative = mpz_sgn(scaled) < 0;
+    mpz_abs(scaled, scaled);
+    std::vector<char> buf(mpz_sizeinbase(scaled, 10) + 2);
+    mpz_get_str(buf.data(), 10, scaled);
+    std::string digits(buf.data());
+    if (digits.size() <= k) digits = std::string(k + 1 - digits.size(), '0') + digits;
+    out = (negative ? "-" : "") + digits.substr(0, digits.size() - k) + "." + digits.substr(digits.size() - k);
+    mpz_clear(scaled);
+    mpz_clear(factor);
+  }
+  mpz_clear(rest);
+  return out;
+}
+
+nlohmann::ordered_json rational_to_json(const Rational& q) {
+  mpz_srcptr num = mpq_numref(q.mpq());
+  if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) == 0 && mpz_fits_slong_p(num))
+    return nlohmann::ordered_json(static_cast<std::int64_t>(mpz_get_si(num)));
+  return nlohmann::ordered_json(exact_decimal_or_fraction(q));
+}
+
+nlohmann::ordered_json double_to_json(double x) {
+  if (!std::isfinite(x)) throw std::invalid_argument("cannot write a non-finite number to JSON");
+  return nlohmann::ordered_json(x);
+}
+
+template <typename T>
+T number_from_json(const JsonNode& node, const std::string& file, const std::string& path) {
+  if (node.kind != Kind::kNumber && node.kind != Kind::kString)
+    throw_input_error(file, node.line, path,
+                      std::string("expected a number (or a string holding a decimal or p/q), got ") +
+                          article_kind(node.kind));
+  try {
+    return number_from_text<T>(node.text);
+  } catch (const InputError& e) {
+    throw_input_error(file, node.line, path, e.what());
+  }
+}
+
+// ------------------------------------------------------------- models
+
+template <typename T>
+LpvModel<T> model_from_json(const JsonNode& node, const std::string& file, const std::string& path) {
+  return ModelReader(file).model<T>(node, path);
+}
+
+template <typename T>
+LpvModel<T> parse_model_json(std::string_view text, const std::string& name) {
+  JsonNode root = parse_exact_json(text, name);
+  return model_from_json<T>(root, name, "");
+}
+
+template <typename T>
+LpvModel<T> read_model_file(const std::string& path) {
+  return parse_model_json<T>(read_text_file(path), path);
+}
+
+nlohmann::ordered_json model_to_json(const LpvModel<Rational>& model) { return to_json(model); }
+nlohmann::ordered_json model_to_json(const LpvModel<double>& model) { return to_json(model); }
+std::string write_model_json(const LpvModel<Rational>& model) { return pretty_json(to_json(model)); }
+std::string write_model_json(const LpvModel<double>& model) { return pretty_json(to_json(model)); }
+void write_model_file(const std::string& path, const LpvModel<Rational>& model) { write_file(path, model); }
+void write_model_file(const std::string& path, const LpvModel<double>& model) { write_file(path, model); }
+
+template LpvModel<double> read_model_file<double>(const std::string&);
+template LpvModel<Rational> read_model_file<Rational>(const std::string&);
+template LpvModel<double> parse_model_json<double>(std::string_view, const std::string&);
+template LpvModel<Rational> parse_model_json<Rational>(std::string_view, const std::string&);
+template LpvModel<double> model_from_json<double>(const JsonNode&, const std::string&, const std::string&);
+template LpvModel<Rational> model_from_json<Rational>(const JsonNode&, const std::string&, const std::string&);
+template double number_from_json<double>(const JsonNode&, const std::string&, const std::string&);
+template Rational number_from_json<Rational>(const JsonNode&, const std::string&, const std::string&);
+
+}  // namespace lpvid

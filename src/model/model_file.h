@@ -1,0 +1,134 @@
+#pragma once
+/// The model file (SPEC §8, JSON, "format": "lpvid-model/1"), read into an
+/// LpvModel<T> for T = double and T = Rational, and written back with exact
+/// number text so that write → read gives exactly the same model.
+///
+/// ## Reading
+///
+/// Numbers may be JSON numbers or strings holding a decimal or `p/q`
+/// ("0.1", "-1/3", "2.5e-3"). The Rational reader turns the *text* into an
+/// exact rational (0.1 is 1/10); the double reader gives the nearest double of
+/// the same text. Neither goes through nlohmann's double. JSON numbers that
+/// overflow a double (1e400) are a syntax error: write them as strings.
+/// `//` and `/* */` comments are ignored, so SPEC §8's example reads as is.
+///
+/// Keys (unknown keys are rejected everywhere, with the list of allowed keys,
+/// because a misspelt optional key would silently change the model):
+///
+///   format       required, "lpvid-model/1"
+///   description  optional string, ignored (free text for people)
+///   states       required integer, 0..kMaxModelDimension (0: static model)
+///   inputs       required integer, 1..kMaxModelDimension
+///   outputs      required integer, 1..kMaxModelDimension
+///   scheduling   optional list of distinct names (default []: LTI). A name
+///                starts with a letter or '_' and continues with letters,
+///                digits or '_' (so that basis texts like rho1^2*rho2 parse).
+///   columns      required {"u": [nu names], "y": [ny names],
+///                "rho": [nρ names]}; "rho" defaults to the scheduling names.
+///   initial      required object {A, B, C, D}; each a list of terms
+///                {"basis": text, "value": matrix}; absent or [] is zero.
+///                Sizes: A nx×nx, B nx×nu, C ny×nx, D ny×nu. A matrix is a
+///                list of rows (a 0×c or r×0 matrix: [] or [[], …]).
+///                Several terms may share a basis function (they add).
+///   correction   optional {"basis": [texts], "A": [terms], "B": [terms]};
+///                A_i/B_i terms must use a function listed in basis, at most
+///                one term per function; absent ones are zero. Basis
+///                functions must be distinct.
+///   uncertainty  optional {"structure": "multiplicative"|"additive"|"general",
+///                "weight": W > 0 (default 1; not allowed with general),
+///                general only: "nz": integer >= 1 (optional if a term fixes
+///                it), "C1": [terms] (nz×nx), "D1": [terms] (nz×nu)}.
+///                Default: multiplicative with weight 1.
+///   offset       optional {"basis": [distinct texts], "values": [ny-vectors,
+///                one per basis function]}; without values, φ_j are unknown.
+///   x0           optional list of nx numbers (default zero).
+///
+/// Errors: InputError "file:line: json.path: reason", e.g.
+/// `model.json:9: initial.A[1].value: expected 2x2 matrix, got 2x3`.
+///
+/// ## Writing
+///
+/// Rational numbers are written as JSON integers when they are integers that
+/// fit in 64 bits, otherwise as strings: a terminating decimal ("-0.3") when
+/// the denominator is 2^a·5^b with at most 40 decimals, else "p/q". Doubles
+/// are written as JSON numbers in the shortest text that reads back as the
+/// same double. Only non-zero correction A_i/B_i are written; x0 only when
+/// non-zero.
+
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "core/scalar.h"
+#include "model/lpv_model.h"
+#include "model/model_json_tree.h"
+
+namespace lpvid {
+
+/// The format string of SPEC §8.
+inline constexpr const char* kModelFormat = "lpvid-model/1";
+
+/// Largest states/inputs/outputs/nz accepted (guards against a corrupted size
+/// allocating gigabytes; an SDP-based identification is far below it).
+constexpr int kMaxModelDimension = 1000;
+
+/// Reads and checks a model file (see above). T = double or Rational.
+template <typename T>
+LpvModel<T> read_model_file(const std::string& path);
+
+/// Same as read_model_file for text in memory; `name` is used in messages.
+template <typename T>
+LpvModel<T> parse_model_json(std::string_view text, const std::string& name);
+
+/// The model held by an already parsed JSON object (e.g. the "model" member of
+/// a certificate). `path` is the JSON path of `node` for messages ("" at the
+/// top level, "model" inside a certificate).
+template <typename T>
+LpvModel<T> model_from_json(const JsonNode& node, const std::string& file, const std::string& path = "");
+
+/// The model as JSON (the object written by write_model_json).
+/// Throws std::invalid_argument for a model that cannot be written
+/// (inconsistent sizes, non-finite double, weight != 1 with general).
+nlohmann::ordered_json model_to_json(const LpvModel<Rational>& model);
+nlohmann::ordered_json model_to_json(const LpvModel<double>& model);
+
+/// Model file text (pretty printed, newline at the end).
+std::string write_model_json(const LpvModel<Rational>& model);
+std::string write_model_json(const LpvModel<double>& model);
+
+/// Writes write_model_json(model) to `path`; throws InputError if the file
+/// cannot be written.
+void write_model_file(const std::string& path, const LpvModel<Rational>& model);
+void write_model_file(const std::string& path, const LpvModel<double>& model);
+
+// ---- exact numbers in JSON (shared with the certificate reader/writer) ----
+
+/// The JSON value of a rational as described under "Writing".
+nlohmann::ordered_json rational_to_json(const Rational& q);
+/// The JSON value of a finite double (throws std::invalid_argument otherwise).
+nlohmann::ordered_json double_to_json(double x);
+/// rational_to_json or double_to_json.
+inline nlohmann::ordered_json number_to_json(const Rational& q) { return rational_to_json(q); }
+inline nlohmann::ordered_json number_to_json(double x) { return double_to_json(x); }
+
+/// Shortest exact text of a rational: "p" for an integer, a terminating
+/// decimal when the denominator is 2^a·5^b (at most 40 decimals), else "p/q".
+std::string exact_decimal_or_fraction(const Rational& q);
+
+/// A JSON number or a string holding a number, read as T. Throws InputError
+/// "file:line: path: reason".
+template <typename T>
+T number_from_json(const JsonNode& node, const std::string& file, const std::string& path);
+
+extern template LpvModel<double> read_model_file<double>(const std::string&);
+extern template LpvModel<Rational> read_model_file<Rational>(const std::string&);
+extern template LpvModel<double> parse_model_json<double>(std::string_view, const std::string&);
+extern template LpvModel<Rational> parse_model_json<Rational>(std::string_view, const std::string&);
+extern template LpvModel<double> model_from_json<double>(const JsonNode&, const std::string&, const std::string&);
+extern template LpvModel<Rational> model_from_json<Rational>(const JsonNode&, const std::string&,
+                                                             const std::string&);
+extern template double number_from_json<double>(const JsonNode&, const std::string&, const std::string&);
+extern template Rational number_from_json<Rational>(const JsonNode&, const std::string&, const std::string&);
+
+}  // namespace lpvid
