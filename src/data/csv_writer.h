@@ -1,0 +1,31 @@
+#pragma once
+/// Writing data tables as CSV (header row, comma separated, LF line ends).
+
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+
+namespace lpvid {
+
+/// A named column of numbers already rendered as text.
+struct TextColumn {
+  std::string name;
+  std::vector<std::string> cells;
+};
+
+/// Writes columns of equal length; throws std::runtime_error if the file
+/// cannot be written or the lengths differ.
+void write_csv(const std::string& path, const std::vector<TextColumn>& columns);
+std::string csv_text(const std::vector<TextColumn>& columns);
+
+/// Renders column j of m: exact "p/q"-free decimal when the rational has a
+/// terminating decimal expansion, else p/q (Rational); shortest round-trip
+/// text (double).
+std::vector<std::string> column_text(const Mat<Rational>& m, Eigen::Index j);
+std::vector<std::string> column_text(const Mat<double>& m, Eigen::Index j);
+
+/// Exact decimal text of q if its denominator is 2^a 5^b, else "p/q".
+std::string rational_to_decimal_text(const Rational& q);
+
+}  // namespace lpvid

@@ -1,0 +1,151 @@
+#include "identify/affine_residual.h"
+
+#include <stdexcept>
+
+#include "model/simulate.h"
+#include "toeplitz/signal_toeplitz.h"
+
+namespace lpvid {
+namespace {
+
+template <typename T>
+bool has_unknown_offset(const LpvModel<T>& model, const Unknowns& u) {
+  return u.offset && !model.offset.basis.empty() && model.offset.values.empty();
+}
+
+void add_correction_names(std::vector<std::string>& names, const std::vector<Monomial>& basis,
+                          const std::vector<std::string>& rho_names, Eigen::Index n_out, Eigen::Index nx,
+                          Eigen::Index nu, const std::string& c, const std::string& d) {
+  for (const Monomial& f : basis) {
+    const std::string b = "[" + f.text(rho_names) + "]";
+    for (Eigen::Index r = 0; r < n_out; ++r)
+      for (Eigen::Index j = 0; j < nx; ++j)
+        names.push_back(c + b + "(" + std::to_string(r + 1) + "," + std::to_string(j + 1) + ")");
+    for (Eigen::Index r = 0; r < n_out; ++r)
+      for (Eigen::Index j = 0; j < nu; ++j)
+        names.push_back(d + b + "(" + std::to_string(r + 1) + "," + std::to_string(j + 1) + ")");
+  }
+}
+
+}  // namespace
+
+template <typename T>
+AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experiment<T>& exp, const Unknowns& unknowns) {
+  const Simulation<T> sim = simulate(model, exp);
+  AffineResidual<T> a;
+  a.n = exp.n();
+  a.ny = model.ny;
+  a.nz = model.nz();
+  if (exp.y.rows() != exp.n() || exp.y.cols() != model.ny)
+    throw std::invalid_argument("the experiment has no output y of size n x ny");
+  a.z0 = stack_rows(sim.z);
+  a.r0 = stack_rows(Mat<T>(exp.y - sim.yhat - sim.offset));
+
+  const bool multiplicative = model.uncertainty.structure == UncertaintyStructure::kMultiplicative;
+  const bool general = model.uncertainty.structure == UncertaintyStructure::kGeneral;
+  std::vector<Mat<T>> jy, jz;  // column blocks of Jr (= ∂ŷ/∂p) and Jz
+
+  if (unknowns.correction && !model.correction.basis.empty()) {
+    const Mat<T> J = output_jacobian(model, exp, sim);
+    a.layout.n_theta_out = J.cols();
+    jy.push_back(J);
+    jz.push_back(multiplicative ? Mat<T>(model.uncertainty.weight * J) : Mat<T>(Mat<T>::Zero(a.n * a.nz, J.cols())));
+    add_correction_names(a.names, model.correction.basis, model.scheduling, model.ny, model.nx, model.nu, "C", "D");
+    if (general) {
+      const Mat<T> J1 = correction_jacobian(model, exp, sim, a.nz);
+      a.layout.n_theta_unc = J1.cols();
+      jy.push_back(Mat<T>::Zero(a.n * a.ny, J1.cols()));
+      jz.push_back(J1);
+      add_correction_names(a.names, model.correction.basis, model.scheduling, a.nz, model.nx, model.nu, "C1", "D1");
+    }
+  }
+  if (has_unknown_offset(model, unknowns)) {
+    const Mat<T> J = offset_jacobian(model, exp);
+    a.layout.n_phi = J.cols();
+    jy.push_back(J);
+    jz.push_back(Mat<T>::Zero(a.n * a.nz, J.cols()));
+    for (size_t j = 0; j < model.offset.basis.size(); ++j)
+      for (int r = 0; r < model.ny; ++r)
+        a.names.push_back("phi[" + model.offset.basis[j].text(model.scheduling) + "](" + std::to_string(r + 1) + ")");
+  }
+  if (unknowns.x0 && model.nx > 0) {
+    // The response to x0 with zero input: column c is the simulation from e_c.
+    Experiment<T> free = exp;
+    free.u.setZero();
+    LpvModel<T> m0 = model;
+    m0.offset.values.clear();
+    Mat<T> Jy(a.n * a.ny, model.nx), Jz1(a.n * a.nz, model.nx);
+    for (int c = 0; c < model.nx; ++c) {
+      m0.x0 = Vec<T>::Zero(model.nx);
+      m0.x0(c) = T(1);
+      const Simulation<T> s = simulate(m0, free);
+      Jy.col(c) = stack_rows(s.yhat);
+      Jz1.col(c) = stack_rows(s.z);
+      a.names.push_back("x0(" + std::to_string(c + 1) + ")");
+    }
+    a.layout.n_x0 = model.nx;
+    jy.push_back(Jy);
+    jz.push_back(Jz1);
+  }
+  Eigen::Index P = 0;
+  for (const auto& b : jy) P += b.cols();
+  a.Jr = Mat<T>::Zero(a.n * a.ny, P);
+  a.Jz = Mat<T>::Zero(a.n * a.nz, P);
+  Eigen::Index col = 0;
+  for (size_t b = 0; b < jy.size(); ++b) {
+    a.Jr.middleCols(col, jy[b].cols()) = jy[b];
+    a.Jz.middleCols(col, jz[b].cols()) = jz[b];
+    col += jy[b].cols();
+  }
+  return a;
+}
+
+template <typename T>
+LpvModel<T> apply_parameters(const LpvModel<T>& model, const ParameterLayout& a, const Vec<T>& p) {
+  if (p.size() != a.size())
+    throw std::invalid_argument("apply_parameters: " + std::to_string(p.size()) + " values for " +
+                                std::to_string(a.size()) + " parameters");
+  LpvModel<T> out = model;
+  Eigen::Index at = 0;
+  if (a.n_theta_out > 0) {
+    out = fold_correction(model, Vec<T>(p.segment(at, a.n_theta_out)));
+    at += a.n_theta_out;
+  }
+  if (a.n_theta_unc > 0) {
+    const SystemMatrices<T> s = system_matrices(out);
+    out.uncertainty.C1 = s.C1;
+    out.uncertainty.D1 = s.D1;
+    const Eigen::Index nz = model.nz(), nx = model.nx, nu = model.nu;
+    for (size_t i = 0; i < model.correction.basis.size(); ++i) {
+      Mat<T> C1(nz, nx), D1(nz, nu);
+      for (Eigen::Index r = 0; r < nz; ++r) {
+        for (Eigen::Index c = 0; c < nx; ++c) C1(r, c) = p(at++);
+      }
+      for (Eigen::Index r = 0; r < nz; ++r) {
+        for (Eigen::Index c = 0; c < nu; ++c) D1(r, c) = p(at++);
+      }
+      out.uncertainty.C1.add(model.correction.basis[i], C1);
+      out.uncertainty.D1.add(model.correction.basis[i], D1);
+    }
+  }
+  if (a.n_phi > 0) {
+    out.offset.values.clear();
+    for (size_t j = 0; j < model.offset.basis.size(); ++j) {
+      out.offset.values.push_back(p.segment(at, model.ny));
+      at += model.ny;
+    }
+  }
+  if (a.n_x0 > 0) {
+    out.x0 = p.segment(at, a.n_x0);
+    at += a.n_x0;
+  }
+  return out;
+}
+
+template AffineResidual<double> build_affine_residual(const LpvModel<double>&, const Experiment<double>&, const Unknowns&);
+template AffineResidual<Rational> build_affine_residual(const LpvModel<Rational>&, const Experiment<Rational>&,
+                                                        const Unknowns&);
+template LpvModel<double> apply_parameters(const LpvModel<double>&, const ParameterLayout&, const Vec<double>&);
+template LpvModel<Rational> apply_parameters(const LpvModel<Rational>&, const ParameterLayout&, const Vec<Rational>&);
+
+}  // namespace lpvid

@@ -1,0 +1,66 @@
+#pragma once
+/// The model-dependent signals of Theorems 2.1 and 3.1 as affine functions
+/// of the unknown parameters p (SPEC §2, §5):
+///
+///   z(p) = z0 + Jz p        stacked uncertainty-channel signal (n·nz)
+///   r(p) = r0 − Jr p        stacked residual y − ŷ − Φ (n·ny), = w + d
+///
+/// p = [θ_out | θ_unc | φ | x0]:
+///   θ_out  the correction C_i, D_i of the output (eq. 10, layout of
+///          output_correction_layout: basis major, C_i then D_i row-major);
+///   θ_unc  for the `general` structure only, C1_i, D1_i of z (same layout, nz rows);
+///   φ      the unknown offset values φ_j (eq. 20), j major, ny each;
+///   x0     the initial state, when free (`--free-x0`).
+/// The state does not depend on θ (A_i, B_i are fixed), so all of this is
+/// exact: the output is affine in θ, φ and x0.
+/// Multiplicative structure: z = W·ŷ, so Jz = W·(∂ŷ/∂θ_out, ∂ŷ/∂x0), 0 for φ.
+
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "data/experiment.h"
+#include "model/lpv_model.h"
+
+namespace lpvid {
+
+/// Which unknowns the identification has (besides w, δ², d_max²).
+struct Unknowns {
+  bool correction = true;  ///< C_i, D_i of the correction basis (Theorem 3.1)
+  bool offset = true;      ///< φ_j, when the model declares an offset basis without values
+  bool x0 = false;         ///< the initial state (`--free-x0`)
+};
+
+/// Where each kind of unknown sits in p (sizes of the four segments).
+struct ParameterLayout {
+  Eigen::Index n_theta_out = 0, n_theta_unc = 0, n_phi = 0, n_x0 = 0;
+  Eigen::Index size() const { return n_theta_out + n_theta_unc + n_phi + n_x0; }
+};
+
+template <typename T>
+struct AffineResidual {
+  Eigen::Index n = 0, ny = 0, nz = 0;
+  Vec<T> z0, r0;
+  Mat<T> Jz, Jr;
+  ParameterLayout layout;
+  std::vector<std::string> names;  ///< one per parameter, e.g. "C[rho2^2](1,1)"
+
+  Eigen::Index num_params() const { return Jz.cols(); }
+  Vec<T> z(const Vec<T>& p) const { return p.size() ? Vec<T>(z0 + Jz * p) : z0; }
+  Vec<T> r(const Vec<T>& p) const { return p.size() ? Vec<T>(r0 - Jr * p) : r0; }
+};
+
+/// Builds z0, r0, Jz, Jr for the model along the experiment (SPEC §2, §5).
+/// Throws InputError for an LTI/LPV mismatch and std::invalid_argument for
+/// inconsistent sizes.
+template <typename T>
+AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experiment<T>& exp, const Unknowns& unknowns);
+
+/// The model with parameters p folded in: correction terms added to C, D
+/// (and C1, D1 for `general`), offset values set, x0 set. The correction
+/// basis is kept (its fixed A_i, B_i still act on the state); the unknowns
+/// that were solved for are no longer unknown.
+template <typename T>
+LpvModel<T> apply_parameters(const LpvModel<T>& model, const ParameterLayout& layout, const Vec<T>& p);
+
+}  // namespace lpvid
