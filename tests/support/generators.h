@@ -5,4 +5,5 @@
 /// Each area keeps its generators in a gen_*.h file included from here.
 
 #include "support/gen_numbers.h"
+#include "support/gen_models.h"
 #include "support/gen_files.h"

@@ -1,0 +1,348 @@
+#pragma once
+/// Simulation of the LPV model of SPEC §2 (paper eq. 1 with G11 = 0, G21 = I,
+/// and eq. 8–10) along a measured trajectory, and the data that makes the
+/// model output affine in the unknown correction θ (Theorem 3.1, eq. 14–15).
+///
+///   x_{k+1} = A(ρ_k) x_k + B(ρ_k) u_k,        x_0 = model.x0 (zero if empty)
+///   ŷ_k     = C(ρ_k) x_k + D(ρ_k) u_k          (C = C2, D = D2; no offset)
+///   z_k     = C1(ρ_k) x_k + D1(ρ_k) u_k        (model/uncertainty_channel.h)
+///   Φ_k     = Σ_j h_j(ρ_k) φ_j                 (offset, zero unless given)
+///
+/// with A(ρ) = A_0(ρ) + Σ_i f_i(ρ) A_i and B(ρ) = B_0(ρ) + Σ_i f_i(ρ) B_i: the
+/// fixed A_i, B_i of the correction S_C (eq. 10) are part of the state
+/// equation. The correction's C_i, D_i are unknowns; since A_i, B_i are fixed
+/// the state x does not depend on them and
+///
+///   ŷ_k(θ) = ŷ_k + Σ_i f_i(ρ_k) (C_i x_k + D_i u_k)
+///
+/// is affine in θ (output_jacobian below gives the exact linear part).
+///
+/// Everything is templated on the scalar (double or Rational) and uses only
+/// +, −, ×: no tolerance, no sqrt (DESIGN §4).
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "data/experiment.h"
+#include "model/lpv_model.h"
+#include "model/monomial.h"
+#include "model/param_matrix.h"
+#include "model/uncertainty_channel.h"
+
+namespace lpvid {
+
+/// The matrices of the model as functions of ρ, checked and with the fixed
+/// correction A_i, B_i folded into A and B. C, D are C2, D2 (the output ŷ);
+/// C1, D1 the uncertainty channel z (SPEC §2).
+template <typename T>
+struct SystemMatrices {
+  ParamMatrix<T> A;   ///< nx × nx: A_0(ρ) + Σ_i f_i(ρ) A_i
+  ParamMatrix<T> B;   ///< nx × nu: B_0(ρ) + Σ_i f_i(ρ) B_i
+  ParamMatrix<T> C;   ///< ny × nx
+  ParamMatrix<T> D;   ///< ny × nu
+  ParamMatrix<T> C1;  ///< nz × nx
+  ParamMatrix<T> D1;  ///< nz × nu
+};
+
+namespace detail {
+
+inline void check_basis(const Monomial& f, int n_rho, const std::string& where) {
+  if (static_cast<int>(f.powers.size()) != n_rho)
+    throw std::invalid_argument(where + ": basis function has " + std::to_string(f.powers.size()) +
+                                " powers but the model has " + std::to_string(n_rho) +
+                                " scheduling variables");
+  for (int p : f.powers)
+    if (p < 0) throw std::invalid_argument(where + ": negative power in a basis function");
+}
+
+template <typename T>
+void check_terms(const ParamMatrix<T>& m, int n_rho, const std::string& name) {
+  for (const auto& t : m.terms) check_basis(t.basis, n_rho, "model matrix " + name);
+}
+
+/// ρ_k as a vector (length nρ; works for nρ = 0 with any number of rows).
+template <typename T>
+Vec<T> rho_at(const Mat<T>& rho, Eigen::Index k) {
+  if (rho.cols() == 0) return Vec<T>(0);
+  return rho.row(k).transpose();
+}
+
+/// Fixed correction matrix i (A_i or B_i): an empty list means all zero, a
+/// 0×0 entry means zero; otherwise rows × cols.
+template <typename T>
+Mat<T> correction_matrix(const std::vector<Mat<T>>& list, size_t i, size_t n_basis, Eigen::Index rows,
+                         Eigen::Index cols, const char* name) {
+  if (list.empty()) return Mat<T>::Zero(rows, cols);
+  if (list.size() != n_basis)
+    throw std::invalid_argument(std::string("correction ") + name + " has " + std::to_string(list.size()) +
+                                " matrices but the correction basis has " + std::to_string(n_basis) +
+                                " functions");
+  const Mat<T>& m = list[i];
+  if (m.size() == 0) return Mat<T>::Zero(rows, cols);
+  if (m.rows() != rows || m.cols() != cols)
+    throw std::invalid_argument(std::string("correction ") + name + "_" + std::to_string(i + 1) + " is " +
+                                std::to_string(m.rows()) + "x" + std::to_string(m.cols()) + ", expected " +
+                                std::to_string(rows) + "x" + std::to_string(cols));
+  return m;
+}
+
+}  // namespace detail
+
+/// Checks every size of the model (matrices, terms, basis functions against
+/// nρ, correction A_i/B_i, offset, x0, uncertainty channel) and returns the
+/// matrices of SPEC §2 as functions of ρ. Throws std::invalid_argument with
+/// the offending sizes. A 0×0 matrix without terms is read as zero.
+template <typename T>
+SystemMatrices<T> system_matrices(const LpvModel<T>& model) {
+  const int nx = model.nx, nu = model.nu, ny = model.ny, n_rho = model.n_rho();
+  if (nx < 0 || nu < 0 || ny < 0)
+    throw std::invalid_argument("model sizes must be non-negative (nx=" + std::to_string(nx) +
+                                ", nu=" + std::to_string(nu) + ", ny=" + std::to_string(ny) + ")");
+  SystemMatrices<T> s;
+  s.A = detail::given_or_zero(model.A, nx, nx, "A");
+  s.B = detail::given_or_zero(model.B, nx, nu, "B");
+  s.C = detail::given_or_zero(model.C, ny, nx, "C");
+  s.D = detail::given_or_zero(model.D, ny, nu, "D");
+  detail::check_terms(s.A, n_rho, "A");
+  detail::check_terms(s.B, n_rho, "B");
+  detail::check_terms(s.C, n_rho, "C");
+  detail::check_terms(s.D, n_rho, "D");
+
+  const auto& corr = model.correction;
+  const size_t n_basis = corr.basis.size();
+  for (size_t i = 0; i < n_basis; ++i) {
+    detail::check_basis(corr.basis[i], n_rho, "correction basis " + std::to_string(i + 1));
+    const Mat<T> Ai = detail::correction_matrix(corr.A, i, n_basis, nx, nx, "A");
+    const Mat<T> Bi = detail::correction_matrix(corr.B, i, n_basis, nx, nu, "B");
+    // A(ρ) = A_0(ρ) + Σ_i f_i(ρ) A_i, likewise B (eq. 8–10).
+    s.A.add(corr.basis[i], Ai);
+    s.B.add(corr.basis[i], Bi);
+  }
+
+  s.C1 = uncertainty_C1(model);
+  s.D1 = uncertainty_D1(model);
+  detail::check_terms(s.C1, n_rho, "uncertainty C1");
+  detail::check_terms(s.D1, n_rho, "uncertainty D1");
+
+  const auto& off = model.offset;
+  for (size_t j = 0; j < off.basis.size(); ++j)
+    detail::check_basis(off.basis[j], n_rho, "offset basis " + std::to_string(j + 1));
+  if (!off.values.empty()) {
+    if (off.values.size() != off.basis.size())
+      throw std::invalid_argument("offset has " + std::to_string(off.values.size()) + " values but " +
+                                  std::to_string(off.basis.size()) + " basis functions");
+    for (size_t j = 0; j < off.values.size(); ++j)
+      if (off.values[j].size() != ny)
+        throw std::invalid_argument("offset value " + std::to_string(j + 1) + " has length " +
+                                    std::to_string(off.values[j].size()) + ", expected ny = " +
+                                    std::to_string(ny));
+  }
+  if (model.x0.size() != 0 && model.x0.size() != nx)
+    throw std::invalid_argument("x0 has length " + std::to_string(model.x0.size()) + ", expected nx = " +
+                                std::to_string(nx));
+  return s;
+}
+
+/// Checks that the experiment fits the model: u is n × nu, ρ is n × nρ (any
+/// number of rows when nρ = 0), y is n × ny or empty (simulation does not
+/// need y). Throws std::invalid_argument with both sizes.
+template <typename T>
+void check_experiment(const LpvModel<T>& model, const Experiment<T>& exp) {
+  const Eigen::Index n = exp.n();
+  const std::string src = exp.source.empty() ? "experiment" : "experiment '" + exp.source + "'";
+  if (exp.u.cols() != model.nu)
+    throw std::invalid_argument(src + " has nu = " + std::to_string(exp.u.cols()) + " input columns, model has nu = " +
+                                std::to_string(model.nu));
+  if (exp.y.size() != 0 && (exp.y.cols() != model.ny || exp.y.rows() != n))
+    throw std::invalid_argument(src + ": y is " + std::to_string(exp.y.rows()) + "x" +
+                                std::to_string(exp.y.cols()) + ", expected n x ny = " + std::to_string(n) + "x" +
+                                std::to_string(model.ny));
+  if (exp.rho.cols() != model.n_rho())
+    throw std::invalid_argument(src + " has n_rho = " + std::to_string(exp.rho.cols()) +
+                                " scheduling columns, model has n_rho = " + std::to_string(model.n_rho()));
+  if (model.n_rho() > 0 && exp.rho.rows() != n)
+    throw std::invalid_argument(src + ": rho has " + std::to_string(exp.rho.rows()) + " rows but u has " +
+                                std::to_string(n));
+}
+
+/// Output offset Φ(ρ) = Σ_j h_j(ρ) φ_j (paper eq. 20) at one sample; zero
+/// when the values are unknown (empty). Length ny.
+template <typename T>
+Vec<T> offset_at(const LpvModel<T>& model, const Vec<T>& rho) {
+  Vec<T> phi = Vec<T>::Zero(model.ny);
+  for (size_t j = 0; j < model.offset.values.size(); ++j)
+    phi += model.offset.basis[j].template eval<T>(rho) * model.offset.values[j];
+  return phi;
+}
+
+/// The trajectories of one simulation; row k is sample k (k = 0 … n−1).
+template <typename T>
+struct Simulation {
+  Mat<T> x;       ///< n × nx: x_k (x_0 = model.x0)
+  Mat<T> yhat;    ///< n × ny: ŷ_k = C(ρ_k) x_k + D(ρ_k) u_k (no offset)
+  Mat<T> z;       ///< n × nz: z_k = C1(ρ_k) x_k + D1(ρ_k) u_k
+  Mat<T> offset;  ///< n × ny: Φ(ρ_k) (zero if the offset values are not given)
+};
+
+/// Simulates the model (SPEC §2, paper eq. 1 / 8–10) along the experiment's u
+/// and ρ from x_0 = model.x0 (zero if empty). The model output with offset
+/// is yhat + offset. Throws std::invalid_argument on size mismatches.
+template <typename T>
+Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp) {
+  const SystemMatrices<T> s = system_matrices(model);
+  check_experiment(model, exp);
+  const Eigen::Index n = exp.n(), nz = model.nz();
+  Simulation<T> sim;
+  sim.x = Mat<T>::Zero(n, model.nx);
+  sim.yhat = Mat<T>::Zero(n, model.ny);
+  sim.z = Mat<T>::Zero(n, nz);
+  sim.offset = Mat<T>::Zero(n, model.ny);
+  Vec<T> x = model.x0.size() == 0 ? Vec<T>(Vec<T>::Zero(model.nx)) : model.x0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Vec<T> rho = detail::rho_at(exp.rho, k);
+    const Vec<T> u = exp.u.row(k).transpose();
+    sim.x.row(k) = x.transpose();
+    sim.yhat.row(k) = (s.C.at(rho) * x + s.D.at(rho) * u).transpose();
+    sim.z.row(k) = (s.C1.at(rho) * x + s.D1.at(rho) * u).transpose();
+    sim.offset.row(k) = offset_at(model, rho).transpose();
+    if (k + 1 < n) x = (s.A.at(rho) * x + s.B.at(rho) * u).eval();
+  }
+  return sim;
+}
+
+/// Index of each scalar unknown θ_p of the correction (Theorem 3.1, eq. 10)
+/// for an output with `n_out` rows whose correction is Σ_i f_i(ρ)(C_i x + D_i u):
+/// basis i major; within basis i first C_i (n_out × nx) row-major, then D_i
+/// (n_out × nu) row-major. So
+///   θ[i·n_out·(nx+nu) + r·nx + c]             = C_i(r, c)
+///   θ[i·n_out·(nx+nu) + n_out·nx + r·nu + c]  = D_i(r, c)
+struct CorrectionLayout {
+  Eigen::Index n_basis = 0, n_out = 0, nx = 0, nu = 0;
+
+  Eigen::Index per_basis() const { return n_out * (nx + nu); }
+  Eigen::Index size() const { return n_basis * per_basis(); }
+  Eigen::Index index_C(Eigen::Index i, Eigen::Index r, Eigen::Index c) const {
+    return i * per_basis() + r * nx + c;
+  }
+  Eigen::Index index_D(Eigen::Index i, Eigen::Index r, Eigen::Index c) const {
+    return i * per_basis() + n_out * nx + r * nu + c;
+  }
+};
+
+/// The θ layout of output_jacobian (n_out = ny).
+template <typename T>
+CorrectionLayout output_correction_layout(const LpvModel<T>& model) {
+  return {static_cast<Eigen::Index>(model.correction.basis.size()), model.ny, model.nx, model.nu};
+}
+
+/// Regressors of the correction (eq. 10, 14–15): one n × (nx + nu) matrix per
+/// basis function f_i, row k = f_i(ρ_k) [x_kᵀ u_kᵀ], so that
+///   ŷ_k(θ) = ŷ_k + Σ_i [C_i D_i] · (row k of regressor i)ᵀ.
+/// `sim` must be simulate(model, exp).
+template <typename T>
+std::vector<Mat<T>> correction_regressors(const LpvModel<T>& model, const Experiment<T>& exp,
+                                          const Simulation<T>& sim) {
+  check_experiment(model, exp);
+  const Eigen::Index n = exp.n();
+  if (sim.x.rows() != n || sim.x.cols() != model.nx)
+    throw std::invalid_argument("correction_regressors: simulation does not match the experiment/model");
+  std::vector<Mat<T>> out;
+  for (const Monomial& f : model.correction.basis) {
+    detail::check_basis(f, model.n_rho(), "correction basis");
+    Mat<T> r(n, model.nx + model.nu);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const T fk = f.template eval<T>(detail::rho_at(exp.rho, k));
+      r.row(k).head(model.nx) = fk * sim.x.row(k);
+      r.row(k).tail(model.nu) = fk * exp.u.row(k);
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+/// Jacobian of a corrected output with `n_out` rows with respect to its
+/// correction θ (layout: CorrectionLayout{N, n_out, nx, nu}):
+/// (n·n_out) × (N·n_out·(nx+nu)), row k·n_out + r, with
+///   ∂out_k(r)/∂C_i(r, c) = f_i(ρ_k) x_k(c),  ∂out_k(r)/∂D_i(r, c) = f_i(ρ_k) u_k(c),
+/// all other entries zero. Exact: out(θ) = out(0) + J θ (stacked as in SPEC §1).
+/// n_out = ny gives output_jacobian; n_out = nz gives the Jacobian of z for
+/// the general structure's own C1_i, D1_i.
+template <typename T>
+Mat<T> correction_jacobian(const LpvModel<T>& model, const Experiment<T>& exp, const Simulation<T>& sim,
+                           Eigen::Index n_out) {
+  const std::vector<Mat<T>> reg = correction_regressors(model, exp, sim);
+  const CorrectionLayout L{static_cast<Eigen::Index>(reg.size()), n_out, model.nx, model.nu};
+  const Eigen::Index n = exp.n();
+  Mat<T> J = Mat<T>::Zero(n * n_out, L.size());
+  for (Eigen::Index i = 0; i < L.n_basis; ++i)
+    for (Eigen::Index k = 0; k < n; ++k)
+      for (Eigen::Index r = 0; r < n_out; ++r) {
+        for (Eigen::Index c = 0; c < L.nx; ++c) J(k * n_out + r, L.index_C(i, r, c)) = reg[i](k, c);
+        for (Eigen::Index c = 0; c < L.nu; ++c) J(k * n_out + r, L.index_D(i, r, c)) = reg[i](k, L.nx + c);
+      }
+  return J;
+}
+
+/// Theorem 3.1 / eq. 15: the exact linear part of the model output in the
+/// unknown correction C_i (ny × nx), D_i (ny × nu):
+///   stack(ŷ(θ)) = stack(sim.yhat) + J θ,
+/// J is (n·ny) × (N·ny·(nx+nu)), θ ordered as output_correction_layout:
+/// basis i major, then C_i row-major, then D_i row-major.
+/// For the multiplicative structure (C1_i = W·C_i, D1_i = W·D_i, SPEC §2)
+/// stack(z(θ)) = stack(sim.z) + W·J θ; for the additive structure z does not
+/// depend on θ.
+template <typename T>
+Mat<T> output_jacobian(const LpvModel<T>& model, const Experiment<T>& exp, const Simulation<T>& sim) {
+  return correction_jacobian(model, exp, sim, model.ny);
+}
+
+/// The model with a correction θ (layout output_correction_layout) folded
+/// into C and D as extra terms f_i(ρ)·C_i, f_i(ρ)·D_i (e.g. for a certificate
+/// or for simulating the identified model). The correction basis and its
+/// fixed A_i, B_i are kept (they still act on the state).
+template <typename T>
+LpvModel<T> fold_correction(const LpvModel<T>& model, const Vec<T>& theta) {
+  const CorrectionLayout L = output_correction_layout(model);
+  if (theta.size() != L.size())
+    throw std::invalid_argument("fold_correction: theta has length " + std::to_string(theta.size()) +
+                                ", expected " + std::to_string(L.size()));
+  const SystemMatrices<T> s = system_matrices(model);  // validates; gives sized C, D
+  LpvModel<T> out = model;
+  out.C = s.C;
+  out.D = s.D;
+  for (Eigen::Index i = 0; i < L.n_basis; ++i) {
+    Mat<T> Ci(L.n_out, L.nx), Di(L.n_out, L.nu);
+    for (Eigen::Index r = 0; r < L.n_out; ++r) {
+      for (Eigen::Index c = 0; c < L.nx; ++c) Ci(r, c) = theta(L.index_C(i, r, c));
+      for (Eigen::Index c = 0; c < L.nu; ++c) Di(r, c) = theta(L.index_D(i, r, c));
+    }
+    out.C.add(model.correction.basis[static_cast<size_t>(i)], Ci);
+    out.D.add(model.correction.basis[static_cast<size_t>(i)], Di);
+  }
+  return out;
+}
+
+/// Jacobian of the offset Φ in its unknown values φ_j (paper eq. 20, SPEC §2)
+/// when `model.offset.values` is empty: (n·ny) × (M·ny), M = offset basis
+/// size, column j·ny + r holds h_j(ρ_k) in row k·ny + r. So
+/// stack(Φ) = J_Φ [φ_1; …; φ_M].
+template <typename T>
+Mat<T> offset_jacobian(const LpvModel<T>& model, const Experiment<T>& exp) {
+  check_experiment(model, exp);
+  const Eigen::Index n = exp.n(), ny = model.ny;
+  const Eigen::Index M = static_cast<Eigen::Index>(model.offset.basis.size());
+  Mat<T> J = Mat<T>::Zero(n * ny, M * ny);
+  for (Eigen::Index j = 0; j < M; ++j) {
+    const Monomial& h = model.offset.basis[static_cast<size_t>(j)];
+    detail::check_basis(h, model.n_rho(), "offset basis");
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const T hk = h.template eval<T>(detail::rho_at(exp.rho, k));
+      for (Eigen::Index r = 0; r < ny; ++r) J(k * ny + r, j * ny + r) = hk;
+    }
+  }
+  return J;
+}
+
+}  // namespace lpvid
