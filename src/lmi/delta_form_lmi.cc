@@ -1,5 +1,6 @@
 #include "lmi/delta_form_lmi.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/input_error.h"
@@ -14,14 +15,14 @@ double rms(const Mat<double>& m) {
 /// The program and where its variables are.
 struct DeltaFormLayout {
   LmiProgram program;
-  Eigen::Index n = 0, ny = 0, nz = 0, m = 0, L = 0;
+  Eigen::Index n = 0, ny = 0, nz = 0, m = 0, L = 0, K = 0;
   int tap0 = -1;  ///< first tap variable: h_l(i, j) is tap0 + l·ny·nz + i·nz + j
   int t = -1;     ///< δ² (scaled), -1 if fixed
   int s = -1;     ///< d_max² (scaled), -1 if fixed
   double sigma_z = 1.0, sigma_r = 1.0;
 };
 
-DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj) {
+DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index max_taps) {
   obj.validate();
   if (z.rows() != r.rows()) throw std::invalid_argument("delta form: z and r have different lengths");
   DeltaFormLayout f;
@@ -34,6 +35,7 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
     throw InputError(
         "ill-posed data: the uncertainty channel z is identically zero along the experiment (for example u = 0 "
         "with x0 = 0), so the data says nothing about the uncertainty and delta is undetermined");
+  f.K = max_taps > 0 ? std::min(max_taps, f.L) : f.L;
   f.sigma_z = rms(z.bottomRows(f.L));
   f.sigma_r = rms(r);
   if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
@@ -44,14 +46,14 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
 
   LmiProgram& p = f.program;
   const Eigen::Index taps_per = f.ny * f.nz;
-  f.tap0 = p.add_variables(static_cast<int>(f.L * taps_per));
+  f.tap0 = p.add_variables(static_cast<int>(f.K * taps_per));
   // Objective in original units divided by σ_r²: λ t + (1−λ) s = σ_r²[(λ/σ_z²) t' + (1−λ) s'].
   if (!obj.delta_fixed())
     f.t = p.add_variable("delta2", obj.kind == BoundObjective::Kind::kWeighted ? obj.lambda / (f.sigma_z * f.sigma_z) : 1.0);
   if (!obj.dmax_fixed())
     f.s = p.add_variable("dmax2", obj.kind == BoundObjective::Kind::kWeighted ? 1.0 - obj.lambda : 1.0);
   if (p.var_names.size() == static_cast<size_t>(p.num_vars))
-    for (Eigen::Index v = 0; v < f.L * taps_per; ++v) p.var_names[static_cast<size_t>(f.tap0 + v)] = "h" + std::to_string(v);
+    for (Eigen::Index v = 0; v < f.K * taps_per; ++v) p.var_names[static_cast<size_t>(f.tap0 + v)] = "h" + std::to_string(v);
 
   // (C1'): [t I, T_Δ; T_Δᵀ, I] ⪰ 0, size L·ny + L·nz.
   const int A = p.add_block("C1_delta_form", static_cast<int>(f.L * (f.ny + f.nz)));
@@ -65,7 +67,7 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
   }
   for (int i = off; i < off + static_cast<int>(f.L * f.nz); ++i) p.add_entry(A, -1, i, i, 1.0);
   for (Eigen::Index a = 0; a < f.L; ++a)
-    for (Eigen::Index b = 0; b <= a; ++b)
+    for (Eigen::Index b = std::max<Eigen::Index>(0, a - f.K + 1); b <= a; ++b)
       for (Eigen::Index i = 0; i < f.ny; ++i)
         for (Eigen::Index j = 0; j < f.nz; ++j)
           p.add_entry(A, static_cast<int>(f.tap0 + (a - b) * taps_per + i * f.nz + j), static_cast<int>(a * f.ny + i),
@@ -82,7 +84,7 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
       const int row = static_cast<int>(1 + k * f.ny + i);
       p.add_entry(B, -1, row, row, 1.0);
       if (rs(k, i) != 0.0) p.add_entry(B, -1, 0, row, rs(k, i));
-      for (Eigen::Index l = 0; l <= k - f.m; ++l)
+      for (Eigen::Index l = 0; l <= std::min(k - f.m, f.K - 1); ++l)
         for (Eigen::Index j = 0; j < f.nz; ++j)
           if (zs(k - l, j) != 0.0)
             p.add_entry(B, static_cast<int>(f.tap0 + l * taps_per + i * f.nz + j), 0, row, -zs(k - l, j));
@@ -92,21 +94,23 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
 
 }  // namespace
 
-LmiProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective) {
-  return build(z, r, objective).program;
+LmiProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
+                              Eigen::Index max_taps) {
+  return build(z, r, objective, max_taps).program;
 }
 
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                   SdpSolver& solver, const SolverOptions& options) {
-  DeltaFormLayout f = build(z, r, objective);
+                                   SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps) {
+  DeltaFormLayout f = build(z, r, objective, max_taps);
   DeltaFormSolution out;
   out.solve = solver.solve(f.program, options);
   out.leading_zeros = f.m;
   const Eigen::Index taps_per = f.ny * f.nz;
-  out.taps = Mat<double>::Zero(f.L, taps_per);
+  out.taps = Mat<double>::Zero(f.K, taps_per);
+  out.horizon = f.L;
   const double kz = f.sigma_z / f.sigma_r;
   if (has_solution(out.solve.status)) {
-    for (Eigen::Index l = 0; l < f.L; ++l)
+    for (Eigen::Index l = 0; l < f.K; ++l)
       for (Eigen::Index q = 0; q < taps_per; ++q)
         out.taps(l, q) = out.solve.x[static_cast<size_t>(f.tap0 + l * taps_per + q)] / kz;
   }

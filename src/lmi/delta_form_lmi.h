@@ -26,45 +26,16 @@
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
 #include "lmi/lmi_program.h"
+#include "toeplitz/fir.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {
 
-/// Number of leading samples k with z_k = 0 exactly (z is n × nz).
-template <typename T>
-Eigen::Index leading_zero_samples(const Mat<T>& z) {
-  Eigen::Index m = 0;
-  while (m < z.rows()) {
-    bool zero = true;
-    for (Eigen::Index j = 0; j < z.cols(); ++j)
-      if (z(m, j) != T(0)) zero = false;
-    if (!zero) break;
-    ++m;
-  }
-  return m;
-}
-
-/// w = Δ ∗ z on the horizon: w_k = Σ_{l=0}^{min(k−m, L−1)} h_l z_{k−l} for k ≥ m,
-/// w_k = 0 for k < m, where L = taps.rows(), m = n − L. `taps` is L × (ny·nz),
-/// row l = h_l row-major. Returns n × ny.
-template <typename T>
-Mat<T> apply_fir(const Mat<T>& taps, const Mat<T>& z, Eigen::Index ny) {
-  const Eigen::Index n = z.rows(), nz = z.cols(), L = taps.rows(), m = n - L;
-  Mat<T> w = Mat<T>::Zero(n, ny);
-  for (Eigen::Index k = m; k < n; ++k)
-    for (Eigen::Index l = 0; l <= k - m; ++l)
-      for (Eigen::Index i = 0; i < ny; ++i) {
-        T s(0);
-        for (Eigen::Index j = 0; j < nz; ++j) s += taps(l, i * nz + j) * z(k - l, j);
-        w(k, i) += s;
-      }
-  return w;
-}
-
 struct DeltaFormSolution {
   SolveResult solve;           ///< the backend's answer (x in scaled units)
   Eigen::Index leading_zeros;  ///< m
-  Mat<double> taps;            ///< L × (ny·nz), original units
+  Mat<double> taps;            ///< K × (ny·nz), original units (K ≤ L = n − leading_zeros)
+  Eigen::Index horizon = 0;    ///< L
   double delta2 = 0.0;         ///< t (original units); the fixed value if δ was fixed
   double dmax2 = 0.0;          ///< s (original units); the fixed value if d_max was fixed
 };
@@ -72,10 +43,15 @@ struct DeltaFormSolution {
 /// Builds and solves the Δ-form program. z is n × nz, r is n × ny (doubles).
 /// Throws InputError when z ≡ 0 (δ undetermined: the data does not excite
 /// the uncertainty channel, e.g. u ≡ 0 with x0 = 0).
+/// `max_taps` K > 0 restricts Δ to K taps (h_l = 0 for l ≥ K): a restriction,
+/// so the bounds are upper bounds on the full-length optimum, still sound,
+/// and the program has K·ny·nz tap variables with O(K·L) nonzeros instead
+/// of O(L²) (the cost that dominates the solvers here). 0 means K = L.
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                   SdpSolver& solver, const SolverOptions& options);
+                                   SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps = 0);
 
 /// The program alone (for --write-sdpa), same scaling as solve_delta_form.
-LmiProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective);
+LmiProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
+                              Eigen::Index max_taps = 0);
 
 }  // namespace lpvid

@@ -1,0 +1,18 @@
+#pragma once
+/// The lpvid subcommands (SPEC §8). Each registers itself on the app and
+/// returns a runner; main() dispatches to the one that was parsed.
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace lpvid::cli {
+
+using Runner = std::function<int()>;
+
+Runner add_identify_command(CLI::App& app);
+Runner add_invalidate_command(CLI::App& app);
+Runner add_simulate_command(CLI::App& app);
+Runner add_generate_command(CLI::App& app);
+
+}  // namespace lpvid::cli

@@ -1,0 +1,116 @@
+// lpvid identify: Theorem 3.1 (SPEC §5) + certificate (SPEC §7).
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/inputs.h"
+#include "cli/report.h"
+#include "core/input_error.h"
+#include "identify/certify.h"
+#include "identify/identify.h"
+
+namespace lpvid::cli {
+namespace {
+
+struct IdentifyArgs {
+  CommonOptions common;
+  bool iterate = false;
+  int max_iterations = 25;
+  double rel_tol = 1e-4;
+  bool free_x0 = false;
+  bool no_offset = false;
+};
+
+int run_identify(IdentifyArgs& a) {
+  Inputs in = load_inputs(a.common);
+  print_options(a.common, in.objective, "identify");
+  if (in.mode != ToeplitzMode::kSignal)
+    throw InputError("--toeplitz paper is supported by 'invalidate' (fixed model) only; identification uses the "
+                     "signal form (SPEC 3)");
+  IdentifyOptions opt;
+  opt.objective = in.objective;
+  opt.iterate = a.iterate;
+  opt.max_iterations = a.max_iterations;
+  opt.rel_tol = a.rel_tol;
+  opt.unknowns.x0 = a.free_x0;
+  opt.unknowns.offset = !a.no_offset;
+  opt.solver.verbose = a.common.verbose;
+  auto solver = make_solver(a.common.solver);
+  const IdentifyResult res = identify(in.model_d, in.exp_d, opt, *solver);
+
+  std::cout << "\nTheorem 3.1: " << res.relaxation << "\n"
+            << "  unknowns    " << res.names.size() << " (" << res.free_directions << " free after pinning)\n";
+  if (res.pinned_samples > 0)
+    std::cout << "  pinned      z_k = 0 for k < " << res.pinned_samples
+              << ": the relaxation keeps these samples of z at zero (SPEC 9), and w_k = 0 there\n";
+  for (const auto& it : res.iterates)
+    std::cout << "  solve " << it.index << "     " << to_string(it.status) << "  delta = " << std::sqrt(std::max(0.0, it.delta2))
+              << "  dmax = " << std::sqrt(std::max(0.0, it.dmax2)) << "  (solver values, " << it.seconds << " s)\n";
+  nlohmann::ordered_json report;
+  if (!has_solution(res.status)) {
+    std::cout << "  the SDP backend ended with '" << to_string(res.status) << "': no model and no bound\n";
+    report["status"] = to_string(res.status);
+    report["verified"] = false;
+    report["delta"] = nullptr;
+    report["dmax"] = nullptr;
+    report["message"] = res.message;
+    write_json(a.common.report_path, report);
+    const bool infeasible = res.status == SolveStatus::kPrimalInfeasible;
+    if (infeasible) std::cout << "  -> the model class is invalidated at the given bounds (not exactly certified)\n";
+    return infeasible ? kExitInvalidated : kExitSolver;
+  }
+
+  // Round θ to short rationals, fold it in, and certify the fixed model.
+  Vec<Rational> p_q(res.p.size());
+  Vec<double> p_rounded(res.p.size());
+  for (Eigen::Index i = 0; i < res.p.size(); ++i) {
+    p_q(i) = round_to_digits(res.p(i), 12);
+    p_rounded(i) = CGAL::to_double(p_q(i));
+  }
+  const LpvModel<Rational> fixed = apply_parameters(in.model_q, res.layout, p_q);
+  CertifyOptions co;
+  co.objective = in.objective;
+  co.solver = opt.solver;
+  co.max_taps = a.common.max_taps;
+  co.certificate_path = certificate_path(a.common);
+  co.data_path = a.common.data_path;
+  co.data_names = a.common.names;
+  co.row_begin = a.common.rows_text.empty() ? 0 : a.common.row_begin;
+  co.row_end = a.common.rows_text.empty() ? -1 : a.common.row_end;
+  co.fixed_delta_text = a.common.delta_text;
+  co.fixed_dmax_text = a.common.dmax_text;
+  const CertifiedBounds b = certify_fixed_model(fixed, in.exp_q, co, *solver);
+
+  std::cout << "\nCertified bounds of the identified model (Theorem 2.1, Delta form, exact check)\n"
+            << bounds_text(b, co.certificate_path);
+  report = bounds_json(b, a.common.toeplitz, a.common.solver, co.certificate_path);
+  report["relaxation"] = res.relaxation;
+  report["iterations"] = static_cast<int>(res.iterates.size());
+  report["pinned_samples"] = res.pinned_samples;
+  nlohmann::ordered_json its = nlohmann::ordered_json::array();
+  for (const auto& it : res.iterates)
+    its.push_back({{"solve", it.index}, {"status", to_string(it.status)}, {"delta_solver", std::sqrt(std::max(0.0, it.delta2))},
+                   {"dmax_solver", std::sqrt(std::max(0.0, it.dmax2))}, {"objective", it.objective}, {"seconds", it.seconds}});
+  report["iterates"] = its;
+  report["theta"] = theta_json(in.model_d, res.layout, p_rounded);
+  report["samples"] = in.exp_q.n();
+  write_json(a.common.report_path, report);
+  return b.verified ? kExitOk : kExitNotVerified;
+}
+
+}  // namespace
+
+Runner add_identify_command(CLI::App& app) {
+  auto args = std::make_shared<IdentifyArgs>();
+  CLI::App* cmd = app.add_subcommand("identify", "Theorem 3.1: identify the correction S_C(rho) with certified bounds");
+  add_common_options(*cmd, args->common, true);
+  cmd->add_flag("--iterate", args->iterate, "re-linearise at each solution until the objective stalls (beyond the paper)");
+  cmd->add_option("--max-iterations", args->max_iterations, "solves of --iterate (default 25)")->check(CLI::Range(1, 1000));
+  cmd->add_option("--rel-tol", args->rel_tol, "stop --iterate when the objective improves by less (default 1e-4)");
+  cmd->add_flag("--free-x0", args->free_x0, "the initial state is an unknown too");
+  cmd->add_flag("--no-offset", args->no_offset, "do not identify the offset phi even if the model declares one");
+  return [cmd, args] { return cmd->parsed() ? run_identify(*args) : -1; };
+}
+
+}  // namespace lpvid::cli

@@ -1,0 +1,116 @@
+#include "cli/inputs.h"
+
+#include <iostream>
+
+#include "core/input_error.h"
+#include "core/number_text.h"
+#include "data/csv_reader.h"
+#include "data/experiment_builder.h"
+#include "model/model_file.h"
+
+namespace lpvid::cli {
+
+void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
+  app.add_option("--data", o.data_path, "data file (CSV with header, or whitespace columns with --names)")->required();
+  app.add_option("--model", o.model_path, "model file (lpvid-model/1 JSON)")->required();
+  app.add_option("--names", o.names, "column names for a headerless whitespace data file")->delimiter(',');
+  app.add_option("--rows", o.rows_text, "window of data rows B:E (0-based, E exclusive); default all");
+  app.add_option("--toeplitz", o.toeplitz, "T_z mode: signal (default, SPEC 3) or paper (T_G12 T_u)")
+      ->check(CLI::IsMember({"signal", "paper"}));
+  app.add_option("--solver", o.solver, "SDP backend: csdp (default) or sdpa")->check(CLI::IsMember(available_solvers()));
+  app.add_option("--certificate", o.certificate_path, "where to write the certificate (JSON)");
+  app.add_option("--report", o.report_path, "where to write the report (JSON)");
+  app.add_option("--max-taps", o.max_taps, "taps of the FIR Delta in the certificate (0: full horizon; default 64)")
+      ->check(CLI::Range(0L, 100000L));
+  app.add_flag("--verbose", o.verbose, "let the SDP backend print its iterations");
+  if (needs_bounds) {
+    auto* d = app.add_option("--delta", o.delta_text, "fix delta (exact decimal); minimise dmax");
+    auto* m = app.add_option("--dmax", o.dmax_text, "fix dmax (RMS noise bound, exact decimal); minimise delta");
+    auto* l = app.add_option("--lambda", o.lambda, "minimise lambda*delta^2 + (1-lambda)*dmax^2 (default 0.5)");
+    l->excludes(d)->excludes(m);
+  }
+}
+
+namespace {
+
+BoundObjective make_objective(const CommonOptions& o) {
+  BoundObjective b;
+  auto read = [](const std::string& text, const char* flag) {
+    if (auto e = number_text_problem(text)) throw InputError(std::string(flag) + ": " + *e);
+    return double_from_text(text);
+  };
+  const bool fd = !o.delta_text.empty(), fm = !o.dmax_text.empty();
+  if (fd && fm) {
+    b.kind = BoundObjective::Kind::kFeasibility;
+    b.delta = read(o.delta_text, "--delta");
+    b.dmax = read(o.dmax_text, "--dmax");
+  } else if (fd) {
+    b.kind = BoundObjective::Kind::kMinDmax;
+    b.delta = read(o.delta_text, "--delta");
+  } else if (fm) {
+    b.kind = BoundObjective::Kind::kMinDelta;
+    b.dmax = read(o.dmax_text, "--dmax");
+  } else {
+    b.kind = BoundObjective::Kind::kWeighted;
+    b.lambda = o.lambda.value_or(0.5);
+  }
+  b.validate();
+  return b;
+}
+
+void parse_rows(const std::string& text, long* begin, long* end) {
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos) throw InputError("--rows: expected B:E, got '" + text + "'");
+  try {
+    *begin = std::stol(text.substr(0, colon));
+    *end = std::stol(text.substr(colon + 1));
+  } catch (const std::exception&) {
+    throw InputError("--rows: expected two integers B:E, got '" + text + "'");
+  }
+  if (*begin < 0 || *end <= *begin) throw InputError("--rows: need 0 <= B < E, got '" + text + "'");
+}
+
+}  // namespace
+
+Inputs load_inputs(const CommonOptions& o) {
+  Inputs in;
+  in.model_q = read_model_file<Rational>(o.model_path);
+  in.model_d = read_model_file<double>(o.model_path);
+  const TextTable table = o.names.empty() ? read_table(o.data_path) : read_table(o.data_path, o.names);
+  in.exp_q = make_experiment<Rational>(table, in.model_q.columns);
+  in.exp_d = make_experiment<double>(table, in.model_d.columns);
+  CommonOptions& mo = const_cast<CommonOptions&>(o);
+  if (!o.rows_text.empty()) {
+    parse_rows(o.rows_text, &mo.row_begin, &mo.row_end);
+    if (o.row_end > in.exp_q.n())
+      throw InputError("--rows " + o.rows_text + ": the data has only " + std::to_string(in.exp_q.n()) + " rows");
+    in.exp_q = select_rows(in.exp_q, o.row_begin, o.row_end);
+    in.exp_d = select_rows(in.exp_d, o.row_begin, o.row_end);
+  }
+  in.mode = toeplitz_mode_from_string(o.toeplitz);
+  in.objective = make_objective(o);
+  return in;
+}
+
+void print_options(const CommonOptions& o, const BoundObjective& objective, const std::string& command) {
+  std::cout << "lpvid " << command << "\n"
+            << "  data        " << o.data_path << (o.rows_text.empty() ? "" : " rows " + o.rows_text) << "\n"
+            << "  model       " << o.model_path << "\n"
+            << "  objective   " << objective.describe() << "\n"
+            << "  toeplitz    " << o.toeplitz << "\n"
+            << "  solver      " << o.solver << "\n"
+            << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny) (SPEC 4)\n";
+}
+
+std::string certificate_path(const CommonOptions& o) {
+  if (!o.certificate_path.empty()) return o.certificate_path;
+  if (!o.report_path.empty()) {
+    std::string p = o.report_path;
+    const size_t dot = p.rfind(".json");
+    if (dot != std::string::npos) p = p.substr(0, dot);
+    return p + ".cert.json";
+  }
+  return "lpvid.cert.json";
+}
+
+}  // namespace lpvid::cli

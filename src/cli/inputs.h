@@ -1,0 +1,56 @@
+#pragma once
+/// What every lpvid command reads: the data file (both as doubles and as
+/// exact rationals, from the same text), the model, the data window, and the
+/// common options of SPEC §8. Defaults live here, in one place (DESIGN §7).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "data/experiment.h"
+#include "lmi/bound_objective.h"
+#include "model/lpv_model.h"
+#include "solvers/sdp_solver.h"
+#include "toeplitz/uncertainty_toeplitz.h"
+
+namespace lpvid::cli {
+
+struct CommonOptions {
+  std::string data_path, model_path;
+  std::vector<std::string> names;        ///< --names for headerless data files
+  long row_begin = 0, row_end = -1;      ///< --rows B:E window
+  std::string rows_text;
+  std::string toeplitz = "signal";       ///< --toeplitz signal|paper
+  std::string solver = "csdp";           ///< --solver
+  std::string certificate_path;          ///< --certificate (default: <report stem>.cert.json or lpvid.cert.json)
+  std::string report_path;               ///< --report
+  std::string delta_text, dmax_text;     ///< --delta / --dmax as typed (exact)
+  std::optional<double> lambda;          ///< --lambda
+  long max_taps = 64;                    ///< --max-taps (Δ form; 0 = full horizon)
+  bool verbose = false;
+};
+
+/// Registers the common options on a subcommand.
+void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds);
+
+struct Inputs {
+  Experiment<double> exp_d;
+  Experiment<Rational> exp_q;
+  LpvModel<double> model_d;
+  LpvModel<Rational> model_q;
+  ToeplitzMode mode = ToeplitzMode::kSignal;
+  BoundObjective objective;
+};
+
+/// Reads and checks everything (throws InputError with file/line/field).
+Inputs load_inputs(const CommonOptions& o);
+
+/// Prints the options a command ran with (DESIGN §7).
+void print_options(const CommonOptions& o, const BoundObjective& objective, const std::string& command);
+
+/// The certificate path to use.
+std::string certificate_path(const CommonOptions& o);
+
+}  // namespace lpvid::cli

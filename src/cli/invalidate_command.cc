@@ -1,0 +1,62 @@
+// lpvid invalidate: Theorem 2.1 for a fixed model (SPEC §4) + certificate.
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/inputs.h"
+#include "cli/report.h"
+#include "core/input_error.h"
+#include "identify/certify.h"
+
+namespace lpvid::cli {
+namespace {
+
+int run_invalidate(CommonOptions& c) {
+  Inputs in = load_inputs(c);
+  print_options(c, in.objective, "invalidate");
+  if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
+    throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" or use 'lpvid identify'");
+  auto solver = make_solver(c.solver);
+  CertifyOptions co;
+  co.objective = in.objective;
+  co.solver.verbose = c.verbose;
+  co.max_taps = c.max_taps;
+  co.certificate_path = certificate_path(c);
+  co.data_path = c.data_path;
+  co.data_names = c.names;
+  co.row_begin = c.rows_text.empty() ? 0 : c.row_begin;
+  co.row_end = c.rows_text.empty() ? -1 : c.row_end;
+  co.fixed_delta_text = c.delta_text;
+  co.fixed_dmax_text = c.dmax_text;
+  const CertifiedBounds b = in.mode == ToeplitzMode::kSignal ? certify_fixed_model(in.model_q, in.exp_q, co, *solver)
+                                                             : certify_fixed_model_paper(in.model_q, in.exp_q, co, *solver);
+  std::cout << "\nTheorem 2.1 (" << (in.mode == ToeplitzMode::kSignal ? "Delta form" : "w form, paper T_z")
+            << "), the correction basis is ignored: the model is fixed\n"
+            << bounds_text(b, co.certificate_path);
+  nlohmann::ordered_json report = bounds_json(b, c.toeplitz, c.solver, co.certificate_path);
+  report["relaxation"] = "none (fixed model: Theorem 2.1 is an LMI)";
+  report["iterations"] = 1;
+  report["samples"] = in.exp_q.n();
+  const bool fixed_bounds = in.objective.kind == BoundObjective::Kind::kFeasibility;
+  if (!b.verified && fixed_bounds && b.solver_status == "primal_infeasible") {
+    report["status"] = "invalidated";
+    std::cout << "  -> INVALIDATED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
+              << " (the LMI is infeasible; this verdict comes from the solver, it is not exactly certified)\n";
+    write_json(c.report_path, report);
+    return kExitInvalidated;
+  }
+  write_json(c.report_path, report);
+  if (!b.verified && (b.solver_status == "backend_error" || b.solver_status == "iteration_limit")) return kExitSolver;
+  return b.verified ? kExitOk : kExitNotVerified;
+}
+
+}  // namespace
+
+Runner add_invalidate_command(CLI::App& app) {
+  auto args = std::make_shared<CommonOptions>();
+  CLI::App* cmd = app.add_subcommand("invalidate", "Theorem 2.1: bounds for a fixed model, with a certificate");
+  add_common_options(*cmd, *args, true);
+  return [cmd, args] { return cmd->parsed() ? run_invalidate(*args) : -1; };
+}
+
+}  // namespace lpvid::cli

@@ -1,0 +1,108 @@
+#include "cli/report.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "model/model_file.h"
+#include "model/simulate.h"
+
+namespace lpvid::cli {
+
+nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& toeplitz_mode,
+                                   const std::string& solver, const std::string& certificate) {
+  nlohmann::ordered_json j;
+  j["status"] = b.verified ? "consistent" : "not_verified";
+  // A bound that the exact verifier did not accept is never reported as a bound.
+  j["delta"] = b.verified ? nlohmann::ordered_json(b.delta) : nlohmann::ordered_json(nullptr);
+  j["dmax"] = b.verified ? nlohmann::ordered_json(b.dmax) : nlohmann::ordered_json(nullptr);
+  if (b.verified) {
+    j["delta2_exact"] = exact_decimal_or_fraction(b.delta2);
+    j["dmax2_exact"] = exact_decimal_or_fraction(b.dmax2);
+  }
+  j["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
+  j["toeplitz_mode"] = toeplitz_mode;
+  j["solver"] = solver;
+  j["certificate"] = b.verified ? nlohmann::ordered_json(certificate) : nlohmann::ordered_json(nullptr);
+  j["verified"] = b.verified;
+  if (!b.verified) j["reason"] = b.reason;
+  nlohmann::ordered_json c;
+  c["form"] = b.horizon > 0 ? "delta (FIR, Poolla form)" : "w";
+  if (b.horizon > 0) {
+    c["delta_taps"] = b.taps;
+    c["horizon"] = b.horizon;
+  }
+  c["delta2_solver"] = b.delta2_solver;
+  c["delta2_margin"] = b.margin;
+  c["solver_status"] = b.solver_status;
+  c["solve_seconds"] = b.solve_seconds;
+  c["verify_seconds"] = b.verify_seconds;
+  c["verifier"] = b.verifier_details;
+  j["certification"] = c;
+  return j;
+}
+
+nlohmann::ordered_json theta_json(const LpvModel<double>& model, const ParameterLayout& layout, const Vec<double>& p) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  Eigen::Index at = 0;
+  auto matrix = [&](Eigen::Index rows, Eigen::Index cols) {
+    nlohmann::ordered_json m = nlohmann::ordered_json::array();
+    for (Eigen::Index r = 0; r < rows; ++r) {
+      nlohmann::ordered_json row = nlohmann::ordered_json::array();
+      for (Eigen::Index c = 0; c < cols; ++c) row.push_back(p(at++));
+      m.push_back(row);
+    }
+    return m;
+  };
+  if (layout.n_theta_out > 0)
+    for (const Monomial& f : model.correction.basis) {
+      nlohmann::ordered_json t;
+      t["C"] = matrix(model.ny, model.nx);
+      t["D"] = matrix(model.ny, model.nu);
+      j[f.text(model.scheduling)] = t;
+    }
+  if (layout.n_theta_unc > 0)
+    for (const Monomial& f : model.correction.basis) {
+      nlohmann::ordered_json& t = j[f.text(model.scheduling)];
+      t["C1"] = matrix(model.nz(), model.nx);
+      t["D1"] = matrix(model.nz(), model.nu);
+    }
+  if (layout.n_phi > 0) {
+    nlohmann::ordered_json phi;
+    for (const Monomial& f : model.offset.basis) {
+      nlohmann::ordered_json v = nlohmann::ordered_json::array();
+      for (int r = 0; r < model.ny; ++r) v.push_back(p(at++));
+      phi[f.text(model.scheduling)] = v;
+    }
+    j["offset_phi"] = phi;
+  }
+  if (layout.n_x0 > 0) {
+    nlohmann::ordered_json v = nlohmann::ordered_json::array();
+    for (Eigen::Index r = 0; r < layout.n_x0; ++r) v.push_back(p(at++));
+    j["x0"] = v;
+  }
+  return j;
+}
+
+void write_json(const std::string& path, const nlohmann::ordered_json& j) {
+  if (path.empty()) return;
+  std::ofstream f(path);
+  if (!f) throw InputError("cannot write report '" + path + "'");
+  f << j.dump(2) << "\n";
+}
+
+std::string bounds_text(const CertifiedBounds& b, const std::string& certificate) {
+  std::ostringstream o;
+  if (b.verified) {
+    o << "  delta       <= " << b.delta << "   (delta^2 = " << exact_decimal_or_fraction(b.delta2) << ")\n"
+      << "  dmax        <= " << b.dmax << "   (dmax^2 = " << exact_decimal_or_fraction(b.dmax2) << ", RMS)\n"
+      << "  verified    true: " << certificate << " checked exactly by the verifier\n"
+      << "              " << b.verifier_details << "\n";
+  } else {
+    o << "  verified    false: " << b.reason << "\n"
+      << "  (no bound is reported: nothing was verified)\n";
+  }
+  return o.str();
+}
+
+}  // namespace lpvid::cli

@@ -1,0 +1,37 @@
+#pragma once
+/// The report of SPEC §8: JSON (written by --report) and a readable form.
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "identify/affine_residual.h"
+#include "identify/certify.h"
+#include "model/lpv_model.h"
+
+namespace lpvid::cli {
+
+/// Exit codes shared by the lpvid commands.
+enum ExitCode {
+  kExitOk = 0,           ///< bounds found and verified
+  kExitInvalidated = 1,  ///< the model is inconsistent with the data at the given bounds
+  kExitBadInput = 2,     ///< unreadable/malformed input, bad options
+  kExitSolver = 3,       ///< the SDP backend failed (no bound is reported)
+  kExitNotVerified = 4,  ///< bounds were computed but the exact check did not accept them
+};
+
+/// The common fields: status, delta, dmax (only when verified), the exact
+/// δ²/d_max², noise_normalisation, toeplitz_mode, solver, certificate, verified.
+nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& toeplitz_mode,
+                                   const std::string& solver, const std::string& certificate);
+
+/// θ (the correction matrices) by basis term, φ and x0, from parameters p.
+nlohmann::ordered_json theta_json(const LpvModel<double>& model, const ParameterLayout& layout, const Vec<double>& p);
+
+/// Writes JSON to path (if non-empty); throws InputError when it cannot.
+void write_json(const std::string& path, const nlohmann::ordered_json& j);
+
+/// Readable lines for the bounds ("delta <= ... (verified)").
+std::string bounds_text(const CertifiedBounds& b, const std::string& certificate);
+
+}  // namespace lpvid::cli

@@ -1,0 +1,248 @@
+#include "identify/certify.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/input_error.h"
+#include "core/number_text.h"
+#include "core/sha256.h"
+#include "data/csv_reader.h"
+#include "lmi/delta_form_lmi.h"
+#include "lmi/relaxed_bmi_lmi.h"
+#include "toeplitz/uncertainty_toeplitz.h"
+#include "model/simulate.h"
+#include "toeplitz/fir.h"
+#include "verify/certificate_check.h"
+
+namespace lpvid {
+namespace {
+
+Mat<double> to_double(const Mat<Rational>& m) {
+  Mat<double> d(m.rows(), m.cols());
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j) d(i, j) = nearest_double(m(i, j));
+  return d;
+}
+
+Rational pow10(int e) {
+  Rational r(1);
+  for (int i = 0; i < std::abs(e); ++i) r *= 10;
+  return e >= 0 ? r : Rational(1) / r;
+}
+
+/// Largest singular value² of the block Toeplitz T_Δ (L blocks, K taps).
+double toeplitz_norm2(const Mat<double>& taps, Eigen::Index horizon, Eigen::Index ny, Eigen::Index nz) {
+  const Eigen::Index L = horizon, K = taps.rows();
+  Mat<double> T = Mat<double>::Zero(L * ny, L * nz);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index b = std::max<Eigen::Index>(0, a - K + 1); b <= a; ++b)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
+  Eigen::SelfAdjointEigenSolver<Mat<double>> es(T.transpose() * T, Eigen::EigenvaluesOnly);
+  return std::max(0.0, es.eigenvalues().maxCoeff());
+}
+
+/// Steps 5–6, shared by both forms: δ² with the smallest margin that passes
+/// the exact check, then write the file and check it again from the file.
+template <typename Norm2>
+void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o, SdpSolver& solver, CertifiedBounds& out) {
+  namespace fs = std::filesystem;
+  c.data_names = o.data_names;
+  c.row_begin = o.row_begin;
+  c.row_end = o.row_end;
+  const fs::path cert_dir = fs::absolute(fs::path(o.certificate_path)).parent_path();
+  const fs::path data_abs = fs::absolute(fs::path(o.data_path));
+  c.data_file = fs::relative(data_abs, cert_dir).string();
+  if (c.data_file.empty()) c.data_file = data_abs.string();
+  c.data_sha256 = sha256_hex(read_text_file(o.data_path));
+  c.info["tool"] = "lpvid";
+  c.info["objective"] = o.objective.describe();
+  c.info["solver"] = solver.name();
+  c.info["solver_status"] = out.solver_status;
+  const double norm2 = o.objective.delta_fixed() ? 0.0 : norm2_fn();
+  CertificateVerdict v;
+  double margin = 1e-9;
+  for (int attempt = 0; attempt < 5; ++attempt, margin *= 100) {
+    if (o.objective.delta_fixed()) {
+      const Rational delta =
+          rational_from_text(o.fixed_delta_text.empty() ? double_to_text(o.objective.delta) : o.fixed_delta_text);
+      c.delta2 = delta * delta;
+    } else {
+      c.delta2 = round_up_to_digits(exact_rational_of_double(norm2 * (1.0 + margin) + 1e-300), 12);
+    }
+    c.info["delta2_margin"] = margin;
+    v = check_certificate(c, cert_dir.string());
+    if (v.consistent || o.objective.delta_fixed()) break;
+  }
+  out.margin = margin;
+  if (!v.consistent) {
+    out.reason = "exact check failed: " + v.reason;
+    return;
+  }
+  write_certificate(o.certificate_path, c);
+  const auto t1 = std::chrono::steady_clock::now();
+  const CertificateVerdict again = check_certificate_file(o.certificate_path);
+  out.verify_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  out.verified = again.consistent;
+  out.reason = again.consistent ? "" : "the written certificate failed: " + again.reason;
+  out.verifier_details = again.details;
+  out.delta2 = c.delta2;
+  out.dmax2 = c.dmax2;
+  out.delta = sqrt_up(c.delta2);
+  out.dmax = sqrt_up(c.dmax2);
+}
+
+/// d_max² of the certificate: the fixed one (which must hold exactly) or
+/// ‖d‖²/(n·ny) rounded up. Returns false (with out.reason) if a fixed d_max fails.
+bool set_dmax2(Certificate& c, const Rational& dd, const Rational& N, const CertifyOptions& o, CertifiedBounds& out) {
+  if (o.objective.dmax_fixed()) {
+    const Rational dmax =
+        rational_from_text(o.fixed_dmax_text.empty() ? double_to_text(o.objective.dmax) : o.fixed_dmax_text);
+    c.dmax2 = dmax * dmax;
+    if (dd > N * c.dmax2) {
+      out.reason = "after rounding, ||d||^2/(n*ny) = " + double_to_text(nearest_double(dd / N)) +
+                   " exceeds the fixed dmax^2";
+      return false;
+    }
+  } else {
+    c.dmax2 = round_up_to_digits(dd / N, 15);
+  }
+  return true;
+}
+
+Rational squared_norm(const Mat<Rational>& m) {
+  Rational s(0);
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j) s += m(i, j) * m(i, j);
+  return s;
+}
+
+}  // namespace
+
+Rational round_to_digits(double x, int digits) {
+  if (!std::isfinite(x)) throw std::invalid_argument("round_to_digits: not finite");
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*e", digits - 1, x);
+  return rational_from_text(buf);
+}
+
+Rational round_up_to_digits(const Rational& q, int digits) {
+  if (q == 0) return Rational(0);
+  if (q < 0) throw std::invalid_argument("round_up_to_digits: negative value");
+  // e = floor(log10 q) estimated from the double, then corrected exactly.
+  int e = static_cast<int>(std::floor(std::log10(nearest_double(q))));
+  while (pow10(e) > q) --e;
+  while (pow10(e + 1) <= q) ++e;
+  const Rational unit = pow10(e - digits + 1);
+  const Rational s = q / unit;  // in [10^(digits−1), 10^digits)
+  mpz_t c;
+  mpz_init(c);
+  mpz_cdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_z(r, c);
+  Rational out = Rational(r) * unit;
+  mpq_clear(r);
+  mpz_clear(c);
+  return out;
+}
+
+double sqrt_up(const Rational& q) {
+  double s = std::sqrt(nearest_double(q));
+  while (Rational(s) * Rational(s) < q) s = std::nextafter(s, INFINITY);
+  return s;
+}
+
+CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                    const CertifyOptions& o, SdpSolver& solver) {
+  CertifiedBounds out;
+  if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
+  // 1. Exact signals.
+  const Simulation<Rational> sim = simulate(model, exp);
+  const Mat<Rational> r = exp.y - sim.yhat - sim.offset;
+  const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
+
+  // 2. Δ form in floating point; fixed bounds are tightened a little so that
+  // rounding does not push the exact values over them.
+  BoundObjective obj = o.objective;
+  if (obj.dmax_fixed()) obj.dmax *= 1.0 - 1e-7;
+  if (obj.delta_fixed()) obj.delta *= 1.0 - 1e-7;
+  const DeltaFormSolution sol = solve_delta_form(to_double(sim.z), to_double(r), obj, solver, o.solver, o.max_taps);
+  out.solver_status = to_string(sol.solve.status);
+  out.solve_seconds = sol.solve.seconds;
+  out.taps = sol.taps.rows();
+  out.horizon = sol.horizon;
+  if (!has_solution(sol.solve.status)) {
+    out.reason = "the Delta-form solve of Theorem 2.1 ended with status " + out.solver_status +
+                 (obj.kind == BoundObjective::Kind::kFeasibility || obj.dmax_fixed() || obj.delta_fixed()
+                      ? " (for fixed bounds this usually means the model is invalidated at those bounds)"
+                      : "") +
+                 (sol.solve.message.empty() ? "" : ": " + sol.solve.message);
+    return out;
+  }
+
+  // 3. Rounded taps.
+  Certificate c;
+  c.model = model;
+  c.mode = ToeplitzMode::kSignal;
+  c.form = CertificateForm::kDelta;
+  c.horizon = sol.horizon;
+  c.taps = Mat<Rational>(sol.taps.rows(), sol.taps.cols());
+  Mat<double> taps_d(sol.taps.rows(), sol.taps.cols());
+  for (Eigen::Index i = 0; i < sol.taps.rows(); ++i)
+    for (Eigen::Index j = 0; j < sol.taps.cols(); ++j) {
+      c.taps(i, j) = round_to_digits(sol.taps(i, j), o.digits);
+      taps_d(i, j) = nearest_double(c.taps(i, j));
+    }
+
+  // 4. (C2) exactly.
+  const Mat<Rational> w = apply_fir(c.taps, sim.z, ny, c.horizon);
+  if (!set_dmax2(c, squared_norm(Mat<Rational>(r - w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
+
+  out.delta2_solver = sol.delta2;
+  finish_certificate(c, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver, out);
+  return out;
+}
+
+}  // namespace lpvid
+
+namespace lpvid {
+
+CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                          const CertifyOptions& o, SdpSolver& solver) {
+  CertifiedBounds out;
+  if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
+  const Simulation<Rational> sim = simulate(model, exp);
+  const Mat<Rational> r = exp.y - sim.yhat - sim.offset;
+  const Eigen::Index n = exp.n(), ny = model.ny;
+  const Mat<Rational> Tz = T_z_paper(model, exp);
+  AffineSignals sig;
+  sig.zb = to_double(sim.z);
+  sig.rb = to_double(r);
+  sig.Tz_paper = to_double(Tz);
+  BoundObjective obj = o.objective;
+  if (obj.dmax_fixed()) obj.dmax *= 1.0 - 1e-7;
+  if (obj.delta_fixed()) obj.delta *= 1.0 - 1e-7;
+  const RelaxedSolution sol = solve_relaxed(sig, Vec<double>(0), obj, solver, o.solver);
+  out.solver_status = to_string(sol.solve.status);
+  out.solve_seconds = sol.solve.seconds;
+  if (!has_solution(sol.solve.status)) {
+    out.reason = "the w-form solve of Theorem 2.1 ended with status " + out.solver_status;
+    return out;
+  }
+  Certificate c;
+  c.model = model;
+  c.mode = ToeplitzMode::kPaper;
+  c.form = CertificateForm::kW;
+  c.w = Mat<Rational>::Zero(n, ny);
+  for (Eigen::Index k = sol.leading_zeros; k < n; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i) c.w(k, i) = round_to_digits(sol.w(k, i), o.digits);
+  if (!set_dmax2(c, squared_norm(Mat<Rational>(r - c.w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
+  out.delta2_solver = sol.delta2;
+  finish_certificate(c, [&] { return sol.delta2; }, o, solver, out);
+  return out;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,74 @@
+#pragma once
+/// From a floating answer to an exactly verified certificate (SPEC §7).
+///
+/// The model is FIXED here (θ, φ, x0 already rounded to short rationals and
+/// folded in). Then:
+///  1. z and r = y − ŷ − Φ are computed exactly from the data text;
+///  2. Theorem 2.1 is solved in the Δ form (lmi/delta_form_lmi.h) with at
+///     most `max_taps` taps: well conditioned, never forms T_zᵀT_z;
+///  3. the taps are rounded to `digits` significant decimal digits;
+///  4. w = Δ∗z, d = r − w are exact; d_max² := ‖d‖²/(n·ny) rounded UP to 15
+///     digits (or the fixed d_max², which must then hold exactly);
+///  5. δ² := ‖T_Δ‖²_floating·(1 + margin) rounded up to 12 digits, margin
+///     starting at 1e-9 and multiplied by 100 until the exact check passes
+///     (at most 5 tries);
+///  6. the certificate is written and checked again from the file by the
+///     verifier (verify/certificate_check.h). `verified` is that verdict.
+
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "data/experiment.h"
+#include "lmi/bound_objective.h"
+#include "model/lpv_model.h"
+#include "solvers/sdp_solver.h"
+
+namespace lpvid {
+
+struct CertifyOptions {
+  BoundObjective objective;
+  SolverOptions solver;
+  int digits = 12;                       ///< significant digits of rounded taps
+  long max_taps = 64;                    ///< K (0: the full horizon); see solve_delta_form
+  std::string certificate_path;          ///< where to write (required)
+  std::string data_path;                 ///< the data file the experiment came from
+  std::vector<std::string> data_names;   ///< headerless files only
+  long row_begin = 0, row_end = -1;      ///< the window of the data used
+  std::string fixed_delta_text, fixed_dmax_text;  ///< exact text of a fixed bound (CLI), if any
+};
+
+struct CertifiedBounds {
+  bool verified = false;
+  std::string reason;           ///< why not verified
+  Rational delta2, dmax2;       ///< the certificate's values
+  double delta = 0, dmax = 0;   ///< √ of the above, rounded up (for display)
+  double delta2_solver = 0;     ///< the Δ-form solver's δ² before the margin
+  double margin = 0;            ///< relative inflation of δ² that passed
+  long taps = 0, horizon = 0;
+  std::string solver_status;
+  double solve_seconds = 0, verify_seconds = 0;
+  std::string verifier_details;
+};
+
+/// Runs steps 1–6 for a fixed model. Never throws for solver failure (that
+/// is verified = false with the reason); throws InputError for bad input.
+CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                    const CertifyOptions& options, SdpSolver& solver);
+
+/// Paper mode (T_z = T_G12 T_u is not a signal Toeplitz matrix, so there is
+/// no Δ form): the w form of Theorem 2.1 is solved, w rounded to `digits`
+/// digits, and (C1) [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 checked exactly with δ²
+/// inflated as above. T_zᵀT_z squares the data's conditioning; for long
+/// records this can fail where the Δ form would pass (issue 3, item 5).
+CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                          const CertifyOptions& options, SdpSolver& solver);
+
+/// x rounded to `digits` significant decimal digits, as an exact rational.
+Rational round_to_digits(double x, int digits);
+/// The smallest decimal with `digits` significant digits that is ≥ q.
+Rational round_up_to_digits(const Rational& q, int digits);
+/// √q rounded up to a double (for display only).
+double sqrt_up(const Rational& q);
+
+}  // namespace lpvid

@@ -1,0 +1,169 @@
+#include "verify/certificate_check.h"
+
+#include <chrono>
+#include <filesystem>
+#include <ostream>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "core/number_text.h"
+#include "core/sha256.h"
+#include "data/csv_reader.h"
+#include "data/experiment_builder.h"
+#include "model/simulate.h"
+#include "toeplitz/fir.h"
+#include "toeplitz/signal_toeplitz.h"
+#include "toeplitz/toeplitz_gram.h"
+#include "verify/exact_psd.h"
+
+namespace lpvid {
+namespace {
+
+std::string approx(const Rational& q) {
+  std::ostringstream o;
+  o.precision(6);
+  o << nearest_double(q);
+  return o.str();
+}
+
+CertificateVerdict invalid(std::string reason, std::string details = "") {
+  return {false, std::move(reason), std::move(details)};
+}
+
+std::string psd_note(const PsdResult& r) {
+  return std::string(verdict_word(r.verdict)) + " (" +
+         (r.decided_by_filter ? "floating filter with rigorous bound" : "exact elimination") + ")";
+}
+
+}  // namespace
+
+CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir) {
+  namespace fs = std::filesystem;
+  std::ostringstream details;
+  // 1. The data file and its hash.
+  fs::path data_path(c.data_file);
+  if (data_path.is_relative()) data_path = fs::path(certificate_dir) / data_path;
+  const std::string bytes = read_text_file(data_path.string());
+  const std::string hash = sha256_hex(bytes);
+  if (hash != c.data_sha256)
+    return invalid("data file '" + data_path.string() + "' has changed: sha256 " + hash +
+                   " differs from the certificate's " + c.data_sha256);
+
+  // 2. Exact data.
+  const TextTable table = c.data_names.empty() ? read_table(data_path.string())
+                                               : read_table(data_path.string(), c.data_names);
+  Experiment<Rational> exp = make_experiment<Rational>(table, c.model.columns);
+  if (c.row_end >= 0) {
+    if (c.row_end > exp.n())
+      return invalid("data.rows ends at " + std::to_string(c.row_end) + " but the data has " + std::to_string(exp.n()) + " rows");
+    exp = select_rows(exp, c.row_begin, c.row_end);
+  }
+  if (c.model.offset.values.empty() && !c.model.offset.basis.empty())
+    return invalid("the model still has an unknown offset (offset.values missing)");
+  if (c.delta2 < 0 || c.dmax2 < 0) return invalid("delta2 and dmax2 must be >= 0");
+
+  // 3. Exact simulation.
+  const Simulation<Rational> sim = simulate(c.model, exp);
+  const Eigen::Index n = exp.n(), ny = c.model.ny, nz = c.model.nz();
+  details << "n = " << n << ", ny = " << ny << ", nz = " << nz << ", toeplitz mode " << to_string(c.mode);
+
+  // 4. w.
+  Mat<Rational> w;
+  if (c.form == CertificateForm::kDelta) {
+    if (c.mode != ToeplitzMode::kSignal) return invalid("form \"delta\" is only valid with toeplitz_mode \"signal\"");
+    const Eigen::Index L = c.horizon, K = c.taps.rows();
+    if (L > n) return invalid("delta_horizon " + std::to_string(L) + " exceeds the " + std::to_string(n) + " samples");
+    for (Eigen::Index k = 0; k < n - L; ++k)
+      for (Eigen::Index j = 0; j < nz; ++j)
+        if (sim.z(k, j) != 0)
+          return invalid("z_" + std::to_string(k) + " is not zero but precedes the delta horizon of " + std::to_string(L) +
+                         " samples (the horizon must cover every sample from the first non-zero z)");
+    w = apply_fir(c.taps, sim.z, ny, L);
+    details << ", form delta with " << K << " taps on a horizon of " << L << " samples";
+  } else {
+    if (c.w.rows() != n) return invalid("w has " + std::to_string(c.w.rows()) + " rows for " + std::to_string(n) + " samples");
+    w = c.w;
+    details << ", form w";
+  }
+
+  // 5. (C2), exactly.
+  const Mat<Rational> d = exp.y - sim.yhat - sim.offset - w;
+  Rational dd(0);
+  for (Eigen::Index k = 0; k < n; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i) dd += d(k, i) * d(k, i);
+  const Rational bound = Rational(static_cast<long>(n * ny)) * c.dmax2;
+  if (dd > bound)
+    return invalid("(C2) fails: ||d||^2 = " + approx(dd) + " > n*ny*dmax2 = " + approx(bound) +
+                       " (exact comparison of rationals)",
+                   details.str());
+  details << "; (C2) holds: ||d||^2 = " << approx(dd) << " <= n*ny*dmax2 = " << approx(bound);
+
+  // 6. (C1), exactly.
+  Mat<Rational> M;
+  std::string which;
+  if (c.form == CertificateForm::kDelta) {
+    const Eigen::Index L = c.horizon, K = c.taps.rows();
+    M = Mat<Rational>::Zero(L * (ny + nz), L * (ny + nz));
+    for (Eigen::Index i = 0; i < L * ny; ++i) M(i, i) = c.delta2;
+    for (Eigen::Index i = L * ny; i < L * (ny + nz); ++i) M(i, i) = Rational(1);
+    for (Eigen::Index a = 0; a < L; ++a)
+      for (Eigen::Index b = std::max<Eigen::Index>(0, a - K + 1); b <= a; ++b)
+        for (Eigen::Index i = 0; i < ny; ++i)
+          for (Eigen::Index j = 0; j < nz; ++j) {
+            const Rational& h = c.taps(a - b, i * nz + j);
+            M(a * ny + i, L * ny + b * nz + j) = h;
+            M(L * ny + b * nz + j, a * ny + i) = h;
+          }
+    which = "[delta2*I, T_Delta; T_Delta', I]";
+  } else {
+    const Mat<Rational> G = c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)
+                                                             : Mat<Rational>([&] {
+                                                                 const Mat<Rational> Tz = T_z_paper(c.model, exp);
+                                                                 return Mat<Rational>(Tz.transpose() * Tz);
+                                                               }());
+    const Mat<Rational> Tw = signal_toeplitz(w);
+    M = Mat<Rational>::Zero(n + n * ny, n + n * ny);
+    M.topLeftCorner(n, n) = G;
+    M.bottomLeftCorner(n * ny, n) = Tw;
+    M.topRightCorner(n, n * ny) = Tw.transpose();
+    for (Eigen::Index i = n; i < n + n * ny; ++i) M(i, i) = c.delta2;
+    which = "[T_z'T_z, T_w'; T_w, delta2*I]";
+  }
+  const PsdResult psd = decide_psd(M);
+  if (psd.verdict == PsdVerdict::kNotPsd)
+    return invalid("(C1) fails: " + which + " is not PSD (" + psd.reason + ")", details.str());
+  details << "; (C1) holds: " << which << " (size " << M.rows() << ") is " << psd_note(psd);
+  return {true, "", details.str()};
+}
+
+CertificateVerdict check_certificate_file(const std::string& path) {
+  const Certificate c = read_certificate(path);
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  return check_certificate(c, dir.empty() ? "." : dir);
+}
+
+int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err) {
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    const CertificateVerdict v = check_certificate_file(path);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (v.consistent) {
+      out << "consistent\n" << v.details << "\nchecked in exact rational arithmetic in " << secs << " s\n";
+      return 0;
+    }
+    out << "invalid: " << v.reason << "\n";
+    if (!v.details.empty()) out << v.details << "\n";
+    return 1;
+  } catch (const InputError& e) {
+    err << "lpvid-verify: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    err << "lpvid-verify: out of memory while checking '" << path << "'\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "lpvid-verify: cannot check '" << path << "': " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace lpvid

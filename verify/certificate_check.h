@@ -1,0 +1,43 @@
+#pragma once
+/// Exact check of a certificate (SPEC §7): from the data text to the PSD
+/// decision, in rational arithmetic, without tolerance and without solver.
+///
+///  1. the data file's bytes must hash to the certificate's sha256;
+///  2. u, y, ρ are read as exact rationals, the window selected;
+///  3. x, ŷ, z, Φ are rebuilt by exact simulation of the certificate's model
+///     (SPEC §2, model/simulate.h);
+///  4. w: form "w" as given; form "delta": w = Δ ∗ z exactly, which requires
+///     z_k = 0 for every sample before the Δ horizon (k < n − L);
+///  5. (C2): ‖d‖₂² ≤ n·ny·d_max², d = y − ŷ − Φ − w, exactly. This is the
+///     LMI [n·ny·d_max², dᵀ; d, I] ⪰ 0 of SPEC §4 (Schur complement on I ≻ 0);
+///  6. (C1): form "w": [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 decided exactly;
+///     form "delta": [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0 decided exactly, i.e.
+///     ‖T_Δ‖ ≤ δ; then T_w = T_Δ T_z and T_wᵀT_w = T_zᵀT_ΔᵀT_ΔT_z ⪯ δ²T_zᵀT_z,
+///     which is (C1). (The taps before the horizon multiply zero samples.)
+/// Any failure is "invalid" with the constraint, the index and the numbers.
+
+#include <string>
+
+#include "verify/certificate_file.h"
+
+namespace lpvid {
+
+struct CertificateVerdict {
+  bool consistent = false;
+  std::string reason;   ///< why not (empty when consistent)
+  std::string details;  ///< what was checked, sizes, which PSD path decided
+};
+
+/// Checks `c`; `certificate_dir` resolves a relative data path. Throws
+/// InputError for unreadable data (missing file, bad numbers): that is not a
+/// verdict.
+CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir);
+
+/// Reads the file and checks it.
+CertificateVerdict check_certificate_file(const std::string& path);
+
+/// `lpvid-verify certificate C.json`: prints "consistent" (exit 0) or
+/// "invalid: <reason>" (exit 1); exit 2 on unreadable input.
+int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err);
+
+}  // namespace lpvid

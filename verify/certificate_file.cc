@@ -1,0 +1,156 @@
+#include "verify/certificate_file.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "data/csv_reader.h"
+#include "model/model_file.h"
+#include "model/model_json_tree.h"
+
+namespace lpvid {
+namespace {
+
+const JsonNode& member(const JsonNode& obj, const char* key, const std::string& file, const std::string& path) {
+  const JsonNode* n = obj.find(key);
+  if (!n) throw_input_error(file, obj.line, path.empty() ? key : path + "." + key, "missing");
+  return *n;
+}
+
+std::string string_member(const JsonNode& obj, const char* key, const std::string& file, const std::string& path) {
+  const JsonNode& n = member(obj, key, file, path);
+  if (!n.is_string()) throw_input_error(file, n.line, path.empty() ? key : path + "." + key, "expected a string");
+  return n.text;
+}
+
+long integer_member(const JsonNode& n, const std::string& file, const std::string& path) {
+  if (!n.is_number() || n.text.find_first_not_of("0123456789") != std::string::npos || n.text.size() > 12)
+    throw_input_error(file, n.line, path, "expected a non-negative integer");
+  return std::stol(n.text);
+}
+
+Mat<Rational> matrix_member(const JsonNode& n, const std::string& file, const std::string& path, Eigen::Index cols) {
+  if (!n.is_array()) throw_input_error(file, n.line, path, "expected a list of rows");
+  Mat<Rational> m(static_cast<Eigen::Index>(n.items.size()), cols);
+  for (size_t r = 0; r < n.items.size(); ++r) {
+    const JsonNode& row = n.items[r];
+    const std::string rp = path + "[" + std::to_string(r) + "]";
+    if (!row.is_array() || static_cast<Eigen::Index>(row.items.size()) != cols)
+      throw_input_error(file, row.line, rp, "expected a list of " + std::to_string(cols) + " numbers");
+    for (size_t c = 0; c < row.items.size(); ++c)
+      m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
+          number_from_json<Rational>(row.items[c], file, rp + "[" + std::to_string(c) + "]");
+  }
+  return m;
+}
+
+nlohmann::ordered_json matrix_json(const Mat<Rational>& m) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (Eigen::Index r = 0; r < m.rows(); ++r) {
+    nlohmann::ordered_json row = nlohmann::ordered_json::array();
+    for (Eigen::Index c = 0; c < m.cols(); ++c) row.push_back(rational_to_json(m(r, c)));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+Certificate parse_certificate(std::string_view text, const std::string& file) {
+  const JsonNode root = parse_exact_json(text, file);
+  if (!root.is_object()) throw_input_error(file, root.line, "", "a certificate is a JSON object");
+  static const std::vector<std::string> allowed = {"format", "claim", "data", "model", "toeplitz_mode",
+                                                   "noise_normalisation", "delta2", "dmax2", "form",
+                                                   "delta_taps", "delta_horizon", "w", "info"};
+  for (const auto& [key, value] : root.members)
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      throw_input_error(file, value.line, key, "unknown key in a certificate");
+  if (string_member(root, "format", file, "") != kCertificateFormat)
+    throw_input_error(file, root.line, "format", std::string("expected \"") + kCertificateFormat + "\"");
+  if (string_member(root, "claim", file, "") != "consistent")
+    throw_input_error(file, root.line, "claim", "the only claim a certificate makes is \"consistent\"");
+  if (string_member(root, "noise_normalisation", file, "") != "rms")
+    throw_input_error(file, root.line, "noise_normalisation", "expected \"rms\" (||d||^2 <= n*ny*dmax^2, SPEC section 4)");
+
+  Certificate c;
+  const JsonNode& data = member(root, "data", file, "");
+  if (!data.is_object()) throw_input_error(file, data.line, "data", "expected an object");
+  c.data_file = string_member(data, "file", file, "data");
+  c.data_sha256 = string_member(data, "sha256", file, "data");
+  if (const JsonNode* names = data.find("names")) {
+    if (!names->is_array()) throw_input_error(file, names->line, "data.names", "expected a list of names");
+    for (const auto& n : names->items) {
+      if (!n.is_string()) throw_input_error(file, n.line, "data.names", "expected strings");
+      c.data_names.push_back(n.text);
+    }
+  }
+  if (const JsonNode* rows = data.find("rows")) {
+    if (!rows->is_array() || rows->items.size() != 2)
+      throw_input_error(file, rows->line, "data.rows", "expected [begin, end]");
+    c.row_begin = integer_member(rows->items[0], file, "data.rows[0]");
+    c.row_end = integer_member(rows->items[1], file, "data.rows[1]");
+    if (c.row_end <= c.row_begin) throw_input_error(file, rows->line, "data.rows", "empty window");
+  }
+  c.model = model_from_json<Rational>(member(root, "model", file, ""), file, "model");
+  c.mode = toeplitz_mode_from_string(string_member(root, "toeplitz_mode", file, ""));
+  c.delta2 = number_from_json<Rational>(member(root, "delta2", file, ""), file, "delta2");
+  c.dmax2 = number_from_json<Rational>(member(root, "dmax2", file, ""), file, "dmax2");
+  const std::string form = string_member(root, "form", file, "");
+  const Eigen::Index ny = c.model.ny, nz = c.model.nz();
+  if (form == "delta") {
+    c.form = CertificateForm::kDelta;
+    c.taps = matrix_member(member(root, "delta_taps", file, ""), file, "delta_taps", ny * nz);
+    c.horizon = integer_member(member(root, "delta_horizon", file, ""), file, "delta_horizon");
+    if (c.horizon < c.taps.rows() || c.horizon < 1)
+      throw_input_error(file, member(root, "delta_horizon", file, "").line, "delta_horizon",
+                        "must be at least the number of delta_taps and at least 1");
+    if (root.find("w")) throw_input_error(file, root.find("w")->line, "w", "form \"delta\" carries delta_taps, not w");
+  } else if (form == "w") {
+    c.form = CertificateForm::kW;
+    c.w = matrix_member(member(root, "w", file, ""), file, "w", ny);
+    if (root.find("delta_taps"))
+      throw_input_error(file, root.find("delta_taps")->line, "delta_taps", "form \"w\" carries w, not delta_taps");
+  } else {
+    throw_input_error(file, member(root, "form", file, "").line, "form", "expected \"delta\" or \"w\"");
+  }
+  return c;
+}
+
+Certificate read_certificate(const std::string& path) { return parse_certificate(read_text_file(path), path); }
+
+std::string certificate_json(const Certificate& c) {
+  nlohmann::ordered_json j;
+  j["format"] = kCertificateFormat;
+  j["claim"] = "consistent";
+  nlohmann::ordered_json data;
+  data["file"] = c.data_file;
+  data["sha256"] = c.data_sha256;
+  if (!c.data_names.empty()) data["names"] = c.data_names;
+  if (c.row_end >= 0) data["rows"] = {c.row_begin, c.row_end};
+  j["data"] = data;
+  j["model"] = model_to_json(c.model);
+  j["toeplitz_mode"] = to_string(c.mode);
+  j["noise_normalisation"] = "rms";
+  j["delta2"] = rational_to_json(c.delta2);
+  j["dmax2"] = rational_to_json(c.dmax2);
+  if (c.form == CertificateForm::kDelta) {
+    j["form"] = "delta";
+    j["delta_taps"] = matrix_json(c.taps);
+    j["delta_horizon"] = c.horizon;
+  } else {
+    j["form"] = "w";
+    j["w"] = matrix_json(c.w);
+  }
+  j["info"] = c.info;
+  return pretty_json(j);
+}
+
+void write_certificate(const std::string& path, const Certificate& c) {
+  const std::string text = certificate_json(c);
+  std::ofstream f(path, std::ios::binary);
+  if (!f) throw InputError("cannot write certificate '" + path + "'");
+  f << text;
+  if (!f) throw InputError("error while writing certificate '" + path + "'");
+}
+
+}  // namespace lpvid
