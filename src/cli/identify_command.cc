@@ -13,6 +13,26 @@
 namespace lpvid::cli {
 namespace {
 
+/// Replaces the correction basis (fixed A_i, B_i are zero for the new terms).
+template <typename T>
+void set_correction_basis(LpvModel<T>& m, const std::vector<std::string>& texts) {
+  Correction<T> c;
+  for (const std::string& t : texts) {
+    Monomial f;
+    try {
+      f = parse_monomial(t, m.scheduling);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--basis: ") + e.what());
+    }
+    for (const Monomial& g : c.basis)
+      if (g == f) throw InputError("--basis: '" + t + "' appears twice");
+    c.basis.push_back(f);
+    c.A.push_back(Mat<T>::Zero(m.nx, m.nx));
+    c.B.push_back(Mat<T>::Zero(m.nx, m.nu));
+  }
+  m.correction = c;
+}
+
 struct IdentifyArgs {
   CommonOptions common;
   bool iterate = false;
@@ -20,11 +40,19 @@ struct IdentifyArgs {
   double rel_tol = 1e-4;
   bool free_x0 = false;
   bool no_offset = false;
+  std::vector<std::string> basis;  ///< --basis: replaces the model's correction basis
 };
 
 int run_identify(IdentifyArgs& a) {
   Inputs in = load_inputs(a.common);
+  if (!a.basis.empty()) {
+    set_correction_basis(in.model_q, a.basis);
+    set_correction_basis(in.model_d, a.basis);
+  }
   print_options(a.common, in.objective, "identify");
+  std::cout << "  basis       ";
+  for (const Monomial& f : in.model_q.correction.basis) std::cout << f.text(in.model_q.scheduling) << " ";
+  std::cout << "\n";
   if (in.mode != ToeplitzMode::kSignal)
     throw InputError("--toeplitz paper is supported by 'invalidate' (fixed model) only; identification uses the "
                      "signal form (SPEC 3)");
@@ -109,6 +137,8 @@ Runner add_identify_command(CLI::App& app) {
   cmd->add_option("--max-iterations", args->max_iterations, "solves of --iterate (default 25)")->check(CLI::Range(1, 1000));
   cmd->add_option("--rel-tol", args->rel_tol, "stop --iterate when the objective improves by less (default 1e-4)");
   cmd->add_flag("--free-x0", args->free_x0, "the initial state is an unknown too");
+  cmd->add_option("--basis", args->basis, "correction basis, e.g. 1,rho1,rho1*rho2 (replaces the model's)")
+      ->delimiter(',');
   cmd->add_flag("--no-offset", args->no_offset, "do not identify the offset phi even if the model declares one");
   return [cmd, args] { return cmd->parsed() ? run_identify(*args) : -1; };
 }

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency from Debian 12 packages.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" != 0 ]; then SUDO=sudo; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update
+$SUDO apt-get install -y --no-install-recommends \
+  build-essential cmake ninja-build pkg-config ca-certificates \
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
+  libgtest-dev librapidcheck-dev nlohmann-json3-dev libcli11-dev \
+  libsdp-dev coinor-csdp libsdpa-dev sdpa libmumps-seq-dev libopenblas-dev liblapack-dev gfortran \
+  gnuplot-nox
