@@ -8,6 +8,7 @@
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "identify/certify.h"
+#include "solvers/external_solvers.h"
 #include "identify/identify.h"
 
 namespace lpvid::cli {
@@ -64,7 +65,7 @@ int run_identify(IdentifyArgs& a) {
   opt.unknowns.x0 = a.free_x0;
   opt.unknowns.offset = !a.no_offset;
   opt.solver.verbose = a.common.verbose;
-  auto solver = make_solver(a.common.solver);
+  auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
   const IdentifyResult res = identify(in.model_d, in.exp_d, opt, *solver);
 
   std::cout << "\nTheorem 3.1: " << res.relaxation << "\n"

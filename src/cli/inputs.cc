@@ -17,7 +17,11 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   app.add_option("--rows", o.rows_text, "window of data rows B:E (0-based, E exclusive); default all");
   app.add_option("--toeplitz", o.toeplitz, "T_z mode: signal (default, SPEC 3) or paper (T_G12 T_u)")
       ->check(CLI::IsMember({"signal", "paper"}));
-  app.add_option("--solver", o.solver, "SDP backend: csdp (default) or sdpa")->check(CLI::IsMember(available_solvers()));
+  std::vector<std::string> solvers = available_solvers();
+  solvers.push_back("csdp-command");
+  app.add_option("--solver", o.solver, "SDP backend: csdp (default), sdpa, or csdp-command (the csdp program via an SDPA file)")
+      ->check(CLI::IsMember(solvers));
+  app.add_option("--write-sdpa", o.write_sdpa, "also write each SDP solved as an SDPA sparse file (the last one to this path)");
   app.add_option("--certificate", o.certificate_path, "where to write the certificate (JSON)");
   app.add_option("--report", o.report_path, "where to write the report (JSON)");
   app.add_option("--max-taps", o.max_taps, "taps of the FIR Delta in the certificate (0: full horizon; default 64)")

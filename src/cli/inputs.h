@@ -29,6 +29,7 @@ struct CommonOptions {
   std::string delta_text, dmax_text;     ///< --delta / --dmax as typed (exact)
   std::optional<double> lambda;          ///< --lambda
   long max_taps = 64;                    ///< --max-taps (Δ form; 0 = full horizon)
+  std::string write_sdpa;                ///< --write-sdpa F.dat-s
   bool verbose = false;
 };
 

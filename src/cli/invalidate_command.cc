@@ -7,6 +7,7 @@
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "identify/certify.h"
+#include "solvers/external_solvers.h"
 
 namespace lpvid::cli {
 namespace {
@@ -16,7 +17,7 @@ int run_invalidate(CommonOptions& c) {
   print_options(c, in.objective, "invalidate");
   if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
     throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" or use 'lpvid identify'");
-  auto solver = make_solver(c.solver);
+  auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
   CertifyOptions co;
   co.objective = in.objective;
   co.solver.verbose = c.verbose;
