@@ -1,3 +1,65 @@
-// lpvid-verify: placeholder until the verifier lands (issue 2).
-#include <cstdio>
-int main() { std::fprintf(stderr, "lpvid-verify: not built yet\n"); return 2; }
+// lpvid-verify: the exact verifier's command line (SPEC §7, §8).
+//
+//   lpvid-verify psd M.txt [--exact-only] [--threads N]
+//       PD / PSD (exit 0), NOT_PSD (exit 1), bad input (exit 2).
+//
+// Each subcommand is registered by one add_*_subcommand function below and
+// run by the dispatch in main(). Usage errors exit with 2 (like bad input).
+
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "verify/psd_command.h"
+
+namespace {
+
+struct PsdArgs {
+  std::string file;
+  lpvid::PsdCommandOptions options;
+};
+
+CLI::App* add_psd_subcommand(CLI::App& app, PsdArgs& args) {
+  CLI::App* psd = app.add_subcommand("psd", "Decide exactly whether a rational symmetric matrix is PD, PSD or not PSD");
+  psd->add_option("file", args.file, "matrix file: one row per line, exact decimals or p/q, '#' comments")
+      ->required();
+  psd->add_flag("--exact-only", args.options.exact_only,
+                "skip the floating-point filter; decide by exact LDL^T only");
+  psd->add_option("--threads", args.options.threads, "threads for the exact elimination (0: all cores, max 8)")
+      ->check(CLI::Range(0, 64));
+  psd->footer("Exit status: 0 PD or PSD, 1 NOT_PSD, 2 unreadable/invalid/non-symmetric input.");
+  return psd;
+}
+
+// TODO(certificate): `lpvid-verify certificate C.json` (SPEC §8: exit 0 and
+// `consistent` only if the certificate holds exactly, exit 1 and
+// `invalid: <reason>` otherwise, exit 2 on unreadable input) goes here:
+//   struct CertificateArgs { std::string file; ... };
+//   CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args);
+// and one more branch in the dispatch in main().
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"lpvid-verify: exact verifier for lpvid (no floating-point answer is trusted)"};
+  app.require_subcommand(1);
+
+  PsdArgs psd_args;
+  CLI::App* psd = add_psd_subcommand(app, psd_args);
+  // Register further subcommands here (see TODO(certificate) above).
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help or the usage error
+    return code == 0 ? 0 : lpvid::kPsdExitBadInput;
+  }
+
+  // Dispatch: one branch per subcommand.
+  if (psd->parsed()) return lpvid::run_psd_command(psd_args.file, std::cout, std::cerr, psd_args.options);
+  // if (certificate->parsed()) return lpvid::run_certificate_command(...);
+
+  std::cerr << "lpvid-verify: no subcommand\n";
+  return lpvid::kPsdExitBadInput;
+}

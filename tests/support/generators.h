@@ -7,3 +7,4 @@
 #include "support/gen_numbers.h"
 #include "support/gen_models.h"
 #include "support/gen_files.h"
+#include "support/gen_matrices.h"

@@ -1,0 +1,130 @@
+#include "verify/psd_filter.h"
+
+#include <cfenv>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "core/number_text.h"
+#include "support/gen_matrices.h"
+#include "verify/exact_psd.h"
+
+namespace lpvid {
+namespace {
+
+Mat<Rational> identity(int n, const Rational& scale = Rational(1)) {
+  Mat<Rational> M = Mat<Rational>::Zero(n, n);
+  for (int i = 0; i < n; ++i) M(i, i) = scale;
+  return M;
+}
+
+TEST(PsdFilterTest, EnvironmentMeetsTheAssumptions) {
+  EXPECT_EQ(floating_environment_problem(), "");
+}
+
+TEST(PsdFilterTest, ProvesWellConditionedMatricesPd) {
+  for (int n : {1, 2, 10, 300}) {
+    PsdFilterResult f = run_psd_filter(identity(n));
+    EXPECT_TRUE(f.proved_pd) << n << ": " << f.reason;
+    EXPECT_GT(f.shift, 0.0);
+  }
+  // Diagonally dominant with p/q entries that are not doubles.
+  Mat<Rational> M(3, 3);
+  M << Rational(3), Rational(1, 3), Rational(1, 7), Rational(1, 3), Rational(2), Rational(-1, 10), Rational(1, 7),
+      Rational(-1, 10), Rational(1);
+  EXPECT_TRUE(run_psd_filter(M).proved_pd);
+}
+
+TEST(PsdFilterTest, NeverProvesSingularOrBarelyDefiniteMatrices) {
+  Mat<Rational> ones(2, 2);
+  ones << Rational(1), Rational(1), Rational(1), Rational(1);
+  EXPECT_FALSE(run_psd_filter(ones).proved_pd);  // singular PSD
+  Mat<Rational> barely = ones;
+  barely(1, 1) = rational_from_text("1.000000000000000000000000000001");
+  EXPECT_FALSE(run_psd_filter(barely).proved_pd);  // PD by 1e-30: too close to prove
+  // fl(M) = [[1,1],[1,1+2^-52]] is numerically PD, yet M is NOT PSD: the
+  // unshifted floating Cholesky succeeds; the shifted one must not.
+  Mat<Rational> fools(2, 2);
+  const Rational x = rational_from_text("1298074214633707051247812158160895/1298074214633706907132624082305024");
+  fools << Rational(1), x, x, rational_from_text("4503599627370497/4503599627370496");
+  const PsdFilterResult f = run_psd_filter(fools);
+  EXPECT_FALSE(f.proved_pd) << f.reason;
+  EXPECT_EQ(decide_psd_exact(fools).verdict, PsdVerdict::kNotPsd);
+}
+
+TEST(PsdFilterTest, ExtremeMagnitudes) {
+  // Near the top of the double range: still provable.
+  EXPECT_TRUE(run_psd_filter(identity(3, rational_from_text("1e300"))).proved_pd);
+  // Beyond it: "don't know", the exact path decides.
+  const Mat<Rational> huge = identity(3, rational_from_text("1e400"));
+  EXPECT_FALSE(run_psd_filter(huge).proved_pd);
+  EXPECT_EQ(decide_psd(huge).verdict, PsdVerdict::kPositiveDefinite);
+  // Subnormal and below: the underflow terms of the bound must keep it honest.
+  for (const char* tiny : {"1e-310", "1e-320", "1e-400"}) {
+    const Mat<Rational> M = identity(4, rational_from_text(tiny));
+    const PsdFilterResult f = run_psd_filter(M);
+    if (f.proved_pd) {
+      EXPECT_EQ(decide_psd_exact(M).verdict, PsdVerdict::kPositiveDefinite) << tiny;
+    }
+    EXPECT_EQ(decide_psd(M).verdict, PsdVerdict::kPositiveDefinite) << tiny;
+  }
+  EXPECT_FALSE(run_psd_filter(identity(4, rational_from_text("1e-400"))).proved_pd);
+}
+
+TEST(PsdFilterTest, GivesCandidateDirectionsOnlyAsHints) {
+  Mat<Rational> M(2, 2);
+  M << Rational(1), Rational(2), Rational(2), Rational(1);
+  const PsdFilterResult f = run_psd_filter(M);
+  EXPECT_FALSE(f.proved_pd);
+  ASSERT_EQ(f.negative_direction.size(), 2);
+  EXPECT_EQ(f.failed_row, 1);
+  const PsdResult r = decide_psd(M);
+  EXPECT_EQ(r.verdict, PsdVerdict::kNotPsd);
+  EXPECT_EQ(r.method, PsdMethod::kWitnessCheck);
+  EXPECT_LT(quadratic_form(M, r.witness), Rational(0));
+}
+
+TEST(PsdFilterTest, WrongRoundingModeMeansDontKnow) {
+  ASSERT_EQ(std::fesetround(FE_UPWARD), 0);
+  const std::string problem = floating_environment_problem();
+  const PsdFilterResult f = run_psd_filter(identity(3));
+  std::fesetround(FE_TONEAREST);
+  EXPECT_NE(problem, "");
+  EXPECT_FALSE(f.proved_pd) << f.reason;
+  EXPECT_TRUE(run_psd_filter(identity(3)).proved_pd);
+}
+
+TEST(PsdFilterTest, ZeroRowsDoNotStopTheFilter) {
+  Mat<Rational> M = identity(5);
+  M(2, 2) = Rational(0);
+  const PsdResult r = decide_psd(M);
+  EXPECT_EQ(r.verdict, PsdVerdict::kPositiveSemidefinite);
+  EXPECT_TRUE(r.decided_by_filter);
+  EXPECT_EQ(r.rank, 4);
+  EXPECT_EQ(r.pivot_index, 2);
+}
+
+RC_GTEST_PROP(PsdFilterProperty, FilterPdImpliesExactPd, ()) {
+  const auto k = *rc::gen::oneOf(gen::psd_gram(true), gen::psd_gram(false), gen::pd_gram_plus(),
+                                 gen::singular_minus(), gen::with_negative());
+  const PsdFilterResult f = run_psd_filter(k.M);
+  if (f.proved_pd) RC_ASSERT(decide_psd_exact(k.M).verdict == PsdVerdict::kPositiveDefinite);
+  RC_TAG(f.proved_pd ? "proved PD" : "don't know");
+}
+
+RC_GTEST_PROP(PsdFilterProperty, SingularGramIsNeverProvedPd, ()) {
+  // Integer Gram matrices of rank-deficient B: every entry is a double, the
+  // floating Cholesky may well "succeed"; the proof must not.
+  const int n = *rc::gen::inRange(2, 12);
+  const int r = *rc::gen::inRange(1, n);
+  const Mat<Rational> B = *gen::rational_matrix(r, n, rc::gen::map(rc::gen::inRange(-1000, 1001), [](int v) {
+    return Rational(v);
+  }));
+  const Mat<Rational> G = gen::gram(B);
+  RC_ASSERT(!run_psd_filter(G).proved_pd);
+  RC_ASSERT(decide_psd(G).verdict == PsdVerdict::kPositiveSemidefinite);
+}
+
+}  // namespace
+}  // namespace lpvid

@@ -1,0 +1,32 @@
+#pragma once
+/// `lpvid-verify psd M.txt` (SPEC §8): decides whether the exact rational
+/// symmetric matrix in M.txt is PD, PSD or not PSD.
+///
+/// Output: the first word is `PD`, `PSD` or `NOT_PSD`, then the reason on the
+/// same line; indented detail lines follow (n, which path decided, pivot
+/// index, witness, timings). Exit code 0 for PD and PSD, 1 for NOT_PSD, 2 for
+/// input that cannot be decided: unreadable file, bad number text, zero
+/// denominator, NaN/inf, ragged or non-square matrix, non-symmetric matrix,
+/// out of memory, any other error (message on `err`, never a crash).
+
+#include <iosfwd>
+#include <string>
+
+namespace lpvid {
+
+struct PsdCommandOptions {
+  /// Skip the floating-point filter and the witness check: exact LDLᵀ only.
+  bool exact_only = false;
+  /// Threads for the exact elimination (≤ 0: hardware concurrency, max 8).
+  int threads = 0;
+};
+
+/// Exit codes of run_psd_command.
+inline constexpr int kPsdExitPsd = 0;
+inline constexpr int kPsdExitNotPsd = 1;
+inline constexpr int kPsdExitBadInput = 2;
+
+int run_psd_command(const std::string& path, std::ostream& out, std::ostream& err,
+                    const PsdCommandOptions& options = {});
+
+}  // namespace lpvid

@@ -1,0 +1,259 @@
+#include "verify/psd_filter.h"
+
+#include <cfenv>
+#include <cfloat>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include <gmp.h>
+#include <mpfr.h>
+
+#include "core/number_text.h"
+
+static_assert(std::numeric_limits<double>::is_iec559, "psd_filter needs IEEE-754 binary64 doubles");
+static_assert(std::numeric_limits<double>::digits == 53, "psd_filter needs 53-bit doubles");
+#if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
+#error "psd_filter needs double arithmetic evaluated in double precision (FLT_EVAL_METHOD == 0, e.g. SSE2)"
+#endif
+
+// Everything defined below this point rounds a·b and x − a·b separately
+// (the theorem in psd_filter.h assumes it). The pragmas come after the
+// #includes on purpose: they apply to our functions only. The kernel is also
+// probed at run time (contraction_problem()).
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+namespace lpvid {
+namespace {
+
+/// s[j] = fl(s[j] − fl(a·r[j])) for j < len. Elementwise, so vectorising
+/// across j never re-associates anything. Never inlined nor cloned, so that
+/// the Cholesky and the run-time contraction probe execute the same code.
+#if defined(__clang__)
+__attribute__((noinline))
+#elif defined(__GNUC__)
+__attribute__((noinline, noclone))
+#endif
+void subtract_scaled_row(double* __restrict s, const double* __restrict r, double a, std::size_t len) {
+  for (std::size_t j = 0; j < len; ++j) {
+    const double p = a * r[j];
+    s[j] = s[j] - p;
+  }
+}
+
+/// Upper triangle of an N×N matrix, row-major in a full N×N buffer.
+struct UpperMatrix {
+  std::size_t n = 0;
+  std::vector<double> a;
+  double& at(std::size_t i, std::size_t j) { return a[i * n + j]; }
+  double at(std::size_t i, std::size_t j) const { return a[i * n + j]; }
+};
+
+struct CholeskyRun {
+  bool completed = false;
+  std::size_t failed_step = 0;  // row whose pivot was ≤ 0, NaN, or whose row overflowed
+  UpperMatrix R;               // rows 0..failed_step-1 valid when !completed
+};
+
+/// Row-oriented floating Cholesky of the upper triangle of `At` (see the
+/// formula in psd_filter.h): row i of R is computed from Ã's row i minus
+/// R_ki·(row k of R), k = 0, 1, …, i−1 in that order, then divided by
+/// R_ii = √(pivot). Stops at the first pivot that is not > 0 or the first
+/// non-finite entry.
+CholeskyRun floating_cholesky(const UpperMatrix& At) {
+  const std::size_t n = At.n;
+  CholeskyRun run;
+  run.R.n = n;
+  run.R.a.assign(n * n, 0.0);
+  std::vector<double> w(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t len = n - i;
+    double* wi = w.data();
+    for (std::size_t j = 0; j < len; ++j) wi[j] = At.at(i, i + j);
+    for (std::size_t k = 0; k < i; ++k) subtract_scaled_row(wi, &run.R.a[k * n + i], run.R.at(k, i), len);
+    const double pivot = wi[0];
+    if (!(pivot > 0) || !std::isfinite(pivot)) {
+      run.failed_step = i;
+      return run;
+    }
+    const double d = std::sqrt(pivot);
+    double* ri = &run.R.a[i * n + i];
+    ri[0] = d;
+    bool finite = std::isfinite(d) && d > 0;
+    for (std::size_t j = 1; j < len; ++j) {
+      ri[j] = wi[j] / d;
+      finite = finite && std::isfinite(ri[j]);
+    }
+    if (!finite) {
+      run.failed_step = i;
+      return run;
+    }
+  }
+  run.completed = true;
+  return run;
+}
+
+/// Detects contraction of the kernel into an FMA: with a = 1 + 2⁻³⁰,
+/// fl(a·a) = 1 + 2⁻²⁹ while a·a = 1 + 2⁻²⁹ + 2⁻⁶⁰, so s − a·a with
+/// s = 1 + 2⁻²⁹ is 0 when rounded separately and −2⁻⁶⁰ when fused.
+std::string contraction_problem() {
+  volatile double seed = 1.0;  // keeps the compiler from folding the probe
+  const double a = seed + std::ldexp(1.0, -30);
+  const double s0 = seed + std::ldexp(1.0, -29);
+  constexpr std::size_t kLen = 37;  // vector body and scalar tail
+  std::vector<double> s(kLen, s0), r(kLen, a);
+  subtract_scaled_row(s.data(), r.data(), a, kLen);
+  for (double x : s)
+    if (x != 0.0) return "the Cholesky kernel was compiled with FMA contraction";
+  return {};
+}
+
+/// Exact rational of 2^e.
+Rational pow2(long e) {
+  mpq_t q;
+  mpq_init(q);
+  mpq_set_ui(q, 1, 1);
+  if (e >= 0)
+    mpq_mul_2exp(q, q, static_cast<mp_bitcnt_t>(e));
+  else
+    mpq_div_2exp(q, q, static_cast<mp_bitcnt_t>(-e));
+  Rational r(q);
+  mpq_clear(q);
+  return r;
+}
+
+/// The largest double ≤ q (MPFR, rounding downward twice: to 53 bits with an
+/// unbounded exponent, then to the double range; both round down).
+double round_down(const Rational& q) {
+  mpfr_t f;
+  mpfr_init2(f, 53);
+  mpfr_set_q(f, q.mpq(), MPFR_RNDD);
+  double x = mpfr_get_d(f, MPFR_RNDD);
+  mpfr_clear(f);
+  return x;
+}
+
+/// The candidate v = [−R11⁻¹·R(0:k−1, k); 1] for the failed step k of an
+/// unshifted Cholesky: vᵀAv ≈ pivot_k ≤ 0. Empty if it does not stay finite.
+Vec<double> negative_direction_from(const CholeskyRun& run) {
+  const std::size_t k = run.failed_step;
+  std::vector<double> v(k + 1, 0.0);
+  v[k] = 1.0;
+  for (std::size_t ii = k; ii-- > 0;) {
+    double s = 0;
+    for (std::size_t j = ii + 1; j <= k; ++j) s += run.R.at(ii, j) * v[j];
+    v[ii] = -s / run.R.at(ii, ii);
+    if (!std::isfinite(v[ii])) return {};
+  }
+  Vec<double> out = Vec<double>::Zero(static_cast<Eigen::Index>(run.R.n));
+  for (std::size_t i = 0; i <= k; ++i) out(static_cast<Eigen::Index>(i)) = v[i];
+  return out;
+}
+
+}  // namespace
+
+std::string floating_environment_problem() {
+  if (std::fegetround() != FE_TONEAREST) return "the floating-point rounding mode is not round-to-nearest";
+  volatile double smallest_normal = DBL_MIN;
+  volatile double half = smallest_normal / 2;  // subnormal, 0 under flush-to-zero
+  volatile double back = half * 2;             // DBL_MIN, 0 under denormals-are-zero
+  if (half == 0.0 || back != DBL_MIN) return "subnormal numbers are flushed to zero (FTZ/DAZ)";
+  return contraction_problem();
+}
+
+PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
+  PsdFilterResult out;
+  const Eigen::Index N = M.rows();
+  if (N != M.cols()) {
+    out.reason = "not square";
+    return out;
+  }
+  if (N == 0) {
+    out.proved_pd = true;
+    out.reason = "empty matrix";
+    return out;
+  }
+  if (std::string p = floating_environment_problem(); !p.empty()) {
+    out.reason = "filter skipped: " + p;
+    return out;
+  }
+  const std::size_t n = static_cast<std::size_t>(N);
+
+  // A = fl(M), upper triangle; maxdiag, tr(A) exactly, max |A_ij|.
+  UpperMatrix A;
+  A.n = n;
+  A.a.assign(n * n, 0.0);
+  double maxdiag = 0, maxabs = 0;
+  Rational trace(0);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i; j < n; ++j) {
+      const double x = nearest_double(M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+      if (!std::isfinite(x)) {
+        out.reason = "an entry is outside the double range";
+        return out;
+      }
+      A.at(i, j) = x;
+      maxabs = std::max(maxabs, std::fabs(x));
+    }
+    const double d = A.at(i, i);
+    if (d < 0) {
+      out.reason = "negative diagonal entry at row " + std::to_string(i);
+      out.failed_row = static_cast<long>(i);
+      Vec<double> v = Vec<double>::Zero(N);
+      v(static_cast<Eigen::Index>(i)) = 1;
+      out.negative_direction = v;
+      out.candidate_reason = "negative diagonal entry";
+      return out;
+    }
+    maxdiag = std::max(maxdiag, d);
+    trace += Rational(d);  // exact: every double is a dyadic rational
+  }
+
+  // The constants of the theorem, exactly.
+  const Rational u = pow2(-53), eta = pow2(-1074), Nq(static_cast<long>(N));
+  const Rational two_n1 = Rational(2) * (Nq + Rational(1));
+  if (!(Rational(2) * two_n1 * u < Rational(1))) {  // 4(N+1)u < 1
+    out.reason = "matrix too large for the error bound";
+    return out;
+  }
+  const Rational gamma = two_n1 * u / (Rational(1) - two_n1 * u);  // γ_{2(N+1)}
+  const Rational c = gamma / Rational(2) * trace + Rational(4) * eta * Nq * (two_n1 + Rational(maxdiag));
+  const Rational r = Rational(2) * u * Rational(maxabs) + Rational(2) * eta;
+  const Rational shift = c + Nq * r;
+  out.shift = nearest_double(shift);
+
+  UpperMatrix At = A;
+  for (std::size_t i = 0; i < n; ++i) At.at(i, i) = round_down(Rational(A.at(i, i)) - shift);
+
+  CholeskyRun shifted = floating_cholesky(At);
+  std::ostringstream why;
+  if (shifted.completed) {
+    why << "floating Cholesky of fl(M) - s*I succeeded with s = " << out.shift
+        << " (Rump 2006, Cor. 2.4/2.7: every X with |X - fl(M)| <= r entrywise is PD)";
+    out.proved_pd = true;
+    out.reason = why.str();
+    return out;
+  }
+  why << "floating Cholesky of fl(M) - s*I (s = " << out.shift << ") stopped at row " << shifted.failed_step;
+
+  // Not proved. Look for a candidate direction with the unshifted matrix.
+  CholeskyRun plain = floating_cholesky(A);
+  if (!plain.completed) {
+    out.failed_row = static_cast<long>(plain.failed_step);
+    out.negative_direction = negative_direction_from(plain);
+    if (out.negative_direction.size() > 0) out.candidate_reason = "floating Cholesky of fl(M) met a pivot <= 0";
+    why << "; unshifted Cholesky stopped at row " << plain.failed_step;
+  } else {
+    why << "; unshifted Cholesky succeeded (smallest eigenvalue too close to 0 to prove)";
+  }
+  out.reason = why.str();
+  return out;
+}
+
+}  // namespace lpvid
