@@ -2,6 +2,8 @@
 //
 //   lpvid-verify psd M.txt [--exact-only] [--threads N]
 //       PD / PSD (exit 0), NOT_PSD (exit 1), bad input (exit 2).
+//   lpvid-verify certificate C.json
+//       consistent (exit 0), invalid: <reason> (exit 1), unreadable (exit 2).
 //
 // Each subcommand is registered by one add_*_subcommand function below and
 // run by the dispatch in main(). Usage errors exit with 2 (like bad input).
@@ -11,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "verify/certificate_check.h"
 #include "verify/psd_command.h"
 
 namespace {
@@ -32,12 +35,16 @@ CLI::App* add_psd_subcommand(CLI::App& app, PsdArgs& args) {
   return psd;
 }
 
-// TODO(certificate): `lpvid-verify certificate C.json` (SPEC §8: exit 0 and
-// `consistent` only if the certificate holds exactly, exit 1 and
-// `invalid: <reason>` otherwise, exit 2 on unreadable input) goes here:
-//   struct CertificateArgs { std::string file; ... };
-//   CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args);
-// and one more branch in the dispatch in main().
+struct CertificateArgs {
+  std::string file;
+};
+
+CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
+  CLI::App* c = app.add_subcommand("certificate", "Check an lpvid certificate exactly, from the data text to the PSD decision");
+  c->add_option("file", args.file, "certificate (lpvid-certificate/1 JSON)")->required();
+  c->footer("Exit status: 0 consistent, 1 invalid (with the reason), 2 unreadable input.");
+  return c;
+}
 
 }  // namespace
 
@@ -47,7 +54,8 @@ int main(int argc, char** argv) {
 
   PsdArgs psd_args;
   CLI::App* psd = add_psd_subcommand(app, psd_args);
-  // Register further subcommands here (see TODO(certificate) above).
+  CertificateArgs certificate_args;
+  CLI::App* certificate = add_certificate_subcommand(app, certificate_args);
 
   try {
     app.parse(argc, argv);
@@ -58,7 +66,7 @@ int main(int argc, char** argv) {
 
   // Dispatch: one branch per subcommand.
   if (psd->parsed()) return lpvid::run_psd_command(psd_args.file, std::cout, std::cerr, psd_args.options);
-  // if (certificate->parsed()) return lpvid::run_certificate_command(...);
+  if (certificate->parsed()) return lpvid::run_certificate_command(certificate_args.file, std::cout, std::cerr);
 
   std::cerr << "lpvid-verify: no subcommand\n";
   return lpvid::kPsdExitBadInput;
