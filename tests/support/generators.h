@@ -7,4 +7,5 @@
 #include "support/gen_numbers.h"
 #include "support/gen_models.h"
 #include "support/gen_files.h"
+#include "support/gen_lmi.h"
 #include "support/gen_matrices.h"
