@@ -1,0 +1,133 @@
+// Identification benchmark (issue 3): time of one relaxation solve of
+// Theorem 3.1 (identify, single step) and of the certification of the
+// identified model (Δ-form re-solve + exact check), for SISO and 2×2 LPV
+// systems at several n, per backend. Prints a table; not a test.
+// Usage: identify_bench [max_n=100] [max_taps=32] [backends=csdp,sdpa]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/number_text.h"
+#include "data/csv_writer.h"
+#include "examples/random_stream.h"
+#include "identify/certify.h"
+#include "identify/identify.h"
+#include "model/simulate.h"
+
+using namespace lpvid;
+
+namespace {
+
+Rational dec(double x) { return round_to_digits(x, 6); }
+
+/// A stable 2-state LPV system with ny = nu = m, scheduling rho1, its data
+/// (exact decimals, noise RMS 0.05) and an initial model lacking a rho1 term
+/// in C; correction basis {1, rho1}.
+void make_case(int m, int n, LpvModel<Rational>* initial, Experiment<Rational>* exp) {
+  RandomStream rng(7 + static_cast<uint64_t>(m) * 1000 + static_cast<uint64_t>(n));
+  LpvModel<Rational> t;
+  t.nx = 2;
+  t.nu = t.ny = m;
+  t.scheduling = {"rho1"};
+  for (int i = 0; i < m; ++i) {
+    t.columns.u.push_back("u" + std::to_string(i + 1));
+    t.columns.y.push_back("y" + std::to_string(i + 1));
+  }
+  t.columns.rho = {"rho1"};
+  Mat<Rational> A(2, 2), A1(2, 2), B(2, m), C(m, 2), C1(m, 2);
+  A << dec(0), dec(1), dec(-0.5), dec(1.2);
+  A1 << dec(0), dec(0), dec(0.1), dec(0);
+  for (int i = 0; i < m; ++i) {
+    B(0, i) = dec(i == 0 ? 0.0 : 0.5);
+    B(1, i) = dec(1.0);
+    C(i, 0) = dec(1.0);
+    C(i, 1) = dec(0.5 * (i + 1));
+    C1(i, 0) = dec(0.3);
+    C1(i, 1) = dec(0.0);
+  }
+  t.A = ParamMatrix<Rational>(2, 2);
+  t.A.add(Monomial{{0}}, A);
+  t.A.add(Monomial{{1}}, A1);
+  t.B = ParamMatrix<Rational>(2, m);
+  t.B.add(Monomial{{0}}, B);
+  t.C = ParamMatrix<Rational>(m, 2);
+  t.C.add(Monomial{{0}}, C);
+  t.D = ParamMatrix<Rational>(m, m);
+  t.x0 = Vec<Rational>::Zero(2);
+  *initial = t;
+  initial->correction.basis = {Monomial{{0}}, Monomial{{1}}};
+  initial->correction.A.assign(2, Mat<Rational>::Zero(2, 2));
+  initial->correction.B.assign(2, Mat<Rational>::Zero(2, m));
+  t.C.add(Monomial{{1}}, C1);
+  exp->u = Mat<Rational>(n, m);
+  exp->rho = Mat<Rational>(n, 1);
+  for (int k = 0; k < n; ++k) {
+    for (int i = 0; i < m; ++i) exp->u(k, i) = dec(rng.normal());
+    exp->rho(k, 0) = dec(rng.uniform());
+  }
+  exp->y = Mat<Rational>::Zero(n, m);
+  const Simulation<Rational> s = simulate(t, *exp);
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < m; ++i) exp->y(k, i) = round_to_digits(nearest_double(s.yhat(k, i)) + 0.05 * rng.normal(), 10);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int max_n = argc > 1 ? std::atoi(argv[1]) : 100;
+  const long max_taps = argc > 2 ? std::atol(argv[2]) : 32;
+  std::vector<std::string> backends = {"csdp", "sdpa"};
+  if (argc > 3) {
+    backends.clear();
+    std::stringstream ss(argv[3]);
+    for (std::string b; std::getline(ss, b, ',');) backends.push_back(b);
+  }
+  const auto dir = std::filesystem::temp_directory_path() / "lpvid_identify_bench";
+  std::filesystem::create_directories(dir);
+  std::printf("Theorem 3.1, one relaxation step (w form), then certification (Delta form, <= %ld taps, exact check)\n",
+              max_taps);
+  std::printf("%-5s %5s %-6s | %9s %-18s | %9s %9s %-8s | %9s %9s\n", "sys", "n", "solver", "ident s", "status",
+              "cert s", "verify s", "verified", "delta", "dmax");
+  for (int m : {1, 2})
+    for (int n : {50, 100, 200, 400}) {
+      if (n > max_n) continue;
+      LpvModel<Rational> mq;
+      Experiment<Rational> eq;
+      make_case(m, n, &mq, &eq);
+      const std::string data = (dir / ("case" + std::to_string(m) + "_" + std::to_string(n) + ".csv")).string();
+      std::vector<TextColumn> cols;
+      for (int i = 0; i < m; ++i) cols.push_back({mq.columns.u[static_cast<size_t>(i)], column_text(eq.u, i)});
+      for (int i = 0; i < m; ++i) cols.push_back({mq.columns.y[static_cast<size_t>(i)], column_text(eq.y, i)});
+      cols.push_back({"rho1", column_text(eq.rho, 0)});
+      write_csv(data, cols);
+      const LpvModel<double> md = convert_model<double>(mq);
+      Experiment<double> ed;
+      ed.u = eq.u.unaryExpr([](const Rational& q) { return nearest_double(q); });
+      ed.y = eq.y.unaryExpr([](const Rational& q) { return nearest_double(q); });
+      ed.rho = eq.rho.unaryExpr([](const Rational& q) { return nearest_double(q); });
+      for (const std::string& b : backends) {
+        auto solver = make_solver(b);
+        const auto t0 = std::chrono::steady_clock::now();
+        const IdentifyResult res = identify(md, ed, IdentifyOptions{}, *solver);
+        const double ident = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        Vec<Rational> p(res.p.size());
+        for (Eigen::Index i = 0; i < p.size(); ++i) p(i) = round_to_digits(res.p(i), 12);
+        CertifyOptions co;
+        co.max_taps = max_taps;
+        co.certificate_path = (dir / "bench.cert.json").string();
+        co.data_path = data;
+        const auto t1 = std::chrono::steady_clock::now();
+        const CertifiedBounds cb = certify_fixed_model(apply_parameters(mq, res.layout, p), eq, co, *solver);
+        const double cert = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+        std::printf("%-5s %5d %-6s | %9.2f %-18s | %9.2f %9.3f %-8s | %9.4g %9.4g\n", m == 1 ? "SISO" : "2x2", n,
+                    b.c_str(), ident, to_string(res.status), cert, cb.verify_seconds, cb.verified ? "true" : "false",
+                    cb.verified ? cb.delta : NAN, cb.verified ? cb.dmax : NAN);
+        std::fflush(stdout);
+      }
+    }
+  return 0;
+}
