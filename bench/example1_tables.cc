@@ -24,20 +24,6 @@ using namespace lpvid;
 
 namespace {
 
-Experiment<double> to_double(const Experiment<Rational>& e) {
-  auto c = [](const Mat<Rational>& m) {
-    Mat<double> d(m.rows(), m.cols());
-    for (Eigen::Index i = 0; i < m.rows(); ++i)
-      for (Eigen::Index j = 0; j < m.cols(); ++j) d(i, j) = nearest_double(m(i, j));
-    return d;
-  };
-  Experiment<double> o;
-  o.u = c(e.u);
-  o.y = c(e.y);
-  o.rho = c(e.rho);
-  return o;
-}
-
 struct Row {
   const char* name;
   std::vector<Monomial> basis;
@@ -69,7 +55,7 @@ int main(int argc, char** argv) {
     eo.seed = seed;
     eo.noise_variance = noisy ? 0.1 : 0.0;
     const Experiment<Rational> eq = example1_experiment(eo);
-    const Experiment<double> ed = to_double(eq);
+    const Experiment<double> ed = nearest_double(eq);
     const std::string data = (dir / (noisy ? "noisy.csv" : "clean.csv")).string();
     write_csv(data, {{"u1", column_text(eq.u, 0)}, {"u2", column_text(eq.u, 1)}, {"y1", column_text(eq.y, 0)},
                      {"y2", column_text(eq.y, 1)}, {"rho1", column_text(eq.rho, 0)}, {"rho2", column_text(eq.rho, 1)}});

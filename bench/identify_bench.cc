@@ -105,10 +105,7 @@ int main(int argc, char** argv) {
       cols.push_back({"rho1", column_text(eq.rho, 0)});
       write_csv(data, cols);
       const LpvModel<double> md = convert_model<double>(mq);
-      Experiment<double> ed;
-      ed.u = eq.u.unaryExpr([](const Rational& q) { return nearest_double(q); });
-      ed.y = eq.y.unaryExpr([](const Rational& q) { return nearest_double(q); });
-      ed.rho = eq.rho.unaryExpr([](const Rational& q) { return nearest_double(q); });
+      const Experiment<double> ed = nearest_double(eq);
       for (const std::string& b : backends) {
         auto solver = make_solver(b);
         const auto t0 = std::chrono::steady_clock::now();

@@ -165,6 +165,13 @@ double nearest_double(const Rational& q) {
   return x;
 }
 
+Mat<double> nearest_double(const Mat<Rational>& m) {
+  Mat<double> d(m.rows(), m.cols());
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j) d(i, j) = nearest_double(m(i, j));
+  return d;
+}
+
 std::string rational_to_text(const Rational& q) {
   char* str = mpq_get_str(nullptr, 10, q.mpq());
   std::string out(str);

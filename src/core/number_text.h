@@ -39,6 +39,9 @@ inline Rational number_from_text<Rational>(std::string_view text) { return ratio
 /// CGAL::to_double (which truncates), this is correctly rounded.
 double nearest_double(const Rational& q);
 
+/// Entrywise nearest_double of a rational matrix.
+Mat<double> nearest_double(const Mat<Rational>& m);
+
 /// Exact text of a rational: "p/q", or "p" when q = 1. Round-trips exactly.
 std::string rational_to_text(const Rational& q);
 

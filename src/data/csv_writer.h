@@ -19,13 +19,9 @@ struct TextColumn {
 void write_csv(const std::string& path, const std::vector<TextColumn>& columns);
 std::string csv_text(const std::vector<TextColumn>& columns);
 
-/// Renders column j of m: exact "p/q"-free decimal when the rational has a
-/// terminating decimal expansion, else p/q (Rational); shortest round-trip
-/// text (double).
+/// Renders column j of m: exact_decimal_or_fraction (Rational: a decimal when
+/// it terminates, else p/q); shortest round-trip text (double).
 std::vector<std::string> column_text(const Mat<Rational>& m, Eigen::Index j);
 std::vector<std::string> column_text(const Mat<double>& m, Eigen::Index j);
-
-/// Exact decimal text of q if its denominator is 2^a 5^b, else "p/q".
-std::string rational_to_decimal_text(const Rational& q);
 
 }  // namespace lpvid

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/number_text.h"
 #include "core/scalar.h"
 
 namespace lpvid {
@@ -27,5 +28,16 @@ struct Experiment {
   Eigen::Index ny() const { return y.cols(); }
   Eigen::Index n_rho() const { return rho.cols(); }
 };
+
+/// The same experiment with every number rounded to the nearest double
+/// (the floating path reads what the exact path reads).
+inline Experiment<double> nearest_double(const Experiment<Rational>& e) {
+  Experiment<double> d;
+  d.source = e.source;
+  d.u = nearest_double(e.u);
+  d.y = nearest_double(e.y);
+  d.rho = nearest_double(e.rho);
+  return d;
+}
 
 }  // namespace lpvid

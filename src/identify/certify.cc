@@ -19,13 +19,6 @@
 namespace lpvid {
 namespace {
 
-Mat<double> to_double(const Mat<Rational>& m) {
-  Mat<double> d(m.rows(), m.cols());
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    for (Eigen::Index j = 0; j < m.cols(); ++j) d(i, j) = nearest_double(m(i, j));
-  return d;
-}
-
 Rational pow10(int e) {
   Rational r(1);
   for (int i = 0; i < std::abs(e); ++i) r *= 10;
@@ -169,7 +162,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   BoundObjective obj = o.objective;
   if (obj.dmax_fixed()) obj.dmax *= 1.0 - 1e-7;
   if (obj.delta_fixed()) obj.delta *= 1.0 - 1e-7;
-  const DeltaFormSolution sol = solve_delta_form(to_double(sim.z), to_double(r), obj, solver, o.solver, o.max_taps);
+  const DeltaFormSolution sol = solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, o.solver, o.max_taps);
   out.solver_status = to_string(sol.solve.status);
   out.solve_seconds = sol.solve.seconds;
   out.taps = sol.taps.rows();
@@ -191,9 +184,19 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   c.horizon = sol.horizon;
   c.taps = Mat<Rational>(sol.taps.rows(), sol.taps.cols());
   Mat<double> taps_d(sol.taps.rows(), sol.taps.cols());
+  // A fixed δ must hold exactly, but the solver meets ‖T_Δ‖ ≤ δ only up to its
+  // feasibility tolerance, which is absolute in its scaled units: for a tiny or
+  // zero δ the taps can exceed δ by orders of magnitude. Shrink them onto
+  // δ·(1 − 1e-8) (to zero for δ = 0) before rounding.
+  double shrink = 1.0;
+  if (o.objective.delta_fixed()) {
+    const double norm = std::sqrt(toeplitz_norm2(sol.taps, sol.horizon, ny, nz));
+    const double cap = o.objective.delta * (1.0 - 1e-8);
+    if (norm > cap) shrink = cap / norm;
+  }
   for (Eigen::Index i = 0; i < sol.taps.rows(); ++i)
     for (Eigen::Index j = 0; j < sol.taps.cols(); ++j) {
-      c.taps(i, j) = round_to_digits(sol.taps(i, j), o.digits);
+      c.taps(i, j) = round_to_digits(shrink * sol.taps(i, j), o.digits);
       taps_d(i, j) = nearest_double(c.taps(i, j));
     }
 
@@ -219,9 +222,9 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
   const Eigen::Index n = exp.n(), ny = model.ny;
   const Mat<Rational> Tz = T_z_paper(model, exp);
   AffineSignals sig;
-  sig.zb = to_double(sim.z);
-  sig.rb = to_double(r);
-  sig.Tz_paper = to_double(Tz);
+  sig.zb = nearest_double(sim.z);
+  sig.rb = nearest_double(r);
+  sig.Tz_paper = nearest_double(Tz);
   BoundObjective obj = o.objective;
   if (obj.dmax_fixed()) obj.dmax *= 1.0 - 1e-7;
   if (obj.delta_fixed()) obj.delta *= 1.0 - 1e-7;
@@ -237,7 +240,10 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
   c.mode = ToeplitzMode::kPaper;
   c.form = CertificateForm::kW;
   c.w = Mat<Rational>::Zero(n, ny);
-  for (Eigen::Index k = sol.leading_zeros; k < n; ++k)
+  // A fixed δ = 0 forces T_w = 0: w = 0 exactly (the solver's w is only as
+  // small as its tolerance, which the exact check of δ² = 0 rejects).
+  const bool zero_w = o.objective.delta_fixed() && o.objective.delta == 0.0;
+  for (Eigen::Index k = zero_w ? n : sol.leading_zeros; k < n; ++k)
     for (Eigen::Index i = 0; i < ny; ++i) c.w(k, i) = round_to_digits(sol.w(k, i), o.digits);
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - c.w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
   out.delta2_solver = sol.delta2;
