@@ -14,5 +14,7 @@ Runner add_identify_command(CLI::App& app);
 Runner add_invalidate_command(CLI::App& app);
 Runner add_simulate_command(CLI::App& app);
 Runner add_generate_command(CLI::App& app);
+Runner add_select_basis_command(CLI::App& app);
+Runner add_tradeoff_command(CLI::App& app);
 
 }  // namespace lpvid::cli

@@ -7,6 +7,7 @@
 #include "core/input_error.h"
 #include "data/csv_writer.h"
 #include "examples/paper_example1.h"
+#include "examples/paper_example2.h"
 #include "model/model_file.h"
 
 namespace lpvid::cli {
@@ -20,9 +21,31 @@ struct GenerateArgs {
   std::string out, model_out, truth_out;
 };
 
+int run_generate_example2(const GenerateArgs& a) {
+  Example2Options o;
+  o.n = a.n;
+  o.noise_variance = a.noise_variance;
+  o.seed = a.seed;
+  const Experiment<Rational> e = example2_experiment(o);
+  write_csv(a.out, {{"u1", column_text(e.u, 0)}, {"y1", column_text(e.y, 0)}, {"rho1", column_text(e.rho, 0)}});
+  std::cout << "wrote " << a.out << " (" << a.n << " samples, noise variance " << a.noise_variance << ", seed " << a.seed
+            << ")\n";
+  if (!a.model_out.empty()) {
+    write_model_file(a.model_out, example2_initial_model());
+    std::cout << "wrote " << a.model_out << " (initial model: the LPV part, offset basis 1, rho1, rho1^2 unknown)\n";
+  }
+  if (!a.truth_out.empty()) {
+    write_model_file(a.truth_out, example2_true_model());
+    std::cout << "wrote " << a.truth_out << " (the true system, offset 0.5 + 0.8 rho1 - 0.3 rho1^2)\n";
+  }
+  return 0;
+}
+
 int run_generate(const GenerateArgs& a) {
-  if (a.which != "example1") throw InputError("generate: unknown data set '" + a.which + "' (known: example1)");
+  if (a.which != "example1" && a.which != "example2")
+    throw InputError("generate: unknown data set '" + a.which + "' (known: example1, example2)");
   if (a.n < 2) throw InputError("generate: --n must be at least 2");
+  if (a.which == "example2") return run_generate_example2(a);
   Example1Options o;
   o.n = a.n;
   o.noise_variance = a.noise_variance;
@@ -49,8 +72,9 @@ int run_generate(const GenerateArgs& a) {
 
 Runner add_generate_command(CLI::App& app) {
   auto a = std::make_shared<GenerateArgs>();
-  CLI::App* cmd = app.add_subcommand("generate", "Write a data set with a known answer (the paper's Example 1)");
-  cmd->add_option("which", a->which, "data set: example1");
+  CLI::App* cmd = app.add_subcommand(
+      "generate", "Write a data set with a known answer (the paper's Example 1, or an Example 2 flavour with an offset)");
+  cmd->add_option("which", a->which, "data set: example1 or example2 (eq. 20: output offset Phi(rho))");
   cmd->add_option("--n", a->n, "samples (default 60)");
   cmd->add_option("--noise-variance", a->noise_variance, "variance of the white output noise (paper Table II: 0.1)");
   cmd->add_option("--seed", a->seed, "random seed (default 1)");

@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::vector<Runner> runners = {add_invalidate_command(app), add_identify_command(app), add_simulate_command(app),
                                  add_generate_command(app)};
+  runners.push_back(add_select_basis_command(app));
+  runners.push_back(add_tradeoff_command(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

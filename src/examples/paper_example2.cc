@@ -1,0 +1,116 @@
+#include "examples/paper_example2.h"
+
+#include <cmath>
+
+#include "core/number_text.h"
+#include "examples/random_stream.h"
+#include "model/simulate.h"
+
+namespace lpvid {
+namespace {
+
+Rational dec(const char* text) { return rational_from_text(text); }
+
+/// x rounded to `digits` decimals, exactly as a rational (as Example 1).
+Rational round_decimal(double x, int digits) {
+  const double scale = std::pow(10.0, digits);
+  const long long k = std::llround(x * scale);
+  return Rational(static_cast<long>(k)) / Rational(static_cast<long>(std::llround(scale)));
+}
+
+/// floor(q·10^digits + 1/2)/10^digits exactly (ties towards +∞), as Example 1.
+Rational round_rational(const Rational& q, int digits) {
+  Rational scale(1);
+  for (int i = 0; i < digits; ++i) scale *= 10;
+  const Rational s = q * scale;
+  mpz_t num, den, quo;
+  mpz_init_set(num, mpq_numref(s.mpq()));
+  mpz_init_set(den, mpq_denref(s.mpq()));
+  mpz_init(quo);
+  mpz_mul_ui(num, num, 2);
+  mpz_add(num, num, den);  // floor((2·num + den) / (2·den)) = floor(s + 1/2)
+  mpz_mul_ui(den, den, 2);
+  mpz_fdiv_q(quo, num, den);
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_z(r, quo);
+  Rational out(r);
+  mpq_clear(r);
+  mpz_clear(num);
+  mpz_clear(den);
+  mpz_clear(quo);
+  return out / scale;
+}
+
+Mat<Rational> mat(int rows, int cols, std::initializer_list<const char*> values) {
+  Mat<Rational> m(rows, cols);
+  auto it = values.begin();
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) m(i, j) = dec(*it++);
+  return m;
+}
+
+const Monomial kOne{{0}}, kRho{{1}}, kRho2{{2}};
+
+LpvModel<Rational> example2_skeleton() {
+  LpvModel<Rational> m;
+  m.nx = 2;
+  m.nu = m.ny = 1;
+  m.scheduling = {"rho1"};
+  m.columns = {{"u1"}, {"y1"}, {"rho1"}};
+  m.A = ParamMatrix<Rational>(2, 2);
+  m.A.add(kOne, mat(2, 2, {"0", "1", "-0.24", "0.9"}));
+  m.A.add(kRho, mat(2, 2, {"0", "0", "-0.1", "-0.4"}));
+  m.B = ParamMatrix<Rational>(2, 1);
+  m.B.add(kOne, mat(2, 1, {"0", "1"}));
+  m.C = ParamMatrix<Rational>(1, 2);
+  m.C.add(kOne, mat(1, 2, {"1", "0"}));
+  m.C.add(kRho, mat(1, 2, {"0.5", "0"}));
+  m.D = ParamMatrix<Rational>(1, 1);
+  m.x0 = Vec<Rational>::Zero(2);
+  m.uncertainty.structure = UncertaintyStructure::kMultiplicative;
+  m.uncertainty.weight = dec("0.01");
+  m.offset.basis = {kOne, kRho, kRho2};
+  return m;
+}
+
+}  // namespace
+
+LpvModel<Rational> example2_true_model() {
+  LpvModel<Rational> m = example2_skeleton();
+  m.offset.values = {Vec<Rational>::Constant(1, dec("0.5")), Vec<Rational>::Constant(1, dec("0.8")),
+                     Vec<Rational>::Constant(1, dec("-0.3"))};
+  return m;
+}
+
+LpvModel<Rational> example2_initial_model() { return example2_skeleton(); }
+
+Experiment<Rational> example2_experiment(const Example2Options& o) {
+  RandomStream rng(o.seed);
+  const int n = o.n;
+  Experiment<Rational> e;
+  e.source = "example2";
+  e.u = Mat<Rational>::Zero(n, 1);
+  e.rho = Mat<Rational>::Zero(n, 1);
+  int k = 0;
+  while (k < n) {
+    const int hold = rng.uniform_int(1, 5);
+    const Rational level = rng.uniform() < 0.5 ? dec("-0.5") : dec("0.5");
+    for (int j = 0; j < hold && k < n; ++j, ++k) e.u(k, 0) = level;
+  }
+  for (int i = 0; i < n; ++i) {
+    const double t = n > 1 ? static_cast<double>(i) / (n - 1) : 0.0;
+    e.rho(i, 0) = round_decimal(0.5 - 0.45 * std::cos(6.283185307179586 * t), 4);
+  }
+  e.y = Mat<Rational>::Zero(n, 1);
+  const Simulation<Rational> sim = simulate(example2_true_model(), e);
+  const double sigma = std::sqrt(o.noise_variance);
+  for (int i = 0; i < n; ++i) {
+    Rational y = round_rational(sim.yhat(i, 0) + sim.offset(i, 0), 10);
+    if (sigma > 0) y += round_decimal(sigma * rng.normal(), 6);
+    e.y(i, 0) = y;
+  }
+  return e;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,323 @@
+#include "identify/basis_selection.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "core/input_error.h"
+#include "identify/identify.h"
+
+namespace lpvid {
+namespace {
+
+/// All exponent vectors of length n with total degree ≤ d.
+void enumerate(int n, int d, std::vector<int>& cur, std::vector<std::vector<int>>& out) {
+  if (static_cast<int>(cur.size()) == n) {
+    out.push_back(cur);
+    return;
+  }
+  for (int p = 0; p <= d; ++p) {
+    cur.push_back(p);
+    enumerate(n, d - p, cur, out);
+    cur.pop_back();
+  }
+}
+
+int degree_of(const std::vector<int>& e) {
+  int s = 0;
+  for (int p : e) s += p;
+  return s;
+}
+
+bool multilinear(const std::vector<int>& e) {
+  return std::all_of(e.begin(), e.end(), [](int p) { return p <= 1; });
+}
+
+bool pure_power(const std::vector<int>& e) {
+  return std::count_if(e.begin(), e.end(), [](int p) { return p > 0; }) == 1;
+}
+
+/// Stage of the growth order: 0 constant, 1 affine, 2 multilinear, 3 the rest.
+int stage(const std::vector<int>& e) {
+  const int d = degree_of(e);
+  if (d <= 1) return d;
+  return multilinear(e) ? 2 : 3;
+}
+
+using BasisKey = std::vector<std::vector<int>>;
+
+BasisKey key_of(const std::vector<Monomial>& basis) {
+  BasisKey k;
+  for (const Monomial& m : basis) k.push_back(m.powers);
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+bool subset(const std::vector<Monomial>& a, const std::vector<Monomial>& b) {
+  for (const Monomial& m : a)
+    if (std::find(b.begin(), b.end(), m) == b.end()) return false;
+  return true;
+}
+
+int unknown_offset_count(const LpvModel<double>& m) {
+  return m.offset.values.empty() ? static_cast<int>(m.offset.basis.size()) : 0;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+class Selector {
+ public:
+  Selector(const LpvModel<Rational>& mq, const LpvModel<double>& md, const Experiment<Rational>& eq,
+           const Experiment<double>& ed, const BasisSelectionOptions& o, SdpSolver& s)
+      : mq_(mq), md_(md), eq_(eq), ed_(ed), o_(o), solver_(s) {}
+
+  BasisSelectionResult run() {
+    BasisSelectionResult r;
+    r.order = basis_growth_order(md_.n_rho(), o_.max_degree);
+    // 0. S_I alone (Theorem 2.1; with its offset identified, if unknown).
+    std::vector<Monomial> basis;
+    const BasisStep& s0 = evaluate(basis, "initial");
+    int final_step = s0.verdict == BasisVerdict::kConsistent ? s0.index : -1;
+    // 1. Grow, one monomial at a time.
+    for (size_t i = 0; final_step < 0 && i < r.order.size(); ++i) {
+      basis.push_back(r.order[i]);
+      const BasisStep& s = evaluate(basis, "grow");
+      if (s.verdict == BasisVerdict::kConsistent) final_step = s.index;
+    }
+    // 2. Remove, most recent term first, one pass.
+    if (final_step >= 0 && o_.prune && !basis.empty()) {
+      const std::vector<Monomial> grown = basis;
+      for (auto t = grown.rbegin(); t != grown.rend(); ++t) {
+        std::vector<Monomial> smaller;
+        for (const Monomial& m : basis)
+          if (!(m == *t)) smaller.push_back(m);
+        const BasisStep& s = evaluate(smaller, "remove");
+        if (s.kept) {
+          basis = smaller;
+          final_step = s.index;
+        }
+      }
+    }
+    r.steps = steps_;
+    r.found = final_step >= 0;
+    r.final_step = final_step;
+    if (r.found) r.basis = steps_[static_cast<size_t>(final_step)].basis;
+    return r;
+  }
+
+ private:
+  const BasisStep& evaluate(const std::vector<Monomial>& basis, const std::string& phase) {
+    BasisStep s;
+    s.index = static_cast<int>(steps_.size());
+    s.phase = phase;
+    s.basis = basis;
+    s.basis_text = lpvid::basis_text(basis, md_.scheduling);
+    const BasisKey key = key_of(basis);
+    if (auto it = seen_.find(key); it != seen_.end()) {
+      const BasisStep& prev = steps_[static_cast<size_t>(it->second)];
+      s.verdict = prev.verdict;
+      s.bounds = prev.bounds;
+      s.certificate = prev.certificate;
+      s.dmax_relaxation = prev.dmax_relaxation;
+      s.relaxation = prev.relaxation;
+      s.layout = prev.layout;
+      s.p = prev.p;
+      s.same_as = prev.index;
+      s.detail = "same basis as step " + std::to_string(prev.index) + " (not solved again)";
+    } else {
+      const auto t0 = std::chrono::steady_clock::now();
+      solve(s);
+      s.seconds = seconds_since(t0);
+      seen_[key] = s.index;
+    }
+    s.kept = phase == "remove" && s.verdict == BasisVerdict::kConsistent;
+    steps_.push_back(s);
+    if (o_.on_step) o_.on_step(steps_.back());
+    return steps_.back();
+  }
+
+  CertifyOptions certify_options(int index) const {
+    CertifyOptions co = o_.certify;
+    co.objective.kind = BoundObjective::Kind::kFeasibility;
+    co.objective.delta = o_.delta;
+    co.objective.dmax = o_.dmax;
+    co.fixed_delta_text = o_.delta_text;
+    co.fixed_dmax_text = o_.dmax_text;
+    co.solver = o_.solver;
+    co.certificate_path = o_.certificate_stem + ".step" + std::to_string(index) + ".cert.json";
+    return co;
+  }
+
+  /// Sets the verdict from a certification of a fixed model.
+  void judge(BasisStep& s, const CertifiedBounds& b, const CertifyOptions& co, const std::string& what) {
+    s.bounds = b;
+    ++s.solves;
+    if (b.verified) {
+      s.verdict = BasisVerdict::kConsistent;
+      s.certificate = co.certificate_path;
+      s.detail = what + " is consistent at the given bounds: certificate verified exactly";
+    } else if (b.solver_status == "primal_infeasible") {
+      s.verdict = BasisVerdict::kInvalidated;
+      s.detail = what + " is invalidated at the given bounds: the Theorem 2.1 LMI is infeasible (solver verdict, "
+                        "not exactly certified)";
+    } else {
+      s.verdict = BasisVerdict::kUnverified;
+      s.detail = what + ": not verified: " + b.reason;
+    }
+  }
+
+  void solve(BasisStep& s) {
+    const LpvModel<Rational> mq = with_correction_basis(mq_, s.basis);
+    const LpvModel<double> md = with_correction_basis(md_, s.basis);
+    const CertifyOptions co = certify_options(s.index);
+    const bool unknowns = !s.basis.empty() || (o_.unknowns.offset && unknown_offset_count(md) > 0) || o_.unknowns.x0;
+    if (!unknowns) {
+      s.relaxation = "none (fixed model: Theorem 2.1)";
+      judge(s, certify_fixed_model(mq, eq_, co, solver_), co, "S_I");
+      return;
+    }
+    IdentifyOptions io;
+    io.unknowns = o_.unknowns;
+    io.unknowns.correction = true;
+    io.solver = o_.solver;
+    if (o_.iterate) {
+      io.objective.kind = BoundObjective::Kind::kMinDmax;
+      io.objective.delta = o_.delta;
+      io.iterate = true;
+      io.max_iterations = o_.max_iterations;
+      io.rel_tol = o_.rel_tol;
+    } else {
+      io.objective.kind = BoundObjective::Kind::kFeasibility;
+      io.objective.delta = o_.delta;
+      io.objective.dmax = o_.dmax;
+    }
+    const IdentifyResult res = identify(md, ed_, io, solver_);
+    s.solves = static_cast<int>(res.iterates.size());
+    s.relaxation = res.relaxation;
+    const std::string what = s.basis.empty() ? "S_I with the identified offset" : "the identified model";
+    if (res.iterates.empty() || !has_solution(res.iterates.front().status)) {  // no model at all
+      if (res.status == SolveStatus::kPrimalInfeasible) {
+        s.verdict = BasisVerdict::kInvalidated;
+        s.detail = "the relaxation of Theorem 3.1 (" + res.relaxation +
+                   ") is infeasible at the given bounds: no consistent model found (solver verdict, not exactly "
+                   "certified; the relaxation is conservative)";
+      } else {
+        s.verdict = BasisVerdict::kUnverified;
+        s.detail = std::string("the identification solve ended with status ") + to_string(res.status) +
+                   (res.message.empty() ? "" : ": " + res.message);
+      }
+      return;
+    }
+    if (o_.iterate) {
+      double best = -1;
+      for (const IterateRecord& it : res.iterates)
+        if (has_solution(it.status) && (best < 0 || it.dmax2 < best * best)) best = std::sqrt(std::max(0.0, it.dmax2));
+      s.dmax_relaxation = best;
+    }
+    Vec<Rational> pq(res.p.size());
+    s.p = Vec<double>(res.p.size());
+    for (Eigen::Index i = 0; i < res.p.size(); ++i) {
+      pq(i) = round_to_digits(res.p(i), 12);
+      s.p(i) = CGAL::to_double(pq(i));
+    }
+    s.layout = res.layout;
+    const LpvModel<Rational> fixed = apply_parameters(mq, res.layout, pq);
+    judge(s, certify_fixed_model(fixed, eq_, co, solver_), co, what);
+  }
+
+  const LpvModel<Rational>& mq_;
+  const LpvModel<double>& md_;
+  const Experiment<Rational>& eq_;
+  const Experiment<double>& ed_;
+  const BasisSelectionOptions& o_;
+  SdpSolver& solver_;
+  std::vector<BasisStep> steps_;
+  std::map<BasisKey, int> seen_;
+};
+
+}  // namespace
+
+std::vector<Monomial> basis_growth_order(int n_rho, int max_degree) {
+  if (n_rho < 0 || max_degree < 0) throw std::invalid_argument("basis_growth_order: negative size or degree");
+  std::vector<std::vector<int>> all;
+  std::vector<int> cur;
+  enumerate(n_rho, max_degree, cur, all);
+  std::stable_sort(all.begin(), all.end(), [](const std::vector<int>& a, const std::vector<int>& b) {
+    const int sa = stage(a), sb = stage(b);
+    if (sa != sb) return sa < sb;
+    const int da = degree_of(a), db = degree_of(b);
+    if (da != db) return da < db;
+    if (sa == 3 && pure_power(a) != pure_power(b)) return pure_power(a);
+    return a > b;  // descending lexicographic: rho1 before rho2, rho1*rho2 before rho1*rho3
+  });
+  std::vector<Monomial> out;
+  for (auto& e : all) out.push_back(Monomial{e});
+  return out;
+}
+
+template <typename T>
+LpvModel<T> with_correction_basis(const LpvModel<T>& model, const std::vector<Monomial>& basis) {
+  LpvModel<T> m = model;
+  Correction<T> c;
+  const Correction<T>& old = model.correction;
+  for (const Monomial& f : basis) {
+    Mat<T> A = Mat<T>::Zero(model.nx, model.nx), B = Mat<T>::Zero(model.nx, model.nu);
+    for (size_t i = 0; i < old.basis.size(); ++i)
+      if (old.basis[i] == f) {
+        if (i < old.A.size() && old.A[i].size() != 0) A = old.A[i];
+        if (i < old.B.size() && old.B[i].size() != 0) B = old.B[i];
+      }
+    c.basis.push_back(f);
+    c.A.push_back(A);
+    c.B.push_back(B);
+  }
+  m.correction = c;
+  return m;
+}
+
+template LpvModel<double> with_correction_basis(const LpvModel<double>&, const std::vector<Monomial>&);
+template LpvModel<Rational> with_correction_basis(const LpvModel<Rational>&, const std::vector<Monomial>&);
+
+std::string basis_text(const std::vector<Monomial>& basis, const std::vector<std::string>& names) {
+  if (basis.empty()) return "(none)";
+  std::string out;
+  for (const Monomial& m : basis) out += (out.empty() ? "" : ", ") + m.text(names);
+  return out;
+}
+
+const char* to_string(BasisVerdict v) {
+  switch (v) {
+    case BasisVerdict::kConsistent: return "consistent";
+    case BasisVerdict::kInvalidated: return "invalidated";
+    case BasisVerdict::kUnverified: return "unverified";
+  }
+  return "unverified";
+}
+
+BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
+                                  const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
+                                  const BasisSelectionOptions& options, SdpSolver& solver) {
+  if (options.certify.data_path.empty())
+    throw InputError("select-basis: the data file path is needed for the certificates");
+  if (!(options.delta >= 0) || !(options.dmax >= 0) || !std::isfinite(options.delta) || !std::isfinite(options.dmax))
+    throw InputError("select-basis: delta and dmax must be finite and non-negative");
+  if (options.max_degree < 0 || options.max_degree > kMaxMonomialPower)
+    throw InputError("select-basis: --max-degree must be in 0.." + std::to_string(kMaxMonomialPower));
+  Selector sel(model_q, model_d, exp_q, exp_d, options, solver);
+  return sel.run();
+}
+
+std::string monotonicity_violation(const std::vector<BasisStep>& steps) {
+  for (const BasisStep& a : steps)
+    for (const BasisStep& b : steps)
+      if (a.verdict == BasisVerdict::kConsistent && b.verdict == BasisVerdict::kInvalidated && subset(a.basis, b.basis))
+        return "step " + std::to_string(a.index) + " {" + a.basis_text + "} is consistent but its superset step " +
+               std::to_string(b.index) + " {" + b.basis_text + "} is invalidated";
+  return "";
+}
+
+}  // namespace lpvid

@@ -1,0 +1,148 @@
+#pragma once
+/// Selection of the correction basis F^N: the algorithm of the paper's
+/// Appendix ("Practical implementation issues"), SPEC §5 last item.
+///
+///  0. Test S_I alone with Theorem 2.1 at the given δ, d_max (certified with
+///     BoundObjective kFeasibility: verified ⇒ consistent; the solver finds
+///     the LMI infeasible ⇒ invalidated, a solver verdict, not exactly
+///     certified). If the model declares an offset basis without values, φ
+///     is identified in this step too (Theorem 3.1 without correction is an
+///     LMI), so "S_I" means S_I with its best offset.
+///  1. Otherwise grow the correction basis ONE monomial at a time in the
+///     order of basis_growth_order() (the Appendix's F^1 ⊂ F^2 ⊂ …),
+///     identify with Theorem 3.1 at the given bounds, certify the identified
+///     (rounded) model at the same bounds, and stop at the first basis whose
+///     model is certified consistent.
+///  2. Then try removing terms one at a time ("gradually eliminate
+///     parameters", end of the Appendix), keeping a removal when the smaller
+///     basis is still certified consistent.
+///
+/// Choices where the paper is silent (documented here, the contract):
+///
+///  - Growth order (basis_growth_order): the constant 1 (LTI); then ρ1 … ρnρ
+///    (affine); then the multilinear products of distinct ρ's by increasing
+///    degree 2 … min(nρ, max_degree), lexicographic within a degree
+///    (ρ1ρ2, ρ1ρ3, …, ρ2ρ3, …; the Appendix lists F^{nρ+2} = {…, ρ1ρ2},
+///    ending with ρ1⋯ρnρ); then, degree by degree d = 2 … max_degree, the
+///    remaining monomials of degree d: first the pure powers ρ1^d … ρnρ^d,
+///    then the mixed ones (ρ1²ρ2, …) in descending lexicographic order of the
+///    exponents. Nothing above max_degree (total degree) is tried. For
+///    nρ = 2, max_degree = 2 this is 1, ρ1, ρ2, ρ1ρ2, ρ1², ρ2²: the bases of
+///    the paper's Tables I/II in order.
+///  - The fixed A_i, B_i of a candidate term are the ones the model file
+///    declares for that monomial in its correction section, zero otherwise
+///    (as in both of the paper's examples). The file's correction basis
+///    itself is ignored: the algorithm builds its own.
+///  - Identification per step. Without `iterate`: one solve of the paper's
+///    relaxation (linearised at S_I) with kFeasibility at the given δ, d_max;
+///    an infeasible relaxation is "invalidated" — the solver's verdict on the
+///    relaxation, which is conservative (it does not prove the class
+///    invalid, SPEC §9). With `iterate` (beyond the paper): kMinDmax at the
+///    given δ with re-linearisation until d_max stalls, then the best model
+///    is certified at the given bounds; "invalidated" then means the exact
+///    Theorem 2.1 LMI of that best model is infeasible at the given bounds
+///    (solver verdict). The kFeasibility relaxation at S_I is usually
+///    infeasible when the missing term is large and the bounds tight
+///    (Example 1: even the full basis is rejected at δ = 0.05, d_max = 0.01),
+///    so `iterate` is the useful mode there.
+///  - Every "consistent" is backed by a certificate that the exact verifier
+///    accepted (CertifiedBounds::verified), written to
+///    <certificate_stem>.step<k>.cert.json. A model that was found but not
+///    verified is "unverified" and never counts as consistent.
+///  - Removal order: the most recently added term first (highest degree
+///    first), one pass. One pass suffices if verdicts are monotone: if
+///    removing t from B failed, removing it from any B' ⊂ B fails too.
+///    A basis already evaluated (e.g. removing the last added term gives the
+///    previous F^k) is not solved again: the step says "same as step j".
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "data/experiment.h"
+#include "identify/affine_residual.h"
+#include "identify/certify.h"
+#include "model/lpv_model.h"
+#include "model/monomial.h"
+#include "solvers/sdp_solver.h"
+
+namespace lpvid {
+
+/// The candidate terms in the order they are added (see above).
+/// Throws std::invalid_argument for n_rho < 0 or max_degree < 0.
+std::vector<Monomial> basis_growth_order(int n_rho, int max_degree);
+
+/// The model with its correction basis replaced by `basis`; A_i, B_i are
+/// taken from the model's correction for the same monomial, zero otherwise.
+template <typename T>
+LpvModel<T> with_correction_basis(const LpvModel<T>& model, const std::vector<Monomial>& basis);
+
+/// "1, rho1, rho2^2", or "(none)" for the empty basis.
+std::string basis_text(const std::vector<Monomial>& basis, const std::vector<std::string>& names);
+
+enum class BasisVerdict {
+  kConsistent,   ///< a certificate at the given bounds passed the exact verifier
+  kInvalidated,  ///< the solver found the LMI infeasible (not exactly certified; see above)
+  kUnverified,   ///< anything else: solver trouble, or a model whose certificate did not pass
+};
+/// "consistent", "invalidated", "unverified".
+const char* to_string(BasisVerdict v);
+
+struct BasisStep {
+  int index = 0;                     ///< 0 = S_I alone
+  std::string phase;                 ///< "initial", "grow", "remove"
+  std::vector<Monomial> basis;
+  std::string basis_text;
+  BasisVerdict verdict = BasisVerdict::kUnverified;
+  std::string detail;                ///< why this verdict, in words
+  CertifiedBounds bounds;            ///< verified ⇒ exactly the given δ, d_max hold
+  std::string certificate;           ///< the written certificate (verified only)
+  double dmax_relaxation = -1;       ///< iterate: smallest d_max at δ the relaxation reached (< 0: none)
+  std::string relaxation;            ///< IdentifyResult::relaxation, or "none (fixed model)"
+  int solves = 0;                    ///< SDP solves, certification included
+  double seconds = 0;
+  int same_as = -1;                  ///< ≥ 0: this basis was evaluated at that step; nothing solved
+  bool kept = false;                 ///< remove phase: the removal was kept
+  ParameterLayout layout;            ///< of the certified model's parameters
+  Vec<double> p;                     ///< the rounded parameters (12 digits) that were certified
+};
+
+struct BasisSelectionOptions {
+  double delta = 0, dmax = 0;        ///< the given bounds (d_max RMS, SPEC §4)
+  std::string delta_text, dmax_text; ///< their exact text for the certificate (empty: the doubles)
+  int max_degree = 2;
+  bool iterate = false;
+  int max_iterations = 25;
+  double rel_tol = 1e-4;
+  bool prune = true;                 ///< run the removal phase
+  Unknowns unknowns;                 ///< offset / x0 (correction is always on)
+  SolverOptions solver;
+  /// data_path, data_names, rows, max_taps, digits; objective, certificate
+  /// path and solver options are set per step.
+  CertifyOptions certify;
+  std::string certificate_stem = "lpvid";  ///< step k → <stem>.step<k>.cert.json
+  std::function<void(const BasisStep&)> on_step;  ///< progress (called after each step)
+};
+
+struct BasisSelectionResult {
+  std::vector<Monomial> order;       ///< the candidates, in growth order
+  std::vector<BasisStep> steps;
+  bool found = false;                ///< a consistent (verified) model was found
+  int final_step = -1;               ///< index into steps of the answer (found only)
+  std::vector<Monomial> basis;       ///< the final basis (found only)
+};
+
+/// Runs the algorithm. `model_q`/`model_d` and `exp_q`/`exp_d` are the same
+/// model and data read exactly and as doubles (cli/inputs.h). Throws
+/// InputError for bad input (e.g. no certificate data path).
+BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
+                                  const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
+                                  const BasisSelectionOptions& options, SdpSolver& solver);
+
+/// Monotonicity of the verdicts (adding terms can only help): returns a
+/// description of the first pair of steps with basis_i ⊆ basis_j, step i
+/// consistent and step j invalidated; "" if there is none.
+std::string monotonicity_violation(const std::vector<BasisStep>& steps);
+
+}  // namespace lpvid

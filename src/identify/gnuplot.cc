@@ -1,0 +1,171 @@
+#include "identify/gnuplot.h"
+
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace lpvid {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// 'text' for /bin/sh.
+std::string sh_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+/// 'text' for gnuplot (a quote inside is doubled).
+std::string gp_quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+/// Output (stdout and stderr) of a shell command, and its exit status.
+std::string run_capture(const std::string& command, int* status) {
+  std::string out;
+  FILE* p = popen((command + " 2>&1").c_str(), "r");
+  if (!p) {
+    *status = -1;
+    return out;
+  }
+  std::array<char, 4096> buf;
+  size_t got;
+  while ((got = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), got);
+  *status = pclose(p);
+  return out;
+}
+
+/// A fresh private directory under the system's temporary directory.
+fs::path make_temp_dir() {
+  std::string tmpl = (fs::temp_directory_path() / "lpvid-plot-XXXXXX").string();
+  if (!mkdtemp(tmpl.data())) return {};
+  return fs::path(tmpl);
+}
+
+std::string number(double x) {
+  std::ostringstream s;
+  s.precision(17);
+  s << x;
+  return s.str();
+}
+
+}  // namespace
+
+std::string gnuplot_program() {
+  const char* env = std::getenv("LPVID_GNUPLOT");
+  return env && *env ? std::string(env) : std::string("gnuplot");
+}
+
+std::string gnuplot_png_terminal() {
+  int status = 0;
+  const std::string out = run_capture(sh_quote(gnuplot_program()) + " -e 'set terminal'", &status);
+  if (status != 0) return "";
+  bool png = false;
+  std::istringstream lines(out);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string first;
+    words >> first;
+    if (first == "pngcairo") return "pngcairo";
+    if (first == "png") png = true;
+  }
+  return png ? "png" : "";
+}
+
+std::string gnuplot_script(const PlotSpec& spec, const std::string& terminal, const std::string& png_path,
+                           const std::string& data_path) {
+  std::ostringstream s;
+  if (terminal == "pngcairo")
+    s << "set terminal pngcairo size " << spec.width << "," << spec.height << " noenhanced font 'Sans,11'\n";
+  else
+    s << "set terminal png size " << spec.width << "," << spec.height << " noenhanced\n";
+  s << "set output " << gp_quote(png_path) << "\n"
+    << "set title " << gp_quote(spec.title) << "\n"
+    << "set xlabel " << gp_quote(spec.xlabel) << "\n"
+    << "set ylabel " << gp_quote(spec.ylabel) << "\n"
+    << "set grid\n"
+    << "set key " << spec.key << " opaque\n";
+  if (spec.logx) s << "set logscale x\nset format x '%g'\n";
+  if (spec.logy) s << "set logscale y\nset format y '%g'\n";
+  std::vector<std::string> parts;
+  int block = 0;
+  for (const PlotSeries& ser : spec.series) {
+    if (ser.x.empty()) continue;
+    const std::string src = gp_quote(data_path) + " index " + std::to_string(block);
+    parts.push_back(src + " using 1:2 with " + ser.style + " lw 2 pt 7 ps 1.2 title " + gp_quote(ser.title));
+    if (!ser.labels.empty()) parts.push_back(src + " using 1:2:3 with labels offset char 1,0.7 font ',9' notitle");
+    ++block;
+  }
+  s << "plot ";
+  for (size_t i = 0; i < parts.size(); ++i) s << (i ? ", \\\n     " : "") << parts[i];
+  s << "\n";
+  return s.str();
+}
+
+PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
+  PlotOutcome out;
+  bool any = false;
+  for (const PlotSeries& ser : spec.series) any = any || !ser.x.empty();
+  if (!any) {
+    out.message = "nothing to plot (no points)";
+    return out;
+  }
+  out.terminal = gnuplot_png_terminal();
+  if (out.terminal.empty()) {
+    out.message = "gnuplot ('" + gnuplot_program() +
+                  "') could not be run or has no PNG terminal; install gnuplot-nox (or set LPVID_GNUPLOT) "
+                  "for the plot";
+    return out;
+  }
+  const fs::path dir = make_temp_dir();
+  if (dir.empty()) {
+    out.message = "cannot create a temporary directory for the gnuplot script";
+    return out;
+  }
+  const fs::path data = dir / "data.txt", script = dir / "plot.gp";
+  {
+    std::ofstream d(data);
+    bool first = true;
+    for (const PlotSeries& ser : spec.series) {
+      if (ser.x.empty()) continue;
+      if (!first) d << "\n\n";
+      first = false;
+      for (size_t i = 0; i < ser.x.size() && i < ser.y.size(); ++i) {
+        d << number(ser.x[i]) << " " << number(ser.y[i]);
+        if (!ser.labels.empty()) {
+          std::string label = i < ser.labels.size() ? ser.labels[i] : "";
+          for (char& c : label)
+            if (c == '"') c = '\'';
+          d << " \"" << label << "\"";
+        }
+        d << "\n";
+      }
+    }
+    std::ofstream g(script);
+    g << gnuplot_script(spec, out.terminal, fs::absolute(png_path).string(), data.string());
+  }
+  std::error_code ec;
+  fs::remove(png_path, ec);
+  int status = 0;
+  const std::string log = run_capture(sh_quote(gnuplot_program()) + " " + sh_quote(script.string()), &status);
+  const bool written = fs::exists(png_path, ec) && fs::file_size(png_path, ec) > 0;
+  if (status != 0 || !written) {
+    out.message = "gnuplot failed (exit status " + std::to_string(status) + ")" + (log.empty() ? "" : ": " + log);
+  } else {
+    out.ok = true;
+    out.message = "wrote " + png_path + " (gnuplot, terminal " + out.terminal + ")";
+  }
+  fs::remove_all(dir, ec);
+  return out;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,58 @@
+#pragma once
+/// A small wrapper around the external `gnuplot` program (Debian package
+/// gnuplot-nox) for the PNG plots of the reports (trade-off curve, …).
+///
+/// gnuplot is run as a separate process on a temporary script and data
+/// file; nothing is linked. The program is `gnuplot` on PATH, or the value
+/// of the environment variable LPVID_GNUPLOT. The PNG terminal is
+/// `pngcairo` when gnuplot has it (anti-aliased), else `png` (libgd).
+/// A missing gnuplot is not an error of the caller's computation: plot_png
+/// returns ok = false with a message saying so, and the caller goes on
+/// (the numbers are always written as CSV as well).
+///
+/// (Kept in src/identify/ because src/plot/ is not globbed by CMake yet;
+/// it depends on nothing but the standard library and can move as is.)
+
+#include <string>
+#include <vector>
+
+namespace lpvid {
+
+struct PlotSeries {
+  std::string title;
+  std::vector<double> x, y;
+  std::vector<std::string> labels;        ///< optional text next to each point (same length as x)
+  std::string style = "linespoints";      ///< gnuplot `with` style: lines, points, linespoints
+};
+
+struct PlotSpec {
+  std::string title, xlabel, ylabel;
+  std::vector<PlotSeries> series;
+  int width = 900, height = 650;          ///< pixels
+  bool logx = false, logy = false;
+  std::string key = "top right";          ///< gnuplot `set key` position
+};
+
+struct PlotOutcome {
+  bool ok = false;
+  std::string message;   ///< why not, or what was written
+  std::string terminal;  ///< "pngcairo" or "png"
+};
+
+/// The gnuplot program that will be run (LPVID_GNUPLOT or "gnuplot").
+std::string gnuplot_program();
+
+/// The PNG terminal the installed gnuplot offers ("pngcairo", "png"), or ""
+/// when gnuplot cannot be run or has neither.
+std::string gnuplot_png_terminal();
+
+/// Writes the plot as a PNG file. Never throws for a missing or failing
+/// gnuplot (ok = false and the message; gnuplot's own error text included).
+PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path);
+
+/// The gnuplot script plot_png runs (exposed for tests): `data_path` holds
+/// one block per series (x y label), separated by two blank lines.
+std::string gnuplot_script(const PlotSpec& spec, const std::string& terminal, const std::string& png_path,
+                           const std::string& data_path);
+
+}  // namespace lpvid

@@ -1,0 +1,86 @@
+#pragma once
+/// The trade-off curve between the uncertainty bound δ and the noise bound
+/// d_max (SPEC §4 last item: "sweeping λ gives the trade-off curve").
+///
+/// For each λ of a grid: identify with BoundObjective kWeighted(λ), i.e.
+/// minimise λ·δ² + (1−λ)·d_max² (Theorem 3.1, relaxation at S_I or iterated),
+/// round θ/φ/x0 to 12 significant digits, and certify the fixed model with the
+/// same objective (Theorem 2.1, Δ form, exact check; certify.h). The curve's
+/// points are the CERTIFIED (δ, d_max); a point whose certificate did not pass
+/// has no bounds (verified = false) and is left out of the plot.
+/// A model without unknowns (no correction basis, no unknown offset, fixed
+/// x0) gives the trade-off curve of Theorem 2.1 for that fixed model.
+///
+/// Monotonicity. For one convex problem the minimisers of λδ² + (1−λ)d²
+/// have δ non-increasing and d_max non-decreasing as λ grows (exchange
+/// argument). Without `iterate` the relaxation is one convex problem, so its
+/// solver values are monotone up to the solver's relative gap (1e-7). The
+/// certified values re-optimise w for each rounded model; they follow the
+/// same order up to the certification slack (12-digit rounding, the δ²
+/// margin 1e-9…1e-1 relative, d_max² rounded up at 15 digits, the solver gap)
+/// and to the fact that the models differ between λ's: the certified
+/// re-optimisation can only improve on the relaxation's pair. check_monotone
+/// takes the slack as a parameter; the tests use 1e-3 relative + 1e-6
+/// absolute (tests/select/tradeoff_test.cc). With `iterate` (non-convex
+/// procedure) nothing is guaranteed; the CLI reports violations as notes.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "data/experiment.h"
+#include "identify/affine_residual.h"
+#include "identify/certify.h"
+#include "identify/gnuplot.h"
+#include "model/lpv_model.h"
+#include "solvers/sdp_solver.h"
+
+namespace lpvid {
+
+/// The default grid: 11 values 0.02, 0.116, …, 0.5, …, 0.98 (step 0.096).
+std::vector<double> default_lambda_grid();
+
+struct TradeoffPoint {
+  double lambda = 0;
+  SolveStatus status = SolveStatus::kBackendError;  ///< of the identification (kOptimal for a fixed model)
+  std::string relaxation;
+  int solves = 0;                                  ///< identification solves (certification not counted)
+  double delta_solver = -1, dmax_solver = -1;      ///< the relaxation's values (< 0: none)
+  CertifiedBounds bounds;                          ///< verified ⇒ delta, dmax are certified
+  std::string certificate;                         ///< written certificate (verified only)
+  double seconds = 0;
+  ParameterLayout layout;
+  Vec<double> p;                                   ///< the rounded parameters that were certified
+};
+
+struct TradeoffOptions {
+  std::vector<double> lambdas;       ///< empty: default_lambda_grid()
+  bool iterate = false;
+  int max_iterations = 25;
+  double rel_tol = 1e-4;
+  Unknowns unknowns;
+  SolverOptions solver;
+  CertifyOptions certify;            ///< data path etc.; objective and path are set per point
+  std::string certificate_stem = "lpvid";  ///< point k (1-based) → <stem>.lambda<k>.cert.json
+  std::function<void(const TradeoffPoint&)> on_point;
+};
+
+/// Sweeps λ. Throws InputError for a λ outside [0, 1] or a missing data path.
+std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
+                                          const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
+                                          const TradeoffOptions& options, SdpSolver& solver);
+
+/// CSV text: lambda,verified,delta,dmax,delta2_exact,dmax2_exact,delta_solver,
+/// dmax_solver,status,certificate (empty cells where there is no value).
+std::string tradeoff_csv(const std::vector<TradeoffPoint>& points);
+
+/// The plot: certified δ against certified d_max, points labelled by λ; an
+/// axis is logarithmic when its values span more than two decades.
+PlotSpec tradeoff_plot(const std::vector<TradeoffPoint>& points, const std::string& title);
+
+/// "" if, over the verified points in order of λ, δ is non-increasing and
+/// d_max non-decreasing up to rel·value + abs; else the first violation.
+std::string tradeoff_monotonicity_violation(const std::vector<TradeoffPoint>& points, double rel, double abs);
+
+}  // namespace lpvid
