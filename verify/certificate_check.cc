@@ -1,6 +1,7 @@
 #include "verify/certificate_check.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <ostream>
 #include <sstream>
@@ -103,18 +104,29 @@ CertificateVerdict check_certificate(const Certificate& c, const std::string& ce
   std::string which;
   if (c.form == CertificateForm::kDelta) {
     const Eigen::Index L = c.horizon, K = c.taps.rows();
+    // Balance by the congruence diag(I/s, I) with a rational s ≈ δ (exact:
+    // a congruence by a nonsingular matrix keeps the inertia), so that the
+    // floating filter sees a matrix with unit diagonal blocks:
+    //   [δ²/s² I, T_Δ/s; T_Δᵀ/s, I] ⪰ 0  ⇔  [δ² I, T_Δ; T_Δᵀ, I] ⪰ 0.
+    Rational s(1);
+    if (c.delta2 > 0) {
+      const double approx_delta = std::sqrt(nearest_double(c.delta2));
+      if (approx_delta > 0 && std::isfinite(approx_delta)) s = exact_rational_of_double(approx_delta);
+    }
+    const Rational inv_s = Rational(1) / s;
     M = Mat<Rational>::Zero(L * (ny + nz), L * (ny + nz));
-    for (Eigen::Index i = 0; i < L * ny; ++i) M(i, i) = c.delta2;
+    const Rational d2 = c.delta2 * inv_s * inv_s;
+    for (Eigen::Index i = 0; i < L * ny; ++i) M(i, i) = d2;
     for (Eigen::Index i = L * ny; i < L * (ny + nz); ++i) M(i, i) = Rational(1);
     for (Eigen::Index a = 0; a < L; ++a)
       for (Eigen::Index b = std::max<Eigen::Index>(0, a - K + 1); b <= a; ++b)
         for (Eigen::Index i = 0; i < ny; ++i)
           for (Eigen::Index j = 0; j < nz; ++j) {
-            const Rational& h = c.taps(a - b, i * nz + j);
+            const Rational h = c.taps(a - b, i * nz + j) * inv_s;
             M(a * ny + i, L * ny + b * nz + j) = h;
             M(L * ny + b * nz + j, a * ny + i) = h;
           }
-    which = "[delta2*I, T_Delta; T_Delta', I]";
+    which = "[delta2*I, T_Delta; T_Delta', I] (balanced by diag(I/s, I), s = " + approx(s) + ")";
   } else {
     const Mat<Rational> G = c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)
                                                              : Mat<Rational>([&] {

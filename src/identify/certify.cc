@@ -56,7 +56,17 @@ void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o,
   c.info["solver_status"] = out.solver_status;
   const double norm2 = o.objective.delta_fixed() ? 0.0 : norm2_fn();
   CertificateVerdict v;
+  // The smallest margin is 1e-9. For large (C1) matrices the exact fallback
+  // of the PSD decision is slow (minutes at size 800), so start where the
+  // rigorous floating filter can decide: its shift is about (N+1)·u·tr(M)
+  // (Rump 2006), and the margin must exceed it.
   double margin = 1e-9;
+  const double N = c.form == CertificateForm::kDelta
+                       ? static_cast<double>(c.horizon * (c.model.ny + c.model.nz()))
+                       : static_cast<double>(c.w.rows() * (1 + c.model.ny));
+  // The verifier balances the Δ-form matrix to unit diagonal blocks
+  // (certificate_check.cc), so tr ≈ N and λ_min ≈ margin/2 there.
+  if (N > 300) margin = std::max(margin, 16.0 * (N + 1) * N * 0x1.0p-53);
   for (int attempt = 0; attempt < 5; ++attempt, margin *= 100) {
     if (o.objective.delta_fixed()) {
       const Rational delta =
