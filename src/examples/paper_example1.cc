@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/number_text.h"
+#include "examples/decimal_rounding.h"
 #include "examples/random_stream.h"
 #include "model/simulate.h"
 
@@ -11,36 +12,7 @@ namespace {
 
 Rational dec(const char* text) { return rational_from_text(text); }
 
-/// Rounds x to `digits` decimals, exactly as a rational.
-Rational round_decimal(double x, int digits) {
-  double scale = std::pow(10.0, digits);
-  long long k = std::llround(x * scale);
-  return Rational(static_cast<long>(k)) / Rational(static_cast<long>(std::llround(scale)));
-}
 
-Rational round_rational(const Rational& q, int digits) {
-  // round(q · 10^digits) / 10^digits, exactly, ties away from zero.
-  Rational scale(1);
-  for (int i = 0; i < digits; ++i) scale *= 10;
-  Rational s = q * scale;
-  mpz_t num, den, quo;
-  mpz_init_set(num, mpq_numref(s.mpq()));
-  mpz_init_set(den, mpq_denref(s.mpq()));
-  mpz_init(quo);
-  mpz_mul_ui(num, num, 2);
-  mpz_add(num, num, den);            // 2s + 1 over 2 → floor((2·num + den) / (2·den))
-  mpz_mul_ui(den, den, 2);
-  mpz_fdiv_q(quo, num, den);
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, quo);
-  Rational out(r);
-  mpq_clear(r);
-  mpz_clear(num);
-  mpz_clear(den);
-  mpz_clear(quo);
-  return out / scale;
-}
 
 Mat<Rational> m2(const char* a, const char* b, const char* c, const char* d) {
   Mat<Rational> m(2, 2);
@@ -113,7 +85,7 @@ Experiment<Rational> example1_experiment(const Example1Options& o) {
   double sigma = std::sqrt(o.noise_variance);
   for (int k = 0; k < n; ++k)
     for (int i = 0; i < 2; ++i) {
-      Rational y = round_rational(sim.yhat(k, i), 10);
+      Rational y = round_decimal(sim.yhat(k, i), 10);
       if (sigma > 0) y += round_decimal(sigma * rng.normal(), 6);
       e.y(k, i) = y;
     }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/number_text.h"
+#include "examples/decimal_rounding.h"
 #include "examples/random_stream.h"
 #include "model/simulate.h"
 
@@ -11,36 +12,7 @@ namespace {
 
 Rational dec(const char* text) { return rational_from_text(text); }
 
-/// x rounded to `digits` decimals, exactly as a rational (as Example 1).
-Rational round_decimal(double x, int digits) {
-  const double scale = std::pow(10.0, digits);
-  const long long k = std::llround(x * scale);
-  return Rational(static_cast<long>(k)) / Rational(static_cast<long>(std::llround(scale)));
-}
 
-/// floor(q·10^digits + 1/2)/10^digits exactly (ties towards +∞), as Example 1.
-Rational round_rational(const Rational& q, int digits) {
-  Rational scale(1);
-  for (int i = 0; i < digits; ++i) scale *= 10;
-  const Rational s = q * scale;
-  mpz_t num, den, quo;
-  mpz_init_set(num, mpq_numref(s.mpq()));
-  mpz_init_set(den, mpq_denref(s.mpq()));
-  mpz_init(quo);
-  mpz_mul_ui(num, num, 2);
-  mpz_add(num, num, den);  // floor((2·num + den) / (2·den)) = floor(s + 1/2)
-  mpz_mul_ui(den, den, 2);
-  mpz_fdiv_q(quo, num, den);
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, quo);
-  Rational out(r);
-  mpq_clear(r);
-  mpz_clear(num);
-  mpz_clear(den);
-  mpz_clear(quo);
-  return out / scale;
-}
 
 Mat<Rational> mat(int rows, int cols, std::initializer_list<const char*> values) {
   Mat<Rational> m(rows, cols);
@@ -106,7 +78,7 @@ Experiment<Rational> example2_experiment(const Example2Options& o) {
   const Simulation<Rational> sim = simulate(example2_true_model(), e);
   const double sigma = std::sqrt(o.noise_variance);
   for (int i = 0; i < n; ++i) {
-    Rational y = round_rational(sim.yhat(i, 0) + sim.offset(i, 0), 10);
+    Rational y = round_decimal(sim.yhat(i, 0) + sim.offset(i, 0), 10);
     if (sigma > 0) y += round_decimal(sigma * rng.normal(), 6);
     e.y(i, 0) = y;
   }
