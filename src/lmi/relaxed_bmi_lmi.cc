@@ -1,5 +1,6 @@
 #include "lmi/relaxed_bmi_lmi.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/input_error.h"
@@ -168,8 +169,12 @@ RelaxedSolution solve_relaxed(const AffineSignals& sig, const Vec<double>& q_bar
       for (Eigen::Index i = 0; i < f.ny; ++i)
         out.w(k, i) = x[static_cast<size_t>(f.w0 + (k - f.m) * f.ny + i)] * f.sigma_r;
   }
-  out.delta2 = f.t >= 0 && ok ? out.solve.x[static_cast<size_t>(f.t)] / (kz * kz) : objective.delta * objective.delta;
-  out.dmax2 = f.s >= 0 && ok ? out.solve.x[static_cast<size_t>(f.s)] * f.sigma_r * f.sigma_r
+  // δ² and d_max² are ≥ 0 on the feasible set: a negative value is the
+  // solver's tolerance on t' magnified by 1/kz² (large when σ_z ≪ σ_r, e.g.
+  // when the iteration shrinks z), so it is read as 0.
+  out.delta2 = f.t >= 0 && ok ? std::max(0.0, out.solve.x[static_cast<size_t>(f.t)] / (kz * kz))
+                              : objective.delta * objective.delta;
+  out.dmax2 = f.s >= 0 && ok ? std::max(0.0, out.solve.x[static_cast<size_t>(f.s)] * f.sigma_r * f.sigma_r)
                              : objective.dmax * objective.dmax;
   return out;
 }
