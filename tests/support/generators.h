@@ -9,3 +9,4 @@
 #include "support/gen_files.h"
 #include "support/gen_lmi.h"
 #include "support/gen_matrices.h"
+#include "support/gen_identify.h"
