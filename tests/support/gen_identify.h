@@ -17,7 +17,7 @@
 ///    so the truth satisfies Theorem 2.1 at (δ, d_max) EXACTLY.
 ///
 /// Everything random is drawn from rapidcheck, so each case is replayable
-/// from rapidcheck's seed (RC_GTEST_PROP) or from `sample(gen, seed)` in
+/// from rapidcheck's seed (rapidcheck properties) or from `sample(gen, seed)` in
 /// seeded TEST loops (the seed is printed in failure messages).
 
 #include <rapidcheck.h>
@@ -361,7 +361,7 @@ inline rc::Gen<IdentCase> ident_case(IdentCaseOptions o = {}) {
 }
 
 /// One sample of a generator with a fixed seed and size (for seeded TEST
-/// loops; rapidcheck's own seed is used by RC_GTEST_PROP instead).
+/// loops; rapidcheck's own seed is used by rapidcheck properties instead).
 template <typename T>
 T sample(const rc::Gen<T>& g, uint64_t seed, int size = 50) {
   return g(rc::Random(seed), size).value();
