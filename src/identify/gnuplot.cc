@@ -105,6 +105,9 @@ std::string gnuplot_script(const PlotSpec& spec, const std::string& terminal, co
     if (!ser.labels.empty()) parts.push_back(src + " using 1:2:3 with labels offset char 1,0.7 font ',9' notitle");
     ++block;
   }
+  for (const PlotHLine& h : spec.hlines)
+    parts.push_back(number(h.y) + " with lines dt " + std::to_string(h.dashtype) + " lw 1.5 lc rgb " + gp_quote(h.color) +
+                    (h.title.empty() ? " notitle" : " title " + gp_quote(h.title)));
   s << "plot ";
   for (size_t i = 0; i < parts.size(); ++i) s << (i ? ", \\\n     " : "") << parts[i];
   s << "\n";

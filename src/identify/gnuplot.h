@@ -25,12 +25,21 @@ struct PlotSeries {
   std::string style = "linespoints";      ///< gnuplot `with` style: lines, points, linespoints
 };
 
+/// A horizontal line y = value across the whole plot (e.g. a confidence band).
+struct PlotHLine {
+  double y = 0;
+  std::string title;              ///< legend text; "" for none
+  std::string color = "#cc0000";  ///< gnuplot rgb colour
+  int dashtype = 2;               ///< gnuplot `dt`: 1 solid, 2 dashed, 3 dotted
+};
+
 struct PlotSpec {
   std::string title, xlabel, ylabel;
   std::vector<PlotSeries> series;
   int width = 900, height = 650;          ///< pixels
   bool logx = false, logy = false;
   std::string key = "top right";          ///< gnuplot `set key` position
+  std::vector<PlotHLine> hlines;          ///< drawn after the series (need at least one series)
 };
 
 struct PlotOutcome {

@@ -1,0 +1,209 @@
+#include "diagnose/diagnose_plots.h"
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/input_error.h"
+#include "core/number_text.h"
+
+namespace lpvid {
+namespace {
+
+std::string output_name(const std::vector<std::string>& names, Eigen::Index i) {
+  const auto k = static_cast<size_t>(i);
+  return k < names.size() && !names[k].empty() ? names[k] : "y" + std::to_string(i + 1);
+}
+
+/// `before` must be a signal; `after` is empty (no columns) or of the same shape.
+void check_before_after(const Mat<double>& before, const Mat<double>& after, const std::string& what) {
+  require_signal(before, what + " before");
+  if (after.cols() == 0) return;
+  require_signal(after, what + " after");
+  if (after.rows() != before.rows() || after.cols() != before.cols())
+    throw InputError(what + ": 'after' is " + std::to_string(after.rows()) + " x " + std::to_string(after.cols()) +
+                     ", 'before' is " + std::to_string(before.rows()) + " x " + std::to_string(before.cols()));
+}
+
+std::vector<double> range(Eigen::Index count) {
+  std::vector<double> v(static_cast<size_t>(count));
+  for (size_t i = 0; i < v.size(); ++i) v[i] = static_cast<double>(i);
+  return v;
+}
+
+PlotSeries series(const std::string& title, std::vector<double> x, std::vector<double> y, const std::string& style) {
+  PlotSeries s;
+  s.title = title;
+  s.x = std::move(x);
+  s.y = std::move(y);
+  s.style = style;
+  return s;
+}
+
+std::vector<double> column(const Mat<double>& m, Eigen::Index j) {
+  std::vector<double> v(static_cast<size_t>(m.rows()));
+  for (Eigen::Index i = 0; i < m.rows(); ++i) v[static_cast<size_t>(i)] = m(i, j);
+  return v;
+}
+
+/// Adds "<name> <tag>" curves against the sample index for each column of m.
+void add_columns(PlotSpec& spec, const Mat<double>& m, const std::vector<std::string>& names, const std::string& tag) {
+  for (Eigen::Index i = 0; i < m.cols(); ++i)
+    spec.series.push_back(series(output_name(names, i) + " " + tag, range(m.rows()), column(m, i), "lines"));
+}
+
+std::string short_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+std::string sanitise(const std::string& title) {
+  std::string out;
+  for (char c : title) {
+    if (std::isalnum(static_cast<unsigned char>(c))) out += c;
+    else if (!out.empty() && out.back() != '_') out += '_';
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out.empty() ? "value" : out;
+}
+
+std::vector<std::string> text(const std::vector<double>& v) {
+  std::vector<std::string> out;
+  out.reserve(v.size());
+  for (double x : v) out.push_back(double_to_text(x));
+  return out;
+}
+
+/// CSV (table) first, then the PNG; neither failure throws.
+PlotOutcome write_plot(const PlotSpec& spec, const std::vector<TextColumn>& table, const std::string& png_path) {
+  const std::string csv = plot_csv_path(png_path);
+  std::string csv_note;
+  try {
+    write_csv(csv, table);
+    csv_note = "numbers in " + csv;
+  } catch (const std::exception& e) {
+    csv_note = "numbers not written: " + std::string(e.what());
+  }
+  PlotOutcome out = plot_png(spec, png_path);
+  out.message += "; " + csv_note;
+  return out;
+}
+
+}  // namespace
+
+std::string plot_csv_path(const std::string& png_path) {
+  return std::filesystem::path(png_path).replace_extension(".csv").string();
+}
+
+std::vector<TextColumn> plot_table(const PlotSpec& spec, const std::string& x_name) {
+  std::vector<TextColumn> cols;
+  if (spec.series.empty()) return cols;
+  const std::vector<double>& x = spec.series.front().x;
+  cols.push_back({x_name, text(x)});
+  for (const PlotSeries& s : spec.series) {
+    if (s.x != x) throw std::invalid_argument("plot_table: series '" + s.title + "' has other x values");
+    cols.push_back({sanitise(s.title), text(s.y)});
+  }
+  for (const PlotHLine& h : spec.hlines) cols.push_back({sanitise(h.title), text(std::vector<double>(x.size(), h.y))});
+  return cols;
+}
+
+PlotSpec residual_plot_spec(const Mat<double>& before, const Mat<double>& after,
+                            const std::vector<std::string>& output_names) {
+  check_before_after(before, after, "residual plot");
+  PlotSpec spec;
+  const ResidualRms rb = residual_rms(before);
+  spec.title = "Residual r = y - yhat - Phi (RMS " + short_number(rb.overall);
+  if (after.cols() > 0) spec.title += " before, " + short_number(residual_rms(after).overall) + " after";
+  spec.title += ")";
+  spec.xlabel = "sample t";
+  spec.ylabel = "residual r(t)";
+  spec.width = 1100;
+  add_columns(spec, before, output_names, "before");
+  add_columns(spec, after, output_names, "after");
+  spec.hlines.push_back({0.0, "", "#000000", 1});
+  return spec;
+}
+
+PlotSpec autocorrelation_plot_spec(const Mat<double>& before, const Mat<double>& after,
+                                   const std::vector<std::string>& output_names,
+                                   const ResidualAnalysisOptions& options) {
+  check_before_after(before, after, "autocorrelation plot");
+  const WhitenessResult wb = residual_whiteness(before, options);
+  PlotSpec spec;
+  spec.title = "Residual autocorrelation, n = " + std::to_string(before.rows()) + "; Ljung-Box Q vs chi2 threshold " +
+               short_number(wb.outputs[0].q_threshold) + ":";
+  const std::vector<double> lags = range(wb.max_lag + 1);
+  for (Eigen::Index i = 0; i < before.cols(); ++i) {
+    const std::string name = output_name(output_names, i);
+    spec.series.push_back(series(name + " before", lags, wb.outputs[static_cast<size_t>(i)].rho, "linespoints"));
+    spec.title += " " + name + " " + short_number(wb.outputs[static_cast<size_t>(i)].q);
+  }
+  if (after.cols() > 0) {
+    const WhitenessResult wa = residual_whiteness(after, options);
+    for (Eigen::Index i = 0; i < after.cols(); ++i) {
+      const std::string name = output_name(output_names, i);
+      spec.series.push_back(series(name + " after", lags, wa.outputs[static_cast<size_t>(i)].rho, "linespoints"));
+      spec.title += (i ? ", " : " -> after: ") + name + " " + short_number(wa.outputs[static_cast<size_t>(i)].q);
+    }
+  }
+  spec.xlabel = "lag k";
+  spec.ylabel = "normalised autocorrelation rho(k)";
+  spec.hlines = {{wb.band_99, "99% band +-" + short_number(wb.band_99), "#cc0000", 2},
+                 {-wb.band_99, "", "#cc0000", 2},
+                 {wb.band_95, "95% band +-" + short_number(wb.band_95), "#ff8800", 3},
+                 {-wb.band_95, "", "#ff8800", 3},
+                 {0.0, "", "#000000", 1}};
+  return spec;
+}
+
+PlotSpec output_fit_plot_spec(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
+                              const std::vector<std::string>& output_names) {
+  require_signal(y, "output plot: measured output");
+  check_before_after(yhat_before, yhat_after, "output plot: model output");
+  if (yhat_before.rows() != y.rows() || yhat_before.cols() != y.cols())
+    throw InputError("output plot: the model output is " + std::to_string(yhat_before.rows()) + " x " +
+                     std::to_string(yhat_before.cols()) + ", the measured output " + std::to_string(y.rows()) + " x " +
+                     std::to_string(y.cols()));
+  PlotSpec spec;
+  spec.title = "Measured and simulated output (RMS error " + short_number(residual_rms(y - yhat_before).overall);
+  if (yhat_after.cols() > 0) spec.title += " before, " + short_number(residual_rms(y - yhat_after).overall) + " after";
+  spec.title += ")";
+  spec.xlabel = "sample t";
+  spec.ylabel = "output";
+  spec.width = 1100;
+  add_columns(spec, y, output_names, "measured");
+  add_columns(spec, yhat_before, output_names, "model before");
+  add_columns(spec, yhat_after, output_names, "model after");
+  return spec;
+}
+
+PlotOutcome plot_residual(const Mat<double>& before, const Mat<double>& after, const std::string& png_path,
+                          const std::vector<std::string>& output_names) {
+  const PlotSpec spec = residual_plot_spec(before, after, output_names);
+  std::vector<TextColumn> table = plot_table(spec, "sample");
+  table.pop_back();  // the zero line
+  return write_plot(spec, table, png_path);
+}
+
+PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<double>& after,
+                                          const std::string& png_path,
+                                          const std::vector<std::string>& output_names,
+                                          const ResidualAnalysisOptions& options) {
+  const PlotSpec spec = autocorrelation_plot_spec(before, after, output_names, options);
+  std::vector<TextColumn> table = plot_table(spec, "lag");
+  table.pop_back();  // the zero line
+  const char* names[] = {"band_99_upper", "band_99_lower", "band_95_upper", "band_95_lower"};
+  for (size_t k = 0; k < 4; ++k) table[table.size() - 4 + k].name = names[k];
+  return write_plot(spec, table, png_path);
+}
+
+PlotOutcome plot_output_fit(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
+                            const std::string& png_path, const std::vector<std::string>& output_names) {
+  const PlotSpec spec = output_fit_plot_spec(y, yhat_before, yhat_after, output_names);
+  return write_plot(spec, plot_table(spec, "sample"), png_path);
+}
+
+}  // namespace lpvid

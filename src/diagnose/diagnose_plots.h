@@ -1,0 +1,57 @@
+#pragma once
+/// The plots of `lpvid diagnose` (SPEC §6 step 4, issue 4 item 5), drawn by
+/// gnuplot through identify/gnuplot.h:
+///  (a) the residual r = y − ŷ − Φ before and after adding the effect, per
+///      sample;
+///  (b) its normalised autocorrelation (lags 0..L) before and after, with
+///      the 99 % and 95 % whiteness bands ±z/√n (residual_analysis.h);
+///  (c) the measured output with the model output before and after.
+///
+/// Every plot_* function writes the numbers of its plot as CSV next to the
+/// PNG (same path, extension .csv; first column the x axis, then one column
+/// per curve) and then the PNG. A missing or failing gnuplot or an
+/// unwritable CSV is not an error: the PlotOutcome says what happened
+/// (ok = the PNG was written). Bad signals (empty, non-finite, mismatched
+/// shapes) throw lpvid::InputError before anything is written.
+///
+/// `after` (and `yhat_after`) may have no columns: the plot then shows the
+/// "before" curves only (e.g. when no effect was found). Output names
+/// default to y1, y2, ….
+
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "data/csv_writer.h"
+#include "diagnose/residual_analysis.h"
+#include "identify/gnuplot.h"
+
+namespace lpvid {
+
+/// The plot specifications (exposed for tests and for other front ends).
+PlotSpec residual_plot_spec(const Mat<double>& before, const Mat<double>& after,
+                            const std::vector<std::string>& output_names = {});
+PlotSpec autocorrelation_plot_spec(const Mat<double>& before, const Mat<double>& after,
+                                   const std::vector<std::string>& output_names = {},
+                                   const ResidualAnalysisOptions& options = {});
+PlotSpec output_fit_plot_spec(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
+                              const std::vector<std::string>& output_names = {});
+
+/// The CSV table of a plot whose series share their x values: column
+/// `x_name`, then one column per series and one per horizontal line, named
+/// by the titles with spaces and symbols replaced by '_'.
+std::vector<TextColumn> plot_table(const PlotSpec& spec, const std::string& x_name);
+
+/// png_path with its extension replaced by ".csv".
+std::string plot_csv_path(const std::string& png_path);
+
+PlotOutcome plot_residual(const Mat<double>& before, const Mat<double>& after, const std::string& png_path,
+                          const std::vector<std::string>& output_names = {});
+PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<double>& after,
+                                          const std::string& png_path,
+                                          const std::vector<std::string>& output_names = {},
+                                          const ResidualAnalysisOptions& options = {});
+PlotOutcome plot_output_fit(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
+                            const std::string& png_path, const std::vector<std::string>& output_names = {});
+
+}  // namespace lpvid

@@ -1,0 +1,146 @@
+// Diagnose plots (diagnose/diagnose_plots.h): the specifications, the
+// gnuplot script (checked as text, so these tests need no gnuplot), the CSV
+// written next to the PNG, and the PNG itself when gnuplot is installed.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "diagnose/diagnose_plots.h"
+#include "support/gen_identify.h"
+
+namespace lpvid {
+namespace {
+
+using gen::ScratchDir;
+
+Mat<double> noise(Eigen::Index n, Eigen::Index cols, unsigned seed, double scale) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0.0, scale);
+  Mat<double> m(n, cols);
+  for (Eigen::Index j = 0; j < cols; ++j)
+    for (Eigen::Index i = 0; i < n; ++i) m(i, j) = g(rng);
+  return m;
+}
+
+std::string first_line(const std::string& path) {
+  std::ifstream f(path);
+  std::string line;
+  std::getline(f, line);
+  return line;
+}
+
+bool is_png(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  char sig[8] = {};
+  f.read(sig, 8);
+  return std::string(sig + 1, 3) == "PNG";
+}
+
+TEST(DiagnosePlots, AutocorrelationScriptHasTheBandLines) {
+  const Mat<double> before = noise(400, 1, 1, 1.0), after = noise(400, 1, 2, 0.5);
+  const PlotSpec spec = autocorrelation_plot_spec(before, after, {"level"});
+  ASSERT_EQ(spec.series.size(), 2u);
+  EXPECT_EQ(spec.series[0].title, "level before");
+  EXPECT_EQ(spec.series[1].title, "level after");
+  EXPECT_EQ(spec.series[0].x.size(), 26u);  // lags 0..25
+  ASSERT_GE(spec.hlines.size(), 4u);
+  const double b99 = whiteness_band(400, 0.99), b95 = whiteness_band(400, 0.95);
+  EXPECT_DOUBLE_EQ(spec.hlines[0].y, b99);
+  EXPECT_DOUBLE_EQ(spec.hlines[1].y, -b99);
+  EXPECT_DOUBLE_EQ(spec.hlines[2].y, b95);
+  EXPECT_DOUBLE_EQ(spec.hlines[3].y, -b95);
+
+  const std::string script = gnuplot_script(spec, "pngcairo", "/tmp/a.png", "/tmp/d.txt");
+  std::ostringstream upper, lower;
+  upper.precision(17);
+  lower.precision(17);
+  upper << b99 << " with lines dt 2";
+  lower << -b99 << " with lines dt 2";
+  EXPECT_NE(script.find(upper.str()), std::string::npos) << script;
+  EXPECT_NE(script.find(lower.str()), std::string::npos) << script;
+  EXPECT_NE(script.find("title '99% band +-0.129'"), std::string::npos) << script;  // 2.5758/20
+  EXPECT_NE(script.find("title '95% band +-0.098'"), std::string::npos) << script;
+  EXPECT_NE(script.find("set xlabel 'lag k'"), std::string::npos);
+}
+
+TEST(DiagnosePlots, HLinesLeaveOldScriptsAlone) {
+  PlotSpec spec;
+  PlotSeries s;
+  s.x = {1, 2};
+  s.y = {3, 4};
+  spec.series.push_back(s);
+  const std::string script = gnuplot_script(spec, "png", "/tmp/o.png", "/tmp/d.txt");
+  EXPECT_EQ(script.find("with lines dt"), std::string::npos);
+  EXPECT_NE(script.find("'/tmp/d.txt' index 0 using 1:2 with linespoints"), std::string::npos);
+}
+
+TEST(DiagnosePlots, SpecsOfResidualAndOutputPlots) {
+  const Mat<double> y = noise(100, 2, 3, 1.0), yb = noise(100, 2, 4, 1.0), ya = y + noise(100, 2, 5, 0.1);
+  const PlotSpec r = residual_plot_spec(y - yb, y - ya, {"h1"});
+  ASSERT_EQ(r.series.size(), 4u);
+  EXPECT_EQ(r.series[0].title, "h1 before");
+  EXPECT_EQ(r.series[1].title, "y2 before");
+  EXPECT_EQ(r.series[3].title, "y2 after");
+  EXPECT_NE(r.title.find("after"), std::string::npos);
+  const PlotSpec f = output_fit_plot_spec(y, yb, Mat<double>(), {"h1", "h2"});
+  ASSERT_EQ(f.series.size(), 4u);  // measured and model before, no after
+  EXPECT_EQ(f.series[2].title, "h1 model before");
+  EXPECT_EQ(f.title.find("after"), std::string::npos);
+  const std::vector<TextColumn> table = plot_table(f, "sample");
+  ASSERT_EQ(table.size(), 5u);
+  EXPECT_EQ(table[0].name, "sample");
+  EXPECT_EQ(table[3].name, "h1_model_before");
+  EXPECT_EQ(table[3].cells.size(), 100u);
+}
+
+TEST(DiagnosePlots, WritesCsvAndPngOrSaysWhyNot) {
+  ScratchDir dir("diagnose-plots");
+  const Mat<double> before = noise(300, 1, 6, 1.0), after = noise(300, 1, 7, 0.3);
+  const PlotOutcome a = plot_residual_autocorrelation(before, after, dir.file("acf.png"));
+  EXPECT_EQ(first_line(dir.file("acf.csv")),
+            "lag,y1_before,y1_after,band_99_upper,band_99_lower,band_95_upper,band_95_lower");
+  const PlotOutcome r = plot_residual(before, after, dir.file("res.png"));
+  EXPECT_EQ(first_line(dir.file("res.csv")), "sample,y1_before,y1_after");
+  const PlotOutcome o = plot_output_fit(before, after, Mat<double>(), dir.file("fit.png"), {"v"});
+  EXPECT_EQ(first_line(dir.file("fit.csv")), "sample,v_measured,v_model_before");
+  for (const PlotOutcome* p : {&a, &r, &o}) EXPECT_NE(p->message.find(".csv"), std::string::npos) << p->message;
+  if (gnuplot_png_terminal().empty()) GTEST_SKIP() << "gnuplot with a PNG terminal is not installed";
+  for (const PlotOutcome* p : {&a, &r, &o}) EXPECT_TRUE(p->ok) << p->message;
+  for (const char* f : {"acf.png", "res.png", "fit.png"}) EXPECT_TRUE(is_png(dir.file(f))) << f;
+}
+
+TEST(DiagnosePlots, MissingGnuplotIsNotFatal) {
+  const char* old = std::getenv("LPVID_GNUPLOT");
+  const std::string saved = old ? old : "";
+  setenv("LPVID_GNUPLOT", "/nonexistent/gnuplot-for-lpvid-test", 1);
+  ScratchDir dir("diagnose-plots-nognuplot");
+  const PlotOutcome out = plot_residual(noise(50, 1, 8, 1.0), Mat<double>(), dir.file("r.png"));
+  if (old) setenv("LPVID_GNUPLOT", saved.c_str(), 1);
+  else unsetenv("LPVID_GNUPLOT");
+  EXPECT_FALSE(out.ok);
+  EXPECT_NE(out.message.find("gnuplot"), std::string::npos) << out.message;
+  EXPECT_TRUE(std::filesystem::exists(dir.file("r.csv")));
+}
+
+TEST(DiagnosePlots, BadInputThrows) {
+  const Mat<double> a = noise(50, 1, 9, 1.0);
+  Mat<double> nan = a;
+  nan(0, 0) = std::nan("");
+  EXPECT_THROW(residual_plot_spec(a, noise(49, 1, 1, 1.0)), InputError);
+  EXPECT_THROW(residual_plot_spec(Mat<double>(), a), InputError);
+  EXPECT_THROW(autocorrelation_plot_spec(a, noise(50, 2, 1, 1.0)), InputError);
+  EXPECT_THROW(autocorrelation_plot_spec(nan, a), InputError);
+  EXPECT_THROW(output_fit_plot_spec(a, noise(50, 2, 1, 1.0), Mat<double>()), InputError);
+  EXPECT_THROW(output_fit_plot_spec(a, a, nan), InputError);
+  ScratchDir dir("diagnose-plots-bad");
+  EXPECT_THROW(plot_residual(a, nan, dir.file("r.png")), InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("r.csv")));
+}
+
+}  // namespace
+}  // namespace lpvid
