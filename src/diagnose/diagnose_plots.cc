@@ -61,7 +61,7 @@ std::string short_number(double x) {
 
 std::string sanitise(const std::string& title) {
   std::string out;
-  for (char c : title) {
+  for (char c : title.substr(0, title.find(" ("))) {
     if (std::isalnum(static_cast<unsigned char>(c))) out += c;
     else if (!out.empty() && out.back() != '_') out += '_';
   }
@@ -121,6 +121,7 @@ PlotSpec residual_plot_spec(const Mat<double>& before, const Mat<double>& after,
   spec.xlabel = "sample t";
   spec.ylabel = "residual r(t)";
   spec.width = 1100;
+  spec.key = "outside right top";  // a legend inside would cover part of a long record
   add_columns(spec, before, output_names, "before");
   add_columns(spec, after, output_names, "after");
   spec.hlines.push_back({0.0, "", "#000000", 1});
@@ -132,22 +133,18 @@ PlotSpec autocorrelation_plot_spec(const Mat<double>& before, const Mat<double>&
                                    const ResidualAnalysisOptions& options) {
   check_before_after(before, after, "autocorrelation plot");
   const WhitenessResult wb = residual_whiteness(before, options);
+  const WhitenessResult wa = after.cols() > 0 ? residual_whiteness(after, options) : WhitenessResult{};
   PlotSpec spec;
-  spec.title = "Residual autocorrelation, n = " + std::to_string(before.rows()) + "; Ljung-Box Q vs chi2 threshold " +
-               short_number(wb.outputs[0].q_threshold) + ":";
+  spec.title = "Residual autocorrelation, n = " + std::to_string(before.rows()) +
+               "; Ljung-Box portmanteau Q is white if <= " + short_number(wb.outputs[0].q_threshold) + " (chi2 at " +
+               short_number(100 * wb.level) + "%)";
+  spec.width = 1000;
   const std::vector<double> lags = range(wb.max_lag + 1);
-  for (Eigen::Index i = 0; i < before.cols(); ++i) {
-    const std::string name = output_name(output_names, i);
-    spec.series.push_back(series(name + " before", lags, wb.outputs[static_cast<size_t>(i)].rho, "linespoints"));
-    spec.title += " " + name + " " + short_number(wb.outputs[static_cast<size_t>(i)].q);
-  }
-  if (after.cols() > 0) {
-    const WhitenessResult wa = residual_whiteness(after, options);
-    for (Eigen::Index i = 0; i < after.cols(); ++i) {
-      const std::string name = output_name(output_names, i);
-      spec.series.push_back(series(name + " after", lags, wa.outputs[static_cast<size_t>(i)].rho, "linespoints"));
-      spec.title += (i ? ", " : " -> after: ") + name + " " + short_number(wa.outputs[static_cast<size_t>(i)].q);
-    }
+  for (const auto* w : {&wb, &wa}) {
+    for (size_t i = 0; i < w->outputs.size(); ++i)
+      spec.series.push_back(series(output_name(output_names, static_cast<Eigen::Index>(i)) +
+                                       (w == &wb ? " before" : " after") + " (Q " + short_number(w->outputs[i].q) + ")",
+                                   lags, w->outputs[i].rho, "linespoints"));
   }
   spec.xlabel = "lag k";
   spec.ylabel = "normalised autocorrelation rho(k)";
@@ -174,6 +171,7 @@ PlotSpec output_fit_plot_spec(const Mat<double>& y, const Mat<double>& yhat_befo
   spec.xlabel = "sample t";
   spec.ylabel = "output";
   spec.width = 1100;
+  spec.key = "outside right top";
   add_columns(spec, y, output_names, "measured");
   add_columns(spec, yhat_before, output_names, "model before");
   add_columns(spec, yhat_after, output_names, "model after");

@@ -6,26 +6,17 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 
 #include "core/input_error.h"
 #include "diagnose/diagnose_plots.h"
+#include "diagnose/test_signals.h"
 #include "support/gen_identify.h"
 
 namespace lpvid {
 namespace {
 
 using gen::ScratchDir;
-
-Mat<double> noise(Eigen::Index n, Eigen::Index cols, unsigned seed, double scale) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> g(0.0, scale);
-  Mat<double> m(n, cols);
-  for (Eigen::Index j = 0; j < cols; ++j)
-    for (Eigen::Index i = 0; i < n; ++i) m(i, j) = g(rng);
-  return m;
-}
 
 std::string first_line(const std::string& path) {
   std::ifstream f(path);
@@ -42,11 +33,11 @@ bool is_png(const std::string& path) {
 }
 
 TEST(DiagnosePlots, AutocorrelationScriptHasTheBandLines) {
-  const Mat<double> before = noise(400, 1, 1, 1.0), after = noise(400, 1, 2, 0.5);
+  const Mat<double> before = gaussian(400, 1, 1, 1.0), after = gaussian(400, 1, 2, 0.5);
   const PlotSpec spec = autocorrelation_plot_spec(before, after, {"level"});
   ASSERT_EQ(spec.series.size(), 2u);
-  EXPECT_EQ(spec.series[0].title, "level before");
-  EXPECT_EQ(spec.series[1].title, "level after");
+  EXPECT_EQ(spec.series[0].title.rfind("level before (Q ", 0), 0u) << spec.series[0].title;
+  EXPECT_EQ(spec.series[1].title.rfind("level after (Q ", 0), 0u) << spec.series[1].title;
   EXPECT_EQ(spec.series[0].x.size(), 26u);  // lags 0..25
   ASSERT_GE(spec.hlines.size(), 4u);
   const double b99 = whiteness_band(400, 0.99), b95 = whiteness_band(400, 0.95);
@@ -80,7 +71,7 @@ TEST(DiagnosePlots, HLinesLeaveOldScriptsAlone) {
 }
 
 TEST(DiagnosePlots, SpecsOfResidualAndOutputPlots) {
-  const Mat<double> y = noise(100, 2, 3, 1.0), yb = noise(100, 2, 4, 1.0), ya = y + noise(100, 2, 5, 0.1);
+  const Mat<double> y = gaussian(100, 2, 3, 1.0), yb = gaussian(100, 2, 4, 1.0), ya = y + gaussian(100, 2, 5, 0.1);
   const PlotSpec r = residual_plot_spec(y - yb, y - ya, {"h1"});
   ASSERT_EQ(r.series.size(), 4u);
   EXPECT_EQ(r.series[0].title, "h1 before");
@@ -100,7 +91,7 @@ TEST(DiagnosePlots, SpecsOfResidualAndOutputPlots) {
 
 TEST(DiagnosePlots, WritesCsvAndPngOrSaysWhyNot) {
   ScratchDir dir("diagnose-plots");
-  const Mat<double> before = noise(300, 1, 6, 1.0), after = noise(300, 1, 7, 0.3);
+  const Mat<double> before = gaussian(300, 1, 6, 1.0), after = gaussian(300, 1, 7, 0.3);
   const PlotOutcome a = plot_residual_autocorrelation(before, after, dir.file("acf.png"));
   EXPECT_EQ(first_line(dir.file("acf.csv")),
             "lag,y1_before,y1_after,band_99_upper,band_99_lower,band_95_upper,band_95_lower");
@@ -119,7 +110,7 @@ TEST(DiagnosePlots, MissingGnuplotIsNotFatal) {
   const std::string saved = old ? old : "";
   setenv("LPVID_GNUPLOT", "/nonexistent/gnuplot-for-lpvid-test", 1);
   ScratchDir dir("diagnose-plots-nognuplot");
-  const PlotOutcome out = plot_residual(noise(50, 1, 8, 1.0), Mat<double>(), dir.file("r.png"));
+  const PlotOutcome out = plot_residual(gaussian(50, 1, 8, 1.0), Mat<double>(), dir.file("r.png"));
   if (old) setenv("LPVID_GNUPLOT", saved.c_str(), 1);
   else unsetenv("LPVID_GNUPLOT");
   EXPECT_FALSE(out.ok);
@@ -128,14 +119,14 @@ TEST(DiagnosePlots, MissingGnuplotIsNotFatal) {
 }
 
 TEST(DiagnosePlots, BadInputThrows) {
-  const Mat<double> a = noise(50, 1, 9, 1.0);
+  const Mat<double> a = gaussian(50, 1, 9, 1.0);
   Mat<double> nan = a;
   nan(0, 0) = std::nan("");
-  EXPECT_THROW(residual_plot_spec(a, noise(49, 1, 1, 1.0)), InputError);
+  EXPECT_THROW(residual_plot_spec(a, gaussian(49, 1, 1, 1.0)), InputError);
   EXPECT_THROW(residual_plot_spec(Mat<double>(), a), InputError);
-  EXPECT_THROW(autocorrelation_plot_spec(a, noise(50, 2, 1, 1.0)), InputError);
+  EXPECT_THROW(autocorrelation_plot_spec(a, gaussian(50, 2, 1, 1.0)), InputError);
   EXPECT_THROW(autocorrelation_plot_spec(nan, a), InputError);
-  EXPECT_THROW(output_fit_plot_spec(a, noise(50, 2, 1, 1.0), Mat<double>()), InputError);
+  EXPECT_THROW(output_fit_plot_spec(a, gaussian(50, 2, 1, 1.0), Mat<double>()), InputError);
   EXPECT_THROW(output_fit_plot_spec(a, a, nan), InputError);
   ScratchDir dir("diagnose-plots-bad");
   EXPECT_THROW(plot_residual(a, nan, dir.file("r.png")), InputError);

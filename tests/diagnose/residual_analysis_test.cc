@@ -7,24 +7,14 @@
 
 #include <cmath>
 #include <limits>
-#include <random>
 #include <stdexcept>
 
 #include "core/input_error.h"
 #include "diagnose/residual_analysis.h"
+#include "diagnose/test_signals.h"
 
 namespace lpvid {
 namespace {
-
-/// n × cols standard normal samples from a fixed seed.
-Mat<double> gaussian(Eigen::Index n, Eigen::Index cols, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> g(0.0, 1.0);
-  Mat<double> m(n, cols);
-  for (Eigen::Index j = 0; j < cols; ++j)
-    for (Eigen::Index i = 0; i < n; ++i) m(i, j) = g(rng);
-  return m;
-}
 
 /// e(t) = a·e(t−1) + w(t), w white.
 Mat<double> ar1(Eigen::Index n, double a, unsigned seed) {
