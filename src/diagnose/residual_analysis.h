@@ -67,7 +67,11 @@ struct AutocorrelationTest {
   /// Ljung–Box portmanteau statistic Q = n(n+2) Σ_{k=1}^{L} ρ(k)²/(n−k)
   /// (Ljung & Box, Biometrika 65, 1978); χ²(L) under whiteness.
   double q = 0;
-  double q_threshold = 0;    ///< χ²_{level}(L), chi_square_quantile
+  /// χ²_{level}(L), chi_square_quantile. The degrees of freedom are not
+  /// reduced by the number of fitted parameters (Box–Jenkins use L − p for
+  /// ARMA residuals); with L = 25 and few parameters the difference is small
+  /// and errs towards calling a residual white.
+  double q_threshold = 0;
   bool white = true;         ///< q <= q_threshold
 };
 
