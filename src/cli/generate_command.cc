@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "core/input_error.h"
 #include "data/csv_writer.h"
+#include "examples/effect_cases.h"
 #include "examples/paper_example1.h"
 #include "examples/paper_example2.h"
 #include "model/model_file.h"
@@ -19,7 +20,31 @@ struct GenerateArgs {
   double noise_variance = 0.0;
   uint64_t seed = 1;
   std::string out, model_out, truth_out;
+  std::string effect = "none", validation_out;
+  double noise_std = 0.02;
 };
+
+std::vector<TextColumn> effect_case_columns(const Experiment<Rational>& e) {
+  return {{"u1", column_text(e.u, 0)}, {"y1", column_text(e.y, 0)}, {"rho1", column_text(e.rho, 0)}};
+}
+
+int run_generate_effect_case(const GenerateArgs& a) {
+  if (a.validation_out.empty()) throw InputError("generate effect-case: --validation-out is required");
+  const EffectCase c = make_effect_case(a.effect, a.n, a.seed, a.noise_std);
+  write_csv(a.out, effect_case_columns(c.estimation));
+  write_csv(a.validation_out, effect_case_columns(c.validation));
+  std::cout << "wrote " << a.out << " and " << a.validation_out << " (" << a.n << " samples each, effect '" << a.effect
+            << "', noise std " << a.noise_std << ", seed " << a.seed << ")\n";
+  if (!a.model_out.empty()) {
+    write_model_file(a.model_out, c.declared);
+    std::cout << "wrote " << a.model_out << " (declared model: the LPV system without the effect)\n";
+  }
+  if (!a.truth_out.empty()) {
+    write_model_file(a.truth_out, c.truth);
+    std::cout << "wrote " << a.truth_out << " (the true system, with the effect)\n";
+  }
+  return 0;
+}
 
 int run_generate_example2(const GenerateArgs& a) {
   Example2Options o;
@@ -42,9 +67,10 @@ int run_generate_example2(const GenerateArgs& a) {
 }
 
 int run_generate(const GenerateArgs& a) {
-  if (a.which != "example1" && a.which != "example2")
-    throw InputError("generate: unknown data set '" + a.which + "' (known: example1, example2)");
+  if (a.which != "example1" && a.which != "example2" && a.which != "effect-case")
+    throw InputError("generate: unknown data set '" + a.which + "' (known: example1, example2, effect-case)");
   if (a.n < 2) throw InputError("generate: --n must be at least 2");
+  if (a.which == "effect-case") return run_generate_effect_case(a);
   if (a.which == "example2") return run_generate_example2(a);
   Example1Options o;
   o.n = a.n;
@@ -74,11 +100,16 @@ Runner add_generate_command(CLI::App& app) {
   auto a = std::make_shared<GenerateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "generate", "Write a data set with a known answer (the paper's Example 1, or an Example 2 flavour with an offset)");
-  cmd->add_option("which", a->which, "data set: example1 or example2 (eq. 20: output offset Phi(rho))");
+  cmd->add_option("which", a->which, "data set: example1, example2 (eq. 20: output offset Phi(rho)) or effect-case (issue 4: an undeclared effect)");
   cmd->add_option("--n", a->n, "samples (default 60)");
   cmd->add_option("--noise-variance", a->noise_variance, "variance of the white output noise (paper Table II: 0.1)");
   cmd->add_option("--seed", a->seed, "random seed (default 1)");
-  cmd->add_option("--out", a->out, "data CSV to write")->required();
+  cmd->add_option("--out", a->out, "data CSV to write (effect-case: the estimation record)")->required();
+  std::string kinds;
+  for (const auto& k : effect_case_kinds()) kinds += (kinds.empty() ? "" : ", ") + k;
+  cmd->add_option("--effect", a->effect, "effect-case: the undeclared effect (" + kinds + ")");
+  cmd->add_option("--validation-out", a->validation_out, "effect-case: the validation record to write");
+  cmd->add_option("--noise-std", a->noise_std, "effect-case: standard deviation of the white output noise (0.02)");
   cmd->add_option("--model-out", a->model_out, "also write the initial model (JSON)");
   cmd->add_option("--truth-out", a->truth_out, "also write the true model (JSON)");
   return [cmd, a] { return cmd->parsed() ? run_generate(*a) : -1; };

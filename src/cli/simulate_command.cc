@@ -32,8 +32,7 @@ int run_simulate(const SimulateArgs& a) {
   const Simulation<double> sim = simulate(model, exp);
   std::vector<TextColumn> out;
   for (int i = 0; i < model.ny; ++i) {
-    Mat<double> yh = sim.yhat.col(i) + sim.offset.col(i);
-    out.push_back({model.columns.y[static_cast<size_t>(i)] + "_hat", column_text(yh, 0)});
+    out.push_back({model.columns.y[static_cast<size_t>(i)] + "_hat", column_text(sim.output, i)});
   }
   for (Eigen::Index j = 0; j < sim.z.cols(); ++j) out.push_back({"z" + std::to_string(j + 1), column_text(sim.z, j)});
   if (a.out.empty() || a.out == "-")

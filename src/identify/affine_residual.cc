@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/input_error.h"
 #include "model/simulate.h"
 #include "toeplitz/signal_toeplitz.h"
 
@@ -32,6 +33,13 @@ void add_correction_names(std::vector<std::string>& names, const std::vector<Mon
 template <typename T>
 AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experiment<T>& exp, const Unknowns& unknowns) {
   const Simulation<T> sim = simulate(model, exp);
+  const bool any_unknown = (unknowns.correction && !model.correction.basis.empty()) ||
+                           has_unknown_offset(model, unknowns) || (unknowns.x0 && model.nx > 0);
+  if (any_unknown && model.statics.has_output())
+    throw InputError("the model has a static output map (\"static\".\"output\", " +
+                     std::string(to_string(model.statics.output.kind)) +
+                     "): the output is then not affine in the unknowns, so Theorem 3.1 does not apply; fix the "
+                     "parameters (e.g. by `lpvid diagnose`) and use `lpvid invalidate`");
   AffineResidual<T> a;
   a.n = exp.n();
   a.ny = model.ny;
@@ -39,7 +47,7 @@ AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experime
   if (exp.y.rows() != exp.n() || exp.y.cols() != model.ny)
     throw std::invalid_argument("the experiment has no output y of size n x ny");
   a.z0 = stack_rows(sim.z);
-  a.r0 = stack_rows(Mat<T>(exp.y - sim.yhat - sim.offset));
+  a.r0 = stack_rows(Mat<T>(exp.y - sim.output));
 
   const bool multiplicative = model.uncertainty.structure == UncertaintyStructure::kMultiplicative;
   const bool general = model.uncertainty.structure == UncertaintyStructure::kGeneral;
@@ -74,6 +82,7 @@ AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experime
     free.u.setZero();
     LpvModel<T> m0 = model;
     m0.offset.values.clear();
+    m0.statics = StaticBlocks<T>{};  // zero u' (g_in(0) need not be 0)
     Mat<T> Jy(a.n * a.ny, model.nx), Jz1(a.n * a.nz, model.nx);
     for (int c = 0; c < model.nx; ++c) {
       m0.x0 = Vec<T>::Zero(model.nx);

@@ -164,7 +164,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
   // 1. Exact signals.
   const Simulation<Rational> sim = simulate(model, exp);
-  const Mat<Rational> r = exp.y - sim.yhat - sim.offset;
+  const Mat<Rational> r = exp.y - sim.output;
   const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
 
   // 2. Δ form in floating point; fixed bounds are tightened a little so that
@@ -228,7 +228,7 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
   CertifiedBounds out;
   if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
   const Simulation<Rational> sim = simulate(model, exp);
-  const Mat<Rational> r = exp.y - sim.yhat - sim.offset;
+  const Mat<Rational> r = exp.y - sim.output;
   const Eigen::Index n = exp.n(), ny = model.ny;
   const Mat<Rational> Tz = T_z_paper(model, exp);
   AffineSignals sig;

@@ -121,6 +121,13 @@ LpvModel<To> convert_model(const LpvModel<From>& m) {
   out.uncertainty.weight = conv<To>(m.uncertainty.weight);
   out.uncertainty.C1 = conv<To>(m.uncertainty.C1);
   out.uncertainty.D1 = conv<To>(m.uncertainty.D1);
+  out.statics.input_delay = m.statics.input_delay;
+  for (auto [dst, src] : {std::pair{&out.statics.input, &m.statics.input}, std::pair{&out.statics.output, &m.statics.output}}) {
+    dst->kind = src->kind;
+    dst->lower = conv<To>(src->lower);
+    dst->upper = conv<To>(src->upper);
+    for (const auto& c : src->coefficients) dst->coefficients.push_back(conv<To>(c));
+  }
   out.offset.basis = m.offset.basis;
   for (const auto& v : m.offset.values) out.offset.values.push_back(conv<To>(v));
   out.x0 = conv<To>(m.x0);

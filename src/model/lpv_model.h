@@ -16,6 +16,7 @@
 #include "core/scalar.h"
 #include "model/monomial.h"
 #include "model/param_matrix.h"
+#include "model/static_blocks.h"
 
 namespace lpvid {
 
@@ -66,6 +67,7 @@ struct LpvModel {
   Uncertainty<T> uncertainty;
   Offset<T> offset;
   Vec<T> x0;  ///< length nx; zero unless given
+  StaticBlocks<T> statics;  ///< input delay, static input/output maps (model/static_blocks.h); none by default
 
   int n_rho() const { return static_cast<int>(scheduling.size()); }
   /// Size of the uncertainty channel z (ny for multiplicative, nu for additive,

@@ -242,7 +242,7 @@ class ModelReader {
            "expected \"" + std::string(kModelFormat) + "\", got \"" + format + "\"");
     check_keys(root, path,
                {"format", "description", "states", "inputs", "outputs", "scheduling", "columns", "initial",
-                "correction", "uncertainty", "offset", "x0"});
+                "correction", "uncertainty", "offset", "x0", "static"});
     if (const JsonNode* d = root.find("description")) string_at(*d, member_path(path, "description"));
 
     LpvModel<T> m;
@@ -380,7 +380,51 @@ class ModelReader {
       m.x0 = vector<T>(*x, member_path(path, "x0"), nx);
     else
       m.x0 = Vec<T>::Zero(nx);
+
+    // static blocks (model/static_blocks.h): input delay, input and output maps
+    if (const JsonNode* st = root.find("static")) {
+      const std::string sp = member_path(path, "static");
+      expect(*st, Kind::kObject, sp);
+      check_keys(*st, sp, {"input_delay", "input", "output"});
+      if (const JsonNode* d = st->find("input_delay"))
+        m.statics.input_delay = integer_at(*d, member_path(sp, "input_delay"), 0, 100000);
+      if (const JsonNode* in = st->find("input")) m.statics.input = static_map<T>(*in, member_path(sp, "input"));
+      if (const JsonNode* out = st->find("output")) m.statics.output = static_map<T>(*out, member_path(sp, "output"));
+    }
     return m;
+  }
+
+  /// {"kind": ..., "lower"/"upper" | "coefficients"} (model/static_blocks.h).
+  template <typename T>
+  StaticMap<T> static_map(const JsonNode& n, const std::string& path) const {
+    expect(n, Kind::kObject, path);
+    StaticMap<T> g;
+    const JsonNode& k = required(n, path, "kind");
+    const std::string kind = string_at(k, member_path(path, "kind"));
+    if (!static_kind_from_string(kind, g.kind))
+      fail(k, member_path(path, "kind"),
+           "unknown static map \"" + kind + "\" (expected identity, saturation, dead_zone, abs or polynomial)");
+    switch (g.kind) {
+      case StaticKind::kSaturation:
+      case StaticKind::kDeadZone:
+        check_keys(n, path, {"kind", "lower", "upper"});
+        g.lower = number<T>(required(n, path, "lower"), member_path(path, "lower"));
+        g.upper = number<T>(required(n, path, "upper"), member_path(path, "upper"));
+        if (!(g.lower <= g.upper)) fail(n, path, "lower must not exceed upper");
+        break;
+      case StaticKind::kPolynomial: {
+        check_keys(n, path, {"kind", "coefficients"});
+        const JsonNode& c = required(n, path, "coefficients");
+        const std::string cp = member_path(path, "coefficients");
+        expect(c, Kind::kArray, cp);
+        if (c.items.empty()) fail(c, cp, "a polynomial needs at least one coefficient (c0, c1, ...)");
+        for (size_t i = 0; i < c.items.size(); ++i) g.coefficients.push_back(number<T>(c.items[i], index_path(cp, i)));
+        break;
+      }
+      case StaticKind::kIdentity:
+      case StaticKind::kAbs: check_keys(n, path, {"kind"}); break;
+    }
+    return g;
   }
 
  private:
@@ -549,6 +593,30 @@ ojson to_json(const LpvModel<T>& m) {
   bool x0_nonzero = false;
   for (Eigen::Index i = 0; i < m.x0.size(); ++i) x0_nonzero = x0_nonzero || m.x0(i) != T(0);
   if (x0_nonzero) j["x0"] = vector_json(m.x0);
+
+  if (!m.statics.empty()) {
+    if (m.statics.input_delay < 0) bad_model("static.input_delay must be >= 0");
+    ojson st = ojson::object();
+    if (m.statics.input_delay != 0) st["input_delay"] = m.statics.input_delay;
+    auto map_json = [](const StaticMap<T>& g, const std::string& where) {
+      g.check(where);
+      ojson o = ojson::object();
+      o["kind"] = to_string(g.kind);
+      if (g.kind == StaticKind::kSaturation || g.kind == StaticKind::kDeadZone) {
+        o["lower"] = number_to_json(g.lower);
+        o["upper"] = number_to_json(g.upper);
+      }
+      if (g.kind == StaticKind::kPolynomial) {
+        ojson c = ojson::array();
+        for (const T& x : g.coefficients) c.push_back(number_to_json(x));
+        o["coefficients"] = std::move(c);
+      }
+      return o;
+    };
+    if (!m.statics.input.is_identity()) st["input"] = map_json(m.statics.input, "static.input");
+    if (m.statics.has_output()) st["output"] = map_json(m.statics.output, "static.output");
+    j["static"] = std::move(st);
+  }
   return j;
 }
 

@@ -184,11 +184,13 @@ struct Simulation {
   Mat<T> yhat;    ///< n × ny: ŷ_k = C(ρ_k) x_k + D(ρ_k) u_k (no offset)
   Mat<T> z;       ///< n × nz: z_k = C1(ρ_k) x_k + D1(ρ_k) u_k
   Mat<T> offset;  ///< n × ny: Φ(ρ_k) (zero if the offset values are not given)
+  Mat<T> output;  ///< n × ny: g_out(ŷ_k + Φ_k), the model's prediction of y (model/static_blocks.h)
 };
 
 /// Simulates the model (SPEC §2, paper eq. 1 / 8–10) along the experiment's u
-/// and ρ from x_0 = model.x0 (zero if empty). The model output with offset
-/// is yhat + offset. Throws std::invalid_argument on size mismatches.
+/// and ρ from x_0 = model.x0 (zero if empty). The LPV part sees the input
+/// u' = g_in(u_{k−d}) of the model's static blocks (identity unless declared);
+/// the model's prediction of y is output = g_out(yhat + offset). Throws std::invalid_argument on size mismatches.
 template <typename T>
 Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp) {
   const SystemMatrices<T> s = system_matrices(model);
@@ -199,16 +201,18 @@ Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp) {
   sim.yhat = Mat<T>::Zero(n, model.ny);
   sim.z = Mat<T>::Zero(n, nz);
   sim.offset = Mat<T>::Zero(n, model.ny);
+  const Mat<T> u_model = model.statics.model_input(exp.u);  // u' = g_in(u_{k−d})
   Vec<T> x = model.x0.size() == 0 ? Vec<T>(Vec<T>::Zero(model.nx)) : model.x0;
   for (Eigen::Index k = 0; k < n; ++k) {
     const Vec<T> rho = detail::rho_at(exp.rho, k);
-    const Vec<T> u = exp.u.row(k).transpose();
+    const Vec<T> u = u_model.row(k).transpose();
     sim.x.row(k) = x.transpose();
     sim.yhat.row(k) = (s.C.at(rho) * x + s.D.at(rho) * u).transpose();
     sim.z.row(k) = (s.C1.at(rho) * x + s.D1.at(rho) * u).transpose();
     sim.offset.row(k) = offset_at(model, rho).transpose();
     if (k + 1 < n) x = (s.A.at(rho) * x + s.B.at(rho) * u).eval();
   }
+  sim.output = model.statics.output.apply(Mat<T>(sim.yhat + sim.offset));
   return sim;
 }
 
@@ -248,6 +252,7 @@ std::vector<Mat<T>> correction_regressors(const LpvModel<T>& model, const Experi
   const Eigen::Index n = exp.n();
   if (sim.x.rows() != n || sim.x.cols() != model.nx)
     throw std::invalid_argument("correction_regressors: simulation does not match the experiment/model");
+  const Mat<T> u_model = model.statics.model_input(exp.u);  // u' (model/static_blocks.h)
   std::vector<Mat<T>> out;
   for (const Monomial& f : model.correction.basis) {
     detail::check_basis(f, model.n_rho(), "correction basis");
@@ -255,7 +260,7 @@ std::vector<Mat<T>> correction_regressors(const LpvModel<T>& model, const Experi
     for (Eigen::Index k = 0; k < n; ++k) {
       const T fk = f.template eval<T>(detail::rho_at(exp.rho, k));
       r.row(k).head(model.nx) = fk * sim.x.row(k);
-      r.row(k).tail(model.nu) = fk * exp.u.row(k);
+      r.row(k).tail(model.nu) = fk * u_model.row(k);
     }
     out.push_back(std::move(r));
   }

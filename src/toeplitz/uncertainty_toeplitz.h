@@ -73,7 +73,7 @@ Mat<T> T_z_paper(const LpvModel<T>& model, const Experiment<T>& exp) {
           "Toeplitz mode 'paper' (T_z = T_G12 T_u, eq. 4) assumes x_0 = 0, but the model has a non-zero x0; "
           "use mode 'signal'");
   const Mat<T> TG12 = system_toeplitz(model, exp, SystemChannel::kUncertainty);
-  return TG12 * signal_toeplitz(exp.u);
+  return TG12 * signal_toeplitz(Mat<T>(model.statics.model_input(exp.u)));  // u' (model/static_blocks.h)
 }
 
 /// T_z of Theorem 2.1 in the given mode (see the file comment), (n·nz) × n.

@@ -1,0 +1,206 @@
+// lpvid diagnose: residual → missing effect → better model, before/after
+// (SPEC §6, §8; issue 4). See src/diagnose/effect_ranking.h for the method.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/diagnose_output.h"
+#include "cli/inputs.h"
+#include "cli/report.h"
+#include "core/input_error.h"
+#include "data/csv_reader.h"
+#include "data/experiment_builder.h"
+#include "diagnose/effect_ranking.h"
+#include "diagnose/window_bounds.h"
+#include "model/model_file.h"
+#include "solvers/external_solvers.h"
+
+namespace lpvid::cli {
+namespace {
+
+struct DiagnoseArgs {
+  CommonOptions common;
+  std::string validation_path;
+  std::vector<std::string> validation_columns;  ///< replaces the model's u, y columns in order
+  std::vector<std::string> validation_names;    ///< headerless validation file
+  std::string validation_rows;
+  double holdout = 0.3;
+  int max_effects = 3;
+  double min_gain = 0.05;
+  int degree = 2;
+  int max_delay = 5;
+  int init_samples = 5;
+  bool input_scheduling = true;
+  std::string window_text;
+  std::string plots_dir;
+  std::string model_out;
+};
+
+std::pair<long, long> parse_range(const std::string& text, const char* flag) {
+  const size_t colon = text.find(':');
+  long b = 0, e = 0;
+  try {
+    if (colon == std::string::npos) throw std::invalid_argument("no colon");
+    b = std::stol(text.substr(0, colon));
+    e = std::stol(text.substr(colon + 1));
+  } catch (const std::exception&) {
+    throw InputError(std::string(flag) + ": expected B:E (0-based rows, E exclusive), got '" + text + "'");
+  }
+  if (b < 0 || e <= b) throw InputError(std::string(flag) + ": need 0 <= B < E, got '" + text + "'");
+  return {b, e};
+}
+
+/// Column map of the validation data: est column name → validation name.
+ColumnMap validation_map(const LpvModel<double>& declared, const LpvModel<double>& m,
+                         const std::vector<std::string>& renamed) {
+  if (renamed.empty()) return m.columns;
+  std::vector<std::string> from = declared.columns.u;
+  from.insert(from.end(), declared.columns.y.begin(), declared.columns.y.end());
+  if (renamed.size() != from.size())
+    throw InputError("--validation-columns: expected " + std::to_string(from.size()) +
+                     " names (the model's u columns then y columns), got " + std::to_string(renamed.size()));
+  auto rename = [&](const std::string& c) {
+    for (size_t i = 0; i < from.size(); ++i)
+      if (from[i] == c) return renamed[i];
+    return c;
+  };
+  ColumnMap out = m.columns;
+  for (auto* v : {&out.u, &out.y, &out.rho})
+    for (auto& c : *v) c = rename(c);
+  return out;
+}
+
+int run_diagnose(DiagnoseArgs& a) {
+  if (!(a.holdout > 0 && a.holdout < 1)) throw InputError("--holdout must be in (0, 1)");
+  if (!(a.min_gain >= 0 && a.min_gain < 1)) throw InputError("--min-gain must be in [0, 1)");
+  Inputs in = load_inputs(a.common);
+  LpvModel<double> declared = in.model_d;
+  if (a.input_scheduling) declared = with_input_scheduling(declared);
+  const long file_offset = a.common.rows_text.empty() ? 0 : a.common.row_begin;
+
+  // estimation (double + exact) and validation experiments
+  const TextTable table =
+      a.common.names.empty() ? read_table(a.common.data_path) : read_table(a.common.data_path, a.common.names);
+  Experiment<Rational> est_q = make_experiment<Rational>(table, declared.columns);
+  Experiment<double> est_d = make_experiment<double>(table, declared.columns);
+  if (!a.common.rows_text.empty()) {
+    est_q = select_rows(est_q, a.common.row_begin, a.common.row_end);
+    est_d = select_rows(est_d, a.common.row_begin, a.common.row_end);
+  }
+  Experiment<double> val_d;
+  std::string val_text;
+  const bool separate = !a.validation_path.empty() || !a.validation_columns.empty();
+  if (separate) {
+    const std::string vp = a.validation_path.empty() ? a.common.data_path : a.validation_path;
+    const std::vector<std::string>& vn = a.validation_path.empty() ? a.common.names : a.validation_names;
+    const TextTable vt = vn.empty() ? read_table(vp) : read_table(vp, vn);
+    val_d = make_experiment<double>(vt, validation_map(in.model_d, declared, a.validation_columns));
+    val_text = vp;
+    if (!a.validation_rows.empty()) {
+      const auto [b, e] = parse_range(a.validation_rows, "--validation-rows");
+      if (e > val_d.n()) throw InputError("--validation-rows: the validation data has " + std::to_string(val_d.n()) + " rows");
+      val_d = select_rows(val_d, b, e);
+      val_text += " rows " + a.validation_rows;
+    }
+  } else {
+    const Eigen::Index n = est_d.n();
+    const auto cut = static_cast<Eigen::Index>(std::floor(static_cast<double>(n) * (1.0 - a.holdout)));
+    if (cut < 10 || n - cut < 10)
+      throw InputError("--holdout " + std::to_string(a.holdout) + " leaves fewer than 10 samples on one side of " +
+                       std::to_string(n));
+    val_d = select_rows(est_d, cut, n);
+    est_d = select_rows(est_d, 0, cut);
+    est_q = select_rows(est_q, 0, cut);
+    val_text = a.common.data_path + " rows " + std::to_string(file_offset + cut) + ":" + std::to_string(file_offset + n) +
+               " (held out: the last " + std::to_string(n - cut) + " samples, not used to fit)";
+  }
+  if (val_d.n() < a.init_samples + 5) throw InputError("the validation data has too few samples");
+
+  RankingOptions ro;
+  ro.max_effects = a.max_effects;
+  ro.min_gain = a.min_gain;
+  ro.init_samples = a.init_samples;
+  ro.candidates.max_degree = a.degree;
+  ro.candidates.max_delay = a.max_delay;
+  const RankingResult rank = rank_effects(declared, est_d, val_d, ro);
+
+  // verified bounds before and after, on the bound window of the estimation data
+  Eigen::Index wb = 0, we = std::min<Eigen::Index>(est_q.n(), 200);
+  if (!a.window_text.empty()) {
+    const auto [b, e] = parse_range(a.window_text, "--window");
+    wb = b;
+    we = e;
+  }
+  CertifyOptions co;
+  co.objective = in.objective;
+  co.solver.verbose = a.common.verbose;
+  co.max_taps = a.common.max_taps;
+  co.data_path = a.common.data_path;
+  co.data_names = a.common.names;
+  const std::string cert_stem = [&] {
+    std::string c = certificate_path(a.common);
+    const size_t dot = c.rfind(".json");
+    return dot == std::string::npos ? c : c.substr(0, dot);
+  }();
+  auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
+  const LpvModel<double> before = round_fitted_model(rank.before);
+  const LpvModel<double> after = round_fitted_model(rank.after);
+  co.certificate_path = cert_stem + ".before.json";
+  const WindowBounds bb = certify_window(before, est_d, est_q, wb, we, file_offset, co, *solver);
+  co.certificate_path = cert_stem + ".after.json";
+  const WindowBounds ba = certify_window(after, est_d, est_q, wb, we, file_offset, co, *solver);
+
+  DiagnoseReportInputs ri;
+  ri.command_line_data = a.common.data_path;
+  ri.validation = val_text;
+  ri.rank = &rank;
+  ri.before = &bb;
+  ri.after = &ba;
+  ri.before_model = &before;
+  ri.after_model = &after;
+  ri.est = &est_d;
+  ri.val = &val_d;
+  ri.init_samples = a.init_samples;
+  ri.plots_dir = a.plots_dir;
+  ri.model_out = a.model_out;
+  ri.solver = a.common.solver;
+  if (!a.model_out.empty()) write_model_file(a.model_out, ba.model);
+  print_and_write_diagnose_report(ri, a.common.report_path);
+  return bb.bounds.verified && ba.bounds.verified ? kExitOk : kExitNotVerified;
+}
+
+}  // namespace
+
+Runner add_diagnose_command(CLI::App& app) {
+  auto a = std::make_shared<DiagnoseArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "diagnose", "Residual -> missing effect -> re-fitted model, with before/after RMS and verified bounds (SPEC 6)");
+  add_common_options(*cmd, a->common, true);
+  cmd->add_option("--validation", a->validation_path, "validation data file (default: hold out the end of --data)");
+  cmd->add_option("--validation-columns", a->validation_columns,
+                  "validation column names replacing the model's u then y columns, e.g. uVal,yVal (same file if "
+                  "--validation is not given)")
+      ->delimiter(',');
+  cmd->add_option("--validation-names", a->validation_names, "column names of a headerless validation file")
+      ->delimiter(',');
+  cmd->add_option("--validation-rows", a->validation_rows, "rows B:E of the validation data");
+  cmd->add_option("--holdout", a->holdout, "fraction of --data held out for validation when none is given (0.3)");
+  cmd->add_option("--max-effects", a->max_effects, "effects to add at most (default 3)")->check(CLI::Range(0, 20));
+  cmd->add_option("--min-gain", a->min_gain, "relative validation-RMS reduction an effect must reach (default 0.05)");
+  cmd->add_option("--degree", a->degree, "largest degree of basis-term monomials (default 2)")->check(CLI::Range(1, 6));
+  cmd->add_option("--max-delay", a->max_delay, "largest input delay tried (default 5)")->check(CLI::Range(0, 100));
+  cmd->add_option("--init-samples", a->init_samples, "validation samples used to fit the initial state (default 5)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_flag("!--no-input-scheduling", a->input_scheduling,
+                "do not try basis terms scheduled on the measured inputs (rho = u)");
+  cmd->add_option("--window", a->window_text,
+                  "estimation rows B:E on which the bounds are certified (default 0:min(n,200))");
+  cmd->add_option("--plots", a->plots_dir, "directory for the PNG plots and their CSV data");
+  cmd->add_option("--model-out", a->model_out, "write the model after diagnosis (exact, as certified)");
+  return [cmd, a] { return cmd->parsed() ? run_diagnose(*a) : -1; };
+}
+
+}  // namespace lpvid::cli

@@ -1,0 +1,26 @@
+#pragma once
+/// The report of `lpvid diagnose` (SPEC §8: effects, before, after, plots):
+/// printed in a readable form and written as JSON.
+
+#include <string>
+
+#include "data/experiment.h"
+#include "diagnose/effect_ranking.h"
+#include "diagnose/window_bounds.h"
+
+namespace lpvid::cli {
+
+struct DiagnoseReportInputs {
+  std::string command_line_data, validation, plots_dir, model_out, solver;
+  const RankingResult* rank = nullptr;
+  const WindowBounds *before = nullptr, *after = nullptr;
+  const LpvModel<double>*before_model = nullptr, *after_model = nullptr;  ///< as rounded for the certificates
+  const Experiment<double>*est = nullptr, *val = nullptr;
+  int init_samples = 5;
+};
+
+/// Prints the report, makes the plots (if plots_dir is set) and writes the
+/// JSON report (if report_path is set).
+void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::string& report_path);
+
+}  // namespace lpvid::cli

@@ -1,0 +1,202 @@
+#include "diagnose/effect_candidates.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "model/simulate.h"
+
+namespace lpvid {
+
+namespace {
+
+/// q-quantile (0 ≤ q ≤ 1) of all entries of m, by nearest rank.
+double quantile(const Mat<double>& m, double q) {
+  std::vector<double> v(m.data(), m.data() + m.size());
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const auto i = static_cast<size_t>(std::clamp(q, 0.0, 1.0) * static_cast<double>(v.size() - 1) + 0.5);
+  return v[std::min(i, v.size() - 1)];
+}
+
+void pad(Monomial& f) { f.powers.push_back(0); }
+
+void pad(ParamMatrix<double>& pm) {
+  for (auto& t : pm.terms) pad(t.basis);
+}
+
+bool has_term(const ParamMatrix<double>& pm, const Monomial& f) {
+  return std::any_of(pm.terms.begin(), pm.terms.end(), [&](const auto& t) { return t.basis == f; });
+}
+
+/// All monomials of n variables with total degree 1..max_degree.
+std::vector<Monomial> monomials(size_t n, int max_degree) {
+  std::vector<Monomial> out;
+  std::vector<int> p(n, 0);
+  // enumerate exponent vectors in a fixed order (odometer over 0..max_degree)
+  while (true) {
+    int deg = 0;
+    for (int e : p) deg += e;
+    if (deg >= 1 && deg <= max_degree) out.push_back(Monomial{p});
+    size_t k = 0;
+    while (k < n && ++p[k] > max_degree) p[k++] = 0;
+    if (k == n) break;
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Monomial& a, const Monomial& b) { return a.degree() < b.degree(); });
+  return out;
+}
+
+/// A scheduling name for an input column ("u1" → "u1"; other characters → '_').
+std::string scheduling_name(const std::string& column, const std::vector<std::string>& taken) {
+  std::string s;
+  for (char c : column) s += (std::isalnum(static_cast<unsigned char>(c)) || c == '_') ? c : '_';
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "rho_" + s;
+  std::string name = s;
+  for (int i = 2; std::find(taken.begin(), taken.end(), name) != taken.end(); ++i) name = s + "_" + std::to_string(i);
+  return name;
+}
+
+EffectCandidate make(const std::string& kind, const std::string& label, int extra,
+                     std::vector<LpvModel<double>> starts) {
+  EffectCandidate c;
+  c.kind = kind;
+  c.label = label;
+  c.effect_parameters = extra;
+  c.slots = refit_slots(starts.front());
+  c.starts = std::move(starts);
+  return c;
+}
+
+}  // namespace
+
+std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> s = output_map_slots(m);
+  for (auto v : {offset_slots(m), x0_slots(m), static_map_slots(m)}) s.insert(s.end(), v.begin(), v.end());
+  return s;
+}
+
+LpvModel<double> with_input_scheduling(const LpvModel<double>& m) {
+  LpvModel<double> out = m;
+  for (const std::string& col : m.columns.u)
+    if (std::find(out.columns.rho.begin(), out.columns.rho.end(), col) == out.columns.rho.end())
+      out = add_scheduling_variable(out, scheduling_name(col, out.scheduling), col);
+  return out;
+}
+
+LpvModel<double> add_scheduling_variable(const LpvModel<double>& m, const std::string& name,
+                                         const std::string& column) {
+  LpvModel<double> out = m;
+  out.scheduling.push_back(name);
+  out.columns.rho.push_back(column);
+  for (ParamMatrix<double>* pm : {&out.A, &out.B, &out.C, &out.D, &out.uncertainty.C1, &out.uncertainty.D1}) pad(*pm);
+  for (Monomial& f : out.correction.basis) pad(f);
+  for (Monomial& f : out.offset.basis) pad(f);
+  return out;
+}
+
+std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, const Experiment<double>& est,
+                                               const CandidateOptions& o) {
+  std::vector<EffectCandidate> out;
+  const LpvModel<double> base = explicit_model(current);
+  const Simulation<double> sim = simulate(base, est);
+  const Mat<double> v = sim.yhat + sim.offset;  // what a static output map would act on
+
+  // basis_term: new f(ρ) in S_C (eq. 10), entering C and D
+  for (const Monomial& f : monomials(base.scheduling.size(), o.max_degree)) {
+    if (has_term(base.C, f) || has_term(base.D, f)) continue;
+    std::string note;
+    for (size_t k = 0; k < f.powers.size(); ++k)
+      if (f.powers[k] > 0 && std::find(base.columns.u.begin(), base.columns.u.end(), base.columns.rho[k]) !=
+                                 base.columns.u.end())
+        note += (note.empty() ? " (scheduled on the measured input " : ", ") +
+                (base.scheduling[k] == base.columns.rho[k] ? base.scheduling[k]
+                                                           : base.scheduling[k] + " = " + base.columns.rho[k]);
+    if (!note.empty()) note += ")";
+    LpvModel<double> s = base;
+    s.C.add(f, Mat<double>::Zero(base.ny, base.nx));
+    s.D.add(f, Mat<double>::Zero(base.ny, base.nu));
+    out.push_back(make("basis_term", "basis_term " + f.text(base.scheduling) + " in C, D" + note,
+                       base.ny * (base.nx + base.nu), {s}));
+  }
+
+  // output_offset: Φ = φ_1 (basis 1) when the model has no constant offset
+  {
+    const Monomial one = constant_monomial(base.scheduling.size());
+    if (std::find(base.offset.basis.begin(), base.offset.basis.end(), one) == base.offset.basis.end()) {
+      LpvModel<double> s = base;
+      s.offset.basis.push_back(one);
+      s.offset.values.push_back(Vec<double>::Zero(base.ny));
+      out.push_back(make("output_offset", "output_offset phi (constant)", base.ny, {s}));
+    }
+  }
+
+  const auto with_input = [&](StaticKind kind, double lo, double hi, std::vector<double> coef = {}) {
+    LpvModel<double> s = base;
+    s.statics.input.kind = kind;
+    s.statics.input.lower = lo;
+    s.statics.input.upper = hi;
+    s.statics.input.coefficients = std::move(coef);
+    return s;
+  };
+  const auto with_output = [&](StaticKind kind, double lo, double hi, std::vector<double> coef = {}) {
+    LpvModel<double> s = base;
+    s.statics.output.kind = kind;
+    s.statics.output.lower = lo;
+    s.statics.output.upper = hi;
+    s.statics.output.coefficients = std::move(coef);
+    return s;
+  };
+  const bool free_input = base.statics.input.is_identity();
+  const bool free_output = base.statics.output.is_identity();
+  const double umin = quantile(est.u, 0), umax = quantile(est.u, 1), ur = std::max(umax - umin, 1e-12);
+  const double vmin = quantile(v, 0), vmax = quantile(v, 1), vr = std::max(vmax - vmin, 1e-12);
+
+  if (free_input) {
+    out.push_back(make("input_saturation", "input_saturation", 2,
+                       {with_input(StaticKind::kSaturation, quantile(est.u, 0.05), quantile(est.u, 0.95)),
+                        with_input(StaticKind::kSaturation, umin - ur, quantile(est.u, 0.85)),
+                        with_input(StaticKind::kSaturation, quantile(est.u, 0.15), umax + ur)}));
+    const double mid = quantile(est.u, 0.5);
+    out.push_back(make("dead_zone", "dead_zone (input)", 2,
+                       {with_input(StaticKind::kDeadZone, mid - 0.1 * ur, mid + 0.1 * ur),
+                        with_input(StaticKind::kDeadZone, mid - 0.25 * ur, mid + 0.25 * ur),
+                        with_input(StaticKind::kDeadZone, -0.1 * ur, 0.1 * ur)}));
+    std::vector<double> c(static_cast<size_t>(o.polynomial_degree + 1), 0.0);
+    c[1] = 1;
+    out.push_back(make("input_polynomial", "input_polynomial degree " + std::to_string(o.polynomial_degree),
+                       o.polynomial_degree, {with_input(StaticKind::kPolynomial, 0, 0, c)}));
+  }
+  if (free_output) {
+    out.push_back(make("output_saturation", "output_saturation", 2,
+                       {with_output(StaticKind::kSaturation, quantile(v, 0.05), quantile(v, 0.95)),
+                        with_output(StaticKind::kSaturation, vmin - vr, quantile(v, 0.85)),
+                        with_output(StaticKind::kSaturation, quantile(v, 0.15), vmax + vr)}));
+    {
+      // |·| at the sensor: the fit also needs a constant offset inside the map
+      LpvModel<double> s = with_output(StaticKind::kAbs, 0, 0);
+      const Monomial one = constant_monomial(base.scheduling.size());
+      int extra = 0;
+      if (std::find(s.offset.basis.begin(), s.offset.basis.end(), one) == s.offset.basis.end()) {
+        s.offset.basis.push_back(one);
+        s.offset.values.push_back(Vec<double>::Zero(base.ny));
+        extra = base.ny;
+      }
+      out.push_back(make("abs_value", "abs_value (sensor)", extra, {s}));
+    }
+    std::vector<double> c(static_cast<size_t>(o.polynomial_degree + 1), 0.0);
+    c[1] = 1;
+    out.push_back(make("output_polynomial", "output_polynomial degree " + std::to_string(o.polynomial_degree),
+                       o.polynomial_degree, {with_output(StaticKind::kPolynomial, 0, 0, c)}));
+  }
+  if (base.statics.input_delay == 0 && o.max_delay > 0) {
+    std::vector<LpvModel<double>> starts;
+    for (int d = 1; d <= o.max_delay; ++d) {
+      LpvModel<double> s = base;
+      s.statics.input_delay = d;
+      starts.push_back(s);
+    }
+    out.push_back(make("input_delay", "input_delay", 1, std::move(starts)));
+  }
+  return out;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,63 @@
+#pragma once
+/// The library of candidate effects that `lpvid diagnose` tries (SPEC §6,
+/// effect kinds of SPEC §8, issue 4 item 2). Each candidate is the current
+/// model with ONE effect added at a starting guess, plus the slots the fit
+/// may move (the effect's own parameters, the output map C, D, the offset
+/// and x0: adding an effect re-fits the output map, A and B stay).
+///
+/// Kinds and where they enter:
+///   basis_term         a new f(ρ) in S_C (eq. 10): terms f(ρ)·C_f x + f(ρ)·D_f u
+///                      in the output, f a monomial of the model's scheduling
+///                      variables (with_input_scheduling adds the measured
+///                      inputs as scheduling variables: ρ = u)
+///   output_offset      Φ(ρ) (eq. 20) with basis 1 (and ρ monomials)
+///   input_saturation   static input map (model/static_blocks.h)
+///   output_saturation  static output map
+///   dead_zone          static input map
+///   abs_value          |·| at the sensor: static output map
+///   input_polynomial   u' = c0 + u + c2 u² + c3 u³
+///   output_polynomial  y  = c0 + v + c2 v² + c3 v³ (v = ŷ + Φ)
+///   input_delay        u'_k = u_{k−d}, d = 1 … max_delay
+/// A candidate never depends on the data set's name: only on the model's
+/// structure and the ranges of the estimation signals (starting guesses).
+
+#include <string>
+#include <vector>
+
+#include "data/experiment.h"
+#include "diagnose/model_parameters.h"
+
+namespace lpvid {
+
+struct CandidateOptions {
+  int max_degree = 2;               ///< monomials of ρ up to this degree for basis_term
+  int max_delay = 5;                ///< input delays 1..max_delay
+  int polynomial_degree = 3;        ///< input/output polynomials
+};
+
+struct EffectCandidate {
+  std::string kind;     ///< SPEC §8 effect kind
+  std::string label;    ///< e.g. "basis_term rho1^2 (C, D)", "input_delay 2"
+  int effect_parameters = 0;            ///< parameters the effect adds
+  std::vector<LpvModel<double>> starts; ///< the model with the effect at each starting guess
+  std::vector<ParameterSlot> slots;     ///< what the fit moves (same for every start)
+};
+
+/// The candidates for the current (explicit) model. Skips an effect that the
+/// model already has (a static map already present, an existing basis term).
+std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, const Experiment<double>& est,
+                                               const CandidateOptions& options);
+
+/// The slots that are re-fitted with every candidate: C, D terms, offset, x0
+/// and the static maps' parameters.
+std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m);
+
+/// The model with every input column that is not yet a scheduling variable
+/// added as one (named after the column): lets basis_term try f(u)·x, f(u)·u.
+LpvModel<double> with_input_scheduling(const LpvModel<double>& m);
+
+/// The model with one more scheduling variable `name` read from data column
+/// `column` (every basis monomial padded with a zero power).
+LpvModel<double> add_scheduling_variable(const LpvModel<double>& m, const std::string& name, const std::string& column);
+
+}  // namespace lpvid

@@ -1,0 +1,176 @@
+#include "diagnose/effect_ranking.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "model/simulate.h"
+
+namespace lpvid {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+ojson matrix_json(const Mat<double>& m) {
+  ojson rows = ojson::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    ojson row = ojson::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(m(i, j));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+/// The C and D terms of `fitted` whose basis `previous` does not have.
+void new_terms_json(const ParamMatrix<double>& fitted, const ParamMatrix<double>& previous, const char* key,
+                    const std::vector<std::string>& names, ojson& out) {
+  for (const auto& t : fitted.terms) {
+    bool old = false;
+    for (const auto& p : previous.terms) {
+      Monomial padded = p.basis;
+      padded.powers.resize(t.basis.powers.size(), 0);
+      old = old || padded == t.basis;
+    }
+    if (old) continue;
+    out["basis"] = t.basis.text(names);
+    out[key] = matrix_json(t.value);
+  }
+}
+
+ScoredCandidate fit_candidate(const EffectCandidate& c, const Experiment<double>& est, const Experiment<double>& val,
+                              const RankingOptions& o, const LpvModel<double>& previous) {
+  ScoredCandidate s;
+  s.kind = c.kind;
+  s.label = c.label;
+  s.effect_parameters = c.effect_parameters;
+  double best = std::numeric_limits<double>::infinity();
+  for (const LpvModel<double>& start : c.starts) {
+    const FitResult f = fit_slots(start, c.slots, est, o.fit);
+    if (f.finite && f.rms < best) {
+      best = f.rms;
+      s.model = f.model;
+    }
+  }
+  s.rms_estimation = best;
+  if (!std::isfinite(best)) {
+    s.rms_validation = s.score = std::numeric_limits<double>::infinity();
+    s.model = c.starts.front();
+    return s;
+  }
+  s.rms_validation = validation_rms(s.model, val, o.init_samples);
+  const double nval = static_cast<double>(val.n() * val.ny());
+  s.score = s.rms_validation * s.rms_validation * (1.0 + 2.0 * s.effect_parameters / nval);
+  s.parameters = effect_parameters(c.kind, c.label, s.model, previous);
+  return s;
+}
+
+}  // namespace
+
+double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
+                      Mat<double>* yhat) {
+  LpvModel<double> m = model;
+  m.x0 = Vec<double>::Zero(model.nx);
+  const Eigen::Index k = std::clamp<Eigen::Index>(init_samples, 1, val.n());
+  FitOptions x0fit;
+  x0fit.last_sample = k;
+  const FitResult f = fit_slots(m, x0_slots(m), val, x0fit);
+  if (yhat) *yhat = simulate(f.model, val).output;
+  return prediction_rms(f.model, val);
+}
+
+FitResult fit_declared(const LpvModel<double>& declared, const Experiment<double>& est, const FitOptions& fit) {
+  const LpvModel<double> m = explicit_model(declared);
+  std::vector<ParameterSlot> slots;
+  for (const ParameterSlot& s : output_map_slots(m)) {
+    const auto& terms = s.where == ParameterSlot::Where::kC ? m.C.terms : m.D.terms;
+    const Monomial& f = terms[static_cast<size_t>(s.term)].basis;
+    if (std::find(declared.correction.basis.begin(), declared.correction.basis.end(), f) !=
+        declared.correction.basis.end())
+      slots.push_back(s);
+  }
+  if (declared.offset.values.empty())
+    for (const ParameterSlot& s : offset_slots(m)) slots.push_back(s);
+  for (const ParameterSlot& s : x0_slots(m)) slots.push_back(s);
+  return fit_slots(m, slots, est, fit);
+}
+
+RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<double>& est,
+                           const Experiment<double>& val, const RankingOptions& o) {
+  RankingResult res;
+  const FitResult before = fit_declared(declared, est, o.fit);
+  res.before = before.model;
+  res.before_estimation = before.rms;
+  res.before_validation = validation_rms(before.model, val, o.init_samples);
+  LpvModel<double> current = before.model;
+  double current_est = before.rms, current_val = res.before_validation;
+  for (int round = 0; round < o.max_effects; ++round) {
+    RankingRound r;
+    r.current_validation = current_val;
+    const FitResult refit = fit_slots(current, refit_slots(current), est, o.fit);
+    r.refit_validation = refit.finite ? validation_rms(refit.model, val, o.init_samples)
+                                      : std::numeric_limits<double>::infinity();
+    r.reference_validation = std::min(current_val, r.refit_validation);
+    for (const EffectCandidate& c : candidate_effects(current, est, o.candidates))
+      r.ranked.push_back(fit_candidate(c, est, val, o, current));
+    for (ScoredCandidate& s : r.ranked)
+      s.explained = std::isfinite(s.rms_validation)
+                        ? 1.0 - (s.rms_validation * s.rms_validation) / (r.reference_validation * r.reference_validation)
+                        : -std::numeric_limits<double>::infinity();
+    std::stable_sort(r.ranked.begin(), r.ranked.end(),
+                     [](const ScoredCandidate& a, const ScoredCandidate& b) { return a.score < b.score; });
+    if (!r.ranked.empty() && r.ranked.front().rms_validation <= (1.0 - o.min_gain) * r.reference_validation) {
+      r.chosen = 0;
+      current = r.ranked.front().model;
+      current_est = r.ranked.front().rms_estimation;
+      current_val = r.ranked.front().rms_validation;
+      res.chosen.push_back(r.ranked.front());
+    }
+    const bool stop = r.chosen < 0;
+    res.rounds.push_back(std::move(r));
+    if (stop) break;
+  }
+  res.after = current;
+  res.after_estimation = current_est;
+  res.after_validation = current_val;
+  return res;
+}
+
+ojson effect_parameters(const std::string& kind, const std::string& label, const LpvModel<double>& fitted,
+                        const LpvModel<double>& previous) {
+  ojson j = ojson::object();
+  if (kind == "basis_term") {
+    new_terms_json(fitted.C, previous.C, "C", fitted.scheduling, j);
+    new_terms_json(fitted.D, previous.D, "D", fitted.scheduling, j);
+    j["enters"] = "C, D (output correction S_C, eq. 10)";
+    if (fitted.scheduling.size() > previous.scheduling.size()) {
+      ojson s = ojson::object();
+      for (size_t i = previous.scheduling.size(); i < fitted.scheduling.size(); ++i)
+        s[fitted.scheduling[i]] = fitted.columns.rho[i];
+      j["new_scheduling"] = std::move(s);
+    }
+  } else if (kind == "output_offset" || kind == "abs_value") {
+    ojson phi = ojson::array();
+    for (const auto& v : fitted.offset.values) phi.push_back(matrix_json(v.transpose()).front());
+    j["phi"] = std::move(phi);
+  }
+  const auto map_json = [&](const StaticMap<double>& g) {
+    ojson m = ojson::object();
+    m["map"] = to_string(g.kind);
+    if (g.kind == StaticKind::kSaturation || g.kind == StaticKind::kDeadZone) {
+      m["lower"] = g.lower;
+      m["upper"] = g.upper;
+    }
+    if (g.kind == StaticKind::kPolynomial) m["coefficients"] = g.coefficients;
+    return m;
+  };
+  if (kind == "input_saturation" || kind == "dead_zone" || kind == "input_polynomial")
+    j["input_map"] = map_json(fitted.statics.input);
+  if (kind == "output_saturation" || kind == "abs_value" || kind == "output_polynomial")
+    j["output_map"] = map_json(fitted.statics.output);
+  if (kind == "input_delay") j["delay_samples"] = fitted.statics.input_delay;
+  j["label"] = label;
+  return j;
+}
+
+}  // namespace lpvid

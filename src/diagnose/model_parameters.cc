@@ -1,0 +1,153 @@
+#include "diagnose/model_parameters.h"
+
+#include <stdexcept>
+
+#include "model/simulate.h"
+
+namespace lpvid {
+
+namespace {
+
+using Where = ParameterSlot::Where;
+
+double& at_checked(Mat<double>& m, int r, int c) {
+  if (r < 0 || c < 0 || r >= m.rows() || c >= m.cols()) throw std::out_of_range("parameter slot outside its matrix");
+  return m(r, c);
+}
+
+template <typename V>
+V& index_checked(std::vector<V>& v, int i) {
+  if (i < 0 || static_cast<size_t>(i) >= v.size()) throw std::out_of_range("parameter slot outside its list");
+  return v[static_cast<size_t>(i)];
+}
+
+std::string entry(const std::string& what, const std::string& basis, int r, int c) {
+  return what + "[" + basis + "](" + std::to_string(r + 1) + "," + std::to_string(c + 1) + ")";
+}
+
+void term_slots(const ParamMatrix<double>& pm, Where where, const char* name, const std::vector<std::string>& rho,
+                std::vector<ParameterSlot>& out) {
+  for (size_t t = 0; t < pm.terms.size(); ++t)
+    for (int r = 0; r < pm.terms[t].value.rows(); ++r)
+      for (int c = 0; c < pm.terms[t].value.cols(); ++c)
+        out.push_back({where, static_cast<int>(t), r, c, entry(name, pm.terms[t].basis.text(rho), r, c)});
+}
+
+/// Adds f·0 to pm unless a term with basis f exists.
+void ensure_term(ParamMatrix<double>& pm, const Monomial& f) {
+  for (const auto& t : pm.terms)
+    if (t.basis == f) return;
+  pm.add(f, Mat<double>::Zero(pm.rows, pm.cols));
+}
+
+void map_slots(const StaticMap<double>& g, Where lower, Where upper, Where coef, const std::string& prefix,
+               std::vector<ParameterSlot>& out) {
+  switch (g.kind) {
+    case StaticKind::kSaturation:
+    case StaticKind::kDeadZone:
+      out.push_back({lower, 0, 0, 0, prefix + ".lower"});
+      out.push_back({upper, 0, 0, 0, prefix + ".upper"});
+      break;
+    case StaticKind::kPolynomial:
+      for (size_t i = 0; i < g.coefficients.size(); ++i)
+        if (i != 1) out.push_back({coef, static_cast<int>(i), 0, 0, prefix + ".c" + std::to_string(i)});
+      break;
+    case StaticKind::kIdentity:
+    case StaticKind::kAbs: break;
+  }
+}
+
+}  // namespace
+
+double& slot_value(LpvModel<double>& m, const ParameterSlot& s) {
+  switch (s.where) {
+    case Where::kC: return at_checked(index_checked(m.C.terms, s.term).value, s.row, s.col);
+    case Where::kD: return at_checked(index_checked(m.D.terms, s.term).value, s.row, s.col);
+    case Where::kOffset: {
+      Vec<double>& v = index_checked(m.offset.values, s.term);
+      if (s.row < 0 || s.row >= v.size()) throw std::out_of_range("offset slot outside its vector");
+      return v(s.row);
+    }
+    case Where::kX0:
+      if (s.row < 0 || s.row >= m.x0.size()) throw std::out_of_range("x0 slot outside x0");
+      return m.x0(s.row);
+    case Where::kInputLower: return m.statics.input.lower;
+    case Where::kInputUpper: return m.statics.input.upper;
+    case Where::kInputCoef: return index_checked(m.statics.input.coefficients, s.term);
+    case Where::kOutputLower: return m.statics.output.lower;
+    case Where::kOutputUpper: return m.statics.output.upper;
+    case Where::kOutputCoef: return index_checked(m.statics.output.coefficients, s.term);
+  }
+  throw std::out_of_range("unknown parameter slot");
+}
+
+Vec<double> slot_values(const LpvModel<double>& m, const std::vector<ParameterSlot>& slots) {
+  LpvModel<double> copy = m;
+  Vec<double> p(static_cast<Eigen::Index>(slots.size()));
+  for (size_t i = 0; i < slots.size(); ++i) p(static_cast<Eigen::Index>(i)) = slot_value(copy, slots[i]);
+  return p;
+}
+
+LpvModel<double> with_slot_values(const LpvModel<double>& m, const std::vector<ParameterSlot>& slots,
+                                  const Vec<double>& p) {
+  if (p.size() != static_cast<Eigen::Index>(slots.size()))
+    throw std::invalid_argument("with_slot_values: " + std::to_string(p.size()) + " values for " +
+                                std::to_string(slots.size()) + " slots");
+  LpvModel<double> out = m;
+  for (size_t i = 0; i < slots.size(); ++i) slot_value(out, slots[i]) = p(static_cast<Eigen::Index>(i));
+  // keep saturation/dead-zone limits ordered whatever the fit did
+  for (StaticMap<double>* g : {&out.statics.input, &out.statics.output})
+    if (g->lower > g->upper) std::swap(g->lower, g->upper);
+  return out;
+}
+
+std::vector<ParameterSlot> output_map_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> out;
+  term_slots(m.C, Where::kC, "C", m.scheduling, out);
+  term_slots(m.D, Where::kD, "D", m.scheduling, out);
+  return out;
+}
+
+std::vector<ParameterSlot> offset_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> out;
+  for (size_t j = 0; j < m.offset.values.size(); ++j)
+    for (int r = 0; r < m.offset.values[j].size(); ++r)
+      out.push_back({Where::kOffset, static_cast<int>(j), r, 0,
+                     "phi[" + m.offset.basis[j].text(m.scheduling) + "](" + std::to_string(r + 1) + ")"});
+  return out;
+}
+
+std::vector<ParameterSlot> x0_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> out;
+  for (int i = 0; i < m.x0.size(); ++i) out.push_back({Where::kX0, 0, i, 0, "x0(" + std::to_string(i + 1) + ")"});
+  return out;
+}
+
+std::vector<ParameterSlot> static_map_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> out;
+  map_slots(m.statics.input, Where::kInputLower, Where::kInputUpper, Where::kInputCoef, "input", out);
+  map_slots(m.statics.output, Where::kOutputLower, Where::kOutputUpper, Where::kOutputCoef, "output", out);
+  return out;
+}
+
+LpvModel<double> explicit_model(const LpvModel<double>& m) {
+  const SystemMatrices<double> s = system_matrices(m);  // validates, sizes C and D
+  LpvModel<double> out = m;
+  out.C = s.C;
+  out.D = s.D;
+  for (const Monomial& f : m.correction.basis) {
+    ensure_term(out.C, f);
+    ensure_term(out.D, f);
+  }
+  // keep the basis for its fixed A_i, B_i; its C_i, D_i are now explicit terms
+  bool fixed_state_terms = false;
+  for (const auto& a : m.correction.A) fixed_state_terms = fixed_state_terms || !a.isZero();
+  for (const auto& b : m.correction.B) fixed_state_terms = fixed_state_terms || !b.isZero();
+  if (!fixed_state_terms) out.correction = Correction<double>{};
+  if (out.offset.values.empty())
+    for (size_t j = 0; j < out.offset.basis.size(); ++j) out.offset.values.push_back(Vec<double>::Zero(m.ny));
+  if (out.x0.size() != m.nx) out.x0 = Vec<double>::Zero(m.nx);
+  return out;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,54 @@
+#pragma once
+/// The continuous parameters that `lpvid diagnose` fits by least squares
+/// (issue 4, SPEC §6): named slots pointing into an LpvModel<double>.
+///
+/// A slot is one scalar of the model: an entry of a C or D term (the output
+/// map C(ρ) = Σ_i f_i(ρ) C_i of eq. 8–10, including correction terms that
+/// were folded in as explicit terms), an offset value φ_j (eq. 20), an entry
+/// of x0, or a parameter of a static input/output map (model/static_blocks.h).
+/// A and B are never slots: the state equation stays as declared (the
+/// correction S_C of eq. 10 has fixed A_i, B_i), so for a model without a
+/// static output map the output is affine in every C, D, φ and x0 slot.
+
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "model/lpv_model.h"
+
+namespace lpvid {
+
+struct ParameterSlot {
+  enum class Where { kC, kD, kOffset, kX0, kInputLower, kInputUpper, kInputCoef, kOutputLower, kOutputUpper, kOutputCoef };
+  Where where = Where::kC;
+  int term = 0;  ///< term index (C, D), offset basis index, coefficient index
+  int row = 0, col = 0;
+  std::string name;  ///< e.g. "C[rho1](1,2)", "input.upper", "x0(1)"
+};
+
+/// The scalar a slot names (throws std::out_of_range for a stale slot).
+double& slot_value(LpvModel<double>& m, const ParameterSlot& s);
+
+/// Current values of the slots.
+Vec<double> slot_values(const LpvModel<double>& m, const std::vector<ParameterSlot>& slots);
+/// A copy of m with the slots set to p.
+LpvModel<double> with_slot_values(const LpvModel<double>& m, const std::vector<ParameterSlot>& slots, const Vec<double>& p);
+
+/// Slots of every entry of every C and D term.
+std::vector<ParameterSlot> output_map_slots(const LpvModel<double>& m);
+/// Slots of every offset value (the offset must have values).
+std::vector<ParameterSlot> offset_slots(const LpvModel<double>& m);
+/// Slots of x0 (x0 is sized to nx).
+std::vector<ParameterSlot> x0_slots(const LpvModel<double>& m);
+/// Slots of the effect parameters of the static maps (saturation/dead-zone
+/// limits, polynomial coefficients except c_1, which the output map's scale
+/// already carries).
+std::vector<ParameterSlot> static_map_slots(const LpvModel<double>& m);
+
+/// A model whose declared unknowns are explicit: the correction basis
+/// folded into C and D as zero terms (its fixed A_i, B_i stay in the state
+/// equation), unknown offset values set to zero, x0 sized to nx. The result
+/// has no unknowns left: every parameter is a slot.
+LpvModel<double> explicit_model(const LpvModel<double>& m);
+
+}  // namespace lpvid

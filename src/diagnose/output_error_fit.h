@@ -1,0 +1,44 @@
+#pragma once
+/// Least-squares fit of model slots (diagnose/model_parameters.h) to measured
+/// data: minimise Σ_k ‖y_k − ŷ_k(p)‖² over the slots p, where ŷ(p) is the
+/// model's prediction g_out(ŷ + Φ) of y (model/simulate.h). This is the
+/// output-error criterion: the state is simulated from u (and x0), never
+/// reset to the data, so the fitted model is judged the way it is used.
+///
+/// Method: Levenberg–Marquardt (Nocedal & Wright, Numerical Optimization,
+/// 2nd ed., §10.3) with a forward-difference Jacobian. For a model without
+/// a static output map every C, D, φ and x0 slot enters ŷ affinely (eq. 14–15),
+/// so those directions converge in one step; the nonlinear ones (saturation
+/// limits, polynomial coefficients) take a few more.
+
+#include <vector>
+
+#include "data/experiment.h"
+#include "diagnose/model_parameters.h"
+
+namespace lpvid {
+
+struct FitOptions {
+  int max_iterations = 60;
+  double rel_tol = 1e-10;      ///< stop when the cost falls by less (relative)
+  Eigen::Index first_sample = 0;  ///< the cost starts here (earlier samples only run the state)
+  Eigen::Index last_sample = -1;  ///< one past the last sample of the cost (-1: n)
+};
+
+struct FitResult {
+  LpvModel<double> model;  ///< with the fitted slot values
+  double rms = 0;          ///< RMS of y − ŷ over the cost samples and outputs
+  int iterations = 0;
+  bool finite = true;      ///< false if the simulation overflowed (the model is then the start)
+};
+
+/// RMS of y − g_out(ŷ + Φ) over samples [first, last) of the experiment
+/// (last = -1: n); +inf when the simulation is not finite.
+double prediction_rms(const LpvModel<double>& model, const Experiment<double>& exp, Eigen::Index first = 0,
+                      Eigen::Index last = -1);
+
+/// Fits the slots of `model` to `exp`.
+FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,
+                    const Experiment<double>& exp, const FitOptions& options = {});
+
+}  // namespace lpvid

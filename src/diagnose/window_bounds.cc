@@ -1,0 +1,60 @@
+#include "diagnose/window_bounds.h"
+
+#include <cstdio>
+#include <string>
+
+#include "core/input_error.h"
+#include "data/experiment_builder.h"
+#include "diagnose/effect_candidates.h"
+#include "model/model_file.h"
+#include "model/simulate.h"
+
+namespace lpvid {
+
+namespace {
+
+double round_digits(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return std::stod(buf);
+}
+
+}  // namespace
+
+LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits) {
+  const std::vector<ParameterSlot> slots = refit_slots(m);
+  Vec<double> p = slot_values(m, slots);
+  for (Eigen::Index i = 0; i < p.size(); ++i) p(i) = round_digits(p(i), digits);
+  return with_slot_values(m, slots, p);
+}
+
+LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0) {
+  LpvModel<double> c = m;
+  c.x0 = x0;
+  for (Eigen::Index i = 0; i < c.x0.size(); ++i) c.x0(i) = round_digits(c.x0(i), 12);
+  // the JSON text of a double is its shortest round-trip decimal: read exactly
+  return parse_model_json<Rational>(write_model_json(c), "fitted model");
+}
+
+WindowBounds certify_window(const LpvModel<double>& model, const Experiment<double>& est_d,
+                            const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
+                            long file_row_offset, CertifyOptions options, SdpSolver& solver) {
+  if (begin < 0 || end <= begin || end > est_q.n())
+    throw InputError("bound window " + std::to_string(begin) + ":" + std::to_string(end) + " is outside the " +
+                     std::to_string(est_q.n()) + " estimation samples");
+  WindowBounds w;
+  w.begin = begin;
+  w.end = end;
+  w.file_begin = file_row_offset + static_cast<long>(begin);
+  w.file_end = file_row_offset + static_cast<long>(end);
+  const Simulation<double> sim = simulate(model, est_d);
+  const Vec<double> xb = model.nx > 0 ? Vec<double>(sim.x.row(begin).transpose()) : Vec<double>();
+  w.model = exact_model(model, xb);
+  options.row_begin = w.file_begin;
+  options.row_end = w.file_end;
+  w.certificate = options.certificate_path;
+  w.bounds = certify_fixed_model(w.model, select_rows(est_q, begin, end), options, solver);
+  return w;
+}
+
+}  // namespace lpvid

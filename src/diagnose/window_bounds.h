@@ -1,0 +1,46 @@
+#pragma once
+/// Verified bounds of a fitted model on a window of a long record (issue 4
+/// item 8, SPEC §4, §7). The LMIs of Theorem 2.1 have blocks of size ~2n, so
+/// they are solved on a window [begin, end) of the estimation record, not on
+/// all of it. The initial state of the window is the model's own state at
+/// `begin` (simulated from the fitted x0 over the whole record): the state is
+/// free (fitted), not assumed zero. The model's numbers are rounded to 12
+/// significant digits and read as exact decimals; the window is certified by
+/// identify/certify.h (Δ form, exact check of the certificate file).
+///
+/// What a verified bound means: on exactly these samples of this file, the
+/// rounded model explains the data with an uncertainty ‖Δ‖ ≤ δ and noise
+/// RMS ≤ d_max (Theorem 2.1); nothing is claimed for other samples.
+
+#include <string>
+
+#include "data/experiment.h"
+#include "identify/certify.h"
+#include "model/lpv_model.h"
+#include "solvers/sdp_solver.h"
+
+namespace lpvid {
+
+struct WindowBounds {
+  Eigen::Index begin = 0, end = 0;    ///< rows of the estimation record (0-based, end exclusive)
+  long file_begin = 0, file_end = 0;  ///< the same rows of the data file
+  CertifiedBounds bounds;
+  LpvModel<Rational> model;           ///< the exact model that was certified
+  std::string certificate;            ///< its certificate file
+};
+
+/// The fitted model's slot values rounded to `digits` significant digits.
+LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits = 12);
+
+/// Exact (decimal) copy of a double model, x0 replaced by `x0`.
+LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0);
+
+/// Certifies `model` (fitted on `est_d` with x0 at sample 0) on est rows
+/// [begin, end). `options.data_path`, `data_names`, `certificate_path`,
+/// `objective`, `solver`, `max_taps` are used as given; `file_row_offset`
+/// is the data-file row of estimation sample 0.
+WindowBounds certify_window(const LpvModel<double>& model, const Experiment<double>& est_d,
+                            const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
+                            long file_row_offset, CertifyOptions options, SdpSolver& solver);
+
+}  // namespace lpvid

@@ -1,0 +1,43 @@
+#pragma once
+/// Data with an effect the declared model lacks (issue 4 item 6): a known
+/// LPV system (2 states, one input u1, one output y1, one scheduling
+/// variable rho1 excited independently of u) plus ONE effect, simulated on
+/// an estimation and a validation record (different input realisations),
+/// with white Gaussian output noise. The declared model is the LPV system
+/// without the effect: `lpvid diagnose` must name the effect's kind.
+///
+///   output_offset      y = ŷ + 0.5
+///   input_saturation   u' = sat(u, −0.6, 0.6)      (u has standard deviation 1)
+///   basis_term         C(ρ) gains the term ρ1²·[0.5 −0.4]
+///   abs_value          y = |ŷ|
+///   output_polynomial  y = ŷ + 0.4 ŷ²
+///   input_delay        u'_k = u_{k−2}
+///   dead_zone          u' = dz(u, −0.4, 0.4)
+///   none               nothing (the control case)
+///
+/// Every number written is an exact decimal (8 digits), so the certificates
+/// of `diagnose` are checked against exactly these values.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+#include "data/experiment.h"
+#include "model/lpv_model.h"
+
+namespace lpvid {
+
+struct EffectCase {
+  LpvModel<Rational> declared;  ///< the LPV system without the effect
+  LpvModel<Rational> truth;     ///< with it
+  Experiment<Rational> estimation, validation;  ///< columns u1, y1, rho1
+};
+
+/// The effect kinds the generator knows (the list above).
+const std::vector<std::string>& effect_case_kinds();
+
+/// Throws InputError for an unknown kind or n < 20.
+EffectCase make_effect_case(const std::string& kind, int n, uint64_t seed, double noise_std);
+
+}  // namespace lpvid

@@ -1,0 +1,139 @@
+#pragma once
+/// Static blocks around the LPV part (SPEC §6, §8 effect kinds): an input
+/// delay, a static input map before the LPV system and a static output map
+/// after it. They are what `lpvid diagnose` adds when the residual points to
+/// a saturation, dead-zone, |·|, polynomial or delay (issue 4); the model
+/// file keeps them under "static" (lpvid-model/1, an added field):
+///
+///   "static": {"input_delay": 2,
+///              "input":  {"kind": "saturation", "lower": -1, "upper": 1},
+///              "output": {"kind": "polynomial", "coefficients": [0, 1, 0.2]}}
+///
+/// Semantics (applied channel by channel, the same map on every channel):
+///   u'_k = g_in(u_{k−d})            d = input_delay; u_{k−d} := u_0 for k < d
+///                                   (the record's first sample held: a
+///                                   record need not start at rest)
+///   x_{k+1} = A(ρ_k) x_k + B(ρ_k) u'_k,  ŷ_k = C(ρ_k) x_k + D(ρ_k) u'_k,
+///   z_k = C1(ρ_k) x_k + D1(ρ_k) u'_k   (uncertainty channel, before g_out)
+///   y_k = g_out(ŷ_k + Φ(ρ_k)) + w_k + d_k.
+/// So Theorem 2.1 (eq. 11–12) applies unchanged with u replaced by u' and
+/// the residual r = y − g_out(ŷ + Φ): the uncertainty and the noise enter
+/// after the output map.
+///
+/// Every map uses only +, −, ×, comparisons: exact on rationals, so the
+/// verifier recomputes them from the data text with no rounding.
+///
+/// Maps (v one scalar channel):
+///   saturation   g(v) = min(max(v, lower), upper)
+///   dead_zone    g(v) = v − upper (v > upper), v − lower (v < lower), else 0
+///   abs          g(v) = |v|
+///   polynomial   g(v) = Σ_k c_k v^k  (Horner)
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+
+namespace lpvid {
+
+enum class StaticKind { kIdentity, kSaturation, kDeadZone, kAbs, kPolynomial };
+
+/// "identity", "saturation", "dead_zone", "abs", "polynomial".
+inline const char* to_string(StaticKind k) {
+  switch (k) {
+    case StaticKind::kIdentity: return "identity";
+    case StaticKind::kSaturation: return "saturation";
+    case StaticKind::kDeadZone: return "dead_zone";
+    case StaticKind::kAbs: return "abs";
+    case StaticKind::kPolynomial: return "polynomial";
+  }
+  return "?";
+}
+
+/// Parses a kind name; false for an unknown name.
+inline bool static_kind_from_string(const std::string& s, StaticKind& k) {
+  for (StaticKind c : {StaticKind::kIdentity, StaticKind::kSaturation, StaticKind::kDeadZone, StaticKind::kAbs,
+                       StaticKind::kPolynomial})
+    if (s == to_string(c)) {
+      k = c;
+      return true;
+    }
+  return false;
+}
+
+template <typename T>
+struct StaticMap {
+  StaticKind kind = StaticKind::kIdentity;
+  T lower = T(0), upper = T(0);   ///< saturation and dead_zone (lower ≤ upper)
+  std::vector<T> coefficients;    ///< polynomial c_0, c_1, … (at least one)
+
+  bool is_identity() const { return kind == StaticKind::kIdentity; }
+
+  /// Throws std::invalid_argument when the parameters do not define a map.
+  void check(const std::string& where) const {
+    if ((kind == StaticKind::kSaturation || kind == StaticKind::kDeadZone) && !(lower <= upper))
+      throw std::invalid_argument(where + ": lower must not exceed upper");
+    if (kind == StaticKind::kPolynomial && coefficients.empty())
+      throw std::invalid_argument(where + ": a polynomial needs at least one coefficient");
+  }
+
+  T operator()(const T& v) const {
+    switch (kind) {
+      case StaticKind::kIdentity: return v;
+      case StaticKind::kSaturation: return v < lower ? lower : (v > upper ? upper : v);
+      case StaticKind::kDeadZone: return v > upper ? T(v - upper) : (v < lower ? T(v - lower) : T(0));
+      case StaticKind::kAbs: return v < T(0) ? T(-v) : v;
+      case StaticKind::kPolynomial: {
+        T acc = coefficients.back();
+        for (size_t i = coefficients.size() - 1; i-- > 0;) acc = T(acc * v + coefficients[i]);
+        return acc;
+      }
+    }
+    return v;
+  }
+
+  /// The map applied entry by entry.
+  Mat<T> apply(const Mat<T>& m) const {
+    if (is_identity()) return m;
+    Mat<T> out(m.rows(), m.cols());
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+      for (Eigen::Index j = 0; j < m.cols(); ++j) out(i, j) = (*this)(m(i, j));
+    return out;
+  }
+
+  /// Number of scalar parameters (for the diagnose parameter count).
+  int parameter_count() const {
+    switch (kind) {
+      case StaticKind::kIdentity:
+      case StaticKind::kAbs: return 0;
+      case StaticKind::kSaturation:
+      case StaticKind::kDeadZone: return 2;
+      case StaticKind::kPolynomial: return static_cast<int>(coefficients.size());
+    }
+    return 0;
+  }
+};
+
+template <typename T>
+struct StaticBlocks {
+  int input_delay = 0;  ///< d ≥ 0 samples
+  StaticMap<T> input, output;
+
+  bool has_input() const { return input_delay != 0 || !input.is_identity(); }
+  bool has_output() const { return !output.is_identity(); }
+  bool empty() const { return !has_input() && !has_output(); }
+
+  /// u' of the header: the delayed input (first sample held) through g_in.
+  /// `u` is n × nu.
+  Mat<T> model_input(const Mat<T>& u) const {
+    if (input_delay < 0) throw std::invalid_argument("static.input_delay must be >= 0");
+    if (!has_input()) return u;
+    Mat<T> delayed(u.rows(), u.cols());
+    for (Eigen::Index k = 0; k < u.rows(); ++k)
+      delayed.row(k) = u.row(k >= input_delay ? k - input_delay : 0);
+    return input.apply(delayed);
+  }
+};
+
+}  // namespace lpvid
