@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
                                  add_generate_command(app)};
   runners.push_back(add_select_basis_command(app));
   runners.push_back(add_tradeoff_command(app));
+  runners.push_back(add_fit_linear_command(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
