@@ -147,8 +147,9 @@ OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>
   }
   double best = choice.scores.front().rms_validation;
   for (const OrderScore& s : choice.scores) best = std::min(best, s.rms_validation);
+  const double floor = kOrderFloor * std::sqrt(val.y.squaredNorm() / double(std::max<Eigen::Index>(val.y.size(), 1)));
   for (const OrderScore& s : choice.scores)
-    if (s.rms_validation <= (1.0 + kOrderSlack) * best) {
+    if (s.rms_validation <= (1.0 + kOrderSlack) * best + floor) {
       choice.order = s.order;
       break;
     }

@@ -80,9 +80,13 @@ struct OrderChoice {
 /// order must pay for its parameters with a clear gain on held-out data).
 constexpr double kOrderSlack = 0.05;
 
+/// Differences of free-run RMS below this fraction of the held-out output's
+/// RMS are rounding (noise-free data fit by several orders to ~1e-13).
+constexpr double kOrderFloor = 1e-9;
+
 /// Fits every order in [1, max_order] on `est`, scores it on `val` (x0 from
 /// the first init_samples samples of val) and chooses the smallest order with
-/// rms_validation <= (1 + kOrderSlack) · best. Orders too large for the data
+/// rms_validation <= (1 + kOrderSlack) · best + kOrderFloor · rms(y_val). Orders too large for the data
 /// are skipped (at least one must fit, else the InputError of fit_linear).
 OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>& val, const ColumnMap& columns,
                          int max_order, bool offset, int init_samples, const LmOptions& lm = {});
