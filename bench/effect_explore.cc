@@ -4,8 +4,12 @@
 // combinations) around it (diagnose/block_model.h), fits on estimation data
 // only and prints the free-run RMS on estimation and validation data:
 //   "A,B fixed": the denominator a and B of the linear fit stay, D, x0, c and
-//                the effect parameters are fitted (output error);
+//                the effect parameters are fitted (output error; for
+//                in_pathsR the extra B columns are effect parameters);
 //   "full OE":   then everything is refitted by output error (A kept stable).
+// Effect names: offset, delayD, in_polyP, in_pathsR, in_sat, dead_zone,
+// lpv_u, lpv_y (ρ = own output one sample back), out_polyQ, out_sat, joined
+// by '+' (see diagnose/block_model.h for the equations).
 // Levels of input saturation and dead-zone are chosen on a 1-D grid by the
 // estimation RMS. Validation x0 comes from the first --init-samples samples.
 //
@@ -56,11 +60,15 @@ Spec parse_spec(const std::string& text) {
   return s;
 }
 
+// Single effects on top of the affine (offset) linear model, then the
+// combinations that the single-effect table points to.
 const char* kDefaultSpecs =
-    "linear offset offset+delay1 offset+delay2 offset+delay3 offset+in_poly2 offset+in_poly3 offset+in_sat "
-    "offset+dead_zone offset+out_poly2 offset+out_poly3 offset+out_sat offset+lpv_u offset+lpv_y "
-    "offset+in_poly3+out_sat offset+lpv_y+out_sat offset+in_poly2+lpv_y+out_sat offset+in_poly3+lpv_y+out_sat "
-    "offset+in_poly3+out_poly3+out_sat offset+in_poly3+lpv_u+out_sat";
+    "linear offset offset+delay1 offset+delay2 offset+delay3 offset+in_poly2 offset+in_poly3 offset+in_paths2 "
+    "offset+in_paths3 offset+in_sat offset+dead_zone offset+out_poly2 offset+out_poly3 offset+out_sat offset+lpv_u "
+    "offset+lpv_y "
+    "offset+in_poly3+out_sat offset+in_paths2+out_sat offset+in_paths3+out_sat offset+lpv_y+out_sat "
+    "offset+in_paths2+lpv_y+out_sat offset+in_paths3+lpv_y+out_sat offset+in_paths3+lpv_u+out_sat "
+    "offset+in_paths3+out_poly3+out_sat";
 
 Experiment<double> load(const std::string& path, const std::vector<std::string>& names, const std::string& rows,
                         const std::string& u, const std::string& y) {

@@ -57,7 +57,7 @@ int run_fit_linear(const FitLinearArgs& a) {
   const ColumnMap cols{a.u, a.y, {}};
   const Experiment<double> est = load(a.data, a.names, a.rows, cols);
   std::optional<Experiment<double>> val;
-  if (!a.val_data.empty() || !a.val_u.empty() || !a.val_y.empty()) {
+  if (!a.val_data.empty() || !a.val_rows.empty() || !a.val_u.empty() || !a.val_y.empty()) {
     const ColumnMap vcols{a.val_u.empty() ? a.u : a.val_u, a.val_y.empty() ? a.y : a.val_y, {}};
     const std::string& path = a.val_data.empty() ? a.data : a.val_data;
     const auto& names = a.val_data.empty() ? a.names : a.val_names;
