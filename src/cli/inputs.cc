@@ -62,6 +62,8 @@ BoundObjective make_objective(const CommonOptions& o) {
   return b;
 }
 
+}  // namespace
+
 void parse_rows(const std::string& text, long* begin, long* end) {
   const size_t colon = text.find(':');
   if (colon == std::string::npos) throw InputError("--rows: expected B:E, got '" + text + "'");
@@ -73,8 +75,6 @@ void parse_rows(const std::string& text, long* begin, long* end) {
   }
   if (*begin < 0 || *end <= *begin) throw InputError("--rows: need 0 <= B < E, got '" + text + "'");
 }
-
-}  // namespace
 
 Inputs load_inputs(const CommonOptions& o) {
   Inputs in;

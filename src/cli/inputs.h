@@ -48,6 +48,10 @@ struct Inputs {
 /// Reads and checks everything (throws InputError with file/line/field).
 Inputs load_inputs(const CommonOptions& o);
 
+/// Parses a --rows window "B:E" (0-based, E exclusive, 0 <= B < E); throws
+/// InputError naming the text otherwise.
+void parse_rows(const std::string& text, long* begin, long* end);
+
 /// Prints the options a command ran with (DESIGN §7).
 void print_options(const CommonOptions& o, const BoundObjective& objective, const std::string& command);
 

@@ -1,0 +1,141 @@
+// lpvid fit-linear: the linear starting model of diagnose (SPEC §6; issue 4
+// item 7): ARX, then output-error refinement (diagnose/linear_fit.h), written
+// as an lpvid-model/1 file with "scheduling": [].
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "cli/commands.h"
+#include "cli/inputs.h"
+#include "cli/report.h"
+#include "core/input_error.h"
+#include "data/csv_reader.h"
+#include "data/experiment_builder.h"
+#include "diagnose/linear_fit.h"
+#include "model/model_file.h"
+
+namespace lpvid::cli {
+namespace {
+
+struct FitLinearArgs {
+  std::string data, rows, out, report, order = "auto";
+  std::vector<std::string> names, u{"u"}, y{"y"};
+  std::string val_data, val_rows;
+  std::vector<std::string> val_names, val_u, val_y;
+  int max_order = 5;       ///< --max-order for --order auto
+  int init_samples = 5;    ///< --init-samples: x0 of validation data from its first samples (benchmark rule)
+  bool offset = false;     ///< --offset: fit a constant output offset
+};
+
+/// Reads a data file (optionally headerless with `names`) and a row window.
+Experiment<double> load(const std::string& path, const std::vector<std::string>& names, const std::string& rows,
+                        const ColumnMap& cols) {
+  const TextTable table = names.empty() ? read_table(path) : read_table(path, names);
+  Experiment<double> e = make_experiment<double>(table, cols);
+  if (rows.empty()) return e;
+  long b = 0, end = 0;
+  parse_rows(rows, &b, &end);
+  if (end > e.n()) throw InputError("--rows " + rows + ": " + path + " has only " + std::to_string(e.n()) + " rows");
+  return select_rows(e, b, end);
+}
+
+int parse_order(const std::string& text) {
+  if (text == "auto") return 0;
+  try {
+    size_t used = 0;
+    const int n = std::stoi(text, &used);
+    if (used == text.size()) return n < 1 ? -1 : n;
+  } catch (const std::exception&) {
+  }
+  throw InputError("--order: expected a positive integer or 'auto', got '" + text + "'");
+}
+
+int run_fit_linear(const FitLinearArgs& a) {
+  int order = parse_order(a.order);
+  if (order < 0) throw InputError("--order: must be >= 1 (or 'auto'), got '" + a.order + "'");
+  const ColumnMap cols{a.u, a.y, {}};
+  const Experiment<double> est = load(a.data, a.names, a.rows, cols);
+  std::optional<Experiment<double>> val;
+  if (!a.val_data.empty() || !a.val_rows.empty() || !a.val_u.empty() || !a.val_y.empty()) {
+    const ColumnMap vcols{a.val_u.empty() ? a.u : a.val_u, a.val_y.empty() ? a.y : a.val_y, {}};
+    const std::string& path = a.val_data.empty() ? a.data : a.val_data;
+    const auto& names = a.val_data.empty() ? a.names : a.val_names;
+    val = load(path, names, a.val_rows, vcols);
+  }
+  std::cout << "lpvid fit-linear\n  data        " << a.data << (a.rows.empty() ? "" : " rows " + a.rows)
+            << "  (u: " << a.u.front() << (a.u.size() > 1 ? ",…" : "") << ", y: " << a.y.front() << ", "
+            << est.n() << " samples)\n  order       " << a.order << "\n  offset      " << (a.offset ? "yes" : "no")
+            << "\n  init        x0 of validation data from its first " << a.init_samples << " samples\n";
+
+  nlohmann::ordered_json report;
+  report["command"] = "fit-linear";
+  if (order == 0) {
+    // The order is chosen on data held out of the estimation rows (their
+    // last third, fitted on the first two thirds), never on the validation
+    // data: the benchmark rule is that validation data is only scored.
+    const Eigen::Index cut = est.n() * 2 / 3;
+    const OrderChoice choice = choose_order(select_rows(est, 0, cut), select_rows(est, cut, est.n()), cols,
+                                            a.max_order, a.offset, a.init_samples);
+    order = choice.order;
+    std::cout << "  order  rms_estimation  rms_held_out  (fit on estimation rows 0:" << cut << ", held out " << cut
+              << ":" << est.n() << ")\n";
+    for (const OrderScore& s : choice.scores) {
+      std::cout << "  " << std::setw(5) << s.order << "  " << std::setw(14) << s.rms_estimation << "  "
+                << std::setw(12) << s.rms_validation << (s.order == order ? "  <- chosen" : "") << "\n";
+      report["order_scores"].push_back(
+          {{"order", s.order}, {"rms_estimation", s.rms_estimation}, {"rms_held_out", s.rms_validation}});
+    }
+  }
+  const LinearFit fit = fit_linear(est, cols, LinearFitOptions{order, a.offset, {}});
+  std::cout << std::setprecision(6) << "order " << order << "\nrms_estimation " << fit.rms_estimation
+            << "  (ARX start " << fit.rms_arx << ", " << fit.iterations << " LM steps, spectral radius "
+            << fit.spectral_radius << ")\n";
+  report["order"] = order;
+  report["offset"] = a.offset;
+  report["rms_estimation"] = fit.rms_estimation;
+  report["rms_arx"] = fit.rms_arx;
+  report["spectral_radius"] = fit.spectral_radius;
+  report["iterations"] = fit.iterations;
+  if (val) {
+    const double r = validation_rms(fit.model, *val, a.init_samples);
+    std::cout << "rms_validation " << r << "  (free run, x0 from the first " << a.init_samples << " samples)\n";
+    report["rms_validation"] = r;
+    report["init_samples"] = a.init_samples;
+  }
+  if (!a.out.empty()) {
+    write_model_file(a.out, fit.model);
+    std::cout << "model " << a.out << "\n";
+    report["model"] = a.out;
+  }
+  write_json(a.report, report);
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner add_fit_linear_command(CLI::App& app) {
+  auto a = std::make_shared<FitLinearArgs>();
+  CLI::App* cmd = app.add_subcommand("fit-linear", "Fit an LTI starting model (ARX + output error) to data");
+  cmd->add_option("--data", a->data, "estimation data file")->required();
+  cmd->add_option("--names", a->names, "column names for a headerless data file")->delimiter(',');
+  cmd->add_option("--rows", a->rows, "window of estimation rows B:E (0-based, E exclusive)");
+  cmd->add_option("--u", a->u, "input column(s) (default u)")->delimiter(',');
+  cmd->add_option("--y", a->y, "output column (default y)")->delimiter(',');
+  cmd->add_option("--order", a->order, "model order N >= 1, or auto (default)");
+  cmd->add_option("--max-order", a->max_order, "largest order tried by --order auto (default 5)");
+  cmd->add_flag("--offset", a->offset, "fit a constant output offset (model \"offset\" with basis 1)");
+  cmd->add_option("--out", a->out, "model file to write (lpvid-model/1)");
+  cmd->add_option("--report", a->report, "JSON report");
+  cmd->add_option("--validation-data", a->val_data, "validation data file (default: the estimation file)");
+  cmd->add_option("--validation-names", a->val_names, "column names for a headerless validation file")
+      ->delimiter(',');
+  cmd->add_option("--validation-rows", a->val_rows, "window of validation rows B:E");
+  cmd->add_option("--validation-u", a->val_u, "validation input column(s) (default: --u)")->delimiter(',');
+  cmd->add_option("--validation-y", a->val_y, "validation output column (default: --y)")->delimiter(',');
+  cmd->add_option("--init-samples", a->init_samples,
+                  "validation x0 fitted on this many first samples (default 5, the benchmark rule; 0: x0 = 0)");
+  return [cmd, a] { return cmd->parsed() ? run_fit_linear(*a) : -1; };
+}
+
+}  // namespace lpvid::cli

@@ -1,0 +1,81 @@
+#include "diagnose/levenberg_marquardt.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace lpvid {
+
+Mat<double> forward_difference_jacobian(const Residual& r, const Vec<double>& p, const Vec<double>& r0) {
+  const double root_eps = std::sqrt(std::numeric_limits<double>::epsilon());
+  Mat<double> J(r0.size(), p.size());
+  Vec<double> q = p;
+  for (Eigen::Index j = 0; j < p.size(); ++j) {
+    const double h = root_eps * std::max(1.0, std::abs(p(j)));
+    q(j) = p(j) + h;
+    J.col(j) = (r(q) - r0) / h;
+    q(j) = p(j);
+  }
+  return J;
+}
+
+LmResult levenberg_marquardt(const Residual& r, const Vec<double>& p0, const LmOptions& options,
+                             const Admissible& admissible) {
+  auto finite = [](const Vec<double>& v) { return v.allFinite(); };
+  if (admissible && !admissible(p0)) throw std::invalid_argument("levenberg_marquardt: start point not admissible");
+  LmResult out;
+  out.p = p0;
+  Vec<double> res = r(p0);
+  if (!finite(res)) throw std::invalid_argument("levenberg_marquardt: residual at the start point is not finite");
+  out.cost = 0.5 * res.squaredNorm();
+  if (p0.size() == 0) {
+    out.converged = true;
+    return out;
+  }
+  Mat<double> J = forward_difference_jacobian(r, out.p, res);
+  Mat<double> JtJ = J.transpose() * J;
+  Vec<double> g = J.transpose() * res;
+  double lambda = options.initial_damping;
+  int small_decreases = 0;
+  while (out.iterations < options.max_iterations) {
+    ++out.iterations;
+    Mat<double> H = JtJ;
+    // Marquardt's scaling: damp each direction by its own curvature; the
+    // floor keeps a parameter with a zero column (no influence) well posed.
+    const double floor = 1e-12 * std::max(1.0, JtJ.diagonal().maxCoeff());
+    for (Eigen::Index j = 0; j < H.rows(); ++j) H(j, j) += lambda * std::max(JtJ(j, j), floor);
+    const Vec<double> step = H.ldlt().solve(-g);
+    const Vec<double> trial = out.p + step;
+    bool ok = step.allFinite() && (!admissible || admissible(trial));
+    Vec<double> trial_res;
+    double trial_cost = std::numeric_limits<double>::infinity();
+    if (ok) {
+      trial_res = r(trial);
+      if (finite(trial_res)) trial_cost = 0.5 * trial_res.squaredNorm();
+    }
+    if (trial_cost < out.cost) {
+      const double decrease = (out.cost - trial_cost) / std::max(out.cost, std::numeric_limits<double>::min());
+      out.p = trial;
+      out.cost = trial_cost;
+      res = trial_res;
+      lambda = std::max(lambda / 3.0, 1e-15);
+      small_decreases = decrease < options.relative_tolerance ? small_decreases + 1 : 0;
+      if (small_decreases >= 2 || out.cost == 0) {
+        out.converged = true;
+        break;
+      }
+      J = forward_difference_jacobian(r, out.p, res);
+      JtJ = J.transpose() * J;
+      g = J.transpose() * res;
+    } else {
+      lambda *= 4.0;
+      if (lambda > 1e16) {  // no descent direction left: a (local) minimum
+        out.converged = true;
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,159 @@
+#include "diagnose/linear_fit.h"
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/QR>
+
+#include "core/input_error.h"
+#include "model/simulate.h"
+
+namespace lpvid {
+namespace {
+
+void check_inputs(const Experiment<double>& est, int order) {
+  if (order < 1 || order > kMaxLinearOrder)
+    throw InputError("fit-linear: order must be between 1 and " + std::to_string(kMaxLinearOrder) + ", got " +
+                     std::to_string(order));
+  if (est.ny() != 1)
+    throw InputError("fit-linear: exactly one output column is supported, got " + std::to_string(est.ny()));
+  if (est.nu() < 1) throw InputError("fit-linear: at least one input column is needed");
+  for (Eigen::Index k = 0; k < est.n(); ++k)
+    if (!est.u.row(k).allFinite() || !est.y.row(k).allFinite())
+      throw InputError(est.source + ": fit-linear: sample " + std::to_string(k) + " is not a finite number");
+}
+
+/// Step 1: ARX least squares. Row k: [−y_{k−1} … −y_{k−n}, u_kᵀ … u_{k−n}ᵀ (, 1)].
+/// Returns the observer form of (b_0 + … + b_n z⁻ⁿ)/(1 + a_1 z⁻¹ + … + a_n z⁻ⁿ):
+/// D = b_0, B_i = b_i − a_i b_0 (Kailath §2.1.3), c = e / (1 + Σ a_i).
+ObserverForm arx_initialisation(const Experiment<double>& est, int n, bool offset) {
+  const Eigen::Index N = est.n(), m = est.nu();
+  const Eigen::Index unknowns = n + (n + 1) * m + (offset ? 1 : 0);
+  if (N - n < 2 * unknowns)
+    throw InputError(est.source + ": fit-linear: " + std::to_string(N) + " samples are too few for order " +
+                     std::to_string(n) + " (need at least " + std::to_string(n + 2 * unknowns) + ")");
+  Mat<double> Phi(N - n, unknowns);
+  Vec<double> target(N - n);
+  for (Eigen::Index k = n; k < N; ++k) {
+    const Eigen::Index r = k - n;
+    for (int i = 1; i <= n; ++i) Phi(r, i - 1) = -est.y(k - i, 0);
+    for (int i = 0; i <= n; ++i) Phi.block(r, n + i * m, 1, m) = est.u.row(k - i);
+    if (offset) Phi(r, unknowns - 1) = 1.0;
+    target(r) = est.y(k, 0);
+  }
+  const Vec<double> theta = Phi.colPivHouseholderQr().solve(target);
+  ObserverForm f = zero_observer_form(n, static_cast<int>(m), offset);
+  f.a = stabilise_denominator(theta.head(n));
+  const Mat<double> b0 = theta.segment(n, m).transpose();
+  f.D = b0;
+  for (int i = 1; i <= n; ++i) f.B.row(i - 1) = theta.segment(n + i * m, m).transpose() - theta(i - 1) * b0;
+  if (offset) f.offset = theta(unknowns - 1) / (1.0 + theta.head(n).sum());
+  return f;
+}
+
+/// Step 2: with a fixed, ŷ is linear in (B, D, x0, c) (zero when they are):
+/// its Jacobian columns are the simulations with one unit parameter.
+void refit_numerator(ObserverForm& f, const Experiment<double>& est) {
+  const int n = f.order();
+  Vec<double> p = f.parameters();
+  const Eigen::Index q = p.size() - n;  // all parameters after a
+  Mat<double> J(est.n(), q);
+  ObserverForm g = f;
+  for (Eigen::Index j = 0; j < q; ++j) {
+    Vec<double> e = Vec<double>::Zero(p.size());
+    e.head(n) = f.a;
+    e(n + j) = 1.0;
+    g.set_parameters(e);
+    J.col(j) = simulate_observer(g, est.u);
+  }
+  p.tail(q) = J.colPivHouseholderQr().solve(est.y.col(0));
+  f.set_parameters(p);
+}
+
+double rms(const Vec<double>& r) { return r.size() == 0 ? 0.0 : std::sqrt(r.squaredNorm() / double(r.size())); }
+
+}  // namespace
+
+LinearFit fit_linear(const Experiment<double>& est, const ColumnMap& columns, const LinearFitOptions& options) {
+  check_inputs(est, options.order);
+  LinearFit fit;
+  fit.form = arx_initialisation(est, options.order, options.offset);
+  refit_numerator(fit.form, est);
+  const Vec<double> y = est.y.col(0);
+  fit.rms_arx = rms(y - simulate_observer(fit.form, est.u));
+  // Step 3: output-error refinement with stability as the admissible set.
+  ObserverForm trial = fit.form;
+  const Residual residual = [&](const Vec<double>& p) {
+    trial.set_parameters(p);
+    return Vec<double>(simulate_observer(trial, est.u) - y);
+  };
+  const int n = options.order;
+  const Admissible stable = [n](const Vec<double>& p) { return spectral_radius(p.head(n)) < kStableRadius; };
+  const LmResult lm = levenberg_marquardt(residual, fit.form.parameters(), options.lm, stable);
+  fit.form.set_parameters(lm.p);
+  fit.iterations = lm.iterations;
+  fit.rms_estimation = rms(y - simulate_observer(fit.form, est.u));
+  fit.spectral_radius = spectral_radius(fit.form.a);
+  fit.model = to_lpv_model(fit.form, columns);
+  return fit;
+}
+
+double free_run_rms(const LpvModel<double>& model, const Experiment<double>& exp) {
+  const Simulation<double> sim = simulate(model, exp);
+  const Mat<double> r = exp.y - sim.yhat - sim.offset;
+  return r.size() == 0 ? 0.0 : std::sqrt(r.squaredNorm() / double(r.size()));
+}
+
+Vec<double> fit_initial_state(const LpvModel<double>& model, const Experiment<double>& exp, int samples) {
+  const Eigen::Index nx = model.nx;
+  if (samples <= 0 || nx == 0) return Vec<double>::Zero(nx);
+  const Eigen::Index s = std::min<Eigen::Index>(samples, exp.n());
+  const Experiment<double> head{exp.source, exp.u.topRows(s), exp.y.topRows(s), exp.rho.topRows(s)};
+  LpvModel<double> m = model;
+  m.x0 = Vec<double>::Zero(nx);
+  const Simulation<double> base = simulate(m, head);
+  const Mat<double> y0 = base.yhat + base.offset;
+  const Eigen::Index ny = exp.ny();
+  Mat<double> J(s * ny, nx);
+  for (Eigen::Index j = 0; j < nx; ++j) {
+    m.x0 = Vec<double>::Unit(nx, j);
+    const Simulation<double> sj = simulate(m, head);
+    const Mat<double> dy = sj.yhat + sj.offset - y0;
+    J.col(j) = dy.reshaped();
+  }
+  const Mat<double> target = head.y - y0;
+  return J.completeOrthogonalDecomposition().solve(Vec<double>(target.reshaped()));
+}
+
+double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, int init_samples) {
+  LpvModel<double> m = model;
+  m.x0 = fit_initial_state(model, val, init_samples);
+  return free_run_rms(m, val);
+}
+
+OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>& val, const ColumnMap& columns,
+                         int max_order, bool offset, int init_samples, const LmOptions& lm) {
+  if (max_order < 1) throw InputError("fit-linear: the largest order must be >= 1, got " + std::to_string(max_order));
+  OrderChoice choice;
+  for (int n = 1; n <= max_order; ++n) {
+    LinearFitOptions o{n, offset, lm};
+    try {
+      const LinearFit fit = fit_linear(est, columns, o);
+      choice.scores.push_back({n, fit.rms_estimation, validation_rms(fit.model, val, init_samples)});
+    } catch (const InputError&) {
+      if (n == 1) throw;  // order 1 does not fit: the data is unusable
+      break;              // too few samples for this and larger orders
+    }
+  }
+  double best = choice.scores.front().rms_validation;
+  for (const OrderScore& s : choice.scores) best = std::min(best, s.rms_validation);
+  const double floor = kOrderFloor * std::sqrt(val.y.squaredNorm() / double(std::max<Eigen::Index>(val.y.size(), 1)));
+  for (const OrderScore& s : choice.scores)
+    if (s.rms_validation <= (1.0 + kOrderSlack) * best + floor) {
+      choice.order = s.order;
+      break;
+    }
+  return choice;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,82 @@
+// `lpvid fit-linear` (the real binary, when built in the same tree): exit
+// codes, the model file it writes, and clear errors for bad input.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+#include "diagnose/linear_fit.h"
+#include "model/model_file.h"
+#include "support/gen_lti.h"
+
+namespace lpvid {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FitLinearCommandTest : ::testing::Test {
+  std::string exe = std::string(LPVID_BINARY_DIR) + "/lpvid";
+  fs::path dir = fs::temp_directory_path() / ("lpvid_fit_linear_" + std::to_string(::getpid()));
+  void SetUp() override {
+    if (!fs::exists(exe)) GTEST_SKIP() << exe << " not built";
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  int run(const std::string& args) {
+    const int s = std::system((exe + " fit-linear " + args + " >" + (dir / "out.txt").string() + " 2>&1").c_str());
+    return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+  }
+  std::string output() {
+    std::ifstream in(dir / "out.txt");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  /// Est/val columns of a second-order system with offset 2 (no noise).
+  std::string write_data(const std::string& bad_cell = "") {
+    ObserverForm f = zero_observer_form(2, 1, true);
+    f.a << -1.2, 0.5;
+    f.B << 1.0, 0.4;
+    f.offset = 2.0;
+    const Mat<double> u = gen::white_input(600, 1)(rc::Random(9), 50).value();
+    const Vec<double> y = simulate_observer(f, u);
+    const fs::path p = dir / "data.csv";
+    std::ofstream out(p);
+    out << "uEst,uVal,yEst,yVal\n";
+    for (int k = 0; k < 300; ++k)
+      out << u(k) << "," << u(k + 300) << "," << (k == 7 && !bad_cell.empty() ? bad_cell : std::to_string(y(k)))
+          << "," << y(k + 300) << "\n";
+    return p.string();
+  }
+};
+
+TEST_F(FitLinearCommandTest, WritesAModelThatReproducesTheData) {
+  const std::string data = write_data();
+  const std::string model = (dir / "m.json").string();
+  ASSERT_EQ(run("--data " + data + " --u uEst --y yEst --order auto --offset --validation-u uVal --validation-y yVal"
+                " --out " + model + " --report " + (dir / "r.json").string()),
+            0)
+      << output();
+  EXPECT_NE(output().find("order 2"), std::string::npos) << output();
+  const LpvModel<double> m = read_model_file<double>(model);
+  EXPECT_EQ(m.nx, 2);
+  EXPECT_TRUE(m.scheduling.empty());
+  EXPECT_EQ(m.columns.u, std::vector<std::string>{"uEst"});
+  EXPECT_TRUE(fs::exists(dir / "r.json"));
+}
+
+TEST_F(FitLinearCommandTest, BadInputExitsWithTwoAndSaysWhy) {
+  const std::string data = write_data();
+  EXPECT_EQ(run("--data " + data + " --u uEst --y yEst --order 0"), 2);
+  EXPECT_NE(output().find("--order"), std::string::npos) << output();
+  EXPECT_EQ(run("--data " + data + " --u uEst --y yEst --order x"), 2);
+  EXPECT_EQ(run("--data " + data + " --u uEst --y nope --order 1"), 2);
+  EXPECT_NE(output().find("'nope' not found"), std::string::npos) << output();
+  EXPECT_EQ(run("--data " + data + " --u uEst --y yEst --order 1 --rows 0:5"), 2);
+  EXPECT_NE(output().find("too few"), std::string::npos) << output();
+  EXPECT_EQ(run("--data " + write_data("nan") + " --u uEst --y yEst --order 1"), 2);
+  EXPECT_NE(output().find("not a number"), std::string::npos) << output();
+}
+
+}  // namespace
+}  // namespace lpvid
