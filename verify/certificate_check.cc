@@ -88,7 +88,7 @@ CertificateVerdict check_certificate(const Certificate& c, const std::string& ce
   }
 
   // 5. (C2), exactly.
-  const Mat<Rational> d = exp.y - sim.yhat - sim.offset - w;
+  const Mat<Rational> d = exp.y - sim.output - w;
   Rational dd(0);
   for (Eigen::Index k = 0; k < n; ++k)
     for (Eigen::Index i = 0; i < ny; ++i) dd += d(k, i) * d(k, i);
