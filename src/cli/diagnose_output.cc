@@ -2,9 +2,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "cli/report.h"
+#include "diagnose/diagnose_plots.h"
+#include "diagnose/residual_analysis.h"
 #include "model/simulate.h"
 
 namespace lpvid::cli {
@@ -49,6 +52,55 @@ ojson candidate_json(const ScoredCandidate& c) {
           {"parameters", c.parameters}};
 }
 
+/// Whiteness and input correlation of a validation residual (printed + JSON).
+ojson analysis_json(const std::string& title, const Mat<double>& r, const Mat<double>& u) {
+  const ResidualAnalysis a = analyse_residual(r, u, {});
+  ojson j = ojson::object();
+  j["rms"] = a.rms.overall;
+  j["max_lag"] = a.whiteness.max_lag;
+  j["band_99"] = a.whiteness.band_99;
+  ojson outs = ojson::array();
+  std::cout << "  " << title << ": RMS " << num(a.rms.overall);
+  for (const AutocorrelationTest& t : a.whiteness.outputs) {
+    outs.push_back({{"lags_outside_99", t.outside_99}, {"ljung_box_q", t.q}, {"q_threshold_99", t.q_threshold},
+                    {"white", t.white}});
+    std::cout << "; autocorrelation: " << t.outside_99 << " of " << a.whiteness.max_lag
+              << " lags outside the 99% band, Ljung-Box Q = " << num(t.q) << " (white if <= " << num(t.q_threshold)
+              << "): " << (t.white ? "white" : "NOT white");
+  }
+  j["autocorrelation"] = outs;
+  ojson cross = ojson::array();
+  for (const CrossCorrelation& c : a.input_correlation.pairs) {
+    cross.push_back({{"output", c.output + 1}, {"input", c.input + 1}, {"max_abs", c.max_abs}, {"at_lag", c.max_lag_at},
+                     {"significant", c.significant}});
+    std::cout << "; with u" << c.input + 1 << ": max " << num(c.max_abs, 3) << " at lag " << c.max_lag_at
+              << (c.significant ? " (significant)" : "");
+  }
+  std::cout << "\n";
+  j["input_correlation"] = cross;
+  return j;
+}
+
+/// Share of the round's estimation residual that each candidate's added
+/// output signal explains (least-squares projection, residual_analysis.h).
+std::vector<double> estimation_shares(const RankingRound& rr, const Experiment<double>& est) {
+  const Mat<double> base = simulate(rr.current, est).output;
+  const Mat<double> r = est.y - base;
+  std::vector<CandidateSignal> sig;
+  std::vector<size_t> index;
+  for (size_t k = 0; k < rr.ranked.size(); ++k) {
+    const Mat<double> added = simulate(rr.ranked[k].model, est).output - base;
+    if (!added.allFinite() || added.squaredNorm() == 0) continue;
+    sig.push_back({rr.ranked[k].label, added});
+    index.push_back(k);
+  }
+  std::vector<double> out(rr.ranked.size(), 0.0);
+  if (!r.allFinite()) return out;
+  const std::vector<CandidateShare> sh = candidate_shares(r, sig);
+  for (size_t i = 0; i < sh.size(); ++i) out[index[i]] = sh[i].share;
+  return out;
+}
+
 std::string bound_line(const WindowBounds& w) {
   const CertifiedBounds& b = w.bounds;
   if (!b.verified) return "not verified (" + b.reason + ")";
@@ -69,17 +121,22 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
     const RankingRound& rr = r.rounds[i];
     std::cout << "\nround " << i + 1 << ": validation RMS of the current model " << num(rr.current_validation)
               << ", re-fitted without a new effect " << num(rr.refit_validation) << "\n"
-              << "  rank  kind               val RMS    explained  est RMS    params  candidate\n";
+              << "  explained: share of the validation residual energy removed; est share: share of the estimation "
+                 "residual\n  energy that the candidate's added output signal explains (least-squares projection)\n"
+              << "  rank  kind               val RMS    explained  est RMS    est share  params  candidate\n";
     ojson cands = ojson::array();
+    const std::vector<double> shares = estimation_shares(rr, *in.est);
     for (size_t k = 0; k < rr.ranked.size(); ++k) {
       const ScoredCandidate& c = rr.ranked[k];
-      char line[256];
-      std::snprintf(line, sizeof line, "  %-4zu  %-17s  %-9s  %-9s  %-9s  %-6d  %s%s\n", k + 1, c.kind.c_str(),
+      char line[320];
+      std::snprintf(line, sizeof line, "  %-4zu  %-17s  %-9s  %-9s  %-9s  %-9s  %-6d  %s%s\n", k + 1, c.kind.c_str(),
                     num(c.rms_validation).c_str(), (num(100 * c.explained, 3) + "%").c_str(),
-                    num(c.rms_estimation).c_str(), c.effect_parameters, c.label.c_str(),
-                    static_cast<int>(k) == rr.chosen ? "   <- chosen" : "");
+                    num(c.rms_estimation).c_str(), (num(100 * shares[k], 3) + "%").c_str(), c.effect_parameters,
+                    c.label.c_str(), static_cast<int>(k) == rr.chosen ? "   <- chosen" : "");
       std::cout << line;
-      cands.push_back(candidate_json(c));
+      ojson cj = candidate_json(c);
+      cj["share_of_estimation_residual"] = shares[k];
+      cands.push_back(cj);
     }
     if (rr.chosen < 0)
       std::cout << "  -> none: no candidate lowers the validation RMS by the required share below "
@@ -108,6 +165,34 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
             << "  certificates " << in.before->certificate << ", " << in.after->certificate
             << " (check: lpvid-verify certificate FILE)\n";
 
+  // residual analysis and plots on the validation data (free run)
+  Mat<double> yb, ya;
+  validation_rms(*in.before_model, *in.val, in.init_samples, &yb);
+  validation_rms(*in.after_model, *in.val, in.init_samples, &ya);
+  const Mat<double> rb = in.val->y - yb, ra = in.val->y - ya;
+  std::cout << "\nvalidation residual (free run)\n";
+  ojson analysis = ojson::object();
+  if (rb.allFinite() && ra.allFinite()) {
+    analysis["before"] = analysis_json("before", rb, in.val->u);
+    analysis["after"] = analysis_json("after ", ra, in.val->u);
+  }
+  ojson plots = ojson::array();
+  if (!in.plots_dir.empty() && rb.allFinite() && ra.allFinite()) {
+    std::filesystem::create_directories(in.plots_dir);
+    const std::string d = in.plots_dir + "/";
+    std::vector<std::string> names;
+    for (const std::string& y : in.before_model->columns.y) names.push_back(y + " (validation data)");
+    const std::vector<std::pair<std::string, PlotOutcome>> made = {
+        {d + "residual.png", plot_residual(rb, ra, d + "residual.png", names)},
+        {d + "autocorrelation.png", plot_residual_autocorrelation(rb, ra, d + "autocorrelation.png", names)},
+        {d + "output.png", plot_output_fit(in.val->y, yb, ya, d + "output.png", names)}};
+    std::cout << "\nplots (validation data)\n";
+    for (const auto& [path, o] : made) {
+      std::cout << "  " << (o.ok ? path : "not written: " + o.message) << "\n";
+      plots.push_back({{"png", o.ok ? ojson(path) : ojson(nullptr)}, {"csv", plot_csv_path(path)}, {"message", o.message}});
+    }
+  }
+
   ojson j = ojson::object();
   j["status"] = in.before->bounds.verified && in.after->bounds.verified ? "ok" : "not verified";
   j["command"] = "diagnose";
@@ -123,7 +208,8 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                     "bounds are Theorem 2.1 for the fitted model on the window";
   j["verified"] = in.before->bounds.verified && in.after->bounds.verified;
   j["rounds"] = rounds;
-  j["plots"] = ojson::array();
+  j["residual_analysis_validation"] = analysis;
+  j["plots"] = plots;
   if (!in.model_out.empty()) j["model"] = in.model_out;
   write_json(report_path, j);
 }

@@ -106,6 +106,7 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
   double current_est = before.rms, current_val = res.before_validation;
   for (int round = 0; round < o.max_effects; ++round) {
     RankingRound r;
+    r.current = current;
     r.current_validation = current_val;
     const FitResult refit = fit_slots(current, refit_slots(current), est, o.fit);
     r.refit_validation = refit.finite ? validation_rms(refit.model, val, o.init_samples)

@@ -47,6 +47,7 @@ struct ScoredCandidate {
 };
 
 struct RankingRound {
+  LpvModel<double> current;         ///< the model the candidates were added to
   double reference_validation = 0;  ///< what an effect must beat
   double current_validation = 0, refit_validation = 0;
   std::vector<ScoredCandidate> ranked;  ///< best score first
