@@ -82,6 +82,22 @@ LpvModel<double> with_input_scheduling(const LpvModel<double>& m) {
   return out;
 }
 
+Experiment<double> with_input_scheduling(const Experiment<double>& e, const LpvModel<double>& declared,
+                                         const LpvModel<double>& augmented) {
+  if (e.n_rho() != declared.n_rho())
+    throw std::invalid_argument("with_input_scheduling: the experiment does not match the declared model");
+  Experiment<double> out = e;
+  out.rho.resize(e.n(), augmented.n_rho());
+  if (e.n_rho() > 0) out.rho.leftCols(e.n_rho()) = e.rho;
+  for (int k = declared.n_rho(); k < augmented.n_rho(); ++k) {
+    const auto& cols = declared.columns.u;
+    const auto it = std::find(cols.begin(), cols.end(), augmented.columns.rho[static_cast<size_t>(k)]);
+    if (it == cols.end()) throw std::invalid_argument("with_input_scheduling: scheduling column is not an input");
+    out.rho.col(k) = e.u.col(it - cols.begin());
+  }
+  return out;
+}
+
 LpvModel<double> add_scheduling_variable(const LpvModel<double>& m, const std::string& name,
                                          const std::string& column) {
   LpvModel<double> out = m;

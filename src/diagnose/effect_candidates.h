@@ -56,6 +56,11 @@ std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m);
 /// added as one (named after the column): lets basis_term try f(u)·x, f(u)·u.
 LpvModel<double> with_input_scheduling(const LpvModel<double>& m);
 
+/// The experiment for the model `augmented` = with_input_scheduling(declared):
+/// ρ gets the input columns that became scheduling variables.
+Experiment<double> with_input_scheduling(const Experiment<double>& e, const LpvModel<double>& declared,
+                                         const LpvModel<double>& augmented);
+
 /// The model with one more scheduling variable `name` read from data column
 /// `column` (every basis monomial padded with a zero power).
 LpvModel<double> add_scheduling_variable(const LpvModel<double>& m, const std::string& name, const std::string& column);
