@@ -67,18 +67,6 @@ ScoredCandidate fit_candidate(const EffectCandidate& c, const Experiment<double>
 
 }  // namespace
 
-double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
-                      Mat<double>* yhat) {
-  LpvModel<double> m = model;
-  m.x0 = Vec<double>::Zero(model.nx);
-  const Eigen::Index k = std::clamp<Eigen::Index>(init_samples, 1, val.n());
-  FitOptions x0fit;
-  x0fit.last_sample = k;
-  const FitResult f = fit_slots(m, x0_slots(m), val, x0fit);
-  if (yhat) *yhat = simulate(f.model, val).output;
-  return prediction_rms(f.model, val);
-}
-
 FitResult fit_declared(const LpvModel<double>& declared, const Experiment<double>& est, const FitOptions& fit) {
   const LpvModel<double> m = explicit_model(declared);
   std::vector<ParameterSlot> slots;

@@ -61,11 +61,6 @@ struct RankingResult {
   std::vector<ScoredCandidate> chosen;  ///< in the order they were added
 };
 
-/// The validation RMS of the header (x0 re-fitted on the first samples).
-/// Also returns the simulated validation output in `yhat` if non-null.
-double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
-                      Mat<double>* yhat = nullptr);
-
 /// "Before": the declared model with its declared unknowns (correction C_i,
 /// D_i, offset φ) and x0 fitted on the estimation data; the initial model
 /// S_I itself is kept.

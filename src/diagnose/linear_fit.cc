@@ -98,39 +98,6 @@ LinearFit fit_linear(const Experiment<double>& est, const ColumnMap& columns, co
   return fit;
 }
 
-double free_run_rms(const LpvModel<double>& model, const Experiment<double>& exp) {
-  const Simulation<double> sim = simulate(model, exp);
-  const Mat<double> r = exp.y - sim.yhat - sim.offset;
-  return r.size() == 0 ? 0.0 : std::sqrt(r.squaredNorm() / double(r.size()));
-}
-
-Vec<double> fit_initial_state(const LpvModel<double>& model, const Experiment<double>& exp, int samples) {
-  const Eigen::Index nx = model.nx;
-  if (samples <= 0 || nx == 0) return Vec<double>::Zero(nx);
-  const Eigen::Index s = std::min<Eigen::Index>(samples, exp.n());
-  const Experiment<double> head{exp.source, exp.u.topRows(s), exp.y.topRows(s), exp.rho.topRows(s)};
-  LpvModel<double> m = model;
-  m.x0 = Vec<double>::Zero(nx);
-  const Simulation<double> base = simulate(m, head);
-  const Mat<double> y0 = base.yhat + base.offset;
-  const Eigen::Index ny = exp.ny();
-  Mat<double> J(s * ny, nx);
-  for (Eigen::Index j = 0; j < nx; ++j) {
-    m.x0 = Vec<double>::Unit(nx, j);
-    const Simulation<double> sj = simulate(m, head);
-    const Mat<double> dy = sj.yhat + sj.offset - y0;
-    J.col(j) = dy.reshaped();
-  }
-  const Mat<double> target = head.y - y0;
-  return J.completeOrthogonalDecomposition().solve(Vec<double>(target.reshaped()));
-}
-
-double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, int init_samples) {
-  LpvModel<double> m = model;
-  m.x0 = fit_initial_state(model, val, init_samples);
-  return free_run_rms(m, val);
-}
-
 OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>& val, const ColumnMap& columns,
                          int max_order, bool offset, int init_samples, const LmOptions& lm) {
   if (max_order < 1) throw InputError("fit-linear: the largest order must be >= 1, got " + std::to_string(max_order));

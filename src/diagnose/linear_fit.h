@@ -20,6 +20,7 @@
 
 #include "data/experiment.h"
 #include "diagnose/levenberg_marquardt.h"
+#include "diagnose/output_error_fit.h"
 #include "diagnose/observer_form.h"
 #include "model/lpv_model.h"
 
@@ -49,21 +50,8 @@ struct LinearFit {
 /// few samples for the ARX regression (the message says how many are needed).
 LinearFit fit_linear(const Experiment<double>& est, const ColumnMap& columns, const LinearFitOptions& options);
 
-/// Root mean square of y − (ŷ + Φ) over all samples and outputs, with the
-/// model simulated from its own x0 (model/simulate.h).
-double free_run_rms(const LpvModel<double>& model, const Experiment<double>& exp);
-
-/// The initial state that best explains the first `samples` samples of exp
-/// (least squares, minimum norm when samples < nx; the benchmark rule of the
-/// cascaded tanks allows the first 5 validation samples). The model output is
-/// affine in x0 along a given trajectory (SPEC §2: the state equation is
-/// linear in x), so ŷ(x0) = ŷ(0) + Σ_j x0_j (ŷ(e_j) − ŷ(0)). samples = 0
-/// gives x0 = 0.
-Vec<double> fit_initial_state(const LpvModel<double>& model, const Experiment<double>& exp, int samples);
-
-/// Free-run RMS on `val` after re-estimating x0 from its first `init_samples`
-/// samples (fit_initial_state).
-double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, int init_samples);
+// The free-run RMS (prediction_rms) and the validation RMS with x0 fitted on
+// the first samples (validation_rms) are in diagnose/output_error_fit.h.
 
 struct OrderScore {
   int order = 0;

@@ -1,8 +1,10 @@
 #include "diagnose/output_error_fit.h"
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
 
+#include "diagnose/levenberg_marquardt.h"
 #include "model/simulate.h"
 #include "toeplitz/signal_toeplitz.h"
 
@@ -40,70 +42,49 @@ double prediction_rms(const LpvModel<double>& model, const Experiment<double>& e
   return std::sqrt(r.squaredNorm() / static_cast<double>(r.size()));
 }
 
+double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
+                      Mat<double>* yhat) {
+  LpvModel<double> m = model;
+  m.x0 = Vec<double>::Zero(model.nx);
+  const Eigen::Index k = std::clamp<Eigen::Index>(init_samples, 1, val.n());
+  FitOptions x0fit;
+  x0fit.last_sample = k;
+  const FitResult f = fit_slots(m, x0_slots(m), val, x0fit);
+  if (yhat) *yhat = simulate(f.model, val).output;
+  return prediction_rms(f.model, val);
+}
+
 FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,
                     const Experiment<double>& exp, const FitOptions& o) {
   const Window w = window_of(exp, o.first_sample, o.last_sample);
   FitResult res;
   res.model = model;
-  Vec<double> p = slot_values(model, slots);
-  Vec<double> r = residual(model, exp, w);
-  if (r.size() == 0) {
+  const Vec<double> p0 = slot_values(model, slots);
+  const Vec<double> r0 = residual(model, exp, w);
+  if (r0.size() == 0) {
     res.finite = false;
     res.rms = std::numeric_limits<double>::infinity();
     return res;
   }
-  double cost = r.squaredNorm();
-  double mu = 1e-3;  // LM damping relative to the Gauss–Newton diagonal
-  const Eigen::Index P = p.size();
-  for (int it = 0; it < o.max_iterations && P > 0; ++it) {
-    res.iterations = it + 1;
-    // forward-difference Jacobian of the residual
-    Mat<double> J(r.size(), P);
-    bool ok = true;
-    for (Eigen::Index j = 0; j < P && ok; ++j) {
-      const double h = 1e-7 * std::max(1.0, std::abs(p(j)));
-      Vec<double> q = p;
-      q(j) += h;
-      const Vec<double> rj = residual(with_slot_values(model, slots, q), exp, w);
-      if (rj.size() == 0) {
-        ok = false;
-        break;
-      }
-      J.col(j) = (rj - r) / h;
-    }
-    if (!ok) break;
-    const Mat<double> JtJ = J.transpose() * J;
-    const Vec<double> g = J.transpose() * r;
-    Vec<double> diag = JtJ.diagonal();
-    for (Eigen::Index j = 0; j < P; ++j) diag(j) = std::max(diag(j), 1e-12 * (1.0 + JtJ.diagonal().maxCoeff()));
-    bool improved = false;
-    for (int tries = 0; tries < 12 && !improved; ++tries) {
-      Mat<double> H = JtJ;
-      H.diagonal() += mu * diag;
-      const Vec<double> step = H.ldlt().solve(-g);
-      if (!step.allFinite()) {
-        mu *= 10;
-        continue;
-      }
-      const Vec<double> q = p + step;
-      const LpvModel<double> mq = with_slot_values(model, slots, q);
-      const Vec<double> rq = residual(mq, exp, w);
-      if (rq.size() != 0 && rq.squaredNorm() < cost) {
-        const double rel = (cost - rq.squaredNorm()) / std::max(cost, 1e-300);
-        p = slot_values(mq, slots);  // limits may have been re-ordered
-        r = rq;
-        cost = rq.squaredNorm();
-        mu = std::max(mu / 10, 1e-12);
-        improved = true;
-        if (rel < o.rel_tol) it = o.max_iterations;  // converged
-      } else {
-        mu *= 10;
-      }
-    }
-    if (!improved) break;
+  // a trial point whose simulation overflows gets a huge residual: LM rejects it
+  const Eigen::Index m = r0.size();
+  const Residual r = [&](const Vec<double>& p) {
+    const Vec<double> v = residual(with_slot_values(model, slots, p), exp, w);
+    return v.size() == m ? v : Vec<double>(Vec<double>::Constant(m, 1e100));
+  };
+  Vec<double> p = p0;
+  if (p0.size() > 0) {
+    LmOptions lm;
+    lm.max_iterations = o.max_iterations;
+    lm.relative_tolerance = o.rel_tol;
+    const LmResult fit = levenberg_marquardt(r, p0, lm);
+    p = fit.p;
+    res.iterations = fit.iterations;
   }
   res.model = with_slot_values(model, slots, p);
-  res.rms = std::sqrt(cost / static_cast<double>(r.size()));
+  const Vec<double> rf = residual(res.model, exp, w);
+  res.finite = rf.size() == m;
+  res.rms = res.finite ? std::sqrt(rf.squaredNorm() / static_cast<double>(m)) : std::numeric_limits<double>::infinity();
   return res;
 }
 

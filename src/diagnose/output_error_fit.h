@@ -5,8 +5,8 @@
 /// output-error criterion: the state is simulated from u (and x0), never
 /// reset to the data, so the fitted model is judged the way it is used.
 ///
-/// Method: Levenberg–Marquardt (Nocedal & Wright, Numerical Optimization,
-/// 2nd ed., §10.3) with a forward-difference Jacobian. For a model without
+/// Method: Levenberg–Marquardt (diagnose/levenberg_marquardt.h) with a
+/// forward-difference Jacobian. For a model without
 /// a static output map every C, D, φ and x0 slot enters ŷ affinely (eq. 14–15),
 /// so those directions converge in one step; the nonlinear ones (saturation
 /// limits, polynomial coefficients) take a few more.
@@ -19,7 +19,7 @@
 namespace lpvid {
 
 struct FitOptions {
-  int max_iterations = 60;
+  int max_iterations = 200;    ///< LM steps tried (accepted + rejected)
   double rel_tol = 1e-10;      ///< stop when the cost falls by less (relative)
   Eigen::Index first_sample = 0;  ///< the cost starts here (earlier samples only run the state)
   Eigen::Index last_sample = -1;  ///< one past the last sample of the cost (-1: n)
@@ -36,6 +36,12 @@ struct FitResult {
 /// (last = -1: n); +inf when the simulation is not finite.
 double prediction_rms(const LpvModel<double>& model, const Experiment<double>& exp, Eigen::Index first = 0,
                       Eigen::Index last = -1);
+
+/// Free-run RMS on `val` from an x0 fitted on its first `init_samples`
+/// samples only (the cascaded tanks benchmark's rule), RMS over all samples.
+/// Also returns the simulated output in `yhat` if non-null.
+double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
+                      Mat<double>* yhat = nullptr);
 
 /// Fits the slots of `model` to `exp`.
 FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,

@@ -52,7 +52,7 @@ RC_GTEST_PROP(LinearFitProperty, FittedModelIsStableAndEstimationRmsMatchesItsMo
   const int order = *gen::uniform_int(1, 4);
   const LinearFit fit = fit_linear(est, kColumns, LinearFitOptions{order, *rc::gen::arbitrary<bool>(), {}});
   RC_ASSERT(fit.spectral_radius < 1.0);
-  RC_ASSERT(std::abs(free_run_rms(fit.model, est) - fit.rms_estimation) <= 1e-9 * (1 + fit.rms_estimation));
+  RC_ASSERT(std::abs(prediction_rms(fit.model, est) - fit.rms_estimation) <= 1e-9 * (1 + fit.rms_estimation));
   RC_ASSERT(fit.rms_estimation <= fit.rms_arx + 1e-12);  // refinement never makes it worse
 }
 
@@ -97,9 +97,9 @@ TEST(LinearFitTest, ModelFileRoundTripKeepsTheOutput) {
   EXPECT_NE(text.find("\"uEst\""), std::string::npos);
   const LpvModel<double> back = parse_model_json<double>(text, "fit.json");
   EXPECT_TRUE(back.scheduling.empty());
-  EXPECT_EQ(free_run_rms(back, est), free_run_rms(fit.model, est));  // shortest round-trip text: same doubles
+  EXPECT_EQ(prediction_rms(back, est), prediction_rms(fit.model, est));  // shortest round-trip text: same doubles
   // rms_estimation comes from simulate_observer (other operation order).
-  EXPECT_NEAR(free_run_rms(back, est), fit.rms_estimation, 1e-12 * fit.rms_estimation);
+  EXPECT_NEAR(prediction_rms(back, est), fit.rms_estimation, 1e-12 * fit.rms_estimation);
 }
 
 Experiment<double> small_experiment(Eigen::Index N) {
