@@ -34,7 +34,8 @@ struct DiagnoseArgs {
   int max_delay = 5;
   int init_samples = 5;
   bool input_scheduling = true;
-  std::string window_text;
+  std::vector<std::string> windows;
+  long window_length = 0;
   std::string plots_dir;
   std::string model_out;
 };
@@ -127,13 +128,18 @@ int run_diagnose(DiagnoseArgs& a) {
   ro.candidates.max_delay = a.max_delay;
   const RankingResult rank = rank_effects(declared, est_d, val_d, ro);
 
-  // verified bounds before and after, on the bound window of the estimation data
-  Eigen::Index wb = 0, we = std::min<Eigen::Index>(est_q.n(), 200);
-  if (!a.window_text.empty()) {
-    const auto [b, e] = parse_range(a.window_text, "--window");
-    wb = b;
-    we = e;
+  // verified bounds before and after, on the bound windows of the estimation data
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> windows;
+  for (const std::string& w : a.windows) {
+    const auto [b, e] = parse_range(w, "--window");
+    windows.emplace_back(b, e);
   }
+  if (a.window_length > 0) {
+    if (!windows.empty()) throw InputError("--window and --window-length exclude each other");
+    for (Eigen::Index b = 0; b < est_q.n(); b += a.window_length)
+      windows.emplace_back(b, std::min<Eigen::Index>(est_q.n(), b + a.window_length));
+  }
+  if (windows.empty()) windows.emplace_back(0, std::min<Eigen::Index>(est_q.n(), 200));
   CertifyOptions co;
   co.objective = in.objective;
   co.solver.verbose = a.common.verbose;
@@ -148,17 +154,20 @@ int run_diagnose(DiagnoseArgs& a) {
   auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
   const LpvModel<double> before = round_fitted_model(rank.before);
   const LpvModel<double> after = round_fitted_model(rank.after);
-  co.certificate_path = cert_stem + ".before.json";
-  const WindowBounds bb = certify_window(before, est_d, est_q, wb, we, file_offset, co, *solver);
-  co.certificate_path = cert_stem + ".after.json";
-  const WindowBounds ba = certify_window(after, est_d, est_q, wb, we, file_offset, co, *solver);
-
+  std::vector<WindowBounds> bb, ba;
+  for (size_t i = 0; i < windows.size(); ++i) {
+    const std::string tag = windows.size() == 1 ? "" : ".w" + std::to_string(i + 1);
+    co.certificate_path = cert_stem + tag + ".before.json";
+    bb.push_back(certify_window(before, est_d, est_q, windows[i].first, windows[i].second, file_offset, co, *solver));
+    co.certificate_path = cert_stem + tag + ".after.json";
+    ba.push_back(certify_window(after, est_d, est_q, windows[i].first, windows[i].second, file_offset, co, *solver));
+  }
   DiagnoseReportInputs ri;
   ri.command_line_data = a.common.data_path;
   ri.validation = val_text;
   ri.rank = &rank;
-  ri.before = &bb;
-  ri.after = &ba;
+  ri.before = bb;
+  ri.after = ba;
   ri.before_model = &before;
   ri.after_model = &after;
   ri.est = &est_d;
@@ -167,9 +176,12 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;
   ri.solver = a.common.solver;
-  if (!a.model_out.empty()) write_model_file(a.model_out, ba.model);
+  if (!a.model_out.empty()) write_model_file(a.model_out, ba.front().model);
   print_and_write_diagnose_report(ri, a.common.report_path);
-  return bb.bounds.verified && ba.bounds.verified ? kExitOk : kExitNotVerified;
+  bool verified = true;
+  for (const auto* side : {&bb, &ba})
+    for (const WindowBounds& w : *side) verified = verified && w.bounds.verified;
+  return verified ? kExitOk : kExitNotVerified;
 }
 
 }  // namespace
@@ -196,8 +208,13 @@ Runner add_diagnose_command(CLI::App& app) {
       ->check(CLI::Range(1, 100000));
   cmd->add_flag("!--no-input-scheduling", a->input_scheduling,
                 "do not try basis terms scheduled on the measured inputs (rho = u)");
-  cmd->add_option("--window", a->window_text,
-                  "estimation rows B:E on which the bounds are certified (default 0:min(n,200))");
+  cmd->add_option("--window", a->windows,
+                  "estimation rows B:E on which the bounds are certified, several separated by commas "
+                  "(default 0:min(n,200))")
+      ->delimiter(',');
+  cmd->add_option("--window-length", a->window_length,
+                  "certify consecutive windows of this length covering the whole estimation record")
+      ->check(CLI::Range(10L, 100000L));
   cmd->add_option("--plots", a->plots_dir, "directory for the PNG plots and their CSV data");
   cmd->add_option("--model-out", a->model_out, "write the model after diagnosis (exact, as certified)");
   return [cmd, a] { return cmd->parsed() ? run_diagnose(*a) : -1; };

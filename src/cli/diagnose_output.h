@@ -3,6 +3,7 @@
 /// printed in a readable form and written as JSON.
 
 #include <string>
+#include <vector>
 
 #include "data/experiment.h"
 #include "diagnose/effect_ranking.h"
@@ -13,7 +14,7 @@ namespace lpvid::cli {
 struct DiagnoseReportInputs {
   std::string command_line_data, validation, plots_dir, model_out, solver;
   const RankingResult* rank = nullptr;
-  const WindowBounds *before = nullptr, *after = nullptr;
+  std::vector<WindowBounds> before, after;  ///< one per bound window, same windows
   const LpvModel<double>*before_model = nullptr, *after_model = nullptr;  ///< as rounded for the certificates
   const Experiment<double>*est = nullptr, *val = nullptr;
   int init_samples = 5;
