@@ -120,14 +120,6 @@ int run_diagnose(DiagnoseArgs& a) {
   }
   if (val_d.n() < a.init_samples + 5) throw InputError("the validation data has too few samples");
 
-  RankingOptions ro;
-  ro.max_effects = a.max_effects;
-  ro.min_gain = a.min_gain;
-  ro.init_samples = a.init_samples;
-  ro.candidates.max_degree = a.degree;
-  ro.candidates.max_delay = a.max_delay;
-  const RankingResult rank = rank_effects(declared, est_d, val_d, ro);
-
   // verified bounds before and after, on the bound windows of the estimation data
   std::vector<std::pair<Eigen::Index, Eigen::Index>> windows;
   for (const std::string& w : a.windows) {
@@ -140,6 +132,18 @@ int run_diagnose(DiagnoseArgs& a) {
       windows.emplace_back(b, std::min<Eigen::Index>(est_q.n(), b + a.window_length));
   }
   if (windows.empty()) windows.emplace_back(0, std::min<Eigen::Index>(est_q.n(), 200));
+  for (const auto& [b, e] : windows)
+    if (e > est_q.n())
+      throw InputError("--window " + std::to_string(b) + ":" + std::to_string(e) + " is outside the " +
+                       std::to_string(est_q.n()) + " estimation samples");
+  RankingOptions ro;
+  ro.max_effects = a.max_effects;
+  ro.min_gain = a.min_gain;
+  ro.init_samples = a.init_samples;
+  ro.candidates.max_degree = a.degree;
+  ro.candidates.max_delay = a.max_delay;
+  const RankingResult rank = rank_effects(declared, est_d, val_d, ro);
+
   CertifyOptions co;
   co.objective = in.objective;
   co.solver.verbose = a.common.verbose;

@@ -9,6 +9,7 @@
 
 #include "diagnose/linear_fit.h"
 #include "model/model_file.h"
+#include "support/cli_runner.h"
 #include "support/gen_lti.h"
 
 namespace lpvid {
@@ -16,22 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct FitLinearCommandTest : ::testing::Test {
-  std::string exe = std::string(LPVID_BINARY_DIR) + "/lpvid";
-  fs::path dir = fs::temp_directory_path() / ("lpvid_fit_linear_" + std::to_string(::getpid()));
-  void SetUp() override {
-    if (!fs::exists(exe)) GTEST_SKIP() << exe << " not built";
-    fs::create_directories(dir);
-  }
-  void TearDown() override { fs::remove_all(dir); }
-  int run(const std::string& args) {
-    const int s = std::system((exe + " fit-linear " + args + " >" + (dir / "out.txt").string() + " 2>&1").c_str());
-    return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-  }
-  std::string output() {
-    std::ifstream in(dir / "out.txt");
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
+struct FitLinearCommandTest : gen::CliRunner {
+  int run(const std::string& args) { return CliRunner::run("fit-linear", args); }
   /// Est/val columns of a second-order system with offset 2 (no noise).
   std::string write_data(const std::string& bad_cell = "") {
     ObserverForm f = zero_observer_form(2, 1, true);
