@@ -132,6 +132,16 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
     s.D.add(f, Mat<double>::Zero(base.ny, base.nu));
     out.push_back(make("basis_term", "basis_term " + f.text(base.scheduling) + " in C, D" + note,
                        base.ny * (base.nx + base.nu), {s}));
+    // the same f(ρ) entering the state through B: x_{k+1} = A x + (B + f(ρ) B_f) u
+    if (!has_term(base.B, f) && base.nx > 0) {
+      LpvModel<double> sb = base;
+      sb.B.add(f, Mat<double>::Zero(base.nx, base.nu));
+      EffectCandidate cb = make("basis_term", "basis_term " + f.text(base.scheduling) + " in B" + note,
+                                base.nx * base.nu, {sb});
+      const std::vector<ParameterSlot> extra = input_term_slots(sb, f);
+      cb.slots.insert(cb.slots.end(), extra.begin(), extra.end());
+      out.push_back(std::move(cb));
+    }
   }
 
   // output_offset: Φ = φ_1 (basis 1) when the model has no constant offset

@@ -131,7 +131,9 @@ ojson effect_parameters(const std::string& kind, const std::string& label, const
   if (kind == "basis_term") {
     new_terms_json(fitted.C, previous.C, "C", fitted.scheduling, j);
     new_terms_json(fitted.D, previous.D, "D", fitted.scheduling, j);
-    j["enters"] = "C, D (output correction S_C, eq. 10)";
+    new_terms_json(fitted.B, previous.B, "B", fitted.scheduling, j);
+    j["enters"] = j.contains("B") ? "B (the state equation: x+ = A x + (B + f(rho) B_f) u)"
+                                  : "C, D (output correction S_C, eq. 10)";
     if (fitted.scheduling.size() > previous.scheduling.size()) {
       ojson s = ojson::object();
       for (size_t i = previous.scheduling.size(); i < fitted.scheduling.size(); ++i)

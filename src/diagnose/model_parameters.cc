@@ -63,6 +63,7 @@ double& slot_value(LpvModel<double>& m, const ParameterSlot& s) {
   switch (s.where) {
     case Where::kC: return at_checked(index_checked(m.C.terms, s.term).value, s.row, s.col);
     case Where::kD: return at_checked(index_checked(m.D.terms, s.term).value, s.row, s.col);
+    case Where::kB: return at_checked(index_checked(m.B.terms, s.term).value, s.row, s.col);
     case Where::kOffset: {
       Vec<double>& v = index_checked(m.offset.values, s.term);
       if (s.row < 0 || s.row >= v.size()) throw std::out_of_range("offset slot outside its vector");
@@ -105,6 +106,16 @@ std::vector<ParameterSlot> output_map_slots(const LpvModel<double>& m) {
   std::vector<ParameterSlot> out;
   term_slots(m.C, Where::kC, "C", m.scheduling, out);
   term_slots(m.D, Where::kD, "D", m.scheduling, out);
+  return out;
+}
+
+std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Monomial& f) {
+  std::vector<ParameterSlot> out;
+  for (size_t t = 0; t < m.B.terms.size(); ++t)
+    if (m.B.terms[t].basis == f)
+      for (int r = 0; r < m.B.terms[t].value.rows(); ++r)
+        for (int c = 0; c < m.B.terms[t].value.cols(); ++c)
+          out.push_back({Where::kB, static_cast<int>(t), r, c, entry("B", f.text(m.scheduling), r, c)});
   return out;
 }
 

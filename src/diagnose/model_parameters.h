@@ -6,9 +6,10 @@
 /// map C(ρ) = Σ_i f_i(ρ) C_i of eq. 8–10, including correction terms that
 /// were folded in as explicit terms), an offset value φ_j (eq. 20), an entry
 /// of x0, or a parameter of a static input/output map (model/static_blocks.h).
-/// A and B are never slots: the state equation stays as declared (the
-/// correction S_C of eq. 10 has fixed A_i, B_i), so for a model without a
-/// static output map the output is affine in every C, D, φ and x0 slot.
+/// A is never a slot, and B only through a basis term that diagnose adds in
+/// B (f(ρ)·B_f u, a state-entering input effect; then fixed, like the A_i,
+/// B_i of S_C in eq. 10). Without such a term and without a static output
+/// map the output is affine in every C, D, φ and x0 slot.
 
 #include <string>
 #include <vector>
@@ -19,7 +20,7 @@
 namespace lpvid {
 
 struct ParameterSlot {
-  enum class Where { kC, kD, kOffset, kX0, kInputLower, kInputUpper, kInputCoef, kOutputLower, kOutputUpper, kOutputCoef };
+  enum class Where { kC, kD, kB, kOffset, kX0, kInputLower, kInputUpper, kInputCoef, kOutputLower, kOutputUpper, kOutputCoef };
   Where where = Where::kC;
   int term = 0;  ///< term index (C, D), offset basis index, coefficient index
   int row = 0, col = 0;
@@ -36,6 +37,8 @@ LpvModel<double> with_slot_values(const LpvModel<double>& m, const std::vector<P
 
 /// Slots of every entry of every C and D term.
 std::vector<ParameterSlot> output_map_slots(const LpvModel<double>& m);
+/// Slots of the B terms with basis f (entries of f(ρ)·B_f).
+std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Monomial& f);
 /// Slots of every offset value (the offset must have values).
 std::vector<ParameterSlot> offset_slots(const LpvModel<double>& m);
 /// Slots of x0 (x0 is sized to nx).
