@@ -17,6 +17,26 @@ Vec<double> fir_stacked(const Mat<double>& taps, const Vec<double>& v, Eigen::In
   return stack_rows(apply_fir(taps, z, ny, z.rows()));
 }
 
+/// An orthonormal basis of the span of the columns of Jr whose parameters do
+/// not move z (Jz column zero): those enter (C2) linearly, so the Δ step
+/// optimises them jointly with Δ (delta_kyp_lmi.h, extra regressors).
+Mat<double> joint_regressors(const AffineResidual<double>& a) {
+  std::vector<Eigen::Index> cols;
+  for (Eigen::Index j = 0; j < a.num_params(); ++j)
+    if (a.Jz.col(j).isZero(0.0) && !a.Jr.col(j).isZero(0.0)) cols.push_back(j);
+  if (cols.empty()) return Mat<double>(a.Jr.rows(), 0);
+  Mat<double> S(a.Jr.rows(), static_cast<Eigen::Index>(cols.size()));
+  for (size_t c = 0; c < cols.size(); ++c) {
+    const auto j = cols[c];
+    S.col(static_cast<Eigen::Index>(c)) = a.Jr.col(j) / a.Jr.col(j).norm();
+  }
+  Eigen::ColPivHouseholderQR<Mat<double>> qr(S);
+  qr.setThreshold(1e-10);
+  const Eigen::Index rank = qr.rank();
+  const Mat<double> Q = qr.householderQ() * Mat<double>::Identity(S.rows(), rank);
+  return Q;
+}
+
 }  // namespace
 
 Vec<double> alternating_parameter_step(const AffineResidual<double>& a, const Mat<double>& taps, double* dmax2) {
@@ -57,14 +77,17 @@ IdentifyResult identify_alternating(const LpvModel<double>& model, const Experim
 
   double dmax2 = 0.0;
   Vec<double> p = alternating_parameter_step(a, Mat<double>(), &dmax2);  // plain least squares
+  const Mat<double> E = joint_regressors(a);
   double previous = std::numeric_limits<double>::infinity();
   bool have = false;
   IterateRecord accepted;
   for (int it = 0; it < std::max(1, options.max_iterations); ++it) {
     const auto start = std::chrono::steady_clock::now();
-    // Δ step: Theorem 2.1 at the fixed model p (KYP form, K taps).
+    // Δ step: Theorem 2.1 at the fixed model p (KYP form, K taps), jointly with
+    // the parameters that do not move z (their span E; the p step below
+    // recovers them: it minimises over all p, so it does at least as well).
     const DeltaKypSolution ds = solve_delta_kyp(unstack_rows(a.z(p), a.nz), unstack_rows(a.r(p), a.ny), inner,
-                                                solver, options.solver, options.taps);
+                                                solver, options.solver, options.taps, E);
     IterateRecord rec;
     rec.index = it;
     rec.status = ds.solve.status;

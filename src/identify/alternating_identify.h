@@ -14,7 +14,9 @@
 ///   d_max²(p, Δ) = ‖r(p) − T_Δ z(p)‖² / (n·ny)      (the residual d of (C2)),
 ///
 /// alternating two exact minimisations:
-///   Δ step (p fixed): Theorem 2.1 for the fixed model, an SDP with K taps;
+///   Δ step (p fixed): Theorem 2.1 for the fixed model, an SDP with K taps
+///      (jointly with the parameters that do not move z: additive
+///      structure, offsets φ, whose effect on d is linear);
 ///   p step (Δ fixed): d = (r0 − T_Δ z0) − (Jr + T_Δ Jz) p is affine in p and
 ///      δ² does not depend on p, so min J is linear least squares (closed
 ///      form, complete orthogonal decomposition: rank deficiency allowed).

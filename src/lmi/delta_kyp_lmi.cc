@@ -1,6 +1,8 @@
 #include "lmi/delta_kyp_lmi.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
 #include "lmi/delta_form_lmi.h"
 
@@ -12,10 +14,13 @@ struct KypLayout {
   Eigen::Index K = 0, ny = 0, nz = 0;
   int tap0 = -1;  ///< h_l(i, j) is tap0 + l·ny·nz + i·nz + j
   int t = -1, s = -1;
+  int g0 = -1;            ///< first extra coefficient g'_j (scaled: g_j = g'_j·σ_r / e_j)
+  Vec<double> e_scale;    ///< RMS of each extra column (1 for a zero column)
   double sigma_z = 1.0, sigma_r = 1.0;
 };
 
-KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index taps) {
+KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index taps,
+                const Mat<double>& E) {
   obj.validate();
   if (z.rows() != r.rows()) throw std::invalid_argument("delta form (KYP): z and r have different lengths");
   check_uncertainty_excited(z);
@@ -64,17 +69,25 @@ KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective
       p.add_entry(A, v, a, b, -1.0);
     }
 
-  // (C2) through a thin QR of [Z r] (scaled): ‖r − Z h‖ = ‖c − R h‖.
-  const Eigen::Index rows = n * f.ny;
-  Mat<double> G = Mat<double>::Zero(rows, nt + 1);
+  // (C2) through a thin QR of [Z E r] (scaled): ‖r − Z h − E g‖ = ‖c − R [h; g]‖.
+  const Eigen::Index rows = n * f.ny, m = E.cols(), nv = nt + m;
+  if (m > 0 && E.rows() != rows) throw std::invalid_argument("delta form (KYP): extra regressors have the wrong length");
+  if (m > 0) f.g0 = p.add_variables(static_cast<int>(m));
+  f.e_scale = Vec<double>::Ones(m);
+  Mat<double> G = Mat<double>::Zero(rows, nv + 1);
+  for (Eigen::Index j = 0; j < m; ++j) {
+    const double e = E.col(j).norm() / std::sqrt(static_cast<double>(rows));
+    if (e > 0.0) f.e_scale(j) = e;
+    G.col(nt + j) = E.col(j) / f.e_scale(j);
+  }
   for (Eigen::Index k = 0; k < n; ++k)
     for (Eigen::Index i = 0; i < f.ny; ++i) {
-      G(k * f.ny + i, nt) = rs(k, i);
+      G(k * f.ny + i, nv) = rs(k, i);
       for (Eigen::Index l = 0; l <= std::min(k, f.K - 1); ++l)
         for (Eigen::Index j = 0; j < f.nz; ++j) G(k * f.ny + i, l * q + i * f.nz + j) = zs(k - l, j);
     }
   Eigen::HouseholderQR<Mat<double>> qr(G);
-  const Eigen::Index rr = std::min(rows, nt + 1);
+  const Eigen::Index rr = std::min(rows, nv + 1);
   const Mat<double> R = qr.matrixQR().topRows(rr).triangularView<Eigen::Upper>();
   const double N = static_cast<double>(rows);
   const int B = p.add_block("C2_noise_qr", static_cast<int>(rr + 1));
@@ -84,28 +97,30 @@ KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective
     p.add_entry(B, -1, 0, 0, N * obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r));
   for (Eigen::Index a = 0; a < rr; ++a) {
     p.add_entry(B, -1, static_cast<int>(1 + a), static_cast<int>(1 + a), 1.0);
-    if (R(a, nt) != 0.0) p.add_entry(B, -1, 0, static_cast<int>(1 + a), R(a, nt));
+    if (R(a, nv) != 0.0) p.add_entry(B, -1, 0, static_cast<int>(1 + a), R(a, nv));
   }
-  for (Eigen::Index c = 0; c < nt; ++c)
+  for (Eigen::Index c = 0; c < nv; ++c) {
+    const int var = static_cast<int>(c < nt ? f.tap0 + c : f.g0 + (c - nt));
     for (Eigen::Index a = 0; a <= std::min(c, rr - 1); ++a)
-      if (R(a, c) != 0.0) p.add_entry(B, static_cast<int>(f.tap0 + c), 0, static_cast<int>(1 + a), -R(a, c));
+      if (R(a, c) != 0.0) p.add_entry(B, var, 0, static_cast<int>(1 + a), -R(a, c));
+  }
   return f;
 }
 
 }  // namespace
 
-LmiProgram delta_kyp_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                             Eigen::Index taps) {
-  return build(z, r, objective, taps).program;
-}
-
 DeltaKypSolution solve_delta_kyp(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                 SdpSolver& solver, const SolverOptions& options, Eigen::Index taps) {
-  KypLayout f = build(z, r, objective, taps);
+                                 SdpSolver& solver, const SolverOptions& options, Eigen::Index taps,
+                                 const Mat<double>& extra) {
+  KypLayout f = build(z, r, objective, taps, extra);
   DeltaKypSolution out;
   out.solve = solver.solve(f.program, options);
   read_delta_solution(out.solve, {f.K, f.ny, f.nz, f.tap0, f.t, f.s, f.sigma_z, f.sigma_r}, objective, out.taps,
                       out.delta2, out.dmax2);
+  out.g = Vec<double>::Zero(extra.cols());
+  if (has_solution(out.solve.status))
+    for (Eigen::Index j = 0; j < extra.cols(); ++j)
+      out.g(j) = out.solve.x[static_cast<size_t>(f.g0 + j)] * f.sigma_r / f.e_scale(j);
   return out;
 }
 

@@ -28,7 +28,15 @@
 /// rows instead of n·ny + 1. The blocks are small: the program costs
 /// O(K²·nz²) variables and no O(n) block, so its cost barely depends on n.
 ///
-/// Numbers are scaled as in delta_form_lmi.h (z by σ_z, r by σ_r).
+/// Optional extra regressors E (n·ny × m, stacked like r): d = r − w − E g
+/// with g free. The alternating identification passes the columns of the
+/// residual's Jacobian −∂r/∂p = Jr whose parameters do not move z (additive
+/// structure, offsets φ): (C2) stays linear in (h, g), so those parameters
+/// are optimised jointly with Δ (for the additive structure this is the
+/// global optimum of the KYP-restricted Theorem 3.1).
+///
+/// Numbers are scaled as in delta_form_lmi.h (z by σ_z, r by σ_r; each
+/// column of E by its RMS).
 
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
@@ -42,15 +50,14 @@ struct DeltaKypSolution {
   Mat<double> taps;     ///< K × (ny·nz), original units, row l = h_l row-major
   double delta2 = 0.0;  ///< t: an upper bound on ‖Δ‖²_∞ (original units), or the fixed δ²
   double dmax2 = 0.0;   ///< s (original units), or the fixed d_max²
+  Vec<double> g;        ///< coefficients of the extra regressors (original units)
 };
 
 /// Solves (KYP) + (C2) for the objective. z is n × nz, r is n × ny; K taps
-/// (clamped to 1 … n). Throws InputError when z ≡ 0 (as solve_delta_form).
+/// (clamped to 1 … n); `extra` is E (no columns: none). Throws InputError
+/// when z ≡ 0 (as solve_delta_form).
 DeltaKypSolution solve_delta_kyp(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                 SdpSolver& solver, const SolverOptions& options, Eigen::Index taps);
-
-/// The program alone (same scaling), e.g. for --write-sdpa.
-LmiProgram delta_kyp_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                             Eigen::Index taps);
+                                 SdpSolver& solver, const SolverOptions& options, Eigen::Index taps,
+                                 const Mat<double>& extra = Mat<double>());
 
 }  // namespace lpvid
