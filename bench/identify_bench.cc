@@ -129,6 +129,12 @@ int main(int argc, char** argv) {
           const auto t0 = std::chrono::steady_clock::now();
           const IdentifyResult res = identify(md, ed, io, *solver);
           const double ident = seconds_since(t0);
+          if (!has_solution(res.status)) {  // p = 0 then: certifying it would show the initial model's bounds
+            std::printf("%-4s %4d %-11s %-5s | %8.2f %5zu %-18s | %8s %8s %-8s | %10s %10s\n", m == 1 ? "SISO" : "2x2",
+                        n, method.c_str(), b.c_str(), ident, res.iterates.size(), to_string(res.status), "-", "-", "-",
+                        "-", "-");
+            continue;
+          }
           Vec<Rational> p(res.p.size());
           for (Eigen::Index i = 0; i < p.size(); ++i) p(i) = round_to_digits(res.p(i), 12);
           CertifyOptions co;
