@@ -105,6 +105,63 @@ RC_GTEST_PROP(AlternatingProperty, EveryIterateCertifiesAndTheObjectiveNeverRise
   RC_TAG(to_string(c.model.uncertainty.structure), res.iterates.size() > 2 ? "3+ Delta steps" : "1-2 Delta steps");
 }
 
+// Fixed bounds. Minimising d_max at a fixed δ (SPEC §4): every iterate
+// certifies with that δ exactly (its taps are shrunk onto δ if the solver's
+// tolerance put them above) and a certified d_max² at most the iterate's;
+// deciding consistency at bounds slightly above a certified weighted result
+// succeeds, and well below it does not report a solution.
+RC_GTEST_PROP(AlternatingProperty, FixedBoundsAreHonoured, ()) {
+  IdentCaseOptions o;
+  o.model.min_rho = 0;
+  o.model.max_rho = 2;
+  o.model.min_correction = 1;
+  o.model.max_correction = 2;
+  o.model.allow_additive = true;
+  o.min_n = 8;
+  o.max_n = 20;
+  const IdentCase c = *ident_case(o);
+  ScratchDir dir("alt-fixed");
+  const std::string data = dir.file("data.csv");
+  write_experiment_csv(data, c.model, c.exp);
+  const Experiment<double> exp = read_experiment(data, convert_model<double>(c.model));
+  const Experiment<Rational> exp_q = read_experiment(data, c.model);
+  auto solver = make_solver("csdp");
+  const double abs_tol = 1e-7 * mean_square(c.exp.y);
+
+  IdentifyOptions io = alternating(0.5, 4);
+  const IdentifyResult w = identify(convert_model<double>(c.model), exp, io, *solver);
+  RC_ASSERT(has_solution(w.status));
+  const CertifiedBounds bw = certify_with_taps(fold_rounded(c.model, w.layout, w.p), exp_q, w.taps,
+                                               certify_options(io.objective, data, dir.file("w.json")), "csdp");
+  RC_ASSERT(bw.verified);
+
+  // minimise d_max at δ = the weighted result's δ
+  io.objective = min_dmax_objective(bw.delta);
+  const IdentifyResult f = identify(convert_model<double>(c.model), exp, io, *solver);
+  RC_LOG() << "fixed delta " << bw.delta << ": " << to_string(f.status) << ", " << f.iterates.size() << " steps\n";
+  RC_ASSERT(has_solution(f.status));
+  for (size_t i = 0; i < f.iterates.size(); ++i) {
+    const IterateRecord& it = f.iterates[i];
+    if (!has_solution(it.status)) continue;
+    const CertifiedBounds b = certify_with_taps(fold_rounded(c.model, f.layout, it.p), exp_q, it.taps,
+                                                certify_options(io.objective, data, dir.file("f.json")), "csdp");
+    RC_LOG() << "  iterate " << i << ": dmax2 " << it.dmax2 << ", certified " << b.verified << " "
+             << nearest_double(b.dmax2) << " " << b.reason << "\n";
+    RC_ASSERT(b.verified);
+    RC_ASSERT(nearest_double(b.delta2) <= bw.delta * bw.delta * (1 + 1e-12));  // the fixed δ (as decimal text), squared
+    RC_ASSERT(nearest_double(b.dmax2) <= it.dmax2 * (1 + 1e-4) + abs_tol);
+  }
+
+  // consistency just above the weighted result: shown; far below: no solution
+  io.objective = feasibility_objective(bw.delta * 1.01, bw.dmax * 1.01);
+  const IdentifyResult yes = identify(convert_model<double>(c.model), exp, io, *solver);
+  RC_ASSERT(has_solution(yes.status));
+  io.objective = feasibility_objective(0.0, bw.dmax * 1e-3);
+  const IdentifyResult no = identify(convert_model<double>(c.model), exp, io, *solver);
+  RC_LOG() << "feasibility above: " << to_string(yes.status) << ", far below: " << to_string(no.status) << "\n";
+  RC_ASSERT(!has_solution(no.status) || bw.dmax == 0.0);
+}
+
 // The θ step is the least-squares optimum of d(p) = r(p) − T_Δ z(p) for its
 // Δ: the normal equations hold.
 RC_GTEST_PROP(AlternatingProperty, ParameterStepIsTheLeastSquaresOptimum, ()) {
