@@ -50,26 +50,43 @@ double mean_square(const Mat<Rational>& y) {
   return d.squaredNorm() / static_cast<double>(d.size());
 }
 
-RC_GTEST_PROP(AlternatingProperty, EveryIterateCertifiesAndTheObjectiveNeverRises, ()) {
+/// Random LPV case with 1–2 correction terms, either structure.
+IdentCaseOptions case_options(int max_n) {
   IdentCaseOptions o;
   o.model.min_rho = 0;
   o.model.max_rho = 2;
   o.model.min_correction = 1;
   o.model.max_correction = 2;
   o.model.allow_additive = true;
-  o.true_correction = *rc::gen::arbitrary<bool>();
   o.min_n = 8;
-  o.max_n = 24;
+  o.max_n = max_n;
+  return o;
+}
+
+/// A case written to a data file and read back as the CLI would.
+struct WrittenCase {
+  ScratchDir dir;
+  std::string data;
+  Experiment<double> exp;
+  Experiment<Rational> exp_q;
+  double abs_tol = 0;  ///< 1e-7 × mean square of y (see the header)
+  WrittenCase(const IdentCase& c, const char* tag) : dir(tag), data(dir.file("data.csv")) {
+    write_experiment_csv(data, c.model, c.exp);
+    exp = read_experiment(data, convert_model<double>(c.model));
+    exp_q = read_experiment(data, c.model);
+    abs_tol = 1e-7 * mean_square(c.exp.y);
+  }
+};
+
+RC_GTEST_PROP(AlternatingProperty, EveryIterateCertifiesAndTheObjectiveNeverRises, ()) {
+  IdentCaseOptions o = case_options(24);
+  o.true_correction = *rc::gen::arbitrary<bool>();
   const IdentCase c = *ident_case(o);
   const double lambda = *rc::gen::element(0.5, 0.1, 0.9);
   const long taps = *rc::gen::element(1L, 3L, 8L);
-  ScratchDir dir("alt");
-  const std::string data = dir.file("data.csv");
-  write_experiment_csv(data, c.model, c.exp);
-  const Experiment<double> exp = read_experiment(data, convert_model<double>(c.model));
-  const Experiment<Rational> exp_q = read_experiment(data, c.model);
+  const WrittenCase wc(c, "alt");
+  const auto& [dir, data, exp, exp_q, abs_tol] = wc;
   auto solver = make_solver("csdp");
-  const double abs_tol = 1e-7 * mean_square(c.exp.y);
 
   const IdentifyResult res = identify(convert_model<double>(c.model), exp, alternating(lambda, taps), *solver);
   RC_LOG() << to_string(c.model.uncertainty.structure) << ", n = " << exp.n() << ", lambda " << lambda << ", taps "
@@ -111,22 +128,10 @@ RC_GTEST_PROP(AlternatingProperty, EveryIterateCertifiesAndTheObjectiveNeverRise
 // deciding consistency at bounds slightly above a certified weighted result
 // succeeds, and well below it does not report a solution.
 RC_GTEST_PROP(AlternatingProperty, FixedBoundsAreHonoured, ()) {
-  IdentCaseOptions o;
-  o.model.min_rho = 0;
-  o.model.max_rho = 2;
-  o.model.min_correction = 1;
-  o.model.max_correction = 2;
-  o.model.allow_additive = true;
-  o.min_n = 8;
-  o.max_n = 20;
-  const IdentCase c = *ident_case(o);
-  ScratchDir dir("alt-fixed");
-  const std::string data = dir.file("data.csv");
-  write_experiment_csv(data, c.model, c.exp);
-  const Experiment<double> exp = read_experiment(data, convert_model<double>(c.model));
-  const Experiment<Rational> exp_q = read_experiment(data, c.model);
+  const IdentCase c = *ident_case(case_options(20));
+  const WrittenCase wc(c, "alt-fixed");
+  const auto& [dir, data, exp, exp_q, abs_tol] = wc;
   auto solver = make_solver("csdp");
-  const double abs_tol = 1e-7 * mean_square(c.exp.y);
 
   IdentifyOptions io = alternating(0.5, 4);
   const IdentifyResult w = identify(convert_model<double>(c.model), exp, io, *solver);
@@ -165,15 +170,7 @@ RC_GTEST_PROP(AlternatingProperty, FixedBoundsAreHonoured, ()) {
 // The θ step is the least-squares optimum of d(p) = r(p) − T_Δ z(p) for its
 // Δ: the normal equations hold.
 RC_GTEST_PROP(AlternatingProperty, ParameterStepIsTheLeastSquaresOptimum, ()) {
-  IdentCaseOptions o;
-  o.model.min_rho = 0;
-  o.model.max_rho = 2;
-  o.model.allow_additive = true;
-  o.model.min_correction = 1;
-  o.model.max_correction = 2;
-  o.min_n = 6;
-  o.max_n = 20;
-  const IdentCase c = *ident_case(o);
+  const IdentCase c = *ident_case(case_options(20));
   const LpvModel<double> md = convert_model<double>(c.model);
   const Experiment<double> exp = nearest_double(c.exp);
   const AffineResidual<double> a = build_affine_residual(md, exp, Unknowns{});
