@@ -384,7 +384,7 @@ bool read_attempt(std::FILE* f, Attempt& a) {
 
 /// run_sdp in a child process under the stall watchdog (watchdog_child.h):
 /// CSDP can spin forever inside one iteration, where its maxiter cap never
-/// looks (IdentifyKnownIssue.CsdpReturnsOnThisRelaxation: perturbobj 0 loops
+/// looks (IdentifyRegression.CsdpReturnsOnThisRelaxation: perturbobj 0 loops
 /// in copy_mat at iteration 50). The child prints CSDP's per-iteration lines
 /// (printlevel ≥ 1) as the heartbeat; they are shown only when verbose.
 Attempt run_sdp_watched(const CsdpProblem& prob, std::vector<sparseblock*>& byblocks, const paramstruc& params,

@@ -281,7 +281,7 @@ namespace {
 // perturbobj 1 solves it in 50 iterations. The backend now runs each attempt
 // in a child process under a stall watchdog (solvers/watchdog_child.h) and
 // moves on to the next attempt.
-TEST(IdentifyKnownIssue, CsdpReturnsOnThisRelaxation) {
+TEST(IdentifyRegression, CsdpReturnsOnThisRelaxation) {
   const char* model_json = R"({
     "format": "lpvid-model/1", "states": 2, "inputs": 1, "outputs": 1, "scheduling": [],
     "columns": {"u": ["u1"], "y": ["y1"], "rho": []},
