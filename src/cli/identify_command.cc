@@ -111,6 +111,7 @@ int run_identify(IdentifyArgs& a) {
   co.objective = in.objective;
   co.solver = opt.solver;
   co.max_taps = a.common.max_taps;
+  co.delta_norm = delta_norm_of(a.common);
   co.certificate_path = certificate_path(a.common);
   co.data_path = a.common.data_path;
   co.data_names = a.common.names;
