@@ -10,6 +10,10 @@
 
 namespace lpvid::cli {
 
+DeltaNorm delta_norm_of(const CommonOptions& o) {
+  return o.delta_norm == "kyp" ? DeltaNorm::kKyp : DeltaNorm::kToeplitz;
+}
+
 void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   app.add_option("--data", o.data_path, "data file (CSV with header, or whitespace columns with --names)")->required();
   app.add_option("--model", o.model_path, "model file (lpvid-model/1 JSON)")->required();
@@ -26,6 +30,10 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   app.add_option("--report", o.report_path, "where to write the report (JSON)");
   app.add_option("--max-taps", o.max_taps, "taps of the FIR Delta in the certificate (0: full horizon; default 64)")
       ->check(CLI::Range(0L, 100000L));
+  app.add_option("--delta-norm", o.delta_norm,
+                 "certificate's Delta solve: toeplitz (the (C1') block, exact for the horizon; default) or kyp "
+                 "(||Delta||_inf by the KYP lemma: blocks independent of n, fast for long records; needs --max-taps > 0)")
+      ->check(CLI::IsMember({"toeplitz", "kyp"}));
   app.add_flag("--verbose", o.verbose, "let the SDP backend print its iterations");
   if (needs_bounds) {
     auto* d = app.add_option("--delta", o.delta_text, "fix delta (exact decimal); minimise dmax");

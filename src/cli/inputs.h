@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "data/experiment.h"
+#include "identify/certify.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
@@ -29,9 +30,13 @@ struct CommonOptions {
   std::string delta_text, dmax_text;     ///< --delta / --dmax as typed (exact)
   std::optional<double> lambda;          ///< --lambda
   long max_taps = 64;                    ///< --max-taps (Δ form; 0 = full horizon)
+  std::string delta_norm = "toeplitz";   ///< --delta-norm toeplitz|kyp (how the certificate's Δ is solved for)
   std::string write_sdpa;                ///< --write-sdpa F.dat-s
   bool verbose = false;
 };
+
+/// --delta-norm as the enum of certify.h.
+DeltaNorm delta_norm_of(const CommonOptions& o);
 
 /// Registers the common options on a subcommand.
 void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds);

@@ -22,6 +22,7 @@ int run_invalidate(CommonOptions& c) {
   co.objective = in.objective;
   co.solver.verbose = c.verbose;
   co.max_taps = c.max_taps;
+  co.delta_norm = delta_norm_of(c);
   co.certificate_path = certificate_path(c);
   co.data_path = c.data_path;
   co.data_names = c.names;

@@ -97,6 +97,7 @@ int run_tradeoff(TradeoffArgs& a) {
   o.unknowns.offset = !a.no_offset;
   o.solver.verbose = c.verbose;
   o.certify.max_taps = c.max_taps;
+  o.certify.delta_norm = delta_norm_of(c);
   o.certify.data_path = c.data_path;
   o.certify.data_names = c.names;
   o.certify.row_begin = c.rows_text.empty() ? 0 : c.row_begin;

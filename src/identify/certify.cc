@@ -10,6 +10,7 @@
 #include "core/sha256.h"
 #include "data/csv_reader.h"
 #include "lmi/delta_form_lmi.h"
+#include "lmi/delta_kyp_lmi.h"
 #include "lmi/relaxed_bmi_lmi.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "model/simulate.h"
@@ -40,7 +41,8 @@ double toeplitz_norm2(const Mat<double>& taps, Eigen::Index horizon, Eigen::Inde
 /// Steps 5–6, shared by both forms: δ² with the smallest margin that passes
 /// the exact check, then write the file and check it again from the file.
 template <typename Norm2>
-void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o, SdpSolver& solver, CertifiedBounds& out) {
+void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o, const std::string& solver_name,
+                        CertifiedBounds& out) {
   namespace fs = std::filesystem;
   c.data_names = o.data_names;
   c.row_begin = o.row_begin;
@@ -52,7 +54,7 @@ void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o,
   c.data_sha256 = sha256_hex(read_text_file(o.data_path));
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
-  c.info["solver"] = solver.name();
+  c.info["solver"] = solver_name;
   c.info["solver_status"] = out.solver_status;
   const double norm2 = o.objective.delta_fixed() ? 0.0 : norm2_fn();
   CertificateVerdict v;
@@ -122,6 +124,42 @@ Rational squared_norm(const Mat<Rational>& m) {
   return s;
 }
 
+/// Steps 3–6 for floating taps (K × ny·nz) on the given horizon.
+void certify_taps(const LpvModel<Rational>& model, const Simulation<Rational>& sim, const Mat<Rational>& r,
+                  const Mat<double>& taps, Eigen::Index horizon, const CertifyOptions& o,
+                  const std::string& solver_name, CertifiedBounds& out) {
+  const Eigen::Index n = r.rows(), ny = model.ny, nz = model.nz();
+  // 3. Rounded taps.
+  Certificate c;
+  c.model = model;
+  c.mode = ToeplitzMode::kSignal;
+  c.form = CertificateForm::kDelta;
+  c.horizon = horizon;
+  c.taps = Mat<Rational>(taps.rows(), taps.cols());
+  Mat<double> taps_d(taps.rows(), taps.cols());
+  // A fixed δ must hold exactly, but the solver meets ‖T_Δ‖ ≤ δ only up to its
+  // feasibility tolerance, which is absolute in its scaled units: for a tiny or
+  // zero δ the taps can exceed δ by orders of magnitude. Shrink them onto
+  // δ·(1 − 1e-8) (to zero for δ = 0) before rounding.
+  double shrink = 1.0;
+  if (o.objective.delta_fixed()) {
+    const double norm = std::sqrt(toeplitz_norm2(taps, horizon, ny, nz));
+    const double cap = o.objective.delta * (1.0 - 1e-8);
+    if (norm > cap) shrink = cap / norm;
+  }
+  for (Eigen::Index i = 0; i < taps.rows(); ++i)
+    for (Eigen::Index j = 0; j < taps.cols(); ++j) {
+      c.taps(i, j) = round_to_digits(shrink * taps(i, j), o.digits);
+      taps_d(i, j) = nearest_double(c.taps(i, j));
+    }
+
+  // 4. (C2) exactly.
+  const Mat<Rational> w = apply_fir(c.taps, sim.z, ny, c.horizon);
+  if (!set_dmax2(c, squared_norm(Mat<Rational>(r - w)), Rational(static_cast<long>(n * ny)), o, out)) return;
+
+  finish_certificate(c, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver_name, out);
+}
+
 }  // namespace
 
 Rational round_to_digits(double x, int digits) {
@@ -165,14 +203,26 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   // 1. Exact signals.
   const Simulation<Rational> sim = simulate(model, exp);
   const Mat<Rational> r = exp.y - sim.output;
-  const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
 
   // 2. Δ form in floating point; fixed bounds are tightened a little so that
   // rounding does not push the exact values over them.
   BoundObjective obj = o.objective;
   if (obj.dmax_fixed()) obj.dmax *= 1.0 - 1e-7;
   if (obj.delta_fixed()) obj.delta *= 1.0 - 1e-7;
-  const DeltaFormSolution sol = solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, o.solver, o.max_taps);
+  DeltaFormSolution sol;
+  if (o.delta_norm == DeltaNorm::kKyp) {
+    // (KYP) bounds ‖Δ‖_∞ ≥ ‖T_Δ‖ on any horizon: small program, same certificate.
+    if (o.max_taps <= 0) throw InputError("certify: the KYP Delta form needs a finite number of taps (--max-taps > 0)");
+    const DeltaKypSolution k = solve_delta_kyp(nearest_double(sim.z), nearest_double(r), obj, solver, o.solver, o.max_taps);
+    sol.solve = k.solve;
+    sol.leading_zeros = leading_zero_samples(sim.z);
+    sol.horizon = exp.n() - sol.leading_zeros;
+    sol.taps = k.taps.topRows(std::min<Eigen::Index>(k.taps.rows(), sol.horizon));
+    sol.delta2 = k.delta2;
+    sol.dmax2 = k.dmax2;
+  } else {
+    sol = solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, o.solver, o.max_taps);
+  }
   out.solver_status = to_string(sol.solve.status);
   out.solve_seconds = sol.solve.seconds;
   out.taps = sol.taps.rows();
@@ -186,39 +236,31 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
     return out;
   }
 
-  // 3. Rounded taps.
-  Certificate c;
-  c.model = model;
-  c.mode = ToeplitzMode::kSignal;
-  c.form = CertificateForm::kDelta;
-  c.horizon = sol.horizon;
-  c.taps = Mat<Rational>(sol.taps.rows(), sol.taps.cols());
-  Mat<double> taps_d(sol.taps.rows(), sol.taps.cols());
-  // A fixed δ must hold exactly, but the solver meets ‖T_Δ‖ ≤ δ only up to its
-  // feasibility tolerance, which is absolute in its scaled units: for a tiny or
-  // zero δ the taps can exceed δ by orders of magnitude. Shrink them onto
-  // δ·(1 − 1e-8) (to zero for δ = 0) before rounding.
-  double shrink = 1.0;
-  if (o.objective.delta_fixed()) {
-    const double norm = std::sqrt(toeplitz_norm2(sol.taps, sol.horizon, ny, nz));
-    const double cap = o.objective.delta * (1.0 - 1e-8);
-    if (norm > cap) shrink = cap / norm;
-  }
-  for (Eigen::Index i = 0; i < sol.taps.rows(); ++i)
-    for (Eigen::Index j = 0; j < sol.taps.cols(); ++j) {
-      c.taps(i, j) = round_to_digits(shrink * sol.taps(i, j), o.digits);
-      taps_d(i, j) = nearest_double(c.taps(i, j));
-    }
-
-  // 4. (C2) exactly.
-  const Mat<Rational> w = apply_fir(c.taps, sim.z, ny, c.horizon);
-  if (!set_dmax2(c, squared_norm(Mat<Rational>(r - w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
-
   out.delta2_solver = sol.delta2;
-  finish_certificate(c, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver, out);
+  certify_taps(model, sim, r, sol.taps, sol.horizon, o, solver.name(), out);
   return out;
 }
 
+CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                  const Mat<double>& taps, const CertifyOptions& o, const std::string& solver_name) {
+  CertifiedBounds out;
+  if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
+  const Simulation<Rational> sim = simulate(model, exp);
+  const Mat<Rational> r = exp.y - sim.output;
+  const Eigen::Index n = exp.n();
+  const Eigen::Index horizon = n - leading_zero_samples(sim.z);
+  if (horizon == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(sim.z));  // throws the usual InputError
+  if (taps.cols() != model.ny * model.nz())
+    throw std::invalid_argument("certify_with_taps: taps have " + std::to_string(taps.cols()) + " columns, expected ny*nz");
+  // Taps beyond the horizon never act on the data (w_k only sees h_0 … h_{L−1}).
+  const Mat<double> used = taps.topRows(std::min<Eigen::Index>(taps.rows(), horizon));
+  out.solver_status = "given taps (no solve)";
+  out.taps = used.rows();
+  out.horizon = horizon;
+  out.delta2_solver = toeplitz_norm2(used, horizon, model.ny, model.nz());
+  certify_taps(model, sim, r, used, horizon, o, solver_name, out);
+  return out;
+}
 }  // namespace lpvid
 
 namespace lpvid {
@@ -257,7 +299,7 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
     for (Eigen::Index i = 0; i < ny; ++i) c.w(k, i) = round_to_digits(sol.w(k, i), o.digits);
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - c.w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
   out.delta2_solver = sol.delta2;
-  finish_certificate(c, [&] { return sol.delta2; }, o, solver, out);
+  finish_certificate(c, [&] { return sol.delta2; }, o, solver.name(), out);
   return out;
 }
 

@@ -26,11 +26,18 @@
 
 namespace lpvid {
 
+/// How step 2 bounds ‖T_Δ‖ (the certificate is the same either way).
+enum class DeltaNorm {
+  kToeplitz,  ///< (C1'): the L·(ny+nz) block of delta_form_lmi.h (exact for K = L)
+  kKyp,       ///< (KYP): ‖Δ‖_∞ by the bounded real lemma, delta_kyp_lmi.h (small, needs K > 0)
+};
+
 struct CertifyOptions {
   BoundObjective objective;
   SolverOptions solver;
   int digits = 12;                       ///< significant digits of rounded taps
   long max_taps = 64;                    ///< K (0: the full horizon); see solve_delta_form
+  DeltaNorm delta_norm = DeltaNorm::kToeplitz;
   std::string certificate_path;          ///< where to write (required)
   std::string data_path;                 ///< the data file the experiment came from
   std::vector<std::string> data_names;   ///< headerless files only
@@ -55,6 +62,14 @@ struct CertifiedBounds {
 /// is verified = false with the reason); throws InputError for bad input.
 CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                     const CertifyOptions& options, SdpSolver& solver);
+
+/// Steps 3–6 for GIVEN floating taps (K × ny·nz, row l = h_l row-major),
+/// e.g. the Δ of an alternating-identification iterate: no solve. The
+/// horizon is n minus the leading zero samples of the exact z; taps beyond
+/// it are dropped. Throws InputError when z ≡ 0.
+CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                  const Mat<double>& taps, const CertifyOptions& options,
+                                  const std::string& solver_name);
 
 /// Paper mode (T_z = T_G12 T_u is not a signal Toeplitz matrix, so there is
 /// no Δ form): the w form of Theorem 2.1 is solved, w rounded to `digits`

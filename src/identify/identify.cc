@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "identify/alternating_identify.h"
 #include "lmi/delta_form_lmi.h"
 #include "toeplitz/signal_toeplitz.h"
 
@@ -47,6 +48,7 @@ ReducedProblem reduce_problem(const LpvModel<double>& model, const Experiment<do
 IdentifyResult identify(const LpvModel<double>& model, const Experiment<double>& exp, const IdentifyOptions& options,
                         SdpSolver& solver) {
   options.objective.validate();
+  if (options.method == IdentifyMethod::kAlternating) return identify_alternating(model, exp, options, solver);
   ReducedProblem rp = reduce_problem(model, exp, options.unknowns);
   IdentifyResult out;
   out.layout = rp.residual.layout;

@@ -25,8 +25,16 @@
 
 namespace lpvid {
 
+/// How Theorem 3.1 is solved.
+enum class IdentifyMethod {
+  kRelaxation,   ///< the paper's linearised BMI in the w form (lmi/relaxed_bmi_lmi.h), optionally iterated
+  kAlternating,  ///< block-coordinate descent in the Δ form (identify/alternating_identify.h)
+};
+
 struct IdentifyOptions {
   BoundObjective objective;
+  IdentifyMethod method = IdentifyMethod::kRelaxation;
+  long taps = 16;              ///< kAlternating: FIR taps K of Δ
   bool iterate = false;        ///< re-linearise until the objective stalls
   int max_iterations = 25;     ///< solves, the first included
   double rel_tol = 1e-4;       ///< stop when the objective improves by less (relative)
@@ -41,12 +49,14 @@ struct IterateRecord {
   SolveStatus status = SolveStatus::kBackendError;
   double seconds = 0;
   Vec<double> p;  ///< parameters after this solve
+  Mat<double> taps;  ///< kAlternating: the Δ of this iterate (K × ny·nz); empty for kRelaxation
 };
 
 struct IdentifyResult {
   ParameterLayout layout;
   std::vector<std::string> names;
   Vec<double> p;                      ///< final parameters (layout above)
+  Mat<double> taps;                   ///< kAlternating: the Δ that goes with p (certify_with_taps)
   std::vector<IterateRecord> iterates;
   Eigen::Index pinned_samples = 0;    ///< m: z_k = 0 for k < m is kept by the relaxation (SPEC §9)
   Eigen::Index free_directions = 0;   ///< unknowns left after pinning
@@ -55,7 +65,7 @@ struct IdentifyResult {
   std::string message;
 };
 
-/// Runs the identification. Throws InputError for ill-posed data (z ≡ 0),
+/// Runs the identification (options.method picks the algorithm). Throws InputError for ill-posed data (z ≡ 0),
 /// paper mode (not supported for identification) or no unknowns.
 IdentifyResult identify(const LpvModel<double>& model, const Experiment<double>& exp, const IdentifyOptions& options,
                         SdpSolver& solver);

@@ -6,11 +6,35 @@
 #include "core/input_error.h"
 
 namespace lpvid {
-namespace {
 
-double rms(const Mat<double>& m) {
+double rms_scale(const Mat<double>& m) {
   return m.size() ? std::sqrt(m.squaredNorm() / static_cast<double>(m.size())) : 0.0;
 }
+
+Eigen::Index check_uncertainty_excited(const Mat<double>& z) {
+  const Eigen::Index m = leading_zero_samples(z);
+  if (m == z.rows() || z.cols() == 0)
+    throw InputError(
+        "ill-posed data: the uncertainty channel z is identically zero along the experiment (for example u = 0 "
+        "with x0 = 0), so the data says nothing about the uncertainty and delta is undetermined");
+  return m;
+}
+
+void read_delta_solution(const SolveResult& solve, const DeltaScaledVariables& v, const BoundObjective& objective,
+                         Mat<double>& taps, double& delta2, double& dmax2) {
+  const Eigen::Index q = v.ny * v.nz;
+  const double kz = v.sigma_z / v.sigma_r;  // h' = kz·h, t' = kz²·t, s' = s/σ_r²
+  const bool ok = has_solution(solve.status);
+  taps = Mat<double>::Zero(v.K, q);
+  if (ok)
+    for (Eigen::Index l = 0; l < v.K; ++l)
+      for (Eigen::Index c = 0; c < q; ++c) taps(l, c) = solve.x[static_cast<size_t>(v.tap0 + l * q + c)] / kz;
+  delta2 = v.t >= 0 && ok ? std::max(0.0, solve.x[static_cast<size_t>(v.t)]) / (kz * kz) : objective.delta * objective.delta;
+  dmax2 = v.s >= 0 && ok ? std::max(0.0, solve.x[static_cast<size_t>(v.s)]) * v.sigma_r * v.sigma_r
+                         : objective.dmax * objective.dmax;
+}
+
+namespace {
 
 /// The program and where its variables are.
 struct DeltaFormLayout {
@@ -29,15 +53,11 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
   f.n = z.rows();
   f.nz = z.cols();
   f.ny = r.cols();
-  f.m = leading_zero_samples(z);
+  f.m = check_uncertainty_excited(z);
   f.L = f.n - f.m;
-  if (f.L == 0 || f.nz == 0)
-    throw InputError(
-        "ill-posed data: the uncertainty channel z is identically zero along the experiment (for example u = 0 "
-        "with x0 = 0), so the data says nothing about the uncertainty and delta is undetermined");
   f.K = max_taps > 0 ? std::min(max_taps, f.L) : f.L;
-  f.sigma_z = rms(z.bottomRows(f.L));
-  f.sigma_r = rms(r);
+  f.sigma_z = rms_scale(z.bottomRows(f.L));
+  f.sigma_r = rms_scale(r);
   if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
   const Mat<double> zs = z / f.sigma_z;
   const Mat<double> rs = r / f.sigma_r;
@@ -105,20 +125,9 @@ DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, c
   DeltaFormSolution out;
   out.solve = solver.solve(f.program, options);
   out.leading_zeros = f.m;
-  const Eigen::Index taps_per = f.ny * f.nz;
-  out.taps = Mat<double>::Zero(f.K, taps_per);
   out.horizon = f.L;
-  const double kz = f.sigma_z / f.sigma_r;
-  if (has_solution(out.solve.status)) {
-    for (Eigen::Index l = 0; l < f.K; ++l)
-      for (Eigen::Index q = 0; q < taps_per; ++q)
-        out.taps(l, q) = out.solve.x[static_cast<size_t>(f.tap0 + l * taps_per + q)] / kz;
-  }
-  out.delta2 = f.t >= 0 && has_solution(out.solve.status) ? out.solve.x[static_cast<size_t>(f.t)] / (kz * kz)
-                                                          : objective.delta * objective.delta;
-  out.dmax2 = f.s >= 0 && has_solution(out.solve.status)
-                  ? out.solve.x[static_cast<size_t>(f.s)] * f.sigma_r * f.sigma_r
-                  : objective.dmax * objective.dmax;
+  read_delta_solution(out.solve, {f.K, f.ny, f.nz, f.tap0, f.t, f.s, f.sigma_z, f.sigma_r}, objective, out.taps,
+                      out.delta2, out.dmax2);
   return out;
 }
 

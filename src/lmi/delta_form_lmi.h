@@ -50,6 +50,27 @@ struct DeltaFormSolution {
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
                                    SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps = 0);
 
+/// Throws the InputError of solve_delta_form when z has no nonzero sample
+/// (or nz = 0); returns the number of leading zero samples m. Shared with
+/// delta_kyp_lmi.h.
+Eigen::Index check_uncertainty_excited(const Mat<double>& z);
+/// RMS of the entries (0 for an empty matrix): the scale σ of z and r.
+double rms_scale(const Mat<double>& m);
+
+/// Where a Δ-form program (this file or delta_kyp_lmi.h) keeps its scaled
+/// variables: h_l(i, j) at tap0 + l·ny·nz + i·nz + j (K taps), δ²' at t and
+/// d_max²' at s (−1 when fixed); z was divided by σ_z and r by σ_r.
+struct DeltaScaledVariables {
+  Eigen::Index K = 0, ny = 0, nz = 0;
+  int tap0 = -1, t = -1, s = -1;
+  double sigma_z = 1.0, sigma_r = 1.0;
+};
+/// The solution in original units: taps (K × ny·nz, zero without a
+/// solution), δ² and d_max² (the fixed values when fixed or without a
+/// solution; a solver's tiny negative value reads as 0).
+void read_delta_solution(const SolveResult& solve, const DeltaScaledVariables& v, const BoundObjective& objective,
+                         Mat<double>& taps, double& delta2, double& dmax2);
+
 /// The program alone (for --write-sdpa), same scaling as solve_delta_form.
 LmiProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
                               Eigen::Index max_taps = 0);

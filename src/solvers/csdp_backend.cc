@@ -1,11 +1,16 @@
 #include "solvers/csdp_backend.h"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <new>
 #include <string>
 #include <vector>
+
+#include "solvers/watchdog_child.h"
 
 extern "C" {
 #include <csdp/declarations.h>
@@ -27,6 +32,10 @@ namespace lpvid {
 // ============================================================================
 
 namespace {
+
+/// Our codes for runs that CSDP itself did not end (run_sdp_watched).
+constexpr int kCodeStalled = -2;
+constexpr int kCodeChildFailed = -3;
 
 /// CSDP's return code → SolveStatus. The one place where CSDP's codes are
 /// interpreted (codes from the CSDP 6.2 user's guide and lib/sdp.c).
@@ -64,6 +73,12 @@ SolveStatus status_from_csdp(int code, std::string& words) {
       return SolveStatus::kBackendError;
     case 10:
       words = "CSDP 10: stopped by a signal (user_exit)";
+      return SolveStatus::kBackendError;
+    case kCodeStalled:
+      words = "CSDP made no progress inside one iteration and was stopped by the watchdog";
+      return SolveStatus::kBackendError;
+    case kCodeChildFailed:
+      words = "the CSDP process ended abnormally";
       return SolveStatus::kBackendError;
     default:
       words = "CSDP " + std::to_string(code) + ": unknown return code";
@@ -326,8 +341,84 @@ Attempt run_sdp(const CsdpProblem& prob, std::vector<sparseblock*>& byblocks, co
   return out;
 }
 
+template <typename T>
+void put(std::FILE* f, const T* v, std::size_t count) {
+  if (count > 0 && std::fwrite(v, sizeof(T), count, f) != count) _exit(3);  // in the child: a failed run
+}
+template <typename T>
+bool get(std::FILE* f, T* v, std::size_t count) {
+  return count == 0 || std::fread(v, sizeof(T), count, f) == count;
+}
+
+void write_attempt(std::FILE* f, const Attempt& a) {
+  const long head[3] = {a.code, static_cast<long>(a.y.size()), static_cast<long>(a.X.size())};
+  const double obj[2] = {a.pobj, a.dobj};
+  put(f, head, 3);
+  put(f, obj, 2);
+  put(f, a.y.data(), a.y.size());
+  for (const Eigen::MatrixXd& X : a.X) {
+    const long dims[2] = {static_cast<long>(X.rows()), static_cast<long>(X.cols())};
+    put(f, dims, 2);
+    put(f, X.data(), static_cast<std::size_t>(X.size()));
+  }
+}
+
+bool read_attempt(std::FILE* f, Attempt& a) {
+  long head[3];
+  double obj[2];
+  if (!get(f, head, 3) || !get(f, obj, 2) || head[1] < 0 || head[2] < 0) return false;
+  a.code = static_cast<int>(head[0]);
+  a.pobj = obj[0];
+  a.dobj = obj[1];
+  a.y.resize(static_cast<std::size_t>(head[1]));
+  if (!get(f, a.y.data(), a.y.size())) return false;
+  for (long b = 0; b < head[2]; ++b) {
+    long dims[2];
+    if (!get(f, dims, 2) || dims[0] < 0 || dims[1] < 0) return false;
+    Eigen::MatrixXd X(dims[0], dims[1]);
+    if (!get(f, X.data(), static_cast<std::size_t>(X.size()))) return false;
+    a.X.push_back(std::move(X));
+  }
+  return true;
+}
+
+/// run_sdp in a child process under the stall watchdog (watchdog_child.h):
+/// CSDP can spin forever inside one iteration, where its maxiter cap never
+/// looks (IdentifyRegression.CsdpReturnsOnThisRelaxation: perturbobj 0 loops
+/// in copy_mat at iteration 50). The child prints CSDP's per-iteration lines
+/// (printlevel ≥ 1) as the heartbeat; they are shown only when verbose.
+Attempt run_sdp_watched(const CsdpProblem& prob, std::vector<sparseblock*>& byblocks, const paramstruc& params,
+                        int printlevel, const LmiProgram& p, bool want_dual, std::string& note) {
+  Attempt out;
+  std::FILE* f = std::tmpfile();
+  if (f == nullptr) {  // no temporary file: run unguarded
+    note = "unguarded run (no temporary file)";
+    return run_sdp(prob, byblocks, params, printlevel, p, want_dual);
+  }
+  WatchdogOptions wo;
+  wo.echo = printlevel > 0;
+  const WatchdogOutcome w = run_in_watched_child(
+      [&](std::FILE* r) { write_attempt(r, run_sdp(prob, byblocks, params, std::max(printlevel, 1), p, want_dual)); },
+      f, wo);
+  if (w.finished && read_attempt(f, out)) {
+    note.clear();
+  } else if (w.stalled) {
+    out = Attempt{};
+    out.code = kCodeStalled;
+    note = "stopped after " + std::to_string(w.stall_seconds) + " s without progress";
+  } else {
+    out = Attempt{};
+    out.code = kCodeChildFailed;
+    note = w.error.empty() ? "its result could not be read" : w.error;
+  }
+  std::fclose(f);
+  return out;
+}
+
 /// Codes after which a second run with the other perturbobj is worth it.
-bool worth_retrying(int code) { return code == 3 || (code >= 5 && code <= 9); }
+bool worth_retrying(int code) {
+  return code == 3 || (code >= 5 && code <= 9) || code == kCodeStalled || code == kCodeChildFailed;
+}
 
 /// Status rank for choosing between two runs (lower is better).
 int rank(SolveStatus s) {
@@ -379,14 +470,15 @@ SolveResult solve_reduced(const LmiProgram& p, const SolverOptions& options) {
   std::string words, history;
   int runs = 0;
   for (const AttemptParameters& a : kAttempts) {
-    Attempt run = run_sdp(prob, byblocks, csdp_parameters(options, a.perturbobj, a.affine), printlevel, p,
-                          options.want_dual);
+    std::string note;
+    Attempt run = run_sdp_watched(prob, byblocks, csdp_parameters(options, a.perturbobj, a.affine), printlevel, p,
+                                  options.want_dual, note);
     std::string run_words;
     const SolveStatus run_status = status_from_csdp(run.code, run_words);
     const bool better = runs == 0 || rank(run_status) < rank(status) ||
                         (rank(run_status) == rank(status) && run.relative_gap() < best.relative_gap());
     history += std::string(runs ? "; " : "") + "CSDP " + std::to_string(run.code) + " with perturbobj " +
-               std::to_string(a.perturbobj) + ", affine " + std::to_string(a.affine);
+               std::to_string(a.perturbobj) + ", affine " + std::to_string(a.affine) + (note.empty() ? "" : " (" + note + ")");
     ++runs;
     if (better) {
       best = std::move(run);

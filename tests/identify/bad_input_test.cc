@@ -33,8 +33,9 @@ std::string input_error_of(F&& f) {
 }
 
 // u ≡ 0 with x0 = 0: every state, ŷ and z are 0 for every θ, so δ is
-// undetermined. identify(), solve_delta_form() and certify_fixed_model()
-// must say so (InputError mentioning "ill-posed"), for every structure.
+// undetermined. identify() (both methods), solve_delta_form(),
+// certify_fixed_model() and certify_with_taps() must say so (InputError
+// mentioning "ill-posed"), for every structure.
 RC_GTEST_PROP(IdentifyBadInput, ZeroInputIsIllPosed, ()) {
   IdentCaseOptions o;
   o.model.allow_general = true;
@@ -64,13 +65,21 @@ RC_GTEST_PROP(IdentifyBadInput, ZeroInputIsIllPosed, ()) {
 
   if (!c.model.correction.basis.empty()) {
     const Experiment<double> exp = read_experiment(data, convert_model<double>(c.model));
-    for (bool iterate : {false, true}) {
+    for (int variant : {0, 1, 2}) {  // single relaxation step, iterated, alternating
       IdentifyOptions io;
-      io.iterate = iterate;
+      io.iterate = variant == 1;
+      if (variant == 2) io.method = IdentifyMethod::kAlternating;
       const std::string e3 = input_error_of([&] { identify(convert_model<double>(c.model), exp, io, *solver); });
-      RC_LOG() << "identify (iterate " << iterate << "): " << e3 << "\n";
+      RC_LOG() << "identify (variant " << variant << "): " << e3 << "\n";
       RC_ASSERT(e3.find("ill-posed") != std::string::npos);
     }
+    const std::string e4 = input_error_of([&] {
+      certify_with_taps(c.model, c.exp, Mat<double>::Ones(2, c.model.ny * c.model.nz()),
+                        certify_options(weighted_objective(0.5), data, dir.file("c.json")), "csdp");
+    });
+    RC_LOG() << "certify_with_taps: " << e4 << "\n";
+    RC_ASSERT(e4.find("ill-posed") != std::string::npos);
+    RC_ASSERT(!std::filesystem::exists(dir.file("c.json")));
   }
 }
 

@@ -273,14 +273,15 @@ TEST(IdentifyRegression, IterateBoundsAreNeverNegative) {
 namespace lpvid {
 namespace {
 
-// KNOWN ISSUE, not fixed (reported; solver backend): CSDP never returns on
-// the second relaxation of this case (found by LtiModelEndToEnd with
-// RC_PARAMS="seed=8519062053889767286 max_success=100"). The backend's first
-// attempt (perturbobj 0, affine 0) loops inside CSDP's iteration 50; the
-// standalone `csdp` with the same param.csdp hangs too, while perturbobj 1
-// solves it in 50 iterations. DISABLED because it hangs; enable once the
-// backend bounds a CSDP run.
-TEST(IdentifyKnownIssue, DISABLED_CsdpReturnsOnThisRelaxation) {
+// Regression: CSDP never returned on the second relaxation of this case
+// (found by LtiModelEndToEnd with RC_PARAMS="seed=8519062053889767286
+// max_success=100"). The backend's first attempt (perturbobj 0, affine 0)
+// spins inside CSDP's iteration 50 (copy_mat), where maxiter is never
+// checked; the standalone `csdp` with the same param.csdp hangs too, while
+// perturbobj 1 solves it in 50 iterations. The backend now runs each attempt
+// in a child process under a stall watchdog (solvers/watchdog_child.h) and
+// moves on to the next attempt.
+TEST(IdentifyRegression, CsdpReturnsOnThisRelaxation) {
   const char* model_json = R"({
     "format": "lpvid-model/1", "states": 2, "inputs": 1, "outputs": 1, "scheduling": [],
     "columns": {"u": ["u1"], "y": ["y1"], "rho": []},

@@ -3,10 +3,10 @@
 // lazily, at the first property), this executable's defaults become
 //   max_success=kDefaultCases   unless RC_PARAMS sets max_success,
 //   seed=kDefaultSeed           unless RC_PARAMS sets seed.
-// The fixed seed keeps ctest runs identical: CSDP can hang on rare programs
-// (IdentifyKnownIssue.DISABLED_CsdpReturnsOnThisRelaxation, about one
-// identification in a thousand), and a random seed would make that a flaky
-// hang. Explore other cases with RC_PARAMS="seed=$RANDOM max_success=50";
+// The fixed seed keeps ctest runs identical (CSDP used to hang on rare
+// programs, about one identification in a thousand; the backend now stops a
+// stalled run, IdentifyRegression.CsdpReturnsOnThisRelaxation, but a random
+// seed would still make runs differ). Explore other cases with RC_PARAMS="seed=$RANDOM max_success=50";
 // replay a failure with the printed seed (or reproduce=...).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>

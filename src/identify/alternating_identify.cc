@@ -1,0 +1,137 @@
+#include "identify/alternating_identify.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "lmi/delta_kyp_lmi.h"
+#include "toeplitz/fir.h"
+#include "toeplitz/signal_toeplitz.h"
+
+namespace lpvid {
+namespace {
+
+/// T_Δ v for a stacked signal v (n·nz) → stacked n·ny: w = Δ ∗ v, all of the horizon.
+Vec<double> fir_stacked(const Mat<double>& taps, const Vec<double>& v, Eigen::Index nz, Eigen::Index ny) {
+  const Mat<double> z = unstack_rows(v, nz);
+  return stack_rows(apply_fir(taps, z, ny, z.rows()));
+}
+
+/// An orthonormal basis of the span of the columns of Jr whose parameters do
+/// not move z (Jz column zero): those enter (C2) linearly, so the Δ step
+/// optimises them jointly with Δ (delta_kyp_lmi.h, extra regressors).
+Mat<double> joint_regressors(const AffineResidual<double>& a) {
+  std::vector<Eigen::Index> cols;
+  for (Eigen::Index j = 0; j < a.num_params(); ++j)
+    if (a.Jz.col(j).isZero(0.0) && !a.Jr.col(j).isZero(0.0)) cols.push_back(j);
+  if (cols.empty()) return Mat<double>(a.Jr.rows(), 0);
+  Mat<double> S(a.Jr.rows(), static_cast<Eigen::Index>(cols.size()));
+  for (size_t c = 0; c < cols.size(); ++c) {
+    const auto j = cols[c];
+    S.col(static_cast<Eigen::Index>(c)) = a.Jr.col(j) / a.Jr.col(j).norm();
+  }
+  Eigen::ColPivHouseholderQR<Mat<double>> qr(S);
+  qr.setThreshold(1e-10);
+  const Eigen::Index rank = qr.rank();
+  const Mat<double> Q = qr.householderQ() * Mat<double>::Identity(S.rows(), rank);
+  return Q;
+}
+
+}  // namespace
+
+Vec<double> alternating_parameter_step(const AffineResidual<double>& a, const Mat<double>& taps, double* dmax2) {
+  // d(p) = r0 − Jr p − T_Δ(z0 + Jz p) = b − A p with b = r0 − T_Δ z0, A = Jr + T_Δ Jz.
+  const Eigen::Index P = a.num_params();
+  const bool delta_zero = taps.size() == 0 || taps.isZero(0.0);
+  Vec<double> b = a.r0;
+  if (!delta_zero) b -= fir_stacked(taps, a.z0, a.nz, a.ny);
+  Vec<double> p = Vec<double>::Zero(P);
+  if (P > 0) {
+    Mat<double> A = a.Jr;
+    if (!delta_zero)
+      for (Eigen::Index j = 0; j < P; ++j) A.col(j) += fir_stacked(taps, Vec<double>(a.Jz.col(j)), a.nz, a.ny);
+    // Column scaling keeps the decomposition's rank decision relative per column.
+    Vec<double> scale(P);
+    for (Eigen::Index j = 0; j < P; ++j) scale(j) = A.col(j).norm() > 0 ? 1.0 / A.col(j).norm() : 1.0;
+    const Mat<double> As = A * scale.asDiagonal();
+    Eigen::CompleteOrthogonalDecomposition<Mat<double>> cod(As);
+    p = scale.asDiagonal() * cod.solve(b);
+    b -= A * p;
+  }
+  if (dmax2 != nullptr) *dmax2 = b.squaredNorm() / static_cast<double>(a.n * a.ny);
+  return p;
+}
+
+IdentifyResult identify_alternating(const LpvModel<double>& model, const Experiment<double>& exp,
+                                    const IdentifyOptions& options, SdpSolver& solver) {
+  options.objective.validate();
+  const AffineResidual<double> a = build_affine_residual(model, exp, options.unknowns);
+  IdentifyResult out;
+  out.layout = a.layout;
+  out.names = a.names;
+  out.free_directions = a.num_params();
+  // A fixed δ with d_max also fixed is decided by minimising d_max at that δ.
+  BoundObjective inner = options.objective;
+  const bool feasibility = inner.kind == BoundObjective::Kind::kFeasibility;
+  if (feasibility) inner.kind = BoundObjective::Kind::kMinDmax;
+
+  double dmax2 = 0.0;
+  Vec<double> p = alternating_parameter_step(a, Mat<double>(), &dmax2);  // plain least squares
+  const Mat<double> E = joint_regressors(a);
+  double previous = std::numeric_limits<double>::infinity();
+  bool have = false;
+  IterateRecord accepted;
+  for (int it = 0; it < std::max(1, options.max_iterations); ++it) {
+    const auto start = std::chrono::steady_clock::now();
+    // Δ step: Theorem 2.1 at the fixed model p (KYP form, K taps), jointly with
+    // the parameters that do not move z (their span E; the p step below
+    // recovers them: it minimises over all p, so it does at least as well).
+    const DeltaKypSolution ds = solve_delta_kyp(unstack_rows(a.z(p), a.nz), unstack_rows(a.r(p), a.ny), inner,
+                                                solver, options.solver, options.taps, E);
+    IterateRecord rec;
+    rec.index = it;
+    rec.status = ds.solve.status;
+    out.status = ds.solve.status;
+    out.message = ds.solve.message;
+    if (!has_solution(ds.solve.status)) {
+      rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      out.iterates.push_back(rec);
+      if (!have) {
+        out.p = Vec<double>::Zero(a.num_params());
+        out.relaxation = "failed";
+        return out;
+      }
+      break;  // keep the last good iterate
+    }
+    // p step: least squares with Δ fixed.
+    rec.p = alternating_parameter_step(a, ds.taps, &dmax2);
+    rec.taps = ds.taps;
+    rec.delta2 = ds.delta2;
+    rec.dmax2 = dmax2;
+    rec.objective = inner.value(rec.delta2, rec.dmax2);
+    rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.iterates.push_back(rec);
+    const double gain = previous - rec.objective;
+    if (have && gain < 0) break;  // the SDP's tolerance made it worse: keep the previous iterate
+    out.p = rec.p;
+    out.taps = rec.taps;
+    accepted = rec;
+    have = true;
+    if (it > 0 && !(gain > options.rel_tol * std::max(std::abs(previous), 1e-300))) break;
+    previous = rec.objective;
+  }
+  out.status = accepted.status;
+  out.relaxation = "alternating Delta/theta descent (" + std::to_string(out.iterates.size()) + " Delta steps, " +
+                   std::to_string(options.taps) + " taps, KYP)";
+  if (feasibility) {
+    const double given = options.objective.dmax * options.objective.dmax;
+    if (accepted.dmax2 > given) {
+      out.status = SolveStatus::kPrimalInfeasible;
+      out.message = "alternating descent found no parameters with dmax <= the given bound at the given delta (a "
+                    "local method: this does not invalidate the model class)";
+    }
+  }
+  return out;
+}
+
+}  // namespace lpvid
