@@ -15,6 +15,7 @@
 #include "data/experiment_builder.h"
 #include "diagnose/effect_ranking.h"
 #include "diagnose/window_bounds.h"
+#include "diagnose/window_identification.h"
 #include "model/model_file.h"
 #include "solvers/external_solvers.h"
 
@@ -166,7 +167,16 @@ int run_diagnose(DiagnoseArgs& a) {
     co.certificate_path = cert_stem + tag + ".after.json";
     ba.push_back(certify_window(after, est_d, est_q, windows[i].first, windows[i].second, file_offset, co, *solver));
   }
+  co.certificate_path = cert_stem + ".before.thm31.json";
+  WindowIdentification before_id = identify_on_window(before, est_d, est_q, windows[0].first, windows[0].second,
+                                                      file_offset, co, *solver);
+  co.certificate_path = cert_stem + ".after.thm31.json";
+  WindowIdentification after_id = identify_on_window(after, est_d, est_q, windows[0].first, windows[0].second,
+                                                     file_offset, co, *solver);
+
   DiagnoseReportInputs ri;
+  ri.before_id = std::move(before_id);
+  ri.after_id = std::move(after_id);
   ri.command_line_data = a.common.data_path;
   ri.validation = val_text;
   ri.rank = &rank;

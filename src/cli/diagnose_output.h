@@ -8,6 +8,7 @@
 #include "data/experiment.h"
 #include "diagnose/effect_ranking.h"
 #include "diagnose/window_bounds.h"
+#include "diagnose/window_identification.h"
 
 namespace lpvid::cli {
 
@@ -15,6 +16,7 @@ struct DiagnoseReportInputs {
   std::string command_line_data, validation, plots_dir, model_out, solver;
   const RankingResult* rank = nullptr;
   std::vector<WindowBounds> before, after;  ///< one per bound window, same windows
+  WindowIdentification before_id, after_id;  ///< Theorem 3.1 on the first window
   const LpvModel<double>*before_model = nullptr, *after_model = nullptr;  ///< as rounded for the certificates
   const Experiment<double>*est = nullptr, *val = nullptr;
   int init_samples = 5;

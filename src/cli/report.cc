@@ -78,7 +78,8 @@ nlohmann::ordered_json theta_json(const LpvModel<double>& model, const Parameter
   }
   if (layout.n_x0 > 0) {
     nlohmann::ordered_json v = nlohmann::ordered_json::array();
-    for (Eigen::Index r = 0; r < layout.n_x0; ++r) v.push_back(p(at++));
+    for (Eigen::Index r = 0; r < layout.n_x0; ++r)  // the identified x0 = the model's x0 + its change p
+      v.push_back((model.x0.size() == layout.n_x0 ? model.x0(r) : 0.0) + p(at++));
     j["x0"] = v;
   }
   return j;

@@ -145,7 +145,9 @@ LpvModel<T> apply_parameters(const LpvModel<T>& model, const ParameterLayout& a,
     }
   }
   if (a.n_x0 > 0) {
-    out.x0 = p.segment(at, a.n_x0);
+    // p holds the change of x0 from the model's own x0 (r0, z0 were simulated from it)
+    const Vec<T> base = model.x0.size() == a.n_x0 ? model.x0 : Vec<T>(Vec<T>::Zero(a.n_x0));
+    out.x0 = base + p.segment(at, a.n_x0);
     at += a.n_x0;
   }
   return out;

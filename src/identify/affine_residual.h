@@ -10,7 +10,9 @@
 ///          output_correction_layout: basis major, C_i then D_i row-major);
 ///   θ_unc  for the `general` structure only, C1_i, D1_i of z (same layout, nz rows);
 ///   φ      the unknown offset values φ_j (eq. 20), j major, ny each;
-///   x0     the initial state, when free (`--free-x0`).
+///   x0     the change of the initial state from the model's x0, when free
+///          (`--free-x0`): z0, r0 are simulated from the model's x0, so
+///          x0 = model.x0 + p_x0 (apply_parameters adds it).
 /// The state does not depend on θ (A_i, B_i are fixed), so all of this is
 /// exact: the output is affine in θ, φ and x0.
 /// Multiplicative structure: z = W·ŷ, so Jz = W·(∂ŷ/∂θ_out, ∂ŷ/∂x0), 0 for φ.
@@ -57,7 +59,7 @@ template <typename T>
 AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experiment<T>& exp, const Unknowns& unknowns);
 
 /// The model with parameters p folded in: correction terms added to C, D
-/// (and C1, D1 for `general`), offset values set, x0 set. The correction
+/// (and C1, D1 for `general`), offset values set, x0 = model.x0 + p_x0. The correction
 /// basis is kept (its fixed A_i, B_i still act on the state); the unknowns
 /// that were solved for are no longer unknown.
 template <typename T>

@@ -1,0 +1,77 @@
+#include "diagnose/window_identification.h"
+
+#include "data/experiment_builder.h"
+#include "identify/affine_residual.h"
+#include "model/simulate.h"
+
+namespace lpvid {
+
+namespace {
+
+template <typename T>
+void set_basis(LpvModel<T>& m, const std::vector<Monomial>& basis) {
+  m.correction = Correction<T>{};
+  for (const Monomial& f : basis) {
+    m.correction.basis.push_back(f);
+    m.correction.A.push_back(Mat<T>::Zero(m.nx, m.nx));
+    m.correction.B.push_back(Mat<T>::Zero(m.nx, m.nu));
+  }
+}
+
+}  // namespace
+
+WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
+                                        const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
+                                        long file_row_offset, const CertifyOptions& options, SdpSolver& solver) {
+  WindowIdentification out;
+  if (fitted.statics.has_output()) {
+    out.why_not = std::string("the model has a static output map (") + to_string(fitted.statics.output.kind) +
+                  "): its output is not affine in the correction, so Theorem 3.1 does not apply";
+    return out;
+  }
+  // basis {1} ∪ the model's C, D terms (their C_i, D_i move on top of the fitted values)
+  std::vector<Monomial> basis = {constant_monomial(fitted.scheduling.size())};
+  for (const auto* pm : {&fitted.C, &fitted.D})
+    for (const auto& t : pm->terms)
+      if (std::find(basis.begin(), basis.end(), t.basis) == basis.end()) basis.push_back(t.basis);
+  for (const Monomial& f : basis) out.basis.push_back(f.text(fitted.scheduling));
+
+  const Simulation<double> sim = simulate(fitted, est_d);
+  const Vec<double> xb = fitted.nx > 0 ? Vec<double>(sim.x.row(begin).transpose()) : Vec<double>();
+  LpvModel<Rational> mq = exact_model(fitted, xb);
+  set_basis(mq, basis);
+  const LpvModel<double> md = convert_model<double>(mq);
+  const Experiment<Rational> wq = select_rows(est_q, begin, end);
+  const Experiment<double> wd = select_rows(est_d, begin, end);
+
+  IdentifyOptions io;
+  io.objective = options.objective;
+  io.method = IdentifyMethod::kAlternating;
+  io.solver = options.solver;
+  io.unknowns.correction = true;
+  io.unknowns.offset = false;
+  io.unknowns.x0 = true;
+  out.result = identify(md, wd, io, solver);
+  out.applicable = true;
+  out.bounds.begin = begin;
+  out.bounds.end = end;
+  out.bounds.file_begin = file_row_offset + static_cast<long>(begin);
+  out.bounds.file_end = file_row_offset + static_cast<long>(end);
+  out.bounds.certificate = options.certificate_path;
+  if (!has_solution(out.result.status)) {
+    out.bounds.bounds.reason = "identification ended with " + std::string(to_string(out.result.status));
+    return out;
+  }
+  Vec<Rational> p(out.result.p.size());
+  for (Eigen::Index i = 0; i < p.size(); ++i) p(i) = round_to_digits(out.result.p(i), 12);
+  const LpvModel<Rational> fixed = apply_parameters(mq, out.result.layout, p);
+  out.bounds.model = fixed;
+  CertifyOptions co = options;
+  co.row_begin = out.bounds.file_begin;
+  co.row_end = out.bounds.file_end;
+  if (out.result.taps.size() > 0) out.bounds.bounds = certify_with_taps(fixed, wq, out.result.taps, co, solver.name());
+  if (!out.bounds.bounds.verified) out.bounds.bounds = certify_fixed_model(fixed, wq, co, solver);
+  return out;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,33 @@
+#pragma once
+/// Theorem 3.1 again, after diagnosis (issue 4 item 4, SPEC §5): on a bound
+/// window, the fitted model's output map is identified robustly. The
+/// correction S_C (eq. 10) gets the basis {1} ∪ {the basis terms the model
+/// has in C, D}, its C_i, D_i are unknowns on top of the least-squares
+/// values, x0 is free; the solver is the alternating Δ/θ method
+/// (identify/alternating_identify.h), whose iterates are feasible for the
+/// true BMI, and the result is certified exactly (identify/certify.h).
+///
+/// Not applicable with a static output map (the output is then not affine
+/// in θ) or a model without states and inputs; `why_not` says so.
+
+#include <string>
+#include <vector>
+
+#include "diagnose/window_bounds.h"
+#include "identify/identify.h"
+
+namespace lpvid {
+
+struct WindowIdentification {
+  bool applicable = false;
+  std::string why_not;
+  std::vector<std::string> basis;  ///< the correction basis (texts)
+  IdentifyResult result;
+  WindowBounds bounds;             ///< the identified model's certified bounds on the window
+};
+
+WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
+                                        const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
+                                        long file_row_offset, const CertifyOptions& options, SdpSolver& solver);
+
+}  // namespace lpvid
