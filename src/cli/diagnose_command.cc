@@ -94,12 +94,15 @@ int run_diagnose(DiagnoseArgs& a) {
   }
   Experiment<double> val_d;
   std::string val_text;
+  std::vector<std::string> val_outputs;
   const bool separate = !a.validation_path.empty() || !a.validation_columns.empty();
   if (separate) {
     const std::string vp = a.validation_path.empty() ? a.common.data_path : a.validation_path;
     const std::vector<std::string>& vn = a.validation_path.empty() ? a.common.names : a.validation_names;
     const TextTable vt = vn.empty() ? read_table(vp) : read_table(vp, vn);
-    val_d = make_experiment<double>(vt, validation_map(in.model_d, declared, a.validation_columns));
+    const ColumnMap vcols = validation_map(in.model_d, declared, a.validation_columns);
+    val_d = make_experiment<double>(vt, vcols);
+    val_outputs = vcols.y;
     val_text = vp;
     if (!a.validation_rows.empty()) {
       const auto [b, e] = parse_range(a.validation_rows, "--validation-rows");
@@ -187,6 +190,7 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.est = &est_d;
   ri.val = &val_d;
   ri.init_samples = a.init_samples;
+  ri.validation_outputs = val_outputs;
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;
   ri.solver = a.common.solver;

@@ -235,8 +235,11 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   if (!in.plots_dir.empty() && rb.allFinite() && ra.allFinite()) {
     std::filesystem::create_directories(in.plots_dir);
     const std::string d = in.plots_dir + "/";
-    std::vector<std::string> names;
-    for (const std::string& y : in.before_model->columns.y) names.push_back(y + " (validation data)");
+    std::vector<std::string> names = in.validation_outputs;
+    if (names.size() != static_cast<size_t>(in.val->ny())) {  // held-out rows of --data
+      names.clear();
+      for (const std::string& y : in.before_model->columns.y) names.push_back(y + " (held out)");
+    }
     const std::vector<std::pair<std::string, PlotOutcome>> made = {
         {d + "residual.png", plot_residual(rb, ra, d + "residual.png", names)},
         {d + "autocorrelation.png", plot_residual_autocorrelation(rb, ra, d + "autocorrelation.png", names)},

@@ -20,6 +20,7 @@ struct DiagnoseReportInputs {
   const LpvModel<double>*before_model = nullptr, *after_model = nullptr;  ///< as rounded for the certificates
   const Experiment<double>*est = nullptr, *val = nullptr;
   int init_samples = 5;
+  std::vector<std::string> validation_outputs;  ///< the validation data's output column names (plot legends)
 };
 
 /// Prints the report, makes the plots (if plots_dir is set) and writes the

@@ -10,21 +10,14 @@
 #include "core/number_text.h"
 #include "data/experiment_builder.h"
 
+#include "support/input_error_text.h"
+
 namespace lpvid {
 namespace {
 
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return "";
-}
+using gen::error_of;
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using gen::contains;
 
 TEST(CsvReaderTest, ReadsHeaderQuotesCrlfAndTrailingCommas) {
   const TextTable t = parse_csv("\"uEst\",\"uVal\", yEst ,\r\n1.5,2,3,\r\n-4, 5e-1 ,,\r\n\r\n", "t.csv");

@@ -5,21 +5,14 @@
 #include "core/input_error.h"
 #include "data/csv_reader.h"
 
+#include "support/input_error_text.h"
+
 namespace lpvid {
 namespace {
 
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return "";
-}
+using gen::error_of;
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using gen::contains;
 
 const char* kCsv = "t,u1,u2,y,rho,note\n0,0.1,1/3,2,-1,a\n1,0.2,2,3e-1,0.5,\n2,1,1,1,1,x\n";
 

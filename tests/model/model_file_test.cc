@@ -10,21 +10,14 @@
 #include "core/number_text.h"
 #include "support/generators.h"
 
+#include "support/input_error_text.h"
+
 namespace lpvid {
 namespace {
 
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return "";
-}
+using gen::error_of;
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using gen::contains;
 
 Rational q(const char* text) { return rational_from_text(text); }
 

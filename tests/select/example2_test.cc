@@ -22,22 +22,15 @@
 #include "solvers/sdp_solver.h"
 #include "verify/certificate_check.h"
 
+#include "support/scratch_dir.h"
+
 namespace lpvid {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string t = (fs::temp_directory_path() / "lpvid-example2-XXXXXX").string();
-    path = mkdtemp(t.data());
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
+struct TempDir : gen::ScratchDir {
+  TempDir() : gen::ScratchDir("select") {}
 };
 
 std::vector<TextColumn> columns(const Experiment<Rational>& e) {

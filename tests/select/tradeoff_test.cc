@@ -28,22 +28,15 @@
 #include "solvers/sdp_solver.h"
 #include "verify/certificate_check.h"
 
+#include "support/scratch_dir.h"
+
 namespace lpvid {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string t = (fs::temp_directory_path() / "lpvid-tradeoff-XXXXXX").string();
-    path = mkdtemp(t.data());
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  std::string file(const std::string& name) const { return (path / name).string(); }
+struct TempDir : gen::ScratchDir {
+  TempDir() : gen::ScratchDir("select") {}
 };
 
 TEST(Tradeoff, DefaultGrid) {

@@ -34,6 +34,7 @@
 
 #include "core/number_text.h"
 #include "core/scalar.h"
+#include "support/scratch_dir.h"
 #include "data/csv_reader.h"
 #include "data/csv_writer.h"
 #include "data/experiment.h"
@@ -369,28 +370,7 @@ T sample(const rc::Gen<T>& g, uint64_t seed, int size = 50) {
 
 // ------------------------------------------------------------------ files
 
-/// A fresh directory under the system temp dir, removed on destruction.
-class ScratchDir {
- public:
-  explicit ScratchDir(const std::string& tag) {
-    static std::atomic<int> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("lpvid-identify-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
+// ScratchDir (a fresh temp directory, removed on destruction): support/scratch_dir.h
 
 /// Writes u, y, ρ under the model's column names (exact decimal text).
 inline void write_experiment_csv(const std::string& path, const LpvModel<Rational>& model, const Experiment<Rational>& e) {
