@@ -148,12 +148,7 @@ int run_diagnose(DiagnoseArgs& a) {
   ro.candidates.max_delay = a.max_delay;
   const RankingResult rank = rank_effects(declared, est_d, val_d, ro);
 
-  CertifyOptions co;
-  co.objective = in.objective;
-  co.solver.verbose = a.common.verbose;
-  co.max_taps = a.common.max_taps;
-  co.data_path = a.common.data_path;
-  co.data_names = a.common.names;
+  CertifyOptions co = certify_options(a.common, in.objective);  // rows: set per window
   const std::string cert_stem = [&] {
     std::string c = certificate_path(a.common);
     const size_t dot = c.rfind(".json");

@@ -107,18 +107,8 @@ int run_identify(IdentifyArgs& a) {
     p_rounded(i) = CGAL::to_double(p_q(i));
   }
   const LpvModel<Rational> fixed = apply_parameters(in.model_q, res.layout, p_q);
-  CertifyOptions co;
-  co.objective = in.objective;
+  CertifyOptions co = certify_options(a.common, in.objective);
   co.solver = opt.solver;
-  co.max_taps = a.common.max_taps;
-  co.delta_norm = delta_norm_of(a.common);
-  co.certificate_path = certificate_path(a.common);
-  co.data_path = a.common.data_path;
-  co.data_names = a.common.names;
-  co.row_begin = a.common.rows_text.empty() ? 0 : a.common.row_begin;
-  co.row_end = a.common.rows_text.empty() ? -1 : a.common.row_end;
-  co.fixed_delta_text = a.common.delta_text;
-  co.fixed_dmax_text = a.common.dmax_text;
   // The alternating method's own Δ certifies without a re-solve; otherwise
   // (or if that fails) Theorem 2.1 is solved again for the fixed model.
   CertifiedBounds b;

@@ -114,6 +114,22 @@ void print_options(const CommonOptions& o, const BoundObjective& objective, cons
             << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny) (SPEC 4)\n";
 }
 
+CertifyOptions certify_options(const CommonOptions& c, const BoundObjective& objective) {
+  CertifyOptions co;
+  co.objective = objective;
+  co.solver.verbose = c.verbose;
+  co.max_taps = c.max_taps;
+  co.delta_norm = delta_norm_of(c);
+  co.certificate_path = certificate_path(c);
+  co.data_path = c.data_path;
+  co.data_names = c.names;
+  co.row_begin = c.rows_text.empty() ? 0 : c.row_begin;
+  co.row_end = c.rows_text.empty() ? -1 : c.row_end;
+  co.fixed_delta_text = c.delta_text;
+  co.fixed_dmax_text = c.dmax_text;
+  return co;
+}
+
 std::string certificate_path(const CommonOptions& o) {
   if (!o.certificate_path.empty()) return o.certificate_path;
   if (!o.report_path.empty()) {

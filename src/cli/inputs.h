@@ -38,6 +38,11 @@ struct CommonOptions {
 /// --delta-norm as the enum of certify.h.
 DeltaNorm delta_norm_of(const CommonOptions& o);
 
+/// The certification options every command takes from the common options:
+/// objective, solver verbosity, --max-taps, --delta-norm, the data file,
+/// --names, --rows, the fixed bounds' exact text and the certificate path.
+CertifyOptions certify_options(const CommonOptions& o, const BoundObjective& objective);
+
 /// Registers the common options on a subcommand.
 void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds);
 

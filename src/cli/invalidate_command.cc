@@ -18,18 +18,7 @@ int run_invalidate(CommonOptions& c) {
   if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
     throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" or use 'lpvid identify'");
   auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
-  CertifyOptions co;
-  co.objective = in.objective;
-  co.solver.verbose = c.verbose;
-  co.max_taps = c.max_taps;
-  co.delta_norm = delta_norm_of(c);
-  co.certificate_path = certificate_path(c);
-  co.data_path = c.data_path;
-  co.data_names = c.names;
-  co.row_begin = c.rows_text.empty() ? 0 : c.row_begin;
-  co.row_end = c.rows_text.empty() ? -1 : c.row_end;
-  co.fixed_delta_text = c.delta_text;
-  co.fixed_dmax_text = c.dmax_text;
+  const CertifyOptions co = certify_options(c, in.objective);
   const CertifiedBounds b = in.mode == ToeplitzMode::kSignal ? certify_fixed_model(in.model_q, in.exp_q, co, *solver)
                                                              : certify_fixed_model_paper(in.model_q, in.exp_q, co, *solver);
   std::cout << "\nTheorem 2.1 (" << (in.mode == ToeplitzMode::kSignal ? "Delta form" : "w form, paper T_z")

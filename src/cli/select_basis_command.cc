@@ -103,12 +103,7 @@ int run_select(SelectArgs& a) {
   o.unknowns.x0 = a.free_x0;
   o.unknowns.offset = !a.no_offset;
   o.solver.verbose = c.verbose;
-  o.certify.max_taps = c.max_taps;
-  o.certify.delta_norm = delta_norm_of(c);
-  o.certify.data_path = c.data_path;
-  o.certify.data_names = c.names;
-  o.certify.row_begin = c.rows_text.empty() ? 0 : c.row_begin;
-  o.certify.row_end = c.rows_text.empty() ? -1 : c.row_end;
+  o.certify = certify_options(c, in.objective);  // objective, bounds and certificate path: set per step
   const std::string final_cert = certificate_path(c);
   o.certificate_stem = stem_of(final_cert);
   const Table table(std::max<size_t>(16, std::min<size_t>(60, basis_text(order, in.model_d.scheduling).size())));

@@ -96,12 +96,7 @@ int run_tradeoff(TradeoffArgs& a) {
   o.unknowns.x0 = a.free_x0;
   o.unknowns.offset = !a.no_offset;
   o.solver.verbose = c.verbose;
-  o.certify.max_taps = c.max_taps;
-  o.certify.delta_norm = delta_norm_of(c);
-  o.certify.data_path = c.data_path;
-  o.certify.data_names = c.names;
-  o.certify.row_begin = c.rows_text.empty() ? 0 : c.row_begin;
-  o.certify.row_end = c.rows_text.empty() ? -1 : c.row_end;
+  o.certify = certify_options(c, in.objective);  // objective, bounds and certificate path: set per step
   o.certificate_stem = stem_of(certificate_path(c), {".cert.json", ".json"});
   std::cout << std::left << std::setw(9) << "lambda" << std::setw(13) << "delta" << std::setw(13) << "dmax"
             << std::setw(10) << "verified" << std::setw(13) << "delta_relax" << std::setw(13) << "dmax_relax"
