@@ -155,21 +155,22 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
     }
   }
 
-  const auto with_input = [&](StaticKind kind, double lo, double hi, std::vector<double> coef = {}) {
+  // the base model with its input or output map set to g
+  const auto with_map = [&](StaticMap<double> StaticBlocks<double>::*which, StaticKind kind, double lo, double hi,
+                            std::vector<double> coef) {
     LpvModel<double> s = base;
-    s.statics.input.kind = kind;
-    s.statics.input.lower = lo;
-    s.statics.input.upper = hi;
-    s.statics.input.coefficients = std::move(coef);
+    StaticMap<double>& g = s.statics.*which;
+    g.kind = kind;
+    g.lower = lo;
+    g.upper = hi;
+    g.coefficients = std::move(coef);
     return s;
   };
+  const auto with_input = [&](StaticKind kind, double lo, double hi, std::vector<double> coef = {}) {
+    return with_map(&StaticBlocks<double>::input, kind, lo, hi, std::move(coef));
+  };
   const auto with_output = [&](StaticKind kind, double lo, double hi, std::vector<double> coef = {}) {
-    LpvModel<double> s = base;
-    s.statics.output.kind = kind;
-    s.statics.output.lower = lo;
-    s.statics.output.upper = hi;
-    s.statics.output.coefficients = std::move(coef);
-    return s;
+    return with_map(&StaticBlocks<double>::output, kind, lo, hi, std::move(coef));
   };
   const bool free_input = base.statics.input.is_identity();
   const bool free_output = base.statics.output.is_identity();
