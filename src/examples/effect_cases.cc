@@ -5,6 +5,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "examples/decimal_rounding.h"
+#include "examples/model_literals.h"
 #include "examples/random_stream.h"
 #include "model/simulate.h"
 
@@ -15,39 +16,21 @@ namespace {
 constexpr int kDigits = 8;
 const Monomial kOne{{0}}, kRho{{1}}, kRho2{{2}};
 
-Rational dec(const char* text) { return rational_from_text(text); }
+using literals::dec;
 
-Mat<Rational> row2(const char* a, const char* b) {
-  Mat<Rational> m(1, 2);
-  m << dec(a), dec(b);
-  return m;
-}
+Mat<Rational> row2(const char* a, const char* b) { return literals::mat(1, 2, {a, b}); }
 
 /// x_{k+1} = A(ρ)x + B u, y = C(ρ)x + D u with
 /// A(ρ) = [0 1; −0.3 0.9] + ρ[0 0; 0 0.15], B = [0; 1], C(ρ) = [1 0.5] + ρ[0.3 0], D = 0.2:
 /// frozen poles inside |z| ≤ 0.87 for |ρ| ≤ 1.
 LpvModel<Rational> declared_model() {
-  LpvModel<Rational> m;
-  m.nx = 2;
-  m.nu = m.ny = 1;
-  m.scheduling = {"rho1"};
-  m.columns = {{"u1"}, {"y1"}, {"rho1"}};
-  m.A = ParamMatrix<Rational>(2, 2);
-  Mat<Rational> a0(2, 2), a1 = Mat<Rational>::Zero(2, 2);
-  a0 << dec("0"), dec("1"), dec("-0.3"), dec("0.9");
-  a1(1, 1) = dec("0.15");
-  m.A.add(kOne, a0);
-  m.A.add(kRho, a1);
-  m.B = ParamMatrix<Rational>(2, 1);
-  Mat<Rational> b(2, 1);
-  b << dec("0"), dec("1");
-  m.B.add(kOne, b);
-  m.C = ParamMatrix<Rational>(1, 2);
+  LpvModel<Rational> m = literals::siso_rho1_skeleton();
+  m.A.add(kOne, literals::mat(2, 2, {"0", "1", "-0.3", "0.9"}));
+  m.A.add(kRho, literals::mat(2, 2, {"0", "0", "0", "0.15"}));
+  m.B.add(kOne, literals::mat(2, 1, {"0", "1"}));
   m.C.add(kOne, row2("1", "0.5"));
   m.C.add(kRho, row2("0.3", "0"));
-  m.D = ParamMatrix<Rational>(1, 1);
-  m.D.add(kOne, Mat<Rational>::Constant(1, 1, dec("0.2")));
-  m.x0 = Vec<Rational>::Zero(2);
+  m.D.add(kOne, literals::mat(1, 1, {"0.2"}));
   return m;
 }
 

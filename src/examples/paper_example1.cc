@@ -4,13 +4,14 @@
 
 #include "core/number_text.h"
 #include "examples/decimal_rounding.h"
+#include "examples/model_literals.h"
 #include "examples/random_stream.h"
 #include "model/simulate.h"
 
 namespace lpvid {
 namespace {
 
-Rational dec(const char* text) { return rational_from_text(text); }
+using literals::dec;
 
 
 

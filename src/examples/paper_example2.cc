@@ -4,42 +4,25 @@
 
 #include "core/number_text.h"
 #include "examples/decimal_rounding.h"
+#include "examples/model_literals.h"
 #include "examples/random_stream.h"
 #include "model/simulate.h"
 
 namespace lpvid {
 namespace {
 
-Rational dec(const char* text) { return rational_from_text(text); }
-
-
-
-Mat<Rational> mat(int rows, int cols, std::initializer_list<const char*> values) {
-  Mat<Rational> m(rows, cols);
-  auto it = values.begin();
-  for (int i = 0; i < rows; ++i)
-    for (int j = 0; j < cols; ++j) m(i, j) = dec(*it++);
-  return m;
-}
+using literals::dec;
+using literals::mat;
 
 const Monomial kOne{{0}}, kRho{{1}}, kRho2{{2}};
 
 LpvModel<Rational> example2_skeleton() {
-  LpvModel<Rational> m;
-  m.nx = 2;
-  m.nu = m.ny = 1;
-  m.scheduling = {"rho1"};
-  m.columns = {{"u1"}, {"y1"}, {"rho1"}};
-  m.A = ParamMatrix<Rational>(2, 2);
+  LpvModel<Rational> m = literals::siso_rho1_skeleton();
   m.A.add(kOne, mat(2, 2, {"0", "1", "-0.24", "0.9"}));
   m.A.add(kRho, mat(2, 2, {"0", "0", "-0.1", "-0.4"}));
-  m.B = ParamMatrix<Rational>(2, 1);
   m.B.add(kOne, mat(2, 1, {"0", "1"}));
-  m.C = ParamMatrix<Rational>(1, 2);
   m.C.add(kOne, mat(1, 2, {"1", "0"}));
   m.C.add(kRho, mat(1, 2, {"0.5", "0"}));
-  m.D = ParamMatrix<Rational>(1, 1);
-  m.x0 = Vec<Rational>::Zero(2);
   m.uncertainty.structure = UncertaintyStructure::kMultiplicative;
   m.uncertainty.weight = dec("0.01");
   m.offset.basis = {kOne, kRho, kRho2};
