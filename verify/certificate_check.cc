@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <ostream>
 #include <sstream>
 
@@ -15,6 +16,7 @@
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
 #include "toeplitz/toeplitz_gram.h"
+#include "verify/dual_check.h"
 #include "verify/exact_psd.h"
 
 namespace lpvid {
@@ -28,7 +30,7 @@ std::string approx(const Rational& q) {
 }
 
 CertificateVerdict invalid(std::string reason, std::string details = "") {
-  return {false, std::move(reason), std::move(details)};
+  return {false, std::move(reason), std::move(details), ""};
 }
 
 std::string psd_note(const PsdResult& r) {
@@ -38,7 +40,17 @@ std::string psd_note(const PsdResult& r) {
 
 }  // namespace
 
+namespace {
+CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c);
+CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir);
+}  // namespace
+
 CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir) {
+  return with_claim(check_claim(c, certificate_dir), c);
+}
+
+namespace {
+CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir) {
   namespace fs = std::filesystem;
   std::ostringstream details;
   // 1. The data file and its hash.
@@ -67,6 +79,8 @@ CertificateVerdict check_certificate(const Certificate& c, const std::string& ce
   const Simulation<Rational> sim = simulate(c.model, exp);
   const Eigen::Index n = exp.n(), ny = c.model.ny, nz = c.model.nz();
   details << "n = " << n << ", ny = " << ny << ", nz = " << nz << ", toeplitz mode " << to_string(c.mode);
+
+  if (c.claim != CertificateClaim::kConsistent) return check_dual_claim(c, exp, sim, details.str());
 
   // 4. w.
   Mat<Rational> w;
@@ -145,8 +159,9 @@ CertificateVerdict check_certificate(const Certificate& c, const std::string& ce
   if (psd.verdict == PsdVerdict::kNotPsd)
     return invalid("(C1) fails: " + which + " is not PSD (" + psd.reason + ")", details.str());
   details << "; (C1) holds: " << which << " (size " << M.rows() << ") is " << psd_note(psd);
-  return {true, "", details.str()};
+  return {true, "", details.str(), ""};
 }
+}  // namespace
 
 CertificateVerdict check_certificate_file(const std::string& path) {
   const Certificate c = read_certificate(path);
@@ -154,13 +169,25 @@ CertificateVerdict check_certificate_file(const std::string& path) {
   return check_certificate(c, dir.empty() ? "." : dir);
 }
 
+namespace {
+/// Sets claim_text on a verdict that holds.
+CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
+  if (!v.holds) return v;
+  std::ostringstream o;
+  o << to_string(c.claim);
+  if (c.claim == CertificateClaim::kLowerBound) o << " " << std::setprecision(10) << nearest_double(c.lower_bound);
+  v.claim_text = o.str();
+  return v;
+}
+}  // namespace
+
 int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err) {
   try {
     const auto start = std::chrono::steady_clock::now();
     const CertificateVerdict v = check_certificate_file(path);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (v.consistent) {
-      out << "consistent\n" << v.details << "\nchecked in exact rational arithmetic in " << secs << " s\n";
+    if (v.holds) {
+      out << v.claim_text << "\n" << v.details << "\nchecked in exact rational arithmetic in " << secs << " s\n";
       return 0;
     }
     out << "invalid: " << v.reason << "\n";

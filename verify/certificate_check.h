@@ -15,6 +15,8 @@
 ///     ‖T_Δ‖ ≤ δ; then T_w = T_Δ T_z and T_wᵀT_w = T_zᵀT_ΔᵀT_ΔT_z ⪯ δ²T_zᵀT_z,
 ///     which is (C1). (The taps before the horizon multiply zero samples.)
 /// Any failure is "invalid" with the constraint, the index and the numbers.
+/// Dual claims ("invalidated", "lower_bound") share steps 1–3 and continue in
+/// verify/dual_check.h.
 
 #include <string>
 
@@ -23,9 +25,14 @@
 namespace lpvid {
 
 struct CertificateVerdict {
-  bool consistent = false;
-  std::string reason;   ///< why not (empty when consistent)
+  /// The certificate's claim (Certificate::claim: consistent, invalidated or
+  /// a lower bound) was checked exactly and holds.
+  bool holds = false;
+  std::string reason;   ///< why not (empty when it holds)
   std::string details;  ///< what was checked, sizes, which PSD path decided
+  /// The first line lpvid-verify prints when the claim holds: "consistent",
+  /// "invalidated" or "lower_bound <value>" (the claimed value, ≈).
+  std::string claim_text;
 };
 
 /// Checks `c`; `certificate_dir` resolves a relative data path. Throws
@@ -36,7 +43,8 @@ CertificateVerdict check_certificate(const Certificate& c, const std::string& ce
 /// Reads the file and checks it.
 CertificateVerdict check_certificate_file(const std::string& path);
 
-/// `lpvid-verify certificate C.json`: prints "consistent" (exit 0) or
+/// `lpvid-verify certificate C.json`: prints the claim that was checked,
+/// "consistent", "invalidated" or "lower_bound <value>" (exit 0), or
 /// "invalid: <reason>" (exit 1); exit 2 on unreadable input.
 int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err);
 

@@ -54,21 +54,106 @@ nlohmann::ordered_json matrix_json(const Mat<Rational>& m) {
   return rows;
 }
 
+/// The dual claims' fields (certificate_file.h).
+void parse_dual_claim(const JsonNode& root, const std::string& file, const std::string& claim, Certificate& c) {
+  c.claim = claim == "invalidated" ? CertificateClaim::kInvalidated : CertificateClaim::kLowerBound;
+  for (const char* key : {"delta_taps", "delta_horizon", "w"})
+    if (const JsonNode* n = root.find(key)) throw_input_error(file, n->line, key, "dual claims do not carry this key");
+  if (string_member(root, "form", file, "") != "dual_delta")
+    throw_input_error(file, member(root, "form", file, "").line, "form", "a dual claim has form \"dual_delta\"");
+  const JsonNode& objective_node = member(root, "objective", file, "");
+  const std::string objective = string_member(root, "objective", file, "");
+  const bool invalidated = c.claim == CertificateClaim::kInvalidated;
+  if (objective == "feasibility" && invalidated) c.objective = DualClaim::kInvalidated;
+  else if (objective == "min_delta" && !invalidated) c.objective = DualClaim::kMinDelta2;
+  else if (objective == "min_dmax" && !invalidated) c.objective = DualClaim::kMinDmax2;
+  else if (objective == "weighted" && !invalidated) c.objective = DualClaim::kWeighted;
+  else
+    throw_input_error(file, objective_node.line, "objective",
+                      invalidated ? "the claim \"invalidated\" needs objective \"feasibility\""
+                                  : "a lower bound needs objective \"min_delta\", \"min_dmax\" or \"weighted\"");
+  const bool delta_fixed = c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDmax2;
+  const bool dmax_fixed = c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDelta2;
+  const auto fixed = [&](const char* key, bool wanted, Rational& out) {
+    const JsonNode* n = root.find(key);
+    if (wanted && !n) throw_input_error(file, root.line, key, "missing (this objective fixes it)");
+    if (!wanted && n) throw_input_error(file, n->line, key, "this objective does not fix it");
+    if (n) out = number_from_json<Rational>(*n, file, key);
+    if (n && out < 0) throw_input_error(file, n->line, key, "must be >= 0");
+  };
+  fixed("delta2", delta_fixed, c.delta2);
+  fixed("dmax2", dmax_fixed, c.dmax2);
+  fixed("lambda", c.objective == DualClaim::kWeighted, c.lambda);
+  if (c.objective == DualClaim::kWeighted && c.lambda > 1)
+    throw_input_error(file, member(root, "lambda", file, "").line, "lambda", "must be in [0, 1]");
+  if (invalidated) {
+    if (const JsonNode* n = root.find("lower_bound"))
+      throw_input_error(file, n->line, "lower_bound", "the claim \"invalidated\" carries no lower_bound");
+  } else {
+    c.lower_bound = number_from_json<Rational>(member(root, "lower_bound", file, ""), file, "lower_bound");
+  }
+  const JsonNode& dual = member(root, "dual", file, "");
+  if (!dual.is_object()) throw_input_error(file, dual.line, "dual", "expected an object");
+  for (const auto& [key, value] : dual.members)
+    if (key != "horizon" && key != "sigma" && key != "g" && key != "Y1")
+      throw_input_error(file, value.line, "dual." + key, "unknown key");
+  const JsonNode& horizon = member(dual, "horizon", file, "dual");
+  c.dual.horizon = integer_member(horizon, file, "dual.horizon");
+  if (c.dual.horizon < 1) throw_input_error(file, horizon.line, "dual.horizon", "must be at least 1");
+  c.dual.sigma = number_from_json<Rational>(member(dual, "sigma", file, "dual"), file, "dual.sigma");
+  const Eigen::Index ny = c.model.ny, nz = c.model.nz();
+  c.dual.g = matrix_member(member(dual, "g", file, "dual"), file, "dual.g", ny);
+  // Y1: upper-triangle rows, row i holds columns i … P−1.
+  const JsonNode& y1 = member(dual, "Y1", file, "dual");
+  const long P = c.dual.horizon * static_cast<long>(ny + nz);
+  if (!y1.is_array() || static_cast<long>(y1.items.size()) != P)
+    throw_input_error(file, y1.line, "dual.Y1",
+                      "expected " + std::to_string(P) + " upper-triangle rows (horizon*(ny+nz))");
+  c.dual.Y1 = Mat<Rational>(P, P);
+  for (long i = 0; i < P; ++i) {
+    const JsonNode& row = y1.items[static_cast<size_t>(i)];
+    const std::string rp = "dual.Y1[" + std::to_string(i) + "]";
+    if (!row.is_array() || static_cast<long>(row.items.size()) != P - i)
+      throw_input_error(file, row.line, rp, "expected " + std::to_string(P - i) + " numbers (columns i..P-1)");
+    for (long j = i; j < P; ++j) {
+      const Rational v = number_from_json<Rational>(row.items[static_cast<size_t>(j - i)], file,
+                                                    rp + "[" + std::to_string(j - i) + "]");
+      c.dual.Y1(i, j) = v;
+      c.dual.Y1(j, i) = v;
+    }
+  }
+}
+
 }  // namespace
+
+const char* to_string(CertificateClaim c) {
+  switch (c) {
+    case CertificateClaim::kConsistent:
+      return "consistent";
+    case CertificateClaim::kInvalidated:
+      return "invalidated";
+    case CertificateClaim::kLowerBound:
+      return "lower_bound";
+  }
+  return "?";
+}
 
 Certificate parse_certificate(std::string_view text, const std::string& file) {
   const JsonNode root = parse_exact_json(text, file);
   if (!root.is_object()) throw_input_error(file, root.line, "", "a certificate is a JSON object");
   static const std::vector<std::string> allowed = {"format", "claim", "data", "model", "toeplitz_mode",
                                                    "noise_normalisation", "delta2", "dmax2", "form",
-                                                   "delta_taps", "delta_horizon", "w", "info"};
+                                                   "delta_taps", "delta_horizon", "w", "info",
+                                                   "objective", "lambda", "lower_bound", "dual"};
   for (const auto& [key, value] : root.members)
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
       throw_input_error(file, value.line, key, "unknown key in a certificate");
   if (string_member(root, "format", file, "") != kCertificateFormat)
     throw_input_error(file, root.line, "format", std::string("expected \"") + kCertificateFormat + "\"");
-  if (string_member(root, "claim", file, "") != "consistent")
-    throw_input_error(file, root.line, "claim", "the only claim a certificate makes is \"consistent\"");
+  const std::string claim = string_member(root, "claim", file, "");
+  if (claim != "consistent" && claim != "invalidated" && claim != "lower_bound")
+    throw_input_error(file, member(root, "claim", file, "").line, "claim",
+                      "expected \"consistent\", \"invalidated\" or \"lower_bound\"");
   if (string_member(root, "noise_normalisation", file, "") != "rms")
     throw_input_error(file, root.line, "noise_normalisation", "expected \"rms\" (||d||^2 <= n*ny*dmax^2, SPEC section 4)");
 
@@ -93,6 +178,12 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
   }
   c.model = model_from_json<Rational>(member(root, "model", file, ""), file, "model");
   c.mode = toeplitz_mode_from_string(string_member(root, "toeplitz_mode", file, ""));
+  if (claim != "consistent") {
+    parse_dual_claim(root, file, claim, c);
+    return c;
+  }
+  for (const char* key : {"objective", "lambda", "lower_bound", "dual"})
+    if (const JsonNode* n = root.find(key)) throw_input_error(file, n->line, key, "only dual claims carry this key");
   c.delta2 = number_from_json<Rational>(member(root, "delta2", file, ""), file, "delta2");
   c.dmax2 = number_from_json<Rational>(member(root, "dmax2", file, ""), file, "dmax2");
   const std::string form = string_member(root, "form", file, "");
@@ -118,10 +209,39 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
 
 Certificate read_certificate(const std::string& path) { return parse_certificate(read_text_file(path), path); }
 
+namespace {
+
+void dual_claim_json(const Certificate& c, nlohmann::ordered_json& j) {
+  const char* objective = c.objective == DualClaim::kInvalidated ? "feasibility"
+                          : c.objective == DualClaim::kMinDelta2 ? "min_delta"
+                          : c.objective == DualClaim::kMinDmax2  ? "min_dmax"
+                                                                 : "weighted";
+  j["objective"] = objective;
+  if (c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDmax2) j["delta2"] = rational_to_json(c.delta2);
+  if (c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDelta2) j["dmax2"] = rational_to_json(c.dmax2);
+  if (c.objective == DualClaim::kWeighted) j["lambda"] = rational_to_json(c.lambda);
+  if (c.claim == CertificateClaim::kLowerBound) j["lower_bound"] = rational_to_json(c.lower_bound);
+  j["form"] = "dual_delta";
+  nlohmann::ordered_json dual;
+  dual["horizon"] = c.dual.horizon;
+  dual["sigma"] = rational_to_json(c.dual.sigma);
+  dual["g"] = matrix_json(c.dual.g);
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (Eigen::Index i = 0; i < c.dual.Y1.rows(); ++i) {
+    nlohmann::ordered_json row = nlohmann::ordered_json::array();
+    for (Eigen::Index k = i; k < c.dual.Y1.cols(); ++k) row.push_back(rational_to_json(c.dual.Y1(i, k)));
+    rows.push_back(row);
+  }
+  dual["Y1"] = rows;
+  j["dual"] = dual;
+}
+
+}  // namespace
+
 std::string certificate_json(const Certificate& c) {
   nlohmann::ordered_json j;
   j["format"] = kCertificateFormat;
-  j["claim"] = "consistent";
+  j["claim"] = to_string(c.claim);
   nlohmann::ordered_json data;
   data["file"] = c.data_file;
   data["sha256"] = c.data_sha256;
@@ -131,6 +251,11 @@ std::string certificate_json(const Certificate& c) {
   j["model"] = model_to_json(c.model);
   j["toeplitz_mode"] = to_string(c.mode);
   j["noise_normalisation"] = "rms";
+  if (c.claim != CertificateClaim::kConsistent) {
+    dual_claim_json(c, j);
+    j["info"] = c.info;
+    return pretty_json(j);
+  }
   j["delta2"] = rational_to_json(c.delta2);
   j["dmax2"] = rational_to_json(c.dmax2);
   if (c.form == CertificateForm::kDelta) {

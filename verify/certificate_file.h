@@ -19,6 +19,21 @@
 ///     "info": { … }                          // free, never read by the verifier
 ///   }
 ///
+/// Dual claims (issue 8; docs/dual_certificates.md) use the same file:
+///
+///   "claim": "invalidated" | "lower_bound",
+///   "toeplitz_mode": "signal",
+///   "objective": "feasibility" | "min_delta" | "min_dmax" | "weighted",
+///   "delta2": fixed δ² (feasibility, min_dmax), "dmax2": fixed d_max² (feasibility, min_delta),
+///   "lambda": λ (weighted),
+///   "lower_bound": the claimed lower end (lower_bound only): on δ² (min_delta),
+///                  d_max² (min_dmax) or λδ² + (1−λ)d_max² (weighted),
+///   "form": "dual_delta",
+///   "dual": {"horizon": L,                   // must be n − (leading zero samples of z)
+///            "sigma": σ,                     // > 0
+///            "g": [[g_0 (ny)], …, [g_{n−1}]],
+///            "Y1": [[row 0, columns 0…P−1], [row 1, columns 1…P−1], …]}  // upper triangle, P = L·(ny+nz)
+///
 /// Every number is exact text (JSON number or string with a decimal or p/q).
 /// Form "delta" (signal mode only) carries the causal FIR Δ of the Poolla
 /// form: w = Δ ∗ z, and (C1) follows from ‖T_Δ‖ ≤ δ (see certificate_check.h).
@@ -30,13 +45,30 @@
 
 #include "core/scalar.h"
 #include "model/lpv_model.h"
+#include "toeplitz/delta_form_dual.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 
 namespace lpvid {
 
 inline constexpr const char* kCertificateFormat = "lpvid-certificate/1";
 
-enum class CertificateForm { kDelta, kW };
+enum class CertificateForm { kDelta, kW, kDualDelta };
+
+/// What the certificate claims. kConsistent: the model is not invalidated at
+/// (δ², d_max²) (a primal point). kInvalidated / kLowerBound: a dual point of
+/// the full-horizon Δ form (toeplitz/delta_form_dual.h).
+enum class CertificateClaim { kConsistent, kInvalidated, kLowerBound };
+
+/// "consistent", "invalidated", "lower_bound".
+const char* to_string(CertificateClaim c);
+
+/// The dual point Y1 ⪰ 0, Y2 = (1/σ)[σ; g][σ; g]ᵀ (toeplitz/delta_form_dual.h).
+struct DualPoint {
+  long horizon = 0;  ///< L
+  Mat<Rational> Y1;  ///< L·(ny+nz) square, symmetric
+  Mat<Rational> g;   ///< n × ny
+  Rational sigma;    ///< σ > 0
+};
 
 struct Certificate {
   std::string data_file;                ///< as written in the file
@@ -50,6 +82,14 @@ struct Certificate {
   Mat<Rational> taps;  ///< K × (ny·nz), form kDelta (h_K … h_{L−1} = 0)
   long horizon = 0;    ///< L, form kDelta
   Mat<Rational> w;     ///< n × ny, form kW
+  CertificateClaim claim = CertificateClaim::kConsistent;
+  /// Dual claims: which bound (kInvalidated for "feasibility"), λ (weighted),
+  /// the claimed lower end, and the dual point. delta2 / dmax2 above hold the
+  /// fixed values (0 when not fixed).
+  DualClaim objective = DualClaim::kInvalidated;
+  Rational lambda;
+  Rational lower_bound;
+  DualPoint dual;
   nlohmann::ordered_json info = nlohmann::ordered_json::object();
 };
 

@@ -29,12 +29,27 @@ int run_invalidate(CommonOptions& c) {
   report["iterations"] = 1;
   report["samples"] = in.exp_q.n();
   const bool fixed_bounds = in.objective.kind == BoundObjective::Kind::kFeasibility;
-  if (!b.verified && fixed_bounds && b.solver_status == "primal_infeasible") {
-    report["status"] = "invalidated";
-    std::cout << "  -> INVALIDATED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
-              << " (the LMI is infeasible; this verdict comes from the solver, it is not exactly certified)\n";
-    write_json(c.report_path, report);
-    return kExitInvalidated;
+  if (fixed_bounds) {
+    report["verdict"] = b.verified ? "consistent" : b.invalidated ? "invalidated" : "undecided";
+    if (!b.verified) report["status"] = b.invalidated ? "invalidated" : "undecided";
+    if (b.invalidated) {
+      report["certificate"] = co.certificate_path;
+      report["verified"] = true;
+      std::cout << "  -> INVALIDATED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
+                << ": no causal LTI Delta with ||Delta||_inf <= delta and no noise with RMS <= dmax explain the data.\n"
+                << "     certificate " << co.certificate_path << " (claim \"invalidated\", a dual point of the full-horizon "
+                << "problem), checked exactly: " << b.lower.verifier_details << "\n";
+      write_json(c.report_path, report);
+      return kExitInvalidated;
+    }
+    if (!b.verified) {
+      std::cout << "  -> UNDECIDED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
+                << ": neither a consistency nor an invalidation certificate passed the exact check\n";
+      write_json(c.report_path, report);
+      return kExitUndecided;
+    }
+  } else {
+    report["interval"] = interval_json(b, in.objective);
   }
   write_json(c.report_path, report);
   if (!b.verified && (b.solver_status == "backend_error" || b.solver_status == "iteration_limit")) return kExitSolver;

@@ -1,5 +1,6 @@
 #include "cli/report.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -92,6 +93,43 @@ void write_json(const std::string& path, const nlohmann::ordered_json& j) {
   f << j.dump(2) << "\n";
 }
 
+namespace {
+/// What the interval is on.
+std::string interval_quantity(BoundObjective::Kind k) {
+  switch (k) {
+    case BoundObjective::Kind::kMinDelta:
+      return "delta^2";
+    case BoundObjective::Kind::kMinDmax:
+      return "dmax^2";
+    case BoundObjective::Kind::kWeighted:
+      return "lambda*delta^2 + (1-lambda)*dmax^2";
+    case BoundObjective::Kind::kFeasibility:
+      break;
+  }
+  return "";
+}
+}  // namespace
+
+nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObjective& objective) {
+  nlohmann::ordered_json j;
+  j["of"] = interval_quantity(objective.kind);
+  j["upper"] = b.verified ? nlohmann::ordered_json(nearest_double(b.upper)) : nlohmann::ordered_json(nullptr);
+  j["upper_verified"] = b.verified;
+  j["lower"] = b.lower.verified ? nlohmann::ordered_json(nearest_double(b.lower.value)) : nlohmann::ordered_json(nullptr);
+  j["lower_verified"] = b.lower.verified;
+  if (b.lower.verified) j["lower_exact"] = exact_decimal_or_fraction(b.lower.value);
+  const double gap = relative_gap(b);
+  j["relative_gap"] = std::isfinite(gap) ? nlohmann::ordered_json(gap) : nlohmann::ordered_json(nullptr);
+  j["lower_certificate"] = b.lower.verified ? nlohmann::ordered_json(b.lower.certificate) : nlohmann::ordered_json(nullptr);
+  if (!b.lower.verified) j["lower_reason"] = b.lower.reason;
+  j["full_horizon"] = b.full_horizon;
+  j["note"] = b.full_horizon ? "both ends from the full-horizon program"
+                             : "upper end from a K-tap restriction (it can only raise the upper end); lower end from its "
+                               "dual lifted to the full horizon";
+  j["lower_seconds"] = b.lower.seconds;
+  return j;
+}
+
 std::string bounds_text(const CertifiedBounds& b, const std::string& certificate) {
   std::ostringstream o;
   if (b.verified) {
@@ -99,6 +137,14 @@ std::string bounds_text(const CertifiedBounds& b, const std::string& certificate
       << "  dmax        <= " << b.dmax << "   (dmax^2 = " << exact_decimal_or_fraction(b.dmax2) << ", RMS)\n"
       << "  verified    true: " << certificate << " checked exactly by the verifier\n"
       << "              " << b.verifier_details << "\n";
+    if (b.lower.verified) {
+      o << "  interval    [" << nearest_double(b.lower.value) << ", " << nearest_double(b.upper)
+        << "]  relative gap " << relative_gap(b) << "  (objective; both ends verified"
+        << (b.full_horizon ? ", full horizon" : ", upper end from " + std::to_string(b.taps) + " taps") << ")\n"
+        << "  lower end   " << b.lower.certificate << " (dual certificate, checked exactly)\n";
+    } else if (!b.lower.reason.empty()) {
+      o << "  lower end   not certified: " << b.lower.reason << "\n";
+    }
   } else {
     o << "  verified    false: " << b.reason << "\n"
       << "  (no bound is reported: nothing was verified)\n";

@@ -7,6 +7,7 @@
 
 #include "identify/affine_residual.h"
 #include "identify/certify.h"
+#include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 
 namespace lpvid::cli {
@@ -14,10 +15,11 @@ namespace lpvid::cli {
 /// Exit codes shared by the lpvid commands.
 enum ExitCode {
   kExitOk = 0,           ///< bounds found and verified
-  kExitInvalidated = 1,  ///< the model is inconsistent with the data at the given bounds
+  kExitInvalidated = 1,  ///< invalidated at the given bounds: an "invalidated" certificate was checked exactly
   kExitBadInput = 2,     ///< unreadable/malformed input, bad options
   kExitSolver = 3,       ///< the SDP backend failed (no bound is reported)
   kExitNotVerified = 4,  ///< bounds were computed but the exact check did not accept them
+  kExitUndecided = 5,    ///< fixed bounds: neither consistency nor invalidation could be certified
 };
 
 /// The common fields: status, delta, dmax (only when verified), the exact
@@ -30,6 +32,10 @@ nlohmann::ordered_json theta_json(const LpvModel<double>& model, const Parameter
 
 /// Writes JSON to path (if non-empty); throws InputError when it cannot.
 void write_json(const std::string& path, const nlohmann::ordered_json& j);
+
+/// The certified interval of the objective (issue 8): lower, upper,
+/// relative_gap, lower_verified, upper_verified, the lower end's certificate.
+nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObjective& objective);
 
 /// Readable lines for the bounds ("delta <= ... (verified)").
 std::string bounds_text(const CertifiedBounds& b, const std::string& certificate);

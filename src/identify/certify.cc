@@ -12,6 +12,7 @@
 #include "lmi/delta_form_lmi.h"
 #include "lmi/delta_kyp_lmi.h"
 #include "lmi/relaxed_bmi_lmi.h"
+#include "identify/dual_certify.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
@@ -44,14 +45,7 @@ template <typename Norm2>
 void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o, const std::string& solver_name,
                         CertifiedBounds& out) {
   namespace fs = std::filesystem;
-  c.data_names = o.data_names;
-  c.row_begin = o.row_begin;
-  c.row_end = o.row_end;
-  const fs::path cert_dir = fs::absolute(fs::path(o.certificate_path)).parent_path();
-  const fs::path data_abs = fs::absolute(fs::path(o.data_path));
-  c.data_file = fs::relative(data_abs, cert_dir).string();
-  if (c.data_file.empty()) c.data_file = data_abs.string();
-  c.data_sha256 = sha256_hex(read_text_file(o.data_path));
+  const std::string cert_dir = set_data_reference(c, o, o.certificate_path);
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
   c.info["solver"] = solver_name;
@@ -78,11 +72,11 @@ void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o,
       c.delta2 = round_up_to_digits(exact_rational_of_double(norm2 * (1.0 + margin) + 1e-300), 12);
     }
     c.info["delta2_margin"] = margin;
-    v = check_certificate(c, cert_dir.string());
-    if (v.consistent || o.objective.delta_fixed()) break;
+    v = check_certificate(c, cert_dir);
+    if (v.holds || o.objective.delta_fixed()) break;
   }
   out.margin = margin;
-  if (!v.consistent) {
+  if (!v.holds) {
     out.reason = "exact check failed: " + v.reason;
     return;
   }
@@ -90,8 +84,8 @@ void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o,
   const auto t1 = std::chrono::steady_clock::now();
   const CertificateVerdict again = check_certificate_file(o.certificate_path);
   out.verify_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-  out.verified = again.consistent;
-  out.reason = again.consistent ? "" : "the written certificate failed: " + again.reason;
+  out.verified = again.holds;
+  out.reason = again.holds ? "" : "the written certificate failed: " + again.reason;
   out.verifier_details = again.details;
   out.delta2 = c.delta2;
   out.dmax2 = c.dmax2;
@@ -162,6 +156,19 @@ void certify_taps(const LpvModel<Rational>& model, const Simulation<Rational>& s
 
 }  // namespace
 
+std::string set_data_reference(Certificate& c, const CertifyOptions& o, const std::string& certificate_path) {
+  namespace fs = std::filesystem;
+  c.data_names = o.data_names;
+  c.row_begin = o.row_begin;
+  c.row_end = o.row_end;
+  const fs::path cert_dir = fs::absolute(fs::path(certificate_path)).parent_path();
+  const fs::path data_abs = fs::absolute(fs::path(o.data_path));
+  c.data_file = fs::relative(data_abs, cert_dir).string();
+  if (c.data_file.empty()) c.data_file = data_abs.string();
+  c.data_sha256 = sha256_hex(read_text_file(o.data_path));
+  return cert_dir.string();
+}
+
 Rational round_to_digits(double x, int digits) {
   if (!std::isfinite(x)) throw std::invalid_argument("round_to_digits: not finite");
   char buf[64];
@@ -196,48 +203,177 @@ double sqrt_up(const Rational& q) {
   return s;
 }
 
+namespace {
+
+/// The objective at the primal certificate's (δ², d_max²).
+Rational objective_at(const BoundObjective& obj, const Rational& delta2, const Rational& dmax2) {
+  switch (obj.kind) {
+    case BoundObjective::Kind::kMinDelta:
+      return delta2;
+    case BoundObjective::Kind::kMinDmax:
+      return dmax2;
+    case BoundObjective::Kind::kWeighted: {
+      const Rational lambda = rational_from_text(double_to_text(obj.lambda));
+      return lambda * delta2 + (Rational(1) - lambda) * dmax2;
+    }
+    case BoundObjective::Kind::kFeasibility:
+      break;
+  }
+  return Rational(0);
+}
+
+/// "<stem>.lower.json" beside the certificate.
+std::string lower_certificate_path(const std::string& certificate_path) {
+  namespace fs = std::filesystem;
+  fs::path p(certificate_path);
+  return (p.parent_path() / (p.stem().string() + ".lower.json")).string();
+}
+
+/// One Δ-form (or KYP) solve with K taps (0: full horizon), dual matrices
+/// requested when the caller wants a dual certificate.
+DeltaFormSolution solve_for_certificate(const Simulation<Rational>& sim, const Mat<Rational>& r, Eigen::Index n,
+                                        const BoundObjective& obj, const CertifyOptions& o, SdpSolver& solver,
+                                        long taps, bool kyp, bool want_dual) {
+  SolverOptions so = o.solver;
+  so.want_dual = want_dual;
+  if (!kyp) return solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
+  // (KYP) bounds ‖Δ‖_∞ ≥ ‖T_Δ‖ on any horizon: small program, same certificate.
+  const DeltaKypSolution k = solve_delta_kyp(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
+  DeltaFormSolution sol;
+  sol.solve = k.solve;
+  sol.leading_zeros = leading_zero_samples(sim.z);
+  sol.horizon = n - sol.leading_zeros;
+  sol.taps = k.taps.topRows(std::min<Eigen::Index>(k.taps.rows(), sol.horizon));
+  sol.delta2 = k.delta2;
+  sol.dmax2 = k.dmax2;
+  return sol;
+}
+
+std::string status_reason(const DeltaFormSolution& sol, const char* what) {
+  return std::string("the ") + what + " solve of Theorem 2.1 ended with status " + to_string(sol.solve.status) +
+         (sol.solve.message.empty() ? "" : ": " + sol.solve.message);
+}
+
+}  // namespace
+
+double relative_gap(const CertifiedBounds& b) {
+  if (!b.verified || !b.lower.verified) return NAN;
+  if (b.upper == 0) return 0.0;
+  return nearest_double((b.upper - b.lower.value) / b.upper);
+}
+
 CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                     const CertifyOptions& o, SdpSolver& solver) {
+  const auto t0 = std::chrono::steady_clock::now();
   CertifiedBounds out;
   if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
   // 1. Exact signals.
   const Simulation<Rational> sim = simulate(model, exp);
   const Mat<Rational> r = exp.y - sim.output;
+  const Eigen::Index n = exp.n();
+  const Eigen::Index L = n - leading_zero_samples(sim.z);
+  if (L == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(sim.z));  // throws the usual InputError
 
   // 2. Δ form in floating point; fixed bounds are tightened a little so that
   // rounding does not push the exact values over them.
   BoundObjective obj = o.objective;
   if (obj.dmax_fixed()) obj.dmax *= 1.0 - 1e-7;
   if (obj.delta_fixed()) obj.delta *= 1.0 - 1e-7;
-  DeltaFormSolution sol;
-  if (o.delta_norm == DeltaNorm::kKyp) {
-    // (KYP) bounds ‖Δ‖_∞ ≥ ‖T_Δ‖ on any horizon: small program, same certificate.
-    if (o.max_taps <= 0) throw InputError("certify: the KYP Delta form needs a finite number of taps (--max-taps > 0)");
-    const DeltaKypSolution k = solve_delta_kyp(nearest_double(sim.z), nearest_double(r), obj, solver, o.solver, o.max_taps);
-    sol.solve = k.solve;
-    sol.leading_zeros = leading_zero_samples(sim.z);
-    sol.horizon = exp.n() - sol.leading_zeros;
-    sol.taps = k.taps.topRows(std::min<Eigen::Index>(k.taps.rows(), sol.horizon));
-    sol.delta2 = k.delta2;
-    sol.dmax2 = k.dmax2;
-  } else {
-    sol = solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, o.solver, o.max_taps);
-  }
-  out.solver_status = to_string(sol.solve.status);
-  out.solve_seconds = sol.solve.seconds;
-  out.taps = sol.taps.rows();
-  out.horizon = sol.horizon;
-  if (!has_solution(sol.solve.status)) {
-    out.reason = "the Delta-form solve of Theorem 2.1 ended with status " + out.solver_status +
-                 (obj.kind == BoundObjective::Kind::kFeasibility || obj.dmax_fixed() || obj.delta_fixed()
-                      ? " (for fixed bounds this usually means the model is invalidated at those bounds)"
-                      : "") +
-                 (sol.solve.message.empty() ? "" : ": " + sol.solve.message);
-    return out;
-  }
+  const bool kyp = o.delta_norm == DeltaNorm::kKyp;
+  if (kyp && o.max_taps <= 0) throw InputError("certify: the KYP Delta form needs a finite number of taps (--max-taps > 0)");
+  const bool feasibility = o.objective.kind == BoundObjective::Kind::kFeasibility;
+  const long K = o.max_taps > 0 && o.max_taps < L ? o.max_taps : 0;  // 0: the full horizon
+  const bool dual_here = o.lower_end && !kyp && !feasibility;
 
-  out.delta2_solver = sol.delta2;
-  certify_taps(model, sim, r, sol.taps, sol.horizon, o, solver.name(), out);
+  // 3–6. The primal certificate (upper end) from the K-tap solve.
+  const auto primal = [&](const DeltaFormSolution& sol, CertifiedBounds& b) {
+    b.solver_status = to_string(sol.solve.status);
+    b.solve_seconds += sol.solve.seconds;
+    b.taps = sol.taps.rows();
+    b.horizon = sol.horizon;
+    if (!has_solution(sol.solve.status)) {
+      b.reason = status_reason(sol, sol.taps.rows() < sol.horizon && sol.taps.rows() > 0 ? "restricted (K-tap)" : "Delta-form");
+      return;
+    }
+    b.delta2_solver = sol.delta2;
+    certify_taps(model, sim, r, sol.taps, sol.horizon, o, solver.name(), b);
+    if (b.verified) b.upper = objective_at(o.objective, b.delta2, b.dmax2);
+  };
+  DeltaFormSolution sol = solve_for_certificate(sim, r, n, obj, o, solver, K, kyp, dual_here);
+  primal(sol, out);
+  out.full_horizon = K == 0;
+
+  const auto lower_from = [&](const DeltaFormSolution& s) {
+    if (s.dual_c1.size() == 0) return;
+    const DualOutcome d = certify_dual(model, exp, sim, s.dual_c1, s.dual_c2, o, lower_certificate_path(o.certificate_path));
+    if (d.verified && (!out.lower.verified || d.bound > out.lower.value)) {
+      out.lower.verified = true;
+      out.lower.value = d.bound;
+      out.lower.certificate = d.certificate_path;
+      out.lower.verifier_details = d.verifier_details;
+      out.lower.reason.clear();
+    } else if (!out.lower.verified) {
+      out.lower.reason = d.reason;
+    }
+    out.lower.seconds += d.seconds;
+  };
+
+  if (feasibility) {
+    // A restricted program's infeasibility decides nothing: only a primal or
+    // an exactly checked dual of the FULL-horizon problem may.
+    if (!out.verified && o.lower_end && !kyp && o.objective.kind == BoundObjective::Kind::kFeasibility) {
+      DeltaFormSolution full = sol;
+      if (K != 0 || kyp) {
+        full = solve_for_certificate(sim, r, n, obj, o, solver, 0, false, true);
+        CertifiedBounds again;
+        primal(full, again);
+        again.solve_seconds += out.solve_seconds;
+        if (again.verified || !has_solution(full.solve.status)) {
+          const std::string first = out.reason;
+          out = again;
+          out.full_horizon = true;
+          if (!again.verified && !first.empty()) out.reason = again.reason + " (first, with " + std::to_string(K) + " taps: " + first + ")";
+        }
+      } else if (full.dual_c1.size() == 0) {
+        full = solve_for_certificate(sim, r, n, obj, o, solver, 0, false, true);
+      }
+      if (!out.verified && full.solve.status == SolveStatus::kPrimalInfeasible && full.dual_c1.size() > 0) {
+        const DualOutcome d = certify_dual(model, exp, sim, full.dual_c1, full.dual_c2, o, o.certificate_path);
+        out.invalidated = d.verified;
+        out.lower.seconds = d.seconds;
+        out.lower.verifier_details = d.verifier_details;
+        out.lower.certificate = d.certificate_path;
+        if (!d.verified) out.reason += "; no exact invalidation certificate: " + d.reason;
+      }
+    }
+  } else if (o.lower_end) {
+    // Lower end: the dual of this solve (lifted to the full horizon when K < L).
+    if (kyp) {
+      const DeltaFormSolution s2 = solve_for_certificate(sim, r, n, obj, o, solver, K, false, true);
+      out.solve_seconds += s2.solve.seconds;
+      lower_from(s2);
+    } else {
+      lower_from(sol);
+    }
+    const double gap = relative_gap(out);
+    if (K != 0 && L <= o.full_horizon_limit && !(gap <= o.gap_target)) {
+      const DeltaFormSolution full = solve_for_certificate(sim, r, n, obj, o, solver, 0, false, true);
+      CertifiedBounds better;
+      primal(full, better);
+      out.solve_seconds += full.solve.seconds;
+      if (better.verified && (!out.verified || better.upper < out.upper)) {
+        better.solve_seconds = out.solve_seconds;
+        better.lower = out.lower;
+        out = better;
+      }
+      out.full_horizon = true;
+      lower_from(full);
+    }
+  } else {
+    out.lower.reason = "not requested";
+  }
+  if (kyp && feasibility && !out.verified) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
+  out.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 

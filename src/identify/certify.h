@@ -43,6 +43,18 @@ struct CertifyOptions {
   std::vector<std::string> data_names;   ///< headerless files only
   long row_begin = 0, row_end = -1;      ///< the window of the data used
   std::string fixed_delta_text, fixed_dmax_text;  ///< exact text of a fixed bound (CLI), if any
+  /// Issue 8: also certify the lower end of the optimum (a dual certificate
+  /// of the full-horizon problem, written beside the certificate as
+  /// "<certificate stem>.lower.json"), and for fixed bounds, when no primal
+  /// certificate exists, try to certify "invalidated" (written at
+  /// certificate_path). Signal mode only.
+  bool lower_end = true;
+  /// If the certified interval's relative gap is above this after the
+  /// K-tap solve and the horizon is at most full_horizon_limit, the
+  /// full-horizon program is solved too (its primal may lower the upper end,
+  /// its dual raises the lower end). A restricted solve never decides a verdict.
+  double gap_target = 0.01;
+  long full_horizon_limit = 400;
 };
 
 struct CertifiedBounds {
@@ -56,7 +68,27 @@ struct CertifiedBounds {
   std::string solver_status;
   double solve_seconds = 0, verify_seconds = 0;
   std::string verifier_details;
+
+  /// Fixed bounds only: an "invalidated" certificate was written at the
+  /// certificate path and checked exactly (then verified is false).
+  bool invalidated = false;
+  /// The certified interval [lower, upper] of the objective (δ², d_max², or
+  /// λδ² + (1−λ)d_max²; upper from the primal certificate, lower from the dual one).
+  struct LowerEnd {
+    bool verified = false;
+    std::string reason;       ///< why there is no certified lower end
+    Rational value;           ///< the certified lower end on the objective
+    std::string certificate;  ///< its certificate file
+    double seconds = 0;
+    std::string verifier_details;
+  } lower;
+  Rational upper;             ///< the objective at the primal certificate (when verified)
+  bool full_horizon = false;  ///< the certificates come from a full-horizon solve (K = L)
+  double total_seconds = 0;
 };
+
+/// Relative gap (upper − lower)/upper of a certified interval (0 when upper = 0).
+double relative_gap(const CertifiedBounds& b);
 
 /// Runs steps 1–6 for a fixed model. Never throws for solver failure (that
 /// is verified = false with the reason); throws InputError for bad input.
@@ -78,6 +110,12 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
 /// records this can fail where the Δ form would pass (issue 3, item 5).
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                           const CertifyOptions& options, SdpSolver& solver);
+
+struct Certificate;
+/// Fills the certificate's data reference (file relative to the certificate's
+/// folder, sha256 of its bytes, names, rows) from the options; returns the
+/// certificate's folder.
+std::string set_data_reference(Certificate& c, const CertifyOptions& o, const std::string& certificate_path);
 
 /// x rounded to `digits` significant decimal digits, as an exact rational.
 Rational round_to_digits(double x, int digits);

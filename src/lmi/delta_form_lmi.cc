@@ -128,6 +128,16 @@ DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, c
   out.horizon = f.L;
   read_delta_solution(out.solve, {f.K, f.ny, f.nz, f.tap0, f.t, f.s, f.sigma_z, f.sigma_r}, objective, out.taps,
                       out.delta2, out.dmax2);
+  if (options.want_dual && out.solve.dual_blocks.size() == 2) {
+    const double kz = f.sigma_z / f.sigma_r;
+    const Eigen::Index off = f.L * f.ny;
+    out.dual_c1 = out.solve.dual_blocks[0];
+    out.dual_c1.topRows(off) *= kz;
+    out.dual_c1.leftCols(off) *= kz;
+    out.dual_c2 = out.solve.dual_blocks[1];
+    out.dual_c2.row(0) /= f.sigma_r;
+    out.dual_c2.col(0) /= f.sigma_r;
+  }
   return out;
 }
 

@@ -38,6 +38,13 @@ struct DeltaFormSolution {
   Eigen::Index horizon = 0;    ///< L
   double delta2 = 0.0;         ///< t (original units); the fixed value if δ was fixed
   double dmax2 = 0.0;          ///< s (original units); the fixed value if d_max was fixed
+  /// With SolverOptions::want_dual: the dual matrices of (C1') and (C2) in
+  /// ORIGINAL units (the solver's, mapped back by the congruences that scaled
+  /// the program: Y1 = D Y1' D, D = diag(σ_z/σ_r·I, I); Y2 = E Y2' E,
+  /// E = diag(1/σ_r, I)), for toeplitz/delta_form_dual.h. Empty otherwise.
+  /// For a primal-infeasible solve they are the backend's infeasibility
+  /// certificate (any positive scale).
+  Mat<double> dual_c1, dual_c2;
 };
 
 /// Builds and solves the Δ-form program. z is n × nz, r is n × ny (doubles).

@@ -88,7 +88,7 @@ TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
   auto solver = make_solver("csdp");
   const WindowBounds w = certify_window(truth, est_d, est_q, 0, 120, 0, co, *solver);
   ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
-  EXPECT_TRUE(check_certificate_file(co.certificate_path).consistent);
+  EXPECT_TRUE(check_certificate_file(co.certificate_path).holds);
   // the noise is the only misfit: dmax near the noise std
   EXPECT_LT(w.bounds.dmax, 0.03);
 
@@ -104,7 +104,7 @@ TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
   const std::string tampered = dir.file("tampered.json");
   std::ofstream(tampered) << text;
   const CertificateVerdict v = check_certificate_file(tampered);
-  EXPECT_FALSE(v.consistent);
+  EXPECT_FALSE(v.holds);
 }
 
 }  // namespace

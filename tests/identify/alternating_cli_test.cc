@@ -38,7 +38,7 @@ TEST(AlternatingCli, Example1IsIdentifiedAndCertified) {
   EXPECT_EQ(report.at("method"), "alternating");
   EXPECT_LE(report.at("delta").get<double>(), 1e-4);
   EXPECT_LE(report.at("dmax").get<double>(), 1e-4);
-  EXPECT_TRUE(check_certificate_file(dir.file("c.json")).consistent);
+  EXPECT_TRUE(check_certificate_file(dir.file("c.json")).holds);
 
   EXPECT_EQ(run_lpvid(common + " --iterate"), 2);              // --iterate belongs to the relaxation
   EXPECT_EQ(run_lpvid(common + " --method newton"), 2);        // unknown method

@@ -81,7 +81,7 @@ RC_GTEST_PROP(CertificateProperty, DeltaFormPerturbationsBeyondTheMarginAreRejec
   RC_LOG() << "certify: " << b.verified << " " << b.reason << " delta2 " << nearest_double(b.delta2) << " dmax2 "
            << nearest_double(b.dmax2) << " margin " << b.margin << "\n";
   RC_ASSERT(b.verified);
-  RC_ASSERT(check_certificate_file(dir.file("c.json")).consistent);
+  RC_ASSERT(check_certificate_file(dir.file("c.json")).holds);
   const Certificate cert = read_certificate(dir.file("c.json"));
   RC_ASSERT(cert.delta2 == b.delta2);
   RC_ASSERT(cert.dmax2 == b.dmax2);
@@ -90,18 +90,18 @@ RC_GTEST_PROP(CertificateProperty, DeltaFormPerturbationsBeyondTheMarginAreRejec
   RC_ASSERT(cert.form == CertificateForm::kDelta);
 
   {  // controls
-    RC_ASSERT(check_variant(dir, "same", cert, ic.model, ic.exp).consistent);
+    RC_ASSERT(check_variant(dir, "same", cert, ic.model, ic.exp).holds);
     Certificate c2 = cert;
     c2.delta2 *= 2;
     c2.dmax2 *= 2;
-    RC_ASSERT(check_variant(dir, "looser", c2, ic.model, ic.exp).consistent);
+    RC_ASSERT(check_variant(dir, "looser", c2, ic.model, ic.exp).holds);
   }
   {  // (a)
     Certificate c2 = cert;
     c2.delta2 *= Rational(1) - exact_rational_of_double(10 * b.margin + 1e-8);
     const CertificateVerdict v = check_variant(dir, "a", c2, ic.model, ic.exp);
     RC_LOG() << "(a) " << v.reason << "\n";
-    RC_ASSERT(!v.consistent);
+    RC_ASSERT(!v.holds);
     RC_ASSERT(mentions(v.reason, "(C1) fails"));
   }
   {  // (b)
@@ -109,7 +109,7 @@ RC_GTEST_PROP(CertificateProperty, DeltaFormPerturbationsBeyondTheMarginAreRejec
     c2.dmax2 *= Rational(1) - Rational(1) / Rational(1000000);
     const CertificateVerdict v = check_variant(dir, "b", c2, ic.model, ic.exp);
     RC_LOG() << "(b) " << v.reason << "\n";
-    RC_ASSERT(!v.consistent);
+    RC_ASSERT(!v.holds);
     RC_ASSERT(mentions(v.reason, "(C2) fails"));
   }
   const int k = *uniform_int(0, static_cast<int>(ic.exp.n()) - 1);
@@ -119,7 +119,7 @@ RC_GTEST_PROP(CertificateProperty, DeltaFormPerturbationsBeyondTheMarginAreRejec
     e2.y(k, i) += Rational(1) / Rational(1000000000000LL);
     const CertificateVerdict v = check_variant(dir, "c", cert, ic.model, e2);
     RC_LOG() << "(c) " << v.reason << "\n";
-    RC_ASSERT(!v.consistent);
+    RC_ASSERT(!v.holds);
     RC_ASSERT(mentions(v.reason, "sha256"));
   }
   {  // (c')
@@ -127,7 +127,7 @@ RC_GTEST_PROP(CertificateProperty, DeltaFormPerturbationsBeyondTheMarginAreRejec
     e2.y(k, i) += Rational(1000) * (Rational(1) + decimal_round(max_abs(ic.exp.y), 3));
     const CertificateVerdict v = check_variant(dir, "c2", cert, ic.model, e2, /*rehash=*/true);
     RC_LOG() << "(c') " << v.reason << "\n";
-    RC_ASSERT(!v.consistent);
+    RC_ASSERT(!v.holds);
     RC_ASSERT(mentions(v.reason, "(C2) fails"));
   }
   {  // (d)
@@ -136,7 +136,7 @@ RC_GTEST_PROP(CertificateProperty, DeltaFormPerturbationsBeyondTheMarginAreRejec
     c2.taps(l, 0) += Rational(1000) * decimal_round(max_abs(cert.taps), 3) + Rational(1);
     const CertificateVerdict v = check_variant(dir, "d", c2, ic.model, ic.exp);
     RC_LOG() << "(d) tap " << l << ": " << v.reason << "\n";
-    RC_ASSERT(!v.consistent);
+    RC_ASSERT(!v.holds);
     RC_ASSERT(mentions(v.reason, "(C2) fails") || mentions(v.reason, "(C1) fails"));
   }
 }
@@ -245,7 +245,7 @@ RC_GTEST_PROP(CertificateProperty, WFormPerturbationsAreRejected, ()) {
   RC_ASSERT(cert.form == CertificateForm::kW);
   RC_ASSERT(cert.mode == ToeplitzMode::kPaper);
   RC_ASSERT(cert.delta2 > 0);
-  RC_ASSERT(check_variant(dir, "same", cert, ic.model, ic.exp).consistent);
+  RC_ASSERT(check_variant(dir, "same", cert, ic.model, ic.exp).holds);
   {  // (e) one w entry changed by a lot (where w may be non-zero: before the trailing zero columns)
     Certificate c2 = cert;
     const int k = *uniform_int(0, static_cast<int>(ic.exp.n() - ptz.m) - 1);
@@ -253,7 +253,7 @@ RC_GTEST_PROP(CertificateProperty, WFormPerturbationsAreRejected, ()) {
     c2.w(k, i) += Rational(1000) * (Rational(1) + decimal_round(max_abs(cert.w), 3));
     const CertificateVerdict v = check_variant(dir, "e", c2, ic.model, ic.exp);
     RC_LOG() << "(e) w(" << k << "," << i << "): " << v.reason << "\n";
-    RC_ASSERT(!v.consistent);
+    RC_ASSERT(!v.holds);
     RC_ASSERT(mentions(v.reason, "(C2) fails") || mentions(v.reason, "(C1) fails"));
   }
   {  // (e') δ² below the exact lower bound q of the minimal δ² for this w
@@ -266,7 +266,7 @@ RC_GTEST_PROP(CertificateProperty, WFormPerturbationsAreRejected, ()) {
     c2.delta2 = q * (Rational(1) - Rational(1) / Rational(1000000000000LL));
     const CertificateVerdict v = check_variant(dir, "e2", c2, ic.model, ic.exp);
     RC_LOG() << "(e') " << v.reason << "\n";
-    RC_ASSERT(!v.consistent);
+    RC_ASSERT(!v.holds);
     RC_ASSERT(mentions(v.reason, "(C1) fails"));
   }
 }

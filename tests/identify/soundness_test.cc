@@ -75,7 +75,7 @@ RC_GTEST_PROP(InvalidationSoundness, GeneratingDeltaIsAcceptedExactly, ()) {
   write_experiment_csv(data, c.model, c.exp);
   const CertificateVerdict v = check_certificate(truth_certificate(c, data), dir.path().string());
   RC_LOG() << "delta = " << c.delta << ", dmax = " << c.dmax << ", n = " << c.exp.n() << ", reason: " << v.reason << "\n";
-  RC_ASSERT(v.consistent);
+  RC_ASSERT(v.holds);
 }
 
 // The model that generated the data is never invalidated at slightly larger
@@ -105,7 +105,7 @@ RC_GTEST_PROP(InvalidationSoundness, TrueModelIsNeverInvalidated, ()) {
            << " vs generating " << c.delta << ", margin " << bd.margin << "\n";
   RC_ASSERT(bd.verified);
   RC_ASSERT(bd.delta <= c.delta * (1 + 1e-3));
-  RC_ASSERT(check_certificate_file(dir.file("d.json")).consistent);
+  RC_ASSERT(check_certificate_file(dir.file("d.json")).holds);
 
   // Minimal d_max at δ' = 1.01·δ.
   const CertifiedBounds bn =
@@ -114,7 +114,7 @@ RC_GTEST_PROP(InvalidationSoundness, TrueModelIsNeverInvalidated, ()) {
            << " vs 0.9 * generating " << 0.9 * c.dmax << "\n";
   RC_ASSERT(bn.verified);
   RC_ASSERT(bn.dmax <= 0.9 * c.dmax * (1 + 1e-3));
-  RC_ASSERT(check_certificate_file(dir.file("n.json")).consistent);
+  RC_ASSERT(check_certificate_file(dir.file("n.json")).holds);
 }
 
 // Same with Δ = 0: data = model output + noise is consistent with δ = 0
@@ -129,7 +129,7 @@ RC_GTEST_PROP(InvalidationSoundness, NoiseOnlyDataIsConsistentWithZeroDelta, ())
   write_experiment_csv(data, c.model, c.exp);
   const CertificateVerdict v = check_certificate(truth_certificate(c, data), dir.path().string());
   RC_LOG() << "truth: " << v.reason << "\n";
-  RC_ASSERT(v.consistent);
+  RC_ASSERT(v.holds);
 
   auto solver = make_solver("csdp");
   const CertifiedBounds b = certify_fixed_model(

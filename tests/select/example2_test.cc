@@ -114,7 +114,7 @@ TEST(Example2, IdentifiesTheOffsetAndCertifies) {
   co.data_path = csv;
   const CertifiedBounds b = certify_fixed_model(fixed, xq, co, *solver);
   ASSERT_TRUE(b.verified) << b.reason;
-  EXPECT_TRUE(check_certificate_file(co.certificate_path).consistent);
+  EXPECT_TRUE(check_certificate_file(co.certificate_path).holds);
   EXPECT_LT(b.dmax, 1e-6);  // noise-free: the offset explains the output exactly
   EXPECT_LT(b.delta, 1e-3);
 }

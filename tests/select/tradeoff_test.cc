@@ -82,7 +82,7 @@ TEST(Tradeoff, Example1CurveIsMonotoneAndCertified) {
     std::cout << "  lambda " << p.lambda << "  delta " << p.bounds.delta << "  dmax " << p.bounds.dmax
               << "  (relaxation " << p.delta_solver << ", " << p.dmax_solver << ")\n";
     ASSERT_TRUE(p.bounds.verified) << p.bounds.reason;
-    EXPECT_TRUE(check_certificate_file(p.certificate).consistent);
+    EXPECT_TRUE(check_certificate_file(p.certificate).holds);
   }
   EXPECT_EQ(tradeoff_monotonicity_violation(pts, 1e-3, 1e-6), "");
   // The curve really trades: the ends differ by far more than the slack.

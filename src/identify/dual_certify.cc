@@ -1,0 +1,224 @@
+#include "identify/dual_certify.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/number_text.h"
+#include "toeplitz/delta_form_dual.h"
+#include "toeplitz/fir.h"
+#include "verify/certificate_check.h"
+#include "verify/certificate_file.h"
+#include "verify/psd_filter.h"
+
+namespace lpvid {
+namespace {
+
+/// x on the decimal grid of `unit` (an exact power of ten), as a rational.
+Rational on_grid(double x, double unit_d, const Rational& unit) {
+  const double k = std::nearbyint(x / unit_d);
+  if (!std::isfinite(k) || std::fabs(k) > 9e15) throw std::invalid_argument("dual certificate: entry off the grid");
+  return Rational(static_cast<long>(k)) * unit;
+}
+
+Rational pow10_rational(int e) {
+  Rational r(1);
+  for (int i = 0; i < std::abs(e); ++i) r *= 10;
+  return e >= 0 ? r : Rational(1) / r;
+}
+
+DualClaim claim_of(const BoundObjective& obj) {
+  switch (obj.kind) {
+    case BoundObjective::Kind::kFeasibility:
+      return DualClaim::kInvalidated;
+    case BoundObjective::Kind::kMinDelta:
+      return DualClaim::kMinDelta2;
+    case BoundObjective::Kind::kMinDmax:
+      return DualClaim::kMinDmax2;
+    case BoundObjective::Kind::kWeighted:
+      break;
+  }
+  return DualClaim::kWeighted;
+}
+
+/// The σ that maximises the (double) bound for fixed tr U, tr V, ‖g‖², gᵀr:
+/// a scan over 10^(k/8) around the natural scale, then the best kept.
+double best_sigma(double trU, double trV, double gg, double gr, double N, DualClaim claim, double t, double s,
+                  double lambda, double sigma0) {
+  double best = sigma0, best_value = -INFINITY;
+  const double centre = sigma0 > 0 && std::isfinite(sigma0) ? sigma0 : 1.0;
+  for (int k = -160; k <= 160; ++k) {
+    const double sigma = centre * std::pow(10.0, k / 8.0);
+    DualTerms<double> d;
+    d.trace_U = trU;
+    d.N_sigma = N * sigma;
+    d.beta = -(trV + gg / sigma + 2 * gr);
+    const double v = dual_bound(d, claim, t, s, lambda);
+    if (v > best_value) {
+      best_value = v;
+      best = sigma;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+Rational round_down_to_digits(const Rational& q, int digits) {
+  if (q <= 0) return q < 0 ? -round_up_to_digits(-q, digits) : Rational(0);
+  int e = static_cast<int>(std::floor(std::log10(nearest_double(q))));
+  while (pow10_rational(e) > q) --e;
+  while (pow10_rational(e + 1) <= q) ++e;
+  const Rational unit = pow10_rational(e - digits + 1);
+  const Rational s = q / unit;
+  mpz_t f;
+  mpz_init(f);
+  mpz_fdiv_q(f, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_z(r, f);
+  Rational out = Rational(r) * unit;
+  mpq_clear(r);
+  mpz_clear(f);
+  return out;
+}
+
+DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                         const Simulation<Rational>& sim, const Mat<double>& Y1_in, const Mat<double>& Y2_in,
+                         const CertifyOptions& o, const std::string& path) {
+  const auto t0 = std::chrono::steady_clock::now();
+  DualOutcome out;
+  const auto done = [&](std::string reason) {
+    out.reason = std::move(reason);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+  const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
+  const Eigen::Index L = n - leading_zero_samples(sim.z);
+  const Eigen::Index P = L * (ny + nz), N = n * ny;
+  if (L == 0 || nz == 0) return done("z is identically zero: no Delta form");
+  if (Y1_in.rows() != P || Y1_in.cols() != P || Y2_in.rows() != N + 1 || Y2_in.cols() != N + 1)
+    return done("the solver returned no dual matrices of the expected sizes");
+  if (!Y1_in.allFinite() || !Y2_in.allFinite()) return done("the solver's dual matrices are not finite");
+  const Mat<Rational> r = exp.y - sim.output;
+  const DualClaim claim = claim_of(o.objective);
+
+  // Fixed values (exact, from the CLI text when given).
+  const auto exact_of = [](const std::string& text, double value) {
+    return rational_from_text(text.empty() ? double_to_text(value) : text);
+  };
+  Rational delta2(0), dmax2(0), lambda(0);
+  if (o.objective.delta_fixed()) delta2 = exact_of(o.fixed_delta_text, o.objective.delta) * exact_of(o.fixed_delta_text, o.objective.delta);
+  if (o.objective.dmax_fixed()) dmax2 = exact_of(o.fixed_dmax_text, o.objective.dmax) * exact_of(o.fixed_dmax_text, o.objective.dmax);
+  if (claim == DualClaim::kWeighted) lambda = rational_from_text(double_to_text(o.objective.lambda));
+
+  // 2. Normalise (the dual is homogeneous) and round to a decimal grid.
+  const double scale = std::max(Y1_in.cwiseAbs().maxCoeff(), Y2_in.col(0).cwiseAbs().maxCoeff());
+  if (!(scale > 0)) return done("the solver's dual matrices are zero");
+  const Mat<double> Y1d = Y1_in / scale;
+  const int digits = 14;
+  const int e = -digits;  // entries are ≤ 1 in magnitude
+  const double unit_d = std::pow(10.0, e);
+  const Rational unit = pow10_rational(e);
+  Mat<Rational> g(n, ny);
+  Mat<double> g_d(n, ny);
+  for (Eigen::Index k = 0; k < n; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i) {
+      g(k, i) = on_grid(Y2_in(1 + k * ny + i, 0) / scale, unit_d, unit);
+      g_d(k, i) = nearest_double(g(k, i));
+    }
+  Mat<Rational> Y1(P, P);
+  for (Eigen::Index i = 0; i < P; ++i)
+    for (Eigen::Index j = i; j < P; ++j) {
+      Y1(i, j) = on_grid(0.5 * (Y1d(i, j) + Y1d(j, i)), unit_d, unit);
+      Y1(j, i) = Y1(i, j);
+    }
+
+  // 3. Project onto Ω_l(W) = C_l(g), exactly.
+  const Mat<Rational> target = fir_adjoint(g, sim.z, L);
+  const Mat<Rational> have = block_diagonal_sums(Y1, L, ny, nz);
+  const Eigen::Index off = L * ny;
+  for (Eigen::Index l = 0; l < L; ++l)
+    for (Eigen::Index i = 0; i < ny; ++i)
+      for (Eigen::Index j = 0; j < nz; ++j) {
+        const Rational E = target(l, i * nz + j) - have(l, i * nz + j);
+        if (E == 0) continue;
+        const Rational share = E / Rational(static_cast<long>(L - l));
+        for (Eigen::Index b = 0; b + l < L; ++b) {
+          Y1((b + l) * ny + i, off + b * nz + j) += share;
+          Y1(off + b * nz + j, (b + l) * ny + i) = Y1((b + l) * ny + i, off + b * nz + j);
+        }
+      }
+
+  // 4. PSD margin: ε·I with ε from the floating λ_min, grown until the
+  // rigorous filter proves Y1 + εI ≻ 0.
+  const Mat<double> Y1f = nearest_double(Y1);
+  Eigen::SelfAdjointEigenSolver<Mat<double>> es(Y1f, Eigen::EigenvaluesOnly);
+  const double lmin = es.eigenvalues().minCoeff();
+  const double trace = Y1f.trace();
+  double eps = std::max(0.0, -lmin) * 1.5 + 8.0 * static_cast<double>(P + 2) * 0x1.0p-53 * std::max(trace, 1e-300) + 1e-300;
+  Mat<Rational> Y1m;
+  bool pd = false;
+  Rational eps_q;
+  for (int attempt = 0; attempt < 6 && !pd; ++attempt, eps *= 10) {
+    eps_q = round_up_to_digits(exact_rational_of_double(eps), 2);
+    Y1m = Y1;
+    for (Eigen::Index i = 0; i < P; ++i) Y1m(i, i) += eps_q;
+    pd = run_psd_filter(Y1m).proved_pd;
+  }
+  if (!pd) return done("the rounded dual matrix Y1 is not positive definite even with a margin of " + double_to_text(eps / 10));
+
+  // 5. σ.
+  double trU = 0, trV = 0, gg = 0, gr = 0;
+  for (Eigen::Index i = 0; i < P; ++i) (i < off ? trU : trV) += nearest_double(Y1m(i, i));
+  const Mat<double> r_d = nearest_double(r);
+  for (Eigen::Index k = 0; k < n; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i) {
+      gg += g_d(k, i) * g_d(k, i);
+      gr += g_d(k, i) * r_d(k, i);
+    }
+  const double sigma0 = Y2_in(0, 0) / scale;
+  const double sigma_d = best_sigma(trU, trV, gg, gr, static_cast<double>(N), claim, nearest_double(delta2),
+                                    nearest_double(dmax2), nearest_double(lambda), sigma0 > 0 ? sigma0 : std::sqrt(gg + 1e-300));
+  const Rational sigma = round_to_digits(sigma_d, 6);
+  if (!(sigma > 0)) return done("no positive sigma");
+
+  // 6. The bound, exactly; the certificate; the check from the file.
+  const DualTerms<Rational> terms = dual_terms(Y1m, g, sigma, r, L);
+  const Rational bound = dual_bound(terms, claim, delta2, dmax2, lambda);
+  if (claim == DualClaim::kInvalidated && !(bound > 0))
+    return done("after rounding and the PSD margin (" + double_to_text(nearest_double(eps_q)) +
+                ") the dual point no longer proves infeasibility (margin " + double_to_text(nearest_double(bound)) + ")");
+  Certificate c;
+  c.model = model;
+  c.mode = ToeplitzMode::kSignal;
+  c.form = CertificateForm::kDualDelta;
+  c.claim = claim == DualClaim::kInvalidated ? CertificateClaim::kInvalidated : CertificateClaim::kLowerBound;
+  c.objective = claim;
+  c.delta2 = delta2;
+  c.dmax2 = dmax2;
+  c.lambda = lambda;
+  c.lower_bound = claim == DualClaim::kInvalidated ? Rational(0) : round_down_to_digits(bound, 12);
+  c.dual.horizon = L;
+  c.dual.Y1 = std::move(Y1m);
+  c.dual.g = std::move(g);
+  c.dual.sigma = sigma;
+  set_data_reference(c, o, path);
+  c.info["tool"] = "lpvid";
+  c.info["objective"] = o.objective.describe();
+  c.info["psd_margin"] = nearest_double(eps_q);
+  c.info["dual_scale"] = scale;
+  write_certificate(path, c);
+  const CertificateVerdict v = check_certificate_file(path);
+  out.verified = v.holds;
+  out.verifier_details = v.details;
+  out.bound = claim == DualClaim::kInvalidated ? bound : c.lower_bound;
+  if (!v.holds) {
+    std::remove(path.c_str());
+    return done("the written dual certificate failed the exact check: " + v.reason);
+  }
+  out.certificate_path = path;
+  return done("");
+}
+
+}  // namespace lpvid

@@ -1,0 +1,54 @@
+#pragma once
+/// From a solver's dual matrices to an exactly checked dual certificate
+/// (issue 8; the mathematics in toeplitz/delta_form_dual.h and
+/// docs/dual_certificates.md), in the spirit of Peyrl & Parrilo (2008):
+///  1. take Y1, Y2 of the Δ-form solve in original units (any positive
+///     scale; a restricted K-tap solve gives a Y1 of the full size too);
+///  2. normalise the scale, round g and Y1 to a decimal grid (`digits`
+///     significant digits of the largest entry);
+///  3. project onto the dual equality Ω_l(W) = C_l(g) exactly: the residual
+///     E_l is spread evenly over the L − l blocks of the l-th block
+///     subdiagonal of W (the least-squares correction). For a restricted
+///     solve the taps l ≥ K had no equality at all: the same projection
+///     lifts the point to the full horizon;
+///  4. add ε·I to Y1, ε growing ×10 from the floating estimate of
+///     max(0, −λ_min) plus the rigorous filter's shift until the filter of
+///     verify/psd_filter.h proves Y1 ≻ 0;
+///  5. choose σ (Y2 = (1/σ)[σ; g][σ; g]ᵀ) to maximise the bound;
+///  6. compute the bound exactly; write the certificate and check it again
+///     from the file with the verifier.
+
+#include <string>
+
+#include "core/scalar.h"
+#include "data/experiment.h"
+#include "identify/certify.h"
+#include "model/lpv_model.h"
+#include "model/simulate.h"
+
+namespace lpvid {
+
+/// A dual certificate's outcome.
+struct DualOutcome {
+  bool verified = false;         ///< the written certificate was checked exactly and holds
+  std::string reason;            ///< why not
+  Rational bound;                ///< the claimed number: invalidation margin (> 0) or the lower end on the objective
+  double seconds = 0;            ///< building + checking
+  std::string verifier_details;
+  std::string certificate_path;  ///< written only when verified
+};
+
+/// Steps 2–6 for the dual matrices Y1 (L·(ny+nz) square) and Y2 ((n·ny+1)
+/// square) in original units. `objective` says which claim: kFeasibility →
+/// "invalidated" (the fixed δ, d_max are the exact texts of `o`), the others
+/// → "lower_bound" on the objective (δ², d_max² or λδ² + (1−λ)d_max²).
+/// `path` is where the certificate goes. Never throws for a failed
+/// construction (verified = false with the reason).
+DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                         const Simulation<Rational>& sim, const Mat<double>& Y1, const Mat<double>& Y2,
+                         const CertifyOptions& o, const std::string& path);
+
+/// The largest decimal with `digits` significant digits that is ≤ q (q ≥ 0).
+Rational round_down_to_digits(const Rational& q, int digits);
+
+}  // namespace lpvid

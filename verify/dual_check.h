@@ -1,0 +1,26 @@
+#pragma once
+/// Exact check of a dual certificate (claims "invalidated" and "lower_bound";
+/// toeplitz/delta_form_dual.h, docs/dual_certificates.md). Called by
+/// check_certificate after it has rebuilt the data and z, r exactly
+/// (steps 1–3 of certificate_check.h); then:
+///  4. the horizon is L = n − m, m = the leading zero samples of the exact z
+///     (so the dual covers every tap that acts on the data);
+///  5. σ > 0; Y2 = (1/σ)[σ; g][σ; g]ᵀ is then PSD by construction;
+///  6. the dual equality Ω_l(W) = C_l(g) holds exactly for l = 0 … L−1;
+///  7. the bound is computed exactly (dual_bound) and must be > 0 for
+///     "invalidated", ≥ the claimed lower_bound for "lower_bound";
+///  8. Y1 ⪰ 0, decided exactly (verify/exact_psd.h: filter, then exact).
+/// No floating point decides anything; any failure is "invalid" with the
+/// constraint and the numbers.
+
+#include "core/scalar.h"
+#include "data/experiment.h"
+#include "model/simulate.h"
+#include "verify/certificate_check.h"
+
+namespace lpvid {
+
+CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Rational>& exp, const Simulation<Rational>& sim,
+                                    std::string details);
+
+}  // namespace lpvid
