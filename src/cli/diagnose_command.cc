@@ -149,6 +149,9 @@ int run_diagnose(DiagnoseArgs& a) {
   const RankingResult rank = rank_effects(declared, est_d, val_d, ro);
 
   CertifyOptions co = certify_options(a.common, in.objective);  // rows: set per window
+  // Many windows: the lower end comes from the K-tap solve's dual lifted to
+  // the full horizon, without the extra full-horizon solve (issue 8).
+  co.full_horizon_limit = 0;
   const std::string cert_stem = [&] {
     std::string c = certificate_path(a.common);
     const size_t dot = c.rfind(".json");

@@ -1,5 +1,6 @@
 // lpvid identify: Theorem 3.1 (SPEC §5) + certificate (SPEC §7).
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -92,11 +93,16 @@ int run_identify(IdentifyArgs& a) {
     report["message"] = res.message;
     write_json(a.common.report_path, report);
     const bool infeasible = res.status == SolveStatus::kPrimalInfeasible;
-    if (infeasible && opt.method == IdentifyMethod::kAlternating)
-      std::cout << "  -> not shown consistent at the given bounds by the alternating (local) method\n";
-    else if (infeasible)
-      std::cout << "  -> the model class is invalidated at the given bounds (not exactly certified)\n";
-    return infeasible ? kExitInvalidated : kExitSolver;
+    // The relaxation (and the alternating method) are restrictions of the
+    // BMI: their infeasibility says nothing about the model class (issue 8).
+    if (infeasible) {
+      report["status"] = "undecided";
+      write_json(a.common.report_path, report);
+      std::cout << "  -> UNDECIDED: the " << (opt.method == IdentifyMethod::kAlternating ? "alternating (local) method" : "relaxation")
+                << " found no consistent model at the given bounds; its infeasibility is not an invalidation of the model class\n";
+      return kExitUndecided;
+    }
+    return kExitSolver;
   }
 
   // Round θ to short rationals, fold it in, and certify the fixed model.
@@ -116,7 +122,19 @@ int run_identify(IdentifyArgs& a) {
     b = certify_with_taps(fixed, in.exp_q, res.taps, co, solver->name());
     if (!b.verified) std::cout << "\n  the iterate's own Delta did not certify (" << b.reason << "); solving again\n";
   }
-  if (!b.verified) b = certify_fixed_model(fixed, in.exp_q, co, *solver);
+  if (!b.verified) {
+    b = certify_fixed_model(fixed, in.exp_q, co, *solver);
+  } else if (in.objective.kind != BoundObjective::Kind::kFeasibility) {
+    // The lower end of the interval needs a dual point of the full-horizon
+    // problem for the same fixed model (issue 8).
+    CertifyOptions lo = co;
+    const std::filesystem::path cp(co.certificate_path);
+    lo.certificate_path = (cp.parent_path() / (cp.stem().string() + ".dual_solve.json")).string();
+    const CertifiedBounds d = certify_fixed_model(fixed, in.exp_q, lo, *solver);
+    b.lower = d.lower;
+    std::error_code ec;
+    std::filesystem::remove(lo.certificate_path, ec);
+  }
 
   std::cout << "\nCertified bounds of the identified model (Theorem 2.1, Delta form, exact check)\n"
             << bounds_text(b, co.certificate_path);
@@ -132,6 +150,7 @@ int run_identify(IdentifyArgs& a) {
   report["iterates"] = its;
   report["theta"] = theta_json(in.model_d, res.layout, p_rounded);
   report["samples"] = in.exp_q.n();
+  if (in.objective.kind != BoundObjective::Kind::kFeasibility) report["interval"] = interval_json(b, in.objective);
   write_json(a.common.report_path, report);
   return b.verified ? kExitOk : kExitNotVerified;
 }

@@ -397,6 +397,16 @@ Attempt run_sdp_watched(const CsdpProblem& prob, std::vector<sparseblock*>& bybl
   }
   WatchdogOptions wo;
   wo.echo = printlevel > 0;
+  // Patience floor from the size: one iteration costs about m²·Σn_b (Schur
+  // matrix) + Σn_b³ (factorisations) flops; at a pessimistic 1e9 flop/s,
+  // allow 10 iterations' worth of silence.
+  double m = static_cast<double>(p.num_vars), sum_n = 0, sum_n3 = 0;
+  for (const LmiBlock& b : p.blocks) {
+    const double nb = static_cast<double>(b.size);
+    sum_n += nb;
+    if (!b.diagonal) sum_n3 += nb * nb * nb;
+  }
+  wo.min_stall_seconds = std::max(wo.min_stall_seconds, 10.0 * 1e-9 * (m * m * sum_n + sum_n3 + m * m * m));
   const WatchdogOutcome w = run_in_watched_child(
       [&](std::FILE* r) { write_attempt(r, run_sdp(prob, byblocks, params, std::max(printlevel, 1), p, want_dual)); },
       f, wo);

@@ -40,12 +40,14 @@ WatchdogOutcome run_in_watched_child(const std::function<void(std::FILE* result)
   }
   close(fds[1]);
   using clock = std::chrono::steady_clock;
-  auto last = clock::now();
+  const auto started = clock::now();
+  auto last = started;
   bool heard = false;
-  double longest = 0.0;
+  double longest = 0.0;      // longest silence between two outputs so far
+  double first_delay = 0.0;  // setup + first iteration: the scale of one healthy step
   char buf[4096];
   for (;;) {
-    const double limit = std::max(options.min_stall_seconds, options.stall_factor * longest);
+    const double limit = std::max(options.min_stall_seconds, options.stall_factor * std::max(longest, first_delay));
     const double waited = std::chrono::duration<double>(clock::now() - last).count();
     const int timeout_ms = heard ? static_cast<int>(std::max(1.0, (limit - waited) * 1000.0)) : -1;
     pollfd pfd{fds[0], POLLIN, 0};
@@ -64,6 +66,7 @@ WatchdogOutcome run_in_watched_child(const std::function<void(std::FILE* result)
     if (got <= 0) break;  // EOF: the child closed stdout (exited)
     if (options.echo) std::fwrite(buf, 1, static_cast<size_t>(got), stdout);
     if (heard) longest = std::max(longest, silent);
+    else first_delay = std::chrono::duration<double>(clock::now() - started).count();
     heard = true;
     last = clock::now();
   }

@@ -10,8 +10,12 @@
 /// every output byte counts as progress (CSDP prints one line per iteration
 /// when printlevel ≥ 1). Before the first output there is no limit (setup
 /// time grows with the problem); after it, the child is killed when it is
-/// silent for longer than max(min_stall_seconds, stall_factor × the longest
-/// silence seen so far). The child writes its result to `result` (an
+/// silent for longer than max(min_stall_seconds, stall_factor × max(the
+/// longest silence seen so far, the delay until the first output)). The
+/// first delay (setup and the first iteration) scales the patience with the
+/// problem, so one slow healthy iteration is not taken for a hang (issue 8:
+/// SISO n = 400 full horizon, > 1 s per iteration, was killed after 2 s);
+/// callers also raise min_stall_seconds with the problem size. The child writes its result to `result` (an
 /// unlinked temporary file shared with the parent) and exits with _exit.
 
 #include <cstdio>

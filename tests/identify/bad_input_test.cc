@@ -15,6 +15,7 @@
 #include "lmi/delta_form_lmi.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"
+#include "verify/certificate_check.h"
 
 namespace lpvid {
 namespace {
@@ -115,7 +116,12 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
   RC_ASSERT(b.dmax2 == Rational(0));
   RC_ASSERT(b.delta == 0.0);
   RC_ASSERT(b.dmax == 0.0);
-  RC_ASSERT(!std::filesystem::exists(dir.file("c.json")));
+  // No consistency certificate: the only file allowed there is an exactly
+  // checked "invalidated" certificate (issue 8), which this case must get.
+  RC_ASSERT(b.invalidated);
+  const CertificateVerdict v = check_certificate_file(dir.file("c.json"));
+  RC_ASSERT(v.holds);
+  RC_ASSERT(v.claim_text == "invalidated");
 
   // Identification at the same bounds. With δ = 0, (C1) forces T_w = 0, so
   // d = r(θ) and no θ does better than the least-squares floor of r(θ) =
