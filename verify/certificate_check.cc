@@ -18,20 +18,10 @@
 #include "toeplitz/toeplitz_gram.h"
 #include "verify/dual_check.h"
 #include "verify/exact_psd.h"
+#include "verify/verdict_text.h"
 
 namespace lpvid {
 namespace {
-
-std::string approx(const Rational& q) {
-  std::ostringstream o;
-  o.precision(6);
-  o << nearest_double(q);
-  return o.str();
-}
-
-CertificateVerdict invalid(std::string reason, std::string details = "") {
-  return {false, std::move(reason), std::move(details), ""};
-}
 
 std::string psd_note(const PsdResult& r) {
   return std::string(verdict_word(r.verdict)) + " (" +
@@ -59,7 +49,7 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   const std::string bytes = read_text_file(data_path.string());
   const std::string hash = sha256_hex(bytes);
   if (hash != c.data_sha256)
-    return invalid("data file '" + data_path.string() + "' has changed: sha256 " + hash +
+    return invalid_verdict("data file '" + data_path.string() + "' has changed: sha256 " + hash +
                    " differs from the certificate's " + c.data_sha256);
 
   // 2. Exact data.
@@ -68,12 +58,12 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   Experiment<Rational> exp = make_experiment<Rational>(table, c.model.columns);
   if (c.row_end >= 0) {
     if (c.row_end > exp.n())
-      return invalid("data.rows ends at " + std::to_string(c.row_end) + " but the data has " + std::to_string(exp.n()) + " rows");
+      return invalid_verdict("data.rows ends at " + std::to_string(c.row_end) + " but the data has " + std::to_string(exp.n()) + " rows");
     exp = select_rows(exp, c.row_begin, c.row_end);
   }
   if (c.model.offset.values.empty() && !c.model.offset.basis.empty())
-    return invalid("the model still has an unknown offset (offset.values missing)");
-  if (c.delta2 < 0 || c.dmax2 < 0) return invalid("delta2 and dmax2 must be >= 0");
+    return invalid_verdict("the model still has an unknown offset (offset.values missing)");
+  if (c.delta2 < 0 || c.dmax2 < 0) return invalid_verdict("delta2 and dmax2 must be >= 0");
 
   // 3. Exact simulation.
   const Simulation<Rational> sim = simulate(c.model, exp);
@@ -85,18 +75,18 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   // 4. w.
   Mat<Rational> w;
   if (c.form == CertificateForm::kDelta) {
-    if (c.mode != ToeplitzMode::kSignal) return invalid("form \"delta\" is only valid with toeplitz_mode \"signal\"");
+    if (c.mode != ToeplitzMode::kSignal) return invalid_verdict("form \"delta\" is only valid with toeplitz_mode \"signal\"");
     const Eigen::Index L = c.horizon, K = c.taps.rows();
-    if (L > n) return invalid("delta_horizon " + std::to_string(L) + " exceeds the " + std::to_string(n) + " samples");
+    if (L > n) return invalid_verdict("delta_horizon " + std::to_string(L) + " exceeds the " + std::to_string(n) + " samples");
     for (Eigen::Index k = 0; k < n - L; ++k)
       for (Eigen::Index j = 0; j < nz; ++j)
         if (sim.z(k, j) != 0)
-          return invalid("z_" + std::to_string(k) + " is not zero but precedes the delta horizon of " + std::to_string(L) +
+          return invalid_verdict("z_" + std::to_string(k) + " is not zero but precedes the delta horizon of " + std::to_string(L) +
                          " samples (the horizon must cover every sample from the first non-zero z)");
     w = apply_fir(c.taps, sim.z, ny, L);
     details << ", form delta with " << K << " taps on a horizon of " << L << " samples";
   } else {
-    if (c.w.rows() != n) return invalid("w has " + std::to_string(c.w.rows()) + " rows for " + std::to_string(n) + " samples");
+    if (c.w.rows() != n) return invalid_verdict("w has " + std::to_string(c.w.rows()) + " rows for " + std::to_string(n) + " samples");
     w = c.w;
     details << ", form w";
   }
@@ -108,10 +98,10 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
     for (Eigen::Index i = 0; i < ny; ++i) dd += d(k, i) * d(k, i);
   const Rational bound = Rational(static_cast<long>(n * ny)) * c.dmax2;
   if (dd > bound)
-    return invalid("(C2) fails: ||d||^2 = " + approx(dd) + " > n*ny*dmax2 = " + approx(bound) +
+    return invalid_verdict("(C2) fails: ||d||^2 = " + approx_text(dd) + " > n*ny*dmax2 = " + approx_text(bound) +
                        " (exact comparison of rationals)",
                    details.str());
-  details << "; (C2) holds: ||d||^2 = " << approx(dd) << " <= n*ny*dmax2 = " << approx(bound);
+  details << "; (C2) holds: ||d||^2 = " << approx_text(dd) << " <= n*ny*dmax2 = " << approx_text(bound);
 
   // 6. (C1), exactly.
   Mat<Rational> M;
@@ -140,7 +130,7 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
             M(a * ny + i, L * ny + b * nz + j) = h;
             M(L * ny + b * nz + j, a * ny + i) = h;
           }
-    which = "[delta2*I, T_Delta; T_Delta', I] (balanced by diag(I/s, I), s = " + approx(s) + ")";
+    which = "[delta2*I, T_Delta; T_Delta', I] (balanced by diag(I/s, I), s = " + approx_text(s) + ")";
   } else {
     const Mat<Rational> G = c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)
                                                              : Mat<Rational>([&] {
@@ -157,7 +147,7 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   }
   const PsdResult psd = decide_psd(M);
   if (psd.verdict == PsdVerdict::kNotPsd)
-    return invalid("(C1) fails: " + which + " is not PSD (" + psd.reason + ")", details.str());
+    return invalid_verdict("(C1) fails: " + which + " is not PSD (" + psd.reason + ")", details.str());
   details << "; (C1) holds: " << which << " (size " << M.rows() << ") is " << psd_note(psd);
   return {true, "", details.str(), ""};
 }

@@ -9,6 +9,7 @@
 #include "core/number_text.h"
 #include "core/sha256.h"
 #include "data/csv_reader.h"
+#include "lmi/delta_form_barrier.h"
 #include "lmi/delta_form_lmi.h"
 #include "lmi/delta_kyp_lmi.h"
 #include "lmi/relaxed_bmi_lmi.h"
@@ -176,9 +177,10 @@ Rational round_to_digits(double x, int digits) {
   return rational_from_text(buf);
 }
 
-Rational round_up_to_digits(const Rational& q, int digits) {
-  if (q == 0) return Rational(0);
-  if (q < 0) throw std::invalid_argument("round_up_to_digits: negative value");
+namespace {
+
+/// q > 0 rounded to `digits` significant decimal digits, towards +∞ (up) or 0.
+Rational round_directed(const Rational& q, int digits, bool up) {
   // e = floor(log10 q) estimated from the double, then corrected exactly.
   int e = static_cast<int>(std::floor(std::log10(nearest_double(q))));
   while (pow10(e) > q) --e;
@@ -187,7 +189,10 @@ Rational round_up_to_digits(const Rational& q, int digits) {
   const Rational s = q / unit;  // in [10^(digits−1), 10^digits)
   mpz_t c;
   mpz_init(c);
-  mpz_cdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
+  if (up)
+    mpz_cdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
+  else
+    mpz_fdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
   mpq_t r;
   mpq_init(r);
   mpq_set_z(r, c);
@@ -195,6 +200,19 @@ Rational round_up_to_digits(const Rational& q, int digits) {
   mpq_clear(r);
   mpz_clear(c);
   return out;
+}
+
+}  // namespace
+
+Rational round_up_to_digits(const Rational& q, int digits) {
+  if (q == 0) return Rational(0);
+  if (q < 0) throw std::invalid_argument("round_up_to_digits: negative value");
+  return round_directed(q, digits, true);
+}
+
+Rational round_down_to_digits(const Rational& q, int digits) {
+  if (q == 0) return Rational(0);
+  return q > 0 ? round_directed(q, digits, false) : -round_directed(-q, digits, true);
 }
 
 double sqrt_up(const Rational& q) {
@@ -236,6 +254,16 @@ DeltaFormSolution solve_for_certificate(const Simulation<Rational>& sim, const M
                                         long taps, bool kyp, bool want_dual) {
   SolverOptions so = o.solver;
   so.want_dual = want_dual;
+  if (!kyp && taps == 0 && o.structured && barrier_applies(nearest_double(sim.z), nearest_double(r), obj)) {
+    // SISO full horizon: the structured barrier (lmi/delta_form_barrier.h);
+    // on a numerical failure the general SDP backend takes over.
+    DeltaFormSolution fast = solve_delta_form_barrier(nearest_double(sim.z), nearest_double(r), obj);
+    if (fast.solve.status != SolveStatus::kBackendError) return fast;
+    DeltaFormSolution slow = solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
+    slow.solve.message += (slow.solve.message.empty() ? "" : "; ") + fast.solve.message + " (fell back to " + solver.name() + ")";
+    slow.solve.seconds += fast.solve.seconds;
+    return slow;
+  }
   if (!kyp) return solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
   // (KYP) bounds ‖Δ‖_∞ ≥ ‖T_Δ‖ on any horizon: small program, same certificate.
   const DeltaKypSolution k = solve_delta_kyp(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
@@ -282,7 +310,10 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   const bool kyp = o.delta_norm == DeltaNorm::kKyp;
   if (kyp && o.max_taps <= 0) throw InputError("certify: the KYP Delta form needs a finite number of taps (--max-taps > 0)");
   const bool feasibility = o.objective.kind == BoundObjective::Kind::kFeasibility;
-  const long K = o.max_taps > 0 && o.max_taps < L ? o.max_taps : 0;  // 0: the full horizon
+  // SISO: the structured full-horizon solver is cheaper than a K-tap SDP and exact for the horizon.
+  const bool structured = o.structured && !kyp && model.ny == 1 && model.nz() == 1 &&
+                          barrier_applies(Mat<double>::Ones(1, 1), Mat<double>::Ones(1, 1), obj);
+  const long K = !structured && o.max_taps > 0 && o.max_taps < L ? o.max_taps : 0;  // 0: the full horizon
   const bool dual_here = o.lower_end && !kyp && !feasibility;
 
   // 3–6. The primal certificate (upper end) from the K-tap solve.

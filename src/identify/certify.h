@@ -54,6 +54,11 @@ struct CertifyOptions {
   /// full-horizon program is solved too (its primal may lower the upper end,
   /// its dual raises the lower end). A restricted solve never decides a verdict.
   double gap_target = 0.01;
+  /// SISO models: solve the full horizon with the structured barrier
+  /// (lmi/delta_form_barrier.h) instead of the K-tap SDP first (max_taps is
+  /// then unused); if the barrier fails numerically, the SDP backend solves
+  /// the full horizon.
+  bool structured = true;
   long full_horizon_limit = 400;
 };
 
@@ -121,6 +126,8 @@ std::string set_data_reference(Certificate& c, const CertifyOptions& o, const st
 Rational round_to_digits(double x, int digits);
 /// The smallest decimal with `digits` significant digits that is ≥ q.
 Rational round_up_to_digits(const Rational& q, int digits);
+/// The largest decimal with `digits` significant digits that is ≤ q.
+Rational round_down_to_digits(const Rational& q, int digits);
 /// √q rounded up to a double (for display only).
 double sqrt_up(const Rational& q);
 

@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 
 #include "core/number_text.h"
 #include "toeplitz/delta_form_dual.h"
@@ -45,43 +44,40 @@ DualClaim claim_of(const BoundObjective& obj) {
 /// a scan over 10^(k/8) around the natural scale, then the best kept.
 double best_sigma(double trU, double trV, double gg, double gr, double N, DualClaim claim, double t, double s,
                   double lambda, double sigma0) {
-  double best = sigma0, best_value = -INFINITY;
-  const double centre = sigma0 > 0 && std::isfinite(sigma0) ? sigma0 : 1.0;
-  for (int k = -160; k <= 160; ++k) {
-    const double sigma = centre * std::pow(10.0, k / 8.0);
+  const auto value = [&](double sigma) {
     DualTerms<double> d;
     d.trace_U = trU;
     d.N_sigma = N * sigma;
     d.beta = -(trV + gg / sigma + 2 * gr);
-    const double v = dual_bound(d, claim, t, s, lambda);
-    if (v > best_value) {
+    return dual_bound(d, claim, t, s, lambda);
+  };
+  // A coarse scan in log σ, then golden-section refinement around the best
+  // grid point (the bound is unimodal in σ: a concave quadratic in 1/σ, or
+  // a minimum of two such for the weighted objective).
+  double best = sigma0, best_value = -INFINITY;
+  const double centre = sigma0 > 0 && std::isfinite(sigma0) ? sigma0 : 1.0;
+  for (int k = -160; k <= 160; ++k) {
+    const double sigma = centre * std::pow(10.0, k / 8.0);
+    if (const double v = value(sigma); v > best_value) {
       best_value = v;
       best = sigma;
     }
   }
-  return best;
+  double lo = std::log(best) - std::log(10.0) / 8.0, hi = std::log(best) + std::log(10.0) / 8.0;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 80; ++it) {
+    const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+    if (value(std::exp(a)) >= value(std::exp(b)))
+      hi = b;
+    else
+      lo = a;
+  }
+  const double refined = std::exp(0.5 * (lo + hi));
+  return value(refined) >= best_value ? refined : best;
 }
 
 }  // namespace
 
-Rational round_down_to_digits(const Rational& q, int digits) {
-  if (q <= 0) return q < 0 ? -round_up_to_digits(-q, digits) : Rational(0);
-  int e = static_cast<int>(std::floor(std::log10(nearest_double(q))));
-  while (pow10_rational(e) > q) --e;
-  while (pow10_rational(e + 1) <= q) ++e;
-  const Rational unit = pow10_rational(e - digits + 1);
-  const Rational s = q / unit;
-  mpz_t f;
-  mpz_init(f);
-  mpz_fdiv_q(f, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, f);
-  Rational out = Rational(r) * unit;
-  mpq_clear(r);
-  mpz_clear(f);
-  return out;
-}
 
 DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                          const Simulation<Rational>& sim, const Mat<double>& Y1_in, const Mat<double>& Y2_in,
@@ -180,7 +176,7 @@ DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Ratio
   const double sigma0 = Y2_in(0, 0) / scale;
   const double sigma_d = best_sigma(trU, trV, gg, gr, static_cast<double>(N), claim, nearest_double(delta2),
                                     nearest_double(dmax2), nearest_double(lambda), sigma0 > 0 ? sigma0 : std::sqrt(gg + 1e-300));
-  const Rational sigma = round_to_digits(sigma_d, 6);
+  const Rational sigma = round_to_digits(sigma_d, 15);
   if (!(sigma > 0)) return done("no positive sigma");
 
   // 6. The bound, exactly; the certificate; the check from the file.

@@ -48,7 +48,4 @@ DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Ratio
                          const Simulation<Rational>& sim, const Mat<double>& Y1, const Mat<double>& Y2,
                          const CertifyOptions& o, const std::string& path);
 
-/// The largest decimal with `digits` significant digits that is ≤ q (q ≥ 0).
-Rational round_down_to_digits(const Rational& q, int digits);
-
 }  // namespace lpvid

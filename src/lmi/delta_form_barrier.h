@@ -1,0 +1,77 @@
+#pragma once
+/// The SISO full-horizon Δ form (lmi/delta_form_lmi.h, (C1') and (C2)) solved
+/// by a primal barrier method that exploits its Toeplitz structure (issue 8:
+/// SISO n = 400 with both ends certified within a minute; a general SDP
+/// backend spends O(L⁴) per iteration there).
+///
+/// Variables h ∈ R^L and t = δ² (when δ is free), in the scaled units of
+/// delta_form_lmi.cc. The barrier is the LMIs' own:
+///   −log det C1' = −log det(t·I − T_h T_hᵀ)        (Schur complement on I)
+///   −log det C2  = −log(N·s − ‖d‖²),  d = r − Z h
+/// and the method follows the central path of min cᵀx/μ − log det C1' −
+/// log det C2 with damped Newton steps, μ ↓ 0. The noise variable s is
+/// eliminated exactly: for fixed h the minimum over s of c_s·s/μ − log(N s −
+/// ‖d‖²) is at N s − ‖d‖² = N μ/c_s, which leaves
+///   F_μ(h, t) = c_t·t/μ + c_s·‖d‖²/(N μ) − log det(t·I − T_h T_hᵀ),
+/// a quadratic plus a log-det (a primal barrier that keeps s as a variable
+/// crawls along the boundary of (C2): measured, 200+ Newton steps at n = 200).
+/// Derivatives (P = (tI − TTᵀ)⁻¹, Q = P·T, R = Tᵀ·P·T, S_l the l-th lower
+/// shift, Ω_l the l-th subdiagonal sum, corr as in toeplitz/correlation_2d.h):
+///   ∂/∂h_l [−log det] = 2 Ω_l(Q),   ∂/∂t = −tr P,
+///   ∂²/∂h_k∂h_l = 2 [Σ_c P(c+k, c+l) + corr(Q, Qᵀ)(k, −l) + corr(P, R)(k, l)],
+///   ∂²/∂t∂h_l = −2 Ω_l(P·Q),   ∂²/∂t² = ‖P‖_F²,
+/// the correlations by FFT: O(L³) per Newton step instead of the O(L⁴) of a
+/// general SDP backend's Schur complement.
+/// On the central path Y = μ·C⁻¹ is dual feasible (the dual equality holds up
+/// to the Newton residual), with C1'⁻¹ = [P, −Q; −Qᵀ, I + R] and
+/// C2⁻¹ = [1/φ, −dᵀ/φ; −d/φ, I + d dᵀ/φ] (φ = N s − ‖d‖²): these are the
+/// dual matrices handed to identify/dual_certify.h, which makes the dual
+/// equality exact. Nothing here is trusted: both ends are certified exactly.
+///
+/// Objectives: min d_max² at δ, the weighted one (0 < λ < 1), and fixed
+/// (δ, d_max), answered through min d_max² at δ: kOptimal when a point with
+/// s ≤ d_max² is found (the taps are then feasible), kPrimalInfeasible when
+/// the path's lower estimate exceeds d_max² (the dual matrices then give the
+/// "invalidated" certificate). min δ at d_max is left to the SDP backends
+/// (its s is fixed and cannot be eliminated).
+
+#include "lmi/bound_objective.h"
+#include "lmi/delta_form_lmi.h"
+
+namespace lpvid {
+
+struct BarrierOptions {
+  /// Stop when ν·μ ≤ rel_gap·|objective| (ν = 2L + N + 1). Not smaller: near
+  /// the boundary C⁻¹ (the dual) loses accuracy, and the residual of the dual
+  /// equality costs a PSD margin in the certified lower end (measured: at
+  /// 1e-5 the margin cost 9e-4 of the objective on SISO n = 100).
+  double rel_gap = 1e-4;
+  double feasibility_rel_gap = 1e-9;  ///< fixed (δ, d_max): keep going until decided, down to this
+  double abs_gap = 1e-14;    ///< … or ν·μ ≤ abs_gap (scaled units)
+  int max_newton = 400;      ///< Newton steps in all
+  double mu_factor = 8.0;    ///< μ ← μ / mu_factor between centerings
+};
+
+/// True when the structured solver handles the case: ny = nz = 1 and an
+/// objective listed above (with δ > 0 when fixed).
+bool barrier_applies(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective);
+
+/// Solves the full-horizon Δ form (K = L). On a numerical failure the status
+/// is kBackendError with the reason in solve.message (callers fall back to an
+/// SDP backend). Dual matrices are always returned with a solution or an
+/// infeasibility answer (original units, as DeltaFormSolution documents).
+DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
+                                           const BarrierOptions& options = {});
+
+/// F_μ, its gradient and Hessian at x = (h, t?) of the SCALED problem (for
+/// the finite-difference test of the formulas above; value = +∞ outside the
+/// interior).
+struct BarrierDerivatives {
+  double value = 0;
+  Eigen::VectorXd gradient;
+  Eigen::MatrixXd hessian;
+};
+BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
+                                       const Eigen::VectorXd& x, double mu);
+
+}  // namespace lpvid

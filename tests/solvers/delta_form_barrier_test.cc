@@ -1,0 +1,136 @@
+// The structured barrier solver of the SISO full-horizon Δ form
+// (lmi/delta_form_barrier.h) against an independent computation: the same
+// program solved by CSDP as a general SDP (lmi/delta_form_lmi.h, K = L).
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+
+#include "lmi/delta_form_barrier.h"
+#include "lmi/delta_form_lmi.h"
+#include "toeplitz/fir.h"
+#include "solvers/sdp_solver.h"
+
+namespace lpvid {
+namespace {
+
+struct Signals {
+  Mat<double> z, r;
+};
+
+rc::Gen<Signals> signals() {
+  return rc::gen::exec([] {
+    const int n = *rc::gen::inRange(3, 25);
+    const int lead = *rc::gen::inRange(0, 3);
+    const double zscale = std::pow(10.0, *rc::gen::inRange(-3, 4));
+    const double rscale = std::pow(10.0, *rc::gen::inRange(-3, 3));
+    Signals s;
+    s.z = Mat<double>::Zero(n, 1);
+    s.r = Mat<double>::Zero(n, 1);
+    for (int k = 0; k < n; ++k) {
+      if (k >= lead) s.z(k, 0) = zscale * (*rc::gen::inRange(-1000, 1001) / 1000.0);
+      s.r(k, 0) = rscale * (*rc::gen::inRange(-1000, 1001) / 1000.0);
+    }
+    if (lead < n) s.z(lead, 0) = zscale * (0.5 + *rc::gen::inRange(0, 100) / 200.0);
+    return s;
+  });
+}
+
+RC_GTEST_PROP(DeltaFormBarrier, OptimumEqualsTheGeneralSdpSolvers, ()) {
+  const Signals s = *signals();
+  const double scale_t = (s.r.norm() / s.z.norm());
+  const int which = *rc::gen::inRange(0, 2);
+  BoundObjective obj;
+  if (which == 0) {
+    obj.kind = BoundObjective::Kind::kMinDmax;
+    obj.delta = scale_t * (*rc::gen::inRange(5, 200) / 100.0);
+  } else {
+    obj.kind = BoundObjective::Kind::kWeighted;
+    obj.lambda = *rc::gen::inRange(5, 96) / 100.0;
+  }
+  BarrierOptions tight;
+  tight.rel_gap = 1e-7;
+  const DeltaFormSolution fast = solve_delta_form_barrier(s.z, s.r, obj, tight);
+  RC_ASSERT(fast.solve.status == SolveStatus::kOptimal);
+  auto csdp = make_solver("csdp");
+  const DeltaFormSolution ref = solve_delta_form(s.z, s.r, obj, *csdp, SolverOptions{}, 0);
+  RC_PRE(ref.solve.status == SolveStatus::kOptimal);
+  const double a = obj.value(fast.delta2, fast.dmax2), b = obj.value(ref.delta2, ref.dmax2);
+  RC_LOG() << "barrier " << a << " csdp " << b << " " << ref.solve.message << "\n";
+  // CSDP's own tolerances: relative, plus an absolute floor at the problem's
+  // scale (the objective at h = 0, δ² = (‖r‖/‖z‖)²) for optima near zero.
+  const double floor = 1e-7 * obj.value(std::pow(s.r.norm() / s.z.norm(), 2), s.r.squaredNorm() / static_cast<double>(s.r.rows()));
+  RC_ASSERT(std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + floor);
+  // The taps are a feasible point: ‖T_h‖² ≤ δ² and ‖r − h∗z‖² ≤ N·d_max² (up to rounding).
+  const Eigen::Index L = fast.horizon;
+  Mat<double> T = Mat<double>::Zero(L, L);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index b = 0; b <= a; ++b) T(a, b) = fast.taps(a - b, 0);
+  const double norm = Eigen::JacobiSVD<Mat<double>>(T).singularValues()(0);
+  RC_ASSERT(norm * norm <= fast.delta2 * (1 + 1e-9));
+  RC_ASSERT(fast.dual_c1.rows() == 2 * fast.horizon);
+  RC_ASSERT(fast.dual_c2.rows() == s.r.rows() + 1);
+}
+
+RC_GTEST_PROP(DeltaFormBarrier, FixedBoundsAgreeWithTheGeneralSdpSolver, ()) {
+  const Signals s = *signals();
+  BoundObjective opt;
+  opt.kind = BoundObjective::Kind::kMinDmax;
+  opt.delta = s.r.norm() / s.z.norm() * (*rc::gen::inRange(5, 200) / 100.0);
+  auto csdp = make_solver("csdp");
+  const DeltaFormSolution ref = solve_delta_form(s.z, s.r, opt, *csdp, SolverOptions{}, 0);
+  RC_PRE(ref.solve.status == SolveStatus::kOptimal);
+  const double dmax_star = std::sqrt(ref.dmax2);
+  RC_PRE(dmax_star > 1e-8 * s.r.norm());
+  const bool above = *rc::gen::arbitrary<bool>();
+  BoundObjective fixed;
+  fixed.kind = BoundObjective::Kind::kFeasibility;
+  fixed.delta = opt.delta;
+  fixed.dmax = dmax_star * (above ? 1.05 : 0.95);
+  const DeltaFormSolution fast = solve_delta_form_barrier(s.z, s.r, fixed);
+  RC_LOG() << "above " << above << " status " << to_string(fast.solve.status) << " " << fast.solve.message << " dmax* " << dmax_star
+           << " n " << s.z.rows() << "\n";
+  RC_ASSERT(fast.solve.status == (above ? SolveStatus::kOptimal : SolveStatus::kPrimalInfeasible));
+}
+
+}  // namespace
+}  // namespace lpvid
+
+namespace lpvid {
+namespace {
+
+// The closed-form gradient and Hessian (lmi/delta_form_barrier.h) against
+// central finite differences of the barrier value.
+RC_GTEST_PROP(DeltaFormBarrier, DerivativesMatchFiniteDifferences, ()) {
+  const Signals s = *signals();
+  const bool weighted = *rc::gen::arbitrary<bool>();
+  BoundObjective obj;
+  obj.kind = weighted ? BoundObjective::Kind::kWeighted : BoundObjective::Kind::kMinDmax;
+  obj.delta = s.r.norm() / s.z.norm();
+  const double mu = std::pow(10.0, *rc::gen::inRange(-3, 1));
+  const Eigen::Index L = s.z.rows() - leading_zero_samples(s.z);
+  const Eigen::Index D = L + (weighted ? 1 : 0);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(D);
+  for (Eigen::Index i = 0; i < L; ++i) x(i) = *rc::gen::inRange(-100, 101) / (1000.0 * static_cast<double>(L));
+  if (weighted) x(L) = 1.0 + *rc::gen::inRange(0, 100) / 100.0;
+  const BarrierDerivatives b = barrier_derivatives(s.z, s.r, obj, x, mu);
+  RC_PRE(std::isfinite(b.value));
+  const double step = 1e-4;
+  for (Eigen::Index i = 0; i < D; ++i) {
+    Eigen::VectorXd xp = x, xm = x;
+    xp(i) += step;
+    xm(i) -= step;
+    const BarrierDerivatives bp = barrier_derivatives(s.z, s.r, obj, xp, mu), bm = barrier_derivatives(s.z, s.r, obj, xm, mu);
+    RC_PRE(std::isfinite(bp.value) && std::isfinite(bm.value));
+    const double fd = (bp.value - bm.value) / (2 * step);
+    // Truncation O(step²) plus round-off of F_μ's value (the t/μ term can be 1e9).
+    RC_ASSERT(std::abs(fd - b.gradient(i)) <= 1e-4 * (1 + std::abs(fd)) + 1e-14 * std::abs(b.value) / step);
+    const Eigen::VectorXd fdh = (bp.gradient - bm.gradient) / (2 * step);
+    RC_ASSERT((fdh - b.hessian.col(i)).cwiseAbs().maxCoeff() <=
+              1e-3 * (1 + fdh.cwiseAbs().maxCoeff()) + 1e-14 * b.gradient.cwiseAbs().maxCoeff() / step);
+  }
+}
+
+}  // namespace
+}  // namespace lpvid
