@@ -28,7 +28,9 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   app.add_option("--write-sdpa", o.write_sdpa, "also write each SDP solved as an SDPA sparse file (the last one to this path)");
   app.add_option("--certificate", o.certificate_path, "where to write the certificate (JSON)");
   app.add_option("--report", o.report_path, "where to write the report (JSON)");
-  app.add_option("--max-taps", o.max_taps, "taps of the FIR Delta in the certificate (0: full horizon; default 64)")
+  app.add_option("--max-taps", o.max_taps,
+                 "taps of the FIR Delta in the certificate (0: full horizon; default 64); unused for SISO models except with "
+                 "--dmax alone: they get the full horizon from the structured solver")
       ->check(CLI::Range(0L, 100000L));
   app.add_option("--delta-norm", o.delta_norm,
                  "certificate's Delta solve: toeplitz (the (C1') block, exact for the horizon; default) or kyp "
