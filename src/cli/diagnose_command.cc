@@ -29,6 +29,11 @@ struct DiagnoseArgs {
   std::vector<std::string> validation_names;    ///< headerless validation file
   std::string validation_rows;
   double holdout = 0.3;
+  /// The test role (issue 9): scored once, after the selection, never fitted
+  /// or used to choose. Same column conventions as the validation options.
+  std::string test_path;
+  std::vector<std::string> test_columns, test_names;
+  std::string test_rows;
   int max_effects = 3;
   double min_gain = 0.05;
   int degree = 2;
@@ -57,12 +62,12 @@ std::pair<long, long> parse_range(const std::string& text, const char* flag) {
 
 /// Column map of the validation data: est column name → validation name.
 ColumnMap validation_map(const LpvModel<double>& declared, const LpvModel<double>& m,
-                         const std::vector<std::string>& renamed) {
+                         const std::vector<std::string>& renamed, const std::string& flag) {
   if (renamed.empty()) return m.columns;
   std::vector<std::string> from = declared.columns.u;
   from.insert(from.end(), declared.columns.y.begin(), declared.columns.y.end());
   if (renamed.size() != from.size())
-    throw InputError("--validation-columns: expected " + std::to_string(from.size()) +
+    throw InputError(flag + ": expected " + std::to_string(from.size()) +
                      " names (the model's u columns then y columns), got " + std::to_string(renamed.size()));
   auto rename = [&](const std::string& c) {
     for (size_t i = 0; i < from.size(); ++i)
@@ -96,20 +101,33 @@ int run_diagnose(DiagnoseArgs& a) {
   std::string val_text;
   std::vector<std::string> val_outputs;
   const bool separate = !a.validation_path.empty() || !a.validation_columns.empty();
-  if (separate) {
-    const std::string vp = a.validation_path.empty() ? a.common.data_path : a.validation_path;
-    const std::vector<std::string>& vn = a.validation_path.empty() ? a.common.names : a.validation_names;
+  // Another data set in the roles of selection or test: a file (or --data)
+  // with the model's columns renamed, optionally a window of rows.
+  const auto load_other = [&](const std::string& path, const std::vector<std::string>& names,
+                              const std::vector<std::string>& columns, const std::string& rows, const std::string& role,
+                              std::string& text, std::vector<std::string>& outputs) {
+    const std::string vp = path.empty() ? a.common.data_path : path;
+    const std::vector<std::string>& vn = path.empty() ? a.common.names : names;
     const TextTable vt = vn.empty() ? read_table(vp) : read_table(vp, vn);
-    const ColumnMap vcols = validation_map(in.model_d, declared, a.validation_columns);
-    val_d = make_experiment<double>(vt, vcols);
-    val_outputs = vcols.y;
-    val_text = vp;
-    if (!a.validation_rows.empty()) {
-      const auto [b, e] = parse_range(a.validation_rows, "--validation-rows");
-      if (e > val_d.n()) throw InputError("--validation-rows: the validation data has " + std::to_string(val_d.n()) + " rows");
-      val_d = select_rows(val_d, b, e);
-      val_text += " rows " + a.validation_rows;
+    const ColumnMap vcols = validation_map(in.model_d, declared, columns, "--" + role + "-columns");
+    Experiment<double> d = make_experiment<double>(vt, vcols);
+    outputs = vcols.y;
+    text = vp;
+    if (!columns.empty()) {
+      text += " columns ";
+      for (size_t i = 0; i < columns.size(); ++i) text += (i ? "," : "") + columns[i];
     }
+    if (!rows.empty()) {
+      const auto [b, e] = parse_range(rows, ("--" + role + "-rows").c_str());
+      if (e > d.n()) throw InputError("--" + role + "-rows: the " + role + " data has " + std::to_string(d.n()) + " rows");
+      d = select_rows(d, b, e);
+      text += " rows " + rows;
+    }
+    return d;
+  };
+  if (separate) {
+    val_d = load_other(a.validation_path, a.validation_names, a.validation_columns, a.validation_rows, "validation",
+                       val_text, val_outputs);
   } else {
     const Eigen::Index n = est_d.n();
     const auto cut = static_cast<Eigen::Index>(std::floor(static_cast<double>(n) * (1.0 - a.holdout)));
@@ -123,6 +141,14 @@ int run_diagnose(DiagnoseArgs& a) {
                " (held out: the last " + std::to_string(n - cut) + " samples, not used to fit)";
   }
   if (val_d.n() < a.init_samples + 5) throw InputError("the validation data has too few samples");
+  Experiment<double> test_d;
+  std::string test_text;
+  std::vector<std::string> test_outputs;
+  const bool has_test = !a.test_path.empty() || !a.test_columns.empty();
+  if (has_test) {
+    test_d = load_other(a.test_path, a.test_names, a.test_columns, a.test_rows, "test", test_text, test_outputs);
+    if (test_d.n() < a.init_samples + 5) throw InputError("the test data has too few samples");
+  }
 
   // verified bounds before and after, on the bound windows of the estimation data
   std::vector<std::pair<Eigen::Index, Eigen::Index>> windows;
@@ -180,6 +206,12 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.after_id = std::move(after_id);
   ri.command_line_data = a.common.data_path;
   ri.validation = val_text;
+  ri.estimation = a.common.data_path + " rows " + std::to_string(file_offset) + ":" + std::to_string(file_offset + est_d.n()) +
+                  " (fit: every model and candidate)";
+  if (has_test) {
+    ri.test = &test_d;
+    ri.test_source = test_text;
+  }
   ri.rank = &rank;
   ri.before = bb;
   ri.after = ba;
@@ -216,6 +248,14 @@ Runner add_diagnose_command(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--validation-rows", a->validation_rows, "rows B:E of the validation data");
   cmd->add_option("--holdout", a->holdout, "fraction of --data held out for validation when none is given (0.3)");
+  cmd->add_option("--test", a->test_path,
+                  "test data file, scored once after the selection and never used to fit or choose (default: --data "
+                  "when --test-columns is given)");
+  cmd->add_option("--test-columns", a->test_columns,
+                  "test column names replacing the model's u then y columns, e.g. uVal,yVal")
+      ->delimiter(',');
+  cmd->add_option("--test-names", a->test_names, "column names of a headerless test file")->delimiter(',');
+  cmd->add_option("--test-rows", a->test_rows, "rows B:E of the test data");
   cmd->add_option("--max-effects", a->max_effects, "effects to add at most (default 3)")->check(CLI::Range(0, 20));
   cmd->add_option("--min-gain", a->min_gain, "relative validation-RMS reduction an effect must reach (default 0.05)");
   cmd->add_option("--degree", a->degree, "largest degree of basis-term monomials (default 2)")->check(CLI::Range(1, 6));

@@ -161,9 +161,14 @@ std::string bound_line(const WindowBounds& w) {
 void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::string& report_path) {
   const RankingResult& r = *in.rank;
   std::cout << "lpvid diagnose\n"
-            << "  estimation  " << in.command_line_data << " (" << in.est->n() << " samples)\n"
-            << "  validation  " << in.validation << " (" << in.val->n() << " samples; x0 fitted on the first "
-            << in.init_samples << ", then free-run simulation)\n";
+            << "  estimation  " << (in.estimation.empty() ? in.command_line_data : in.estimation) << " ("
+            << in.est->n() << " samples)\n"
+            << "  validation  " << in.validation << " (" << in.val->n() << " samples; selection: ranks the effects; x0 "
+            << "fitted on the first " << in.init_samples << ", then free-run simulation)\n"
+            << "  test        "
+            << (in.test ? in.test_source + " (" + std::to_string(in.test->n()) + " samples; scored once, at the end)"
+                        : std::string("none given (--test / --test-columns): the validation figure chose the model"))
+            << "\n";
   ojson rounds = ojson::array();
   for (size_t i = 0; i < r.rounds.size(); ++i) {
     const RankingRound& rr = r.rounds[i];
@@ -220,6 +225,24 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   std::cout << "  certificates " << in.before.front().certificate << ", " << in.after.front().certificate
             << (in.before.size() > 1 ? " (and one per further window)" : "") << " (check: lpvid-verify certificate FILE)\n";
 
+  // The test role: scored once, now, for the models chosen above.
+  ojson test = nullptr;
+  if (in.test != nullptr) {
+    const double tb = validation_rms(*in.before_model, *in.test, in.init_samples);
+    const double ta = validation_rms(*in.after_model, *in.test, in.init_samples);
+    std::cout << "\ntest (" << in.test_source << ", " << in.test->n() << " samples): scored once, after the selection;"
+              << " no fit and no choice used it\n"
+              << "  free-run RMS, x0 from the first " << in.init_samples << " samples, over all samples:  before "
+              << num(tb) << "   after " << num(ta) << "\n";
+    test = {{"source", in.test_source},
+            {"samples", in.test->n()},
+            {"init_samples", in.init_samples},
+            {"rms_before", finite_or_null(tb)},
+            {"rms_after", finite_or_null(ta)},
+            {"note", "scored once, after the effects were selected on the validation (selection) data; the models "
+                     "were fitted on the estimation rows only"}};
+  }
+
   // residual analysis and plots on the validation data (free run)
   Mat<double> yb, ya;
   validation_rms(*in.before_model, *in.val, in.init_samples, &yb);
@@ -255,8 +278,10 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   const bool verified = all_verified(in.before) && all_verified(in.after);
   j["status"] = verified ? "ok" : "not verified";
   j["command"] = "diagnose";
-  j["estimation"] = {{"file", in.command_line_data}, {"samples", in.est->n()}};
-  j["validation"] = {{"source", in.validation}, {"samples", in.val->n()}, {"init_samples", in.init_samples}};
+  j["estimation"] = {{"file", in.command_line_data}, {"rows", in.estimation}, {"samples", in.est->n()}};
+  j["validation"] = {{"source", in.validation}, {"samples", in.val->n()}, {"init_samples", in.init_samples},
+                     {"role", "selection: ranks the candidate effects"}};
+  j["test"] = test;
   j["effects"] = effects;
   j["before"] = side_json(r.before_estimation, r.before_validation, in.before);
   j["after"] = side_json(r.after_estimation, r.after_validation, in.after);

@@ -14,6 +14,11 @@ namespace lpvid::cli {
 
 struct DiagnoseReportInputs {
   std::string command_line_data, validation, plots_dir, model_out, solver;
+  std::string estimation;  ///< file and rows of the fit role
+  /// The test role (issue 9): scored once here, after everything was chosen
+  /// on the estimation and validation (selection) data; nullptr: none given.
+  const Experiment<double>* test = nullptr;
+  std::string test_source;
   const RankingResult* rank = nullptr;
   std::vector<WindowBounds> before, after;  ///< one per bound window, same windows
   WindowIdentification before_id, after_id;  ///< Theorem 3.1 on the first window

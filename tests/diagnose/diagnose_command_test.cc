@@ -4,6 +4,7 @@
 // verifier accepts, write the SPEC §8 report fields and the plots; bad input
 // ends with exit code 2 and a message naming the problem, before any work.
 #include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -70,6 +71,37 @@ TEST_F(DiagnoseCommandTest, ControlCaseAnswersNone) {
   const nlohmann::json r = report("r.json");
   ASSERT_EQ(r["effects"].size(), 1u);
   EXPECT_EQ(r["effects"][0]["kind"], "none");
+}
+
+// Issue 9, protocol: the test role is scored once, at the end, and never
+// influences the choice. Known answers by construction: with the test data
+// equal to the selection data, the test RMS is the selection RMS of the same
+// model; with another test file the chosen effects and the written model are
+// byte-identical; without --test the report says so (test = null).
+TEST_F(DiagnoseCommandTest, TestRoleIsScoredOnceAndNeverChooses) {
+  const std::string common = "--data " + est + " --model " + model + " --validation " + val + " --window 0:60";
+  ASSERT_EQ(run("diagnose", common + " --test " + val + " --report " + file("t1.json") + " --model-out " + file("m1.json")), 0)
+      << output();
+  const nlohmann::json r1 = report("t1.json");
+  ASSERT_TRUE(r1["test"].is_object());
+  EXPECT_EQ(r1["test"]["samples"].get<long>(), r1["validation"]["samples"].get<long>());
+  EXPECT_NEAR(r1["test"]["rms_after"].get<double>(), r1["after"]["rms_validation"].get<double>(),
+              1e-6 * r1["after"]["rms_validation"].get<double>());
+  EXPECT_NEAR(r1["test"]["rms_before"].get<double>(), r1["before"]["rms_validation"].get<double>(),
+              1e-6 * r1["before"]["rms_validation"].get<double>());
+
+  ASSERT_EQ(run("diagnose", common + " --test " + est + " --report " + file("t2.json") + " --model-out " + file("m2.json")), 0)
+      << output();
+  const nlohmann::json r2 = report("t2.json");
+  EXPECT_EQ(r1["effects"], r2["effects"]);
+  std::ifstream m1(file("m1.json")), m2(file("m2.json"));
+  const std::string t1((std::istreambuf_iterator<char>(m1)), std::istreambuf_iterator<char>());
+  const std::string t2((std::istreambuf_iterator<char>(m2)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(t1, t2);
+  EXPECT_NE(r2["test"]["rms_after"].get<double>(), r1["test"]["rms_after"].get<double>());
+
+  ASSERT_EQ(run("diagnose", common + " --report " + file("t3.json")), 0) << output();
+  EXPECT_TRUE(report("t3.json")["test"].is_null());
 }
 
 TEST_F(DiagnoseCommandTest, BadInputIsRejectedWithTheReason) {
