@@ -61,6 +61,12 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
       return invalid_verdict("data.rows ends at " + std::to_string(c.row_end) + " but the data has " + std::to_string(exp.n()) + " rows");
     exp = select_rows(exp, c.row_begin, c.row_end);
   }
+  // "@x<i>" scheduling: the certified model's own exact state on these rows
+  try {
+    exp = with_state_scheduling(c.model, exp);
+  } catch (const std::invalid_argument& e) {
+    return invalid_verdict(std::string("state scheduling: ") + e.what());
+  }
   if (c.model.offset.values.empty() && !c.model.offset.basis.empty())
     return invalid_verdict("the model still has an unknown offset (offset.values missing)");
   if (c.delta2 < 0 || c.dmax2 < 0) return invalid_verdict("delta2 and dmax2 must be >= 0");

@@ -3,6 +3,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "data/csv_reader.h"
+#include "model/state_scheduling.h"
 
 namespace lpvid {
 namespace {
@@ -59,12 +60,27 @@ Experiment<T> make_experiment(const TextTable& table, const ColumnMap& columns) 
   // Report unknown columns before any number, whatever the order.
   column_indices(table, columns.u);
   column_indices(table, columns.y);
-  column_indices(table, columns.rho);
+  // "@x<i>" scheduling columns are the model's own state (model/state_scheduling.h):
+  // zero here, computed by simulate() / with_state_scheduling().
+  std::vector<std::string> data_rho;
+  for (const std::string& c : columns.rho) {
+    int i = -1;
+    try {
+      i = state_scheduling_index(c);
+    } catch (const std::invalid_argument& e) {
+      throw_input_error(table.file, 0, "", e.what());
+    }
+    if (i < 0) data_rho.push_back(c);
+  }
+  column_indices(table, data_rho);
   Experiment<T> exp;
   exp.source = table.file;
   exp.u = read_columns<T>(table, columns.u);
   exp.y = read_columns<T>(table, columns.y);
-  exp.rho = read_columns<T>(table, columns.rho);
+  const Mat<T> read = read_columns<T>(table, data_rho);
+  exp.rho = Mat<T>::Zero(exp.u.rows(), static_cast<Eigen::Index>(columns.rho.size()));
+  for (size_t j = 0, r = 0; j < columns.rho.size(); ++j)
+    if (state_scheduling_index(columns.rho[j]) < 0) exp.rho.col(static_cast<Eigen::Index>(j)) = read.col(static_cast<Eigen::Index>(r++));
   return exp;
 }
 

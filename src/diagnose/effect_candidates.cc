@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
+#include "diagnose/wiener_starts.h"
 #include "model/simulate.h"
 
 namespace lpvid {
@@ -74,6 +76,16 @@ std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m) {
   return s;
 }
 
+std::vector<ParameterSlot> with_dynamics_slots(std::vector<ParameterSlot> slots, const LpvModel<double>& m) {
+  for (const ParameterSlot& d : dynamics_slots(m)) {
+    const bool known = std::any_of(slots.begin(), slots.end(), [&](const ParameterSlot& s) {
+      return s.where == d.where && s.term == d.term && s.row == d.row && s.col == d.col;
+    });
+    if (!known) slots.push_back(d);
+  }
+  return slots;
+}
+
 LpvModel<double> with_input_scheduling(const LpvModel<double>& m) {
   LpvModel<double> out = m;
   for (const std::string& col : m.columns.u)
@@ -95,6 +107,16 @@ Experiment<double> with_input_scheduling(const Experiment<double>& e, const LpvM
     if (it == cols.end()) throw std::invalid_argument("with_input_scheduling: scheduling column is not an input");
     out.rho.col(k) = e.u.col(it - cols.begin());
   }
+  return out;
+}
+
+LpvModel<double> scale_state(const LpvModel<double>& m, double s) {
+  LpvModel<double> out = m;
+  for (auto& t : out.B.terms) t.value /= s;
+  for (auto& t : out.C.terms) t.value *= s;
+  for (auto& t : out.uncertainty.C1.terms) t.value *= s;
+  for (auto& b : out.correction.B) b /= s;
+  out.x0 /= s;
   return out;
 }
 
@@ -141,6 +163,31 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
       const std::vector<ParameterSlot> extra = input_term_slots(sb, f);
       cb.slots.insert(cb.slots.end(), extra.begin(), extra.end());
       out.push_back(std::move(cb));
+    }
+  }
+
+  // basis_term scheduled on the model's own state x_1 (model/state_scheduling.h):
+  // A(ρ) = A_0 + ρ^j A_j with ρ = x_1, i.e. a polynomial state feedback
+  // (cubic stiffness, a level-dependent outflow) as a quasi-LPV term
+  if (base.nx > 0 && o.state_degree > 0 &&
+      std::find(base.columns.rho.begin(), base.columns.rho.end(), "@x1") == base.columns.rho.end()) {
+    // x_1 rescaled (x → x/s, s a power of two ≥ max |x_1|): ρ = x_1 in [-1, 1],
+    // so ρ^j is well scaled and a finite-difference step in A_j stays small
+    double peak = sim.x.col(0).cwiseAbs().maxCoeff();
+    const double s_pow2 = std::isfinite(peak) && peak > 0 ? std::exp2(std::ceil(std::log2(peak))) : 1.0;
+    const LpvModel<double> sched =
+        add_scheduling_variable(scale_state(base, s_pow2), scheduling_name("xhat1", base.scheduling), "@x1");
+    const size_t j = sched.scheduling.size() - 1;
+    for (int d = 1; d <= o.state_degree; ++d) {
+      Monomial f = constant_monomial(sched.scheduling.size());
+      f.powers[j] = d;
+      LpvModel<double> s = sched;
+      s.A.add(f, Mat<double>::Zero(base.nx, base.nx));
+      EffectCandidate c = make("basis_term",
+                               "basis_term " + f.text(sched.scheduling) + " in A (scheduled on the model's own state x1)",
+                               base.nx, {s});
+      c.slots = with_dynamics_slots(c.slots, s);  // the new A term moves whatever the ranking's options
+      out.push_back(std::move(c));
     }
   }
 
@@ -207,12 +254,34 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
         s.offset.values.push_back(Vec<double>::Zero(base.ny));
         extra = base.ny;
       }
-      out.push_back(make("abs_value", "abs_value (sensor)", extra, {s}));
+      std::vector<LpvModel<double>> starts = {s};
+      // the linear part re-fitted to a sign-recovered y (diagnose/wiener_starts.h)
+      if (base.ny == 1) starts.push_back(fitted_to_target(s, est, sign_recovered_target(est.y.col(0))));
+      out.push_back(make("abs_value", "abs_value (sensor)", extra, std::move(starts)));
     }
     std::vector<double> c(static_cast<size_t>(o.polynomial_degree + 1), 0.0);
     c[1] = 1;
+    std::vector<LpvModel<double>> starts = {with_output(StaticKind::kPolynomial, 0, 0, c)};
+    // a second start in the basin of the data: (c_0, c_2, …) by linear least
+    // squares of y − v on (1, v², v³, …) with the current v (c_1 = 1 is fixed)
+    if (base.ny == 1 && est.y.rows() == v.rows() && v.allFinite()) {
+      const Eigen::Index n = v.rows(), p = o.polynomial_degree;
+      Mat<double> X(n, p);
+      for (Eigen::Index k = 0; k < n; ++k)
+        for (Eigen::Index i = 0, e = 0; e <= p; ++e)
+          if (e != 1) X(k, i++) = std::pow(v(k, 0), static_cast<double>(e));
+      const Vec<double> beta = X.colPivHouseholderQr().solve(Vec<double>(est.y.col(0) - v.col(0)));
+      if (beta.allFinite()) {
+        std::vector<double> cl = c;
+        for (Eigen::Index i = 0, e = 0; e <= p; ++e)
+          if (e != 1) cl[static_cast<size_t>(e)] = beta(i++);
+        starts.push_back(with_output(StaticKind::kPolynomial, 0, 0, cl));
+        // and the linear part re-fitted to the map's inverse of y (diagnose/wiener_starts.h)
+        starts.push_back(fitted_to_target(starts.back(), est, polynomial_inverse_target(cl, est.y.col(0), v.col(0))));
+      }
+    }
     out.push_back(make("output_polynomial", "output_polynomial degree " + std::to_string(o.polynomial_degree),
-                       o.polynomial_degree, {with_output(StaticKind::kPolynomial, 0, 0, c)}));
+                       o.polynomial_degree, std::move(starts)));
   }
   if (base.statics.input_delay == 0 && o.max_delay > 0) {
     std::vector<LpvModel<double>> starts;

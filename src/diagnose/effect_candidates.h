@@ -18,6 +18,10 @@
 ///   input_polynomial   u' = c0 + u + c2 u² + c3 u³
 ///   output_polynomial  y  = c0 + v + c2 v² + c3 v³ (v = ŷ + Φ)
 ///   input_delay        u'_k = u_{k−d}, d = 1 … max_delay
+///   basis_term in A    A(ρ) = A_0 + ρ^j A_j with ρ = x_1, the model's own
+///                      simulated state (model/state_scheduling.h), j = 1 …
+///                      state_degree: a state-dependent nonlinearity as a
+///                      quasi-LPV term, needs the joint re-fit (A moves)
 /// A candidate never depends on the data set's name: only on the model's
 /// structure and the ranges of the estimation signals (starting guesses).
 
@@ -33,6 +37,7 @@ struct CandidateOptions {
   int max_degree = 2;               ///< monomials of ρ up to this degree for basis_term
   int max_delay = 5;                ///< input delays 1..max_delay
   int polynomial_degree = 3;        ///< input/output polynomials
+  int state_degree = 3;             ///< x1^1..x1^d in A (scheduling on the model's own state); 0: none
 };
 
 struct EffectCandidate {
@@ -52,6 +57,10 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
 /// and the static maps' parameters.
 std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m);
 
+/// `slots` plus the model's dynamics slots (A, B: dynamics_slots) that are
+/// not already among them: the joint re-fit of issue 9 item 2.
+std::vector<ParameterSlot> with_dynamics_slots(std::vector<ParameterSlot> slots, const LpvModel<double>& m);
+
 /// The model with every input column that is not yet a scheduling variable
 /// added as one (named after the column): lets basis_term try f(u)·x, f(u)·u.
 LpvModel<double> with_input_scheduling(const LpvModel<double>& m);
@@ -60,6 +69,12 @@ LpvModel<double> with_input_scheduling(const LpvModel<double>& m);
 /// ρ gets the input columns that became scheduling variables.
 Experiment<double> with_input_scheduling(const Experiment<double>& e, const LpvModel<double>& declared,
                                          const LpvModel<double>& augmented);
+
+/// The same input-output model with its state scaled, x' = x/s: B and the
+/// correction's B_i divided by s, C and the uncertainty channel's C1 times
+/// s, x0/s; A and the correction's A_i are unchanged (a diagonal similarity
+/// by a scalar). For a model whose A terms do not depend on the state.
+LpvModel<double> scale_state(const LpvModel<double>& m, double s);
 
 /// The model with one more scheduling variable `name` read from data column
 /// `column` (every basis monomial padded with a zero power).

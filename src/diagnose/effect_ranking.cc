@@ -38,27 +38,51 @@ void new_terms_json(const ParamMatrix<double>& fitted, const ParamMatrix<double>
   }
 }
 
+/// The best estimation fit over the starts with the given slots (`extra`
+/// also tried as a start); FitResult::finite false if none stayed finite.
+FitResult best_fit(const std::vector<LpvModel<double>>& starts, const LpvModel<double>* extra,
+                   const std::vector<ParameterSlot>& slots, bool joint, const Experiment<double>& est,
+                   const FitOptions& fit) {
+  FitResult best;
+  best.finite = false;
+  best.rms = std::numeric_limits<double>::infinity();
+  const auto consider = [&](const LpvModel<double>& start) {
+    const FitResult f = fit_slots(start, joint ? with_dynamics_slots(slots, start) : slots, est, fit);
+    if (f.finite && f.rms < best.rms) best = f;
+  };
+  for (const LpvModel<double>& start : starts) consider(start);
+  if (extra) consider(*extra);
+  return best;
+}
+
+/// A candidate at its best fit: the effect with the dynamics kept, and (with
+/// joint_dynamics) with A, B re-fitted jointly from every start and from the
+/// first fit; of the two, the one with the lower selection RMS is kept (the
+/// joint fit has more freedom and can fit the noise: issue 9 item 2).
 ScoredCandidate fit_candidate(const EffectCandidate& c, const Experiment<double>& est, const Experiment<double>& val,
                               const RankingOptions& o, const LpvModel<double>& previous) {
   ScoredCandidate s;
   s.kind = c.kind;
   s.label = c.label;
   s.effect_parameters = c.effect_parameters;
-  double best = std::numeric_limits<double>::infinity();
-  for (const LpvModel<double>& start : c.starts) {
-    const FitResult f = fit_slots(start, c.slots, est, o.fit);
-    if (f.finite && f.rms < best) {
-      best = f.rms;
-      s.model = f.model;
+  FitResult f = best_fit(c.starts, nullptr, c.slots, false, est, o.fit);
+  double val_rms = f.finite ? validation_rms(f.model, val, o.init_samples) : std::numeric_limits<double>::infinity();
+  if (o.joint_dynamics) {
+    const FitResult g = best_fit(c.starts, f.finite ? &f.model : nullptr, c.slots, true, est, o.fit);
+    const double g_val = g.finite ? validation_rms(g.model, val, o.init_samples) : std::numeric_limits<double>::infinity();
+    if (g_val < val_rms || !f.finite) {
+      f = g;
+      val_rms = g_val;
     }
   }
-  s.rms_estimation = best;
-  if (!std::isfinite(best)) {
-    s.rms_validation = s.score = std::numeric_limits<double>::infinity();
+  if (!f.finite) {
+    s.rms_estimation = s.rms_validation = s.score = std::numeric_limits<double>::infinity();
     s.model = c.starts.front();
     return s;
   }
-  s.rms_validation = validation_rms(s.model, val, o.init_samples);
+  s.model = f.model;
+  s.rms_estimation = f.rms;
+  s.rms_validation = val_rms;
   const double nval = static_cast<double>(val.n() * val.ny());
   s.score = s.rms_validation * s.rms_validation * (1.0 + 2.0 * s.effect_parameters / nval);
   s.parameters = effect_parameters(c.kind, c.label, s.model, previous);
@@ -99,6 +123,10 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
     const FitResult refit = fit_slots(current, refit_slots(current), est, o.fit);
     r.refit_validation = refit.finite ? validation_rms(refit.model, val, o.init_samples)
                                       : std::numeric_limits<double>::infinity();
+    if (o.joint_dynamics) {  // the no-effect reference gets the same freedom as the candidates
+      const FitResult joint = fit_slots(current, with_dynamics_slots(refit_slots(current), current), est, o.fit);
+      if (joint.finite) r.refit_validation = std::min(r.refit_validation, validation_rms(joint.model, val, o.init_samples));
+    }
     r.reference_validation = std::min(current_val, r.refit_validation);
     for (const EffectCandidate& c : candidate_effects(current, est, o.candidates))
       r.ranked.push_back(fit_candidate(c, est, val, o, current));
@@ -132,8 +160,10 @@ ojson effect_parameters(const std::string& kind, const std::string& label, const
     new_terms_json(fitted.C, previous.C, "C", fitted.scheduling, j);
     new_terms_json(fitted.D, previous.D, "D", fitted.scheduling, j);
     new_terms_json(fitted.B, previous.B, "B", fitted.scheduling, j);
-    j["enters"] = j.contains("B") ? "B (the state equation: x+ = A x + (B + f(rho) B_f) u)"
-                                  : "C, D (output correction S_C, eq. 10)";
+    new_terms_json(fitted.A, previous.A, "A", fitted.scheduling, j);
+    j["enters"] = j.contains("A")   ? "A (the state equation: x+ = (A + f(rho) A_f) x + B u, rho the model's own state)"
+                  : j.contains("B") ? "B (the state equation: x+ = A x + (B + f(rho) B_f) u)"
+                                    : "C, D (output correction S_C, eq. 10)";
     if (fitted.scheduling.size() > previous.scheduling.size()) {
       ojson s = ojson::object();
       for (size_t i = previous.scheduling.size(); i < fitted.scheduling.size(); ++i)

@@ -36,6 +36,10 @@ struct RankingOptions {
   double min_gain = 0.05;           ///< relative validation-RMS reduction an effect must achieve
   Eigen::Index init_samples = 5;    ///< validation samples used to fit x0
   FitOptions fit;
+  /// Re-fit A and B together with each effect and with the no-effect
+  /// reference (Wiener/Hammerstein: issue 9 item 2); false: only the output
+  /// map, offset, x0 and the effect move (the issue-4 behaviour).
+  bool joint_dynamics = true;
 };
 
 struct ScoredCandidate {

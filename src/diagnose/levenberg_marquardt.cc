@@ -39,12 +39,16 @@ LmResult levenberg_marquardt(const Residual& r, const Vec<double>& p0, const LmO
   int small_decreases = 0;
   while (out.iterations < options.max_iterations) {
     ++out.iterations;
-    Mat<double> H = JtJ;
     // Marquardt's scaling: damp each direction by its own curvature; the
     // floor keeps a parameter with a zero column (no influence) well posed.
+    // Solved in the scaled variables z = S p, S = diag(JᵀJ)^½, so that columns
+    // of very different size (a term x₁³ next to x₁) do not ruin the solve:
+    // (S⁻¹JᵀJS⁻¹ + λI) z = −S⁻¹g, step = S⁻¹z (the same step in exact arithmetic).
     const double floor = 1e-12 * std::max(1.0, JtJ.diagonal().maxCoeff());
-    for (Eigen::Index j = 0; j < H.rows(); ++j) H(j, j) += lambda * std::max(JtJ(j, j), floor);
-    const Vec<double> step = H.ldlt().solve(-g);
+    const Vec<double> scale = JtJ.diagonal().cwiseMax(floor).cwiseSqrt();
+    Mat<double> H = scale.cwiseInverse().asDiagonal() * JtJ * scale.cwiseInverse().asDiagonal();
+    H.diagonal().array() += lambda;
+    const Vec<double> step = scale.cwiseInverse().cwiseProduct(H.ldlt().solve(-g.cwiseQuotient(scale)));
     const Vec<double> trial = out.p + step;
     bool ok = step.allFinite() && (!admissible || admissible(trial));
     Vec<double> trial_res;

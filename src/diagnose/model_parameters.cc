@@ -61,6 +61,7 @@ void map_slots(const StaticMap<double>& g, Where lower, Where upper, Where coef,
 
 double& slot_value(LpvModel<double>& m, const ParameterSlot& s) {
   switch (s.where) {
+    case Where::kA: return at_checked(index_checked(m.A.terms, s.term).value, s.row, s.col);
     case Where::kC: return at_checked(index_checked(m.C.terms, s.term).value, s.row, s.col);
     case Where::kD: return at_checked(index_checked(m.D.terms, s.term).value, s.row, s.col);
     case Where::kB: return at_checked(index_checked(m.B.terms, s.term).value, s.row, s.col);
@@ -117,6 +118,45 @@ std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Mon
         for (int c = 0; c < m.B.terms[t].value.cols(); ++c)
           out.push_back({Where::kB, static_cast<int>(t), r, c, entry("B", f.text(m.scheduling), r, c)});
   return out;
+}
+
+namespace {
+
+/// Ones on the superdiagonal, zeros elsewhere outside the first column.
+bool observer_shaped(const Mat<double>& a) {
+  if (a.rows() != a.cols() || a.rows() < 2) return false;
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+    for (Eigen::Index j = 1; j < a.cols(); ++j)
+      if (a(i, j) != (j == i + 1 ? 1.0 : 0.0)) return false;
+  return true;
+}
+
+}  // namespace
+
+std::vector<ParameterSlot> dynamics_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> out;
+  // observer form: every A term (also f(ρ)·A_f) moves only in column 1
+  bool observer = false;
+  for (const auto& t : m.A.terms)
+    if (t.basis.is_constant()) observer = observer_shaped(t.value);
+  for (size_t t = 0; t < m.A.terms.size(); ++t) {
+    const Mat<double>& a = m.A.terms[t].value;
+    const std::string f = m.A.terms[t].basis.text(m.scheduling);
+    const Eigen::Index cols = observer ? 1 : a.cols();
+    for (Eigen::Index c = 0; c < cols; ++c)
+      for (Eigen::Index r = 0; r < a.rows(); ++r)
+        out.push_back({Where::kA, static_cast<int>(t), static_cast<int>(r), static_cast<int>(c),
+                       entry("A", f, static_cast<int>(r), static_cast<int>(c))});
+  }
+  term_slots(m.B, Where::kB, "B", m.scheduling, out);
+  return out;
+}
+
+double constant_a_radius(const LpvModel<double>& m) {
+  for (const auto& t : m.A.terms)
+    if (t.basis.degree() == 0 && t.value.rows() > 0)
+      return t.value.eigenvalues().cwiseAbs().maxCoeff();
+  return 0;
 }
 
 std::vector<ParameterSlot> offset_slots(const LpvModel<double>& m) {

@@ -6,10 +6,11 @@
 /// map C(ρ) = Σ_i f_i(ρ) C_i of eq. 8–10, including correction terms that
 /// were folded in as explicit terms), an offset value φ_j (eq. 20), an entry
 /// of x0, or a parameter of a static input/output map (model/static_blocks.h).
-/// A is never a slot, and B only through a basis term that diagnose adds in
-/// B (f(ρ)·B_f u, a state-entering input effect; then fixed, like the A_i,
-/// B_i of S_C in eq. 10). Without such a term and without a static output
-/// map the output is affine in every C, D, φ and x0 slot.
+/// A and B are slots only in the joint re-fit of the dynamics with an effect
+/// (dynamics_slots, issue 9 item 2): Wiener / Hammerstein models need the
+/// linear part re-estimated together with the static map. Without A, B slots
+/// and without a static output map the output is affine in every C, D, φ
+/// and x0 slot.
 
 #include <string>
 #include <vector>
@@ -20,7 +21,7 @@
 namespace lpvid {
 
 struct ParameterSlot {
-  enum class Where { kC, kD, kB, kOffset, kX0, kInputLower, kInputUpper, kInputCoef, kOutputLower, kOutputUpper, kOutputCoef };
+  enum class Where { kA, kC, kD, kB, kOffset, kX0, kInputLower, kInputUpper, kInputCoef, kOutputLower, kOutputUpper, kOutputCoef };
   Where where = Where::kC;
   int term = 0;  ///< term index (C, D), offset basis index, coefficient index
   int row = 0, col = 0;
@@ -39,6 +40,19 @@ LpvModel<double> with_slot_values(const LpvModel<double>& m, const std::vector<P
 std::vector<ParameterSlot> output_map_slots(const LpvModel<double>& m);
 /// Slots of the B terms with basis f (entries of f(ρ)·B_f).
 std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Monomial& f);
+/// Slots of the state equation for the joint re-fit (issue 9 item 2): every
+/// entry of every B term, and of every A term, except that when the constant
+/// A term is in observer canonical form (diagnose/observer_form.h: ones on
+/// the superdiagonal, zeros elsewhere outside column 1) every A term moves
+/// only in its first column: -a, the minimal parametrisation of the
+/// denominator, and for a term f(ρ)·A_f a feedback f(ρ)·A_f(:,1)·x_1.
+std::vector<ParameterSlot> dynamics_slots(const LpvModel<double>& m);
+
+/// Spectral radius of the constant A term (0 without one). The stability
+/// guard of the joint re-fit; ρ-dependent A terms are judged by whether the
+/// simulation stays finite.
+double constant_a_radius(const LpvModel<double>& m);
+
 /// Slots of every offset value (the offset must have values).
 std::vector<ParameterSlot> offset_slots(const LpvModel<double>& m);
 /// Slots of x0 (x0 is sized to nx).

@@ -77,7 +77,16 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
     LmOptions lm;
     lm.max_iterations = o.max_iterations;
     lm.relative_tolerance = o.rel_tol;
-    const LmResult fit = levenberg_marquardt(r, p0, lm);
+    const bool moves_a = std::any_of(slots.begin(), slots.end(),
+                                     [](const ParameterSlot& s) { return s.where == ParameterSlot::Where::kA; });
+    Admissible stable = nullptr;
+    if (moves_a)
+      stable = [&](const Vec<double>& q) { return constant_a_radius(with_slot_values(model, slots, q)) < o.max_radius; };
+    if (stable && !stable(p0)) {
+      res.rms = std::sqrt(r0.squaredNorm() / static_cast<double>(m));
+      return res;  // an unstable start is not moved (its free run is judged as it is)
+    }
+    const LmResult fit = levenberg_marquardt(r, p0, lm, stable);
     p = fit.p;
     res.iterations = fit.iterations;
   }

@@ -15,6 +15,7 @@
 
 #include "data/experiment.h"
 #include "diagnose/model_parameters.h"
+#include "diagnose/observer_form.h"
 
 namespace lpvid {
 
@@ -23,6 +24,9 @@ struct FitOptions {
   double rel_tol = 1e-10;      ///< stop when the cost falls by less (relative)
   Eigen::Index first_sample = 0;  ///< the cost starts here (earlier samples only run the state)
   Eigen::Index last_sample = -1;  ///< one past the last sample of the cost (-1: n)
+  /// Stability guard when A is a slot (issue 9 item 2): a step to a constant
+  /// A term with spectral radius >= this is rejected (observer_form.h).
+  double max_radius = kStableRadius;
 };
 
 struct FitResult {

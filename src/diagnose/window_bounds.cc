@@ -22,7 +22,7 @@ double round_digits(double x, int digits) {
 }  // namespace
 
 LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits) {
-  const std::vector<ParameterSlot> slots = refit_slots(m);
+  const std::vector<ParameterSlot> slots = with_dynamics_slots(refit_slots(m), m);
   Vec<double> p = slot_values(m, slots);
   for (Eigen::Index i = 0; i < p.size(); ++i) p(i) = round_digits(p(i), digits);
   return with_slot_values(m, slots, p);

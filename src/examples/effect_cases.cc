@@ -57,6 +57,23 @@ LpvModel<Rational> with_effect(const std::string& kind) {
     s.input.kind = StaticKind::kDeadZone;
     s.input.lower = dec("-0.4");
     s.input.upper = dec("0.4");
+  } else if (kind == "output_saturation") {
+    // one-sided: a sensor that clips at 1.2 (the lower limit is never reached)
+    s.output.kind = StaticKind::kSaturation;
+    s.output.lower = dec("-1000");
+    s.output.upper = dec("1.2");
+  } else if (kind == "input_polynomial") {
+    s.input.kind = StaticKind::kPolynomial;
+    s.input.coefficients = {dec("0"), dec("1"), dec("0"), dec("0.3")};
+  } else if (kind == "state_feedback") {
+    // scheduling on the model's own state (model/state_scheduling.h):
+    // A(ρ, x1) = A(ρ) + x1²·[0 0; −0.006 0], a cubic stiffness −0.006 x1³
+    // (small enough that the records stay bounded: |y| < 12 on the seeds used)
+    m.scheduling.push_back("xs");
+    m.columns.rho.push_back("@x1");
+    for (ParamMatrix<Rational>* pm : {&m.A, &m.B, &m.C, &m.D})
+      for (auto& t : pm->terms) t.basis.powers.push_back(0);
+    m.A.add(Monomial{{0, 2}}, literals::mat(2, 2, {"0", "0", "-0.006", "0"}));
   } else if (kind != "none") {
     std::string known;
     for (const auto& k : effect_case_kinds()) known += (known.empty() ? "" : ", ") + k;
@@ -94,10 +111,15 @@ Experiment<Rational> record(const LpvModel<Rational>& truth, int n, RandomStream
 }  // namespace
 
 const std::vector<std::string>& effect_case_kinds() {
-  static const std::vector<std::string> kinds = {"output_offset", "input_saturation",  "basis_term",
-                                                 "abs_value",     "output_polynomial", "input_delay",
-                                                 "dead_zone",     "none"};
+  static const std::vector<std::string> kinds = {"output_offset",     "input_saturation", "basis_term",
+                                                 "abs_value",         "output_polynomial", "input_delay",
+                                                 "dead_zone",         "output_saturation", "input_polynomial",
+                                                 "state_feedback",    "none"};
   return kinds;
+}
+
+std::string reported_effect_kind(const std::string& kind) {
+  return kind == "state_feedback" ? "basis_term" : kind;
 }
 
 EffectCase make_effect_case(const std::string& kind, int n, uint64_t seed, double noise_std) {

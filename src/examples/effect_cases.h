@@ -13,6 +13,11 @@
 ///   output_polynomial  y = ŷ + 0.4 ŷ²
 ///   input_delay        u'_k = u_{k−2}
 ///   dead_zone          u' = dz(u, −0.4, 0.4)
+///   output_saturation  y = min(ŷ, 1.2)            (a one-sided clip)
+///   input_polynomial   u' = u + 0.3 u³
+///   state_feedback     A gains x1²·[0 0; −0.006 0] (a cubic stiffness −0.006 x1³,
+///                      scheduled on the system's own state: "@x1"); diagnose
+///                      reports it as kind basis_term, entering A
 ///   none               nothing (the control case)
 ///
 /// Every number written is an exact decimal (8 digits), so the certificates
@@ -35,6 +40,8 @@ struct EffectCase {
 };
 
 /// The effect kinds the generator knows (the list above).
+/// The SPEC §8 effect kind diagnose should report for a generated kind.
+std::string reported_effect_kind(const std::string& kind);
 const std::vector<std::string>& effect_case_kinds();
 
 /// Throws InputError for an unknown kind or n < 20.

@@ -1,5 +1,7 @@
 #include "identify/alternating_identify.h"
 
+#include "model/simulate.h"
+
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -62,8 +64,9 @@ Vec<double> alternating_parameter_step(const AffineResidual<double>& a, const Ma
   return p;
 }
 
-IdentifyResult identify_alternating(const LpvModel<double>& model, const Experiment<double>& exp,
+IdentifyResult identify_alternating(const LpvModel<double>& model, const Experiment<double>& exp_in,
                                     const IdentifyOptions& options, SdpSolver& solver) {
+  const Experiment<double> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   options.objective.validate();
   const AffineResidual<double> a = build_affine_residual(model, exp, options.unknowns);
   IdentifyResult out;

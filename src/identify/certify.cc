@@ -290,8 +290,9 @@ double relative_gap(const CertifiedBounds& b) {
   return nearest_double((b.upper - b.lower.value) / b.upper);
 }
 
-CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                     const CertifyOptions& o, SdpSolver& solver) {
+  const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   const auto t0 = std::chrono::steady_clock::now();
   CertifiedBounds out;
   if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
@@ -408,8 +409,9 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   return out;
 }
 
-CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                   const Mat<double>& taps, const CertifyOptions& o, const std::string& solver_name) {
+  const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   CertifiedBounds out;
   if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
   const Simulation<Rational> sim = simulate(model, exp);
@@ -432,8 +434,9 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
 
 namespace lpvid {
 
-CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                           const CertifyOptions& o, SdpSolver& solver) {
+  const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   CertifiedBounds out;
   if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
   const Simulation<Rational> sim = simulate(model, exp);

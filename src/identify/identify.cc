@@ -1,4 +1,5 @@
 #include "identify/identify.h"
+#include "model/simulate.h"
 
 #include <chrono>
 #include <cmath>
@@ -45,8 +46,9 @@ ReducedProblem reduce_problem(const LpvModel<double>& model, const Experiment<do
   return rp;
 }
 
-IdentifyResult identify(const LpvModel<double>& model, const Experiment<double>& exp, const IdentifyOptions& options,
+IdentifyResult identify(const LpvModel<double>& model, const Experiment<double>& exp_in, const IdentifyOptions& options,
                         SdpSolver& solver) {
+  const Experiment<double> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   options.objective.validate();
   if (options.method == IdentifyMethod::kAlternating) return identify_alternating(model, exp, options, solver);
   ReducedProblem rp = reduce_problem(model, exp, options.unknowns);

@@ -29,6 +29,7 @@
 #include "model/lpv_model.h"
 #include "model/monomial.h"
 #include "model/param_matrix.h"
+#include "model/state_scheduling.h"
 #include "model/uncertainty_channel.h"
 
 namespace lpvid {
@@ -185,15 +186,37 @@ struct Simulation {
   Mat<T> z;       ///< n × nz: z_k = C1(ρ_k) x_k + D1(ρ_k) u_k
   Mat<T> offset;  ///< n × ny: Φ(ρ_k) (zero if the offset values are not given)
   Mat<T> output;  ///< n × ny: g_out(ŷ_k + Φ_k), the model's prediction of y (model/static_blocks.h)
+  Mat<T> rho;     ///< n × nρ: the scheduling used, "@x<i>" columns from the state (model/state_scheduling.h)
 };
 
 /// Simulates the model (SPEC §2, paper eq. 1 / 8–10) along the experiment's u
 /// and ρ from x_0 = model.x0 (zero if empty). The LPV part sees the input
 /// u' = g_in(u_{k−d}) of the model's static blocks (identity unless declared);
-/// the model's prediction of y is output = g_out(yhat + offset). Throws std::invalid_argument on size mismatches.
+/// the model's prediction of y is output = g_out(yhat + offset). A scheduling
+/// column "@x<i>" is the model's own state (model/state_scheduling.h): the
+/// experiment's column is ignored and recomputed. Throws std::invalid_argument on size mismatches.
+namespace detail {
+
+/// exp with zero columns inserted at the model's "@x<i>" scheduling positions
+/// when exp.rho lacks exactly those (they are not data); exp otherwise.
 template <typename T>
-Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp) {
+Experiment<T> with_state_columns(const LpvModel<T>& model, const Experiment<T>& exp) {
+  const auto own = state_scheduled(model.columns.rho, model.nx);
+  if (own.empty() || exp.rho.cols() + static_cast<Eigen::Index>(own.size()) != model.n_rho()) return exp;
+  Experiment<T> out = exp;
+  out.rho = Mat<T>::Zero(exp.n(), model.n_rho());
+  Eigen::Index from = 0;
+  for (Eigen::Index j = 0; j < model.n_rho(); ++j)
+    if (state_scheduling_index(model.columns.rho[static_cast<size_t>(j)]) < 0) out.rho.col(j) = exp.rho.col(from++);
+  return out;
+}
+
+}  // namespace detail
+
+template <typename T>
+Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp_in) {
   const SystemMatrices<T> s = system_matrices(model);
+  const Experiment<T> exp = detail::with_state_columns(model, exp_in);  // may omit "@x<i>" columns
   check_experiment(model, exp);
   const Eigen::Index n = exp.n(), nz = model.nz();
   Simulation<T> sim;
@@ -201,10 +224,16 @@ Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp) {
   sim.yhat = Mat<T>::Zero(n, model.ny);
   sim.z = Mat<T>::Zero(n, nz);
   sim.offset = Mat<T>::Zero(n, model.ny);
+  sim.rho = exp.rho;
+  const std::vector<std::pair<int, int>> own = state_scheduled(model.columns.rho, model.nx);
   const Mat<T> u_model = model.statics.model_input(exp.u);  // u' = g_in(u_{k−d})
   Vec<T> x = model.x0.size() == 0 ? Vec<T>(Vec<T>::Zero(model.nx)) : model.x0;
   for (Eigen::Index k = 0; k < n; ++k) {
-    const Vec<T> rho = detail::rho_at(exp.rho, k);
+    Vec<T> rho = detail::rho_at(exp.rho, k);
+    for (const auto& [j, i] : own) {
+      rho(j) = scheduling_grid(T(x(i)));
+      sim.rho(k, j) = rho(j);
+    }
     const Vec<T> u = u_model.row(k).transpose();
     sim.x.row(k) = x.transpose();
     sim.yhat.row(k) = (s.C.at(rho) * x + s.D.at(rho) * u).transpose();
@@ -348,6 +377,21 @@ Mat<T> offset_jacobian(const LpvModel<T>& model, const Experiment<T>& exp) {
     }
   }
   return J;
+}
+
+}  // namespace lpvid
+
+namespace lpvid {
+
+/// The experiment with its "@x<i>" scheduling columns filled from the
+/// model's own simulation (model/state_scheduling.h); unchanged otherwise.
+/// Every consumer of exp.rho that does not simulate (Toeplitz matrices,
+/// LMIs, regressors, the verifier) sees the trajectory through this.
+template <typename T>
+Experiment<T> with_state_scheduling(const LpvModel<T>& model, Experiment<T> exp) {
+  if (state_scheduled(model.columns.rho, model.nx).empty()) return exp;
+  exp.rho = simulate(model, exp).rho;  // full width even if exp omitted the "@x<i>" columns
+  return exp;
 }
 
 }  // namespace lpvid

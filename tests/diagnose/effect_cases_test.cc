@@ -49,9 +49,9 @@ TEST_P(EffectCaseTest, RightKindFirstAndValidationRmsFalls) {
     return;
   }
   ASSERT_EQ(first.chosen, 0) << kind << ": nothing chosen";
-  EXPECT_EQ(first.ranked.front().kind, kind) << "ranked first: " << first.ranked.front().label;
+  EXPECT_EQ(first.ranked.front().kind, reported_effect_kind(kind)) << "ranked first: " << first.ranked.front().label;
   ASSERT_FALSE(r.chosen.empty());
-  EXPECT_EQ(r.chosen.front().kind, kind);
+  EXPECT_EQ(r.chosen.front().kind, reported_effect_kind(kind));
   EXPECT_LE(r.after_validation, 0.7 * r.before_validation)
       << kind << ": validation RMS " << r.before_validation << " -> " << r.after_validation;
   // with the effect found, what is left is the noise (std 0.02)
@@ -105,6 +105,55 @@ TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
   std::ofstream(tampered) << text;
   const CertificateVerdict v = check_certificate_file(tampered);
   EXPECT_FALSE(v.holds);
+}
+
+/// A model scheduled on its own state ("@x1", model/state_scheduling.h):
+/// the certifier and the verifier both recompute ρ from the certified model
+/// in exact arithmetic. The truth certifies with d_max near the noise; a
+/// changed x1² coefficient or a changed x0 (which moves the whole ρ
+/// trajectory) must be rejected, and so must the same model with a plain
+/// data column in place of "@x1".
+TEST(EffectCases, StateScheduledCertificateVerifiesAndTamperingIsRejected) {
+  const EffectCase c = make_effect_case("state_feedback", 160, 3, 0.02);
+  ScratchDir dir("state-cert");
+  const std::string data = dir.file("est.csv");
+  write_experiment_csv(data, c.declared, c.estimation);
+  const LpvModel<double> truth = convert_model<double>(c.truth);
+  const Experiment<Rational> est_q = read_experiment<Rational>(data, c.truth);
+  const Experiment<double> est_d = read_experiment<double>(data, truth);
+  CertifyOptions co;
+  co.data_path = data;
+  co.certificate_path = dir.file("cert.json");
+  co.max_taps = 16;
+  auto solver = make_solver("csdp");
+  const WindowBounds w = certify_window(truth, est_d, est_q, 40, 140, 0, co, *solver);
+  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  ASSERT_TRUE(check_certificate_file(co.certificate_path).holds);
+  EXPECT_LT(w.bounds.dmax, 0.03);
+
+  std::ifstream in(co.certificate_path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  const auto tampered_verdict = [&](const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    std::string t = text;
+    if (at != std::string::npos) t.replace(at, from.size(), to);
+    const std::string path = dir.file("tampered.json");
+    std::ofstream(path) << t;
+    return check_certificate_file(path);
+  };
+  EXPECT_FALSE(tampered_verdict("\"-0.006\"", "\"-0.0061\"").holds) << "x1^2 coefficient";
+  EXPECT_FALSE(tampered_verdict("\"@x1\"", "\"rho1\"").holds) << "scheduling column";
+  const size_t x0 = text.find("\"x0\"");
+  ASSERT_NE(x0, std::string::npos);
+  const size_t open = text.find('"', text.find('[', x0)), close = text.find('"', open + 1);
+  const std::string first = text.substr(open, close - open + 1);
+  EXPECT_FALSE(tampered_verdict(text.substr(x0, close + 1 - x0),
+                                text.substr(x0, open - x0) + "\"" + (first == "\"1\"" ? "2" : "1") + "\"")
+                   .holds)
+      << "x0(1) " << first;
 }
 
 }  // namespace

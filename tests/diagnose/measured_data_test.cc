@@ -6,7 +6,7 @@
 //    end; the benchmark's figure (free-run RMS on Val, x0 from the first 5 Val
 //    samples) must be below the published linear reference 0.7574 V and below
 //    the starting model's;
-//  - dryer (nearly linear): no effect may be added.
+//  - dryer (linear with a transport delay): no nonlinear effect may be added.
 // The thresholds are the benchmark's published numbers, not our output.
 #include <filesystem>
 
@@ -81,7 +81,18 @@ TEST(MeasuredData, DryerGetsNoInventedEffect) {
   s.est = select_rows(all, 0, 500);
   s.val = select_rows(all, 500, 1000);
   const RankingResult r = diagnose(s, 2);
-  EXPECT_TRUE(r.chosen.empty()) << "chose " << (r.chosen.empty() ? "" : r.chosen.front().label);
+  // The dryer is linear with a transport delay: Ljung's models of these data
+  // use an input delay of 3 samples (System Identification Toolbox, "dryer2",
+  // arx with nk = 3). With the dynamics re-fitted jointly (issue 9 item 2) an
+  // input delay of at most 3 samples is a linear effect that may be found;
+  // any nonlinear effect is invented.
+  for (const ScoredCandidate& c : r.chosen) {
+    EXPECT_EQ(c.kind, "input_delay") << "chose " << c.label;
+    if (c.kind == "input_delay") {
+      EXPECT_LE(c.model.statics.input_delay, 3) << c.label;
+    }
+  }
+  RecordProperty("dryer_effects", static_cast<int>(r.chosen.size()));
 }
 
 }  // namespace

@@ -1,0 +1,43 @@
+#pragma once
+/// Starting points for output-map (Wiener) candidates when the linear part
+/// was fitted THROUGH the map (issue 9 items 2 and 6): the classical Wiener
+/// initialisation (Ljung, System Identification, 2nd ed., §5.5; Schoukens &
+/// Tiels, "Identification of block-oriented nonlinear systems starting from
+/// linear approximations", 2017): turn the measured y into a target v* for
+/// the signal before the map, fit the linear part to v* by output error,
+/// then put the map back and re-fit everything jointly.
+///
+///   polynomial   v*_k solves c_0 + v + c_2 v² + c_3 v³ = y_k, by Newton's
+///                method started at the current model's v_k (the root next
+///                to the current fit where the map is not monotone)
+///   |·|          v*_k = s_k y_k, the sign s_k flipped at every dip of y to
+///                near zero (a local minimum below the 15 % quantile, after y
+///                has risen above twice that level since the last flip): a
+///                signed signal crosses zero where its absolute value dips.
+///                Without this start a linear part fitted to |v| (whose best
+///                linear approximation is close to zero for an even map) can
+///                never become the signed v.
+
+#include <vector>
+
+#include "data/experiment.h"
+#include "model/lpv_model.h"
+
+namespace lpvid {
+
+/// v* for a polynomial output map (coefficients c_0, c_1 = 1, c_2, …) from
+/// the measured y and the current v (same length).
+Vec<double> polynomial_inverse_target(const std::vector<double>& coefficients, const Vec<double>& y,
+                                      const Vec<double>& v);
+
+/// v* = s ⊙ y for an absolute-value sensor (see above).
+Vec<double> sign_recovered_target(const Vec<double>& y);
+
+/// `start` with its output map set to `map` after its linear part (A, B, C,
+/// D, offset, x0; output map identity) was fitted to the target v* on the
+/// estimation inputs. Single output; returns `start` unchanged if the fit
+/// does not stay finite.
+LpvModel<double> fitted_to_target(const LpvModel<double>& start, const Experiment<double>& est,
+                                  const Vec<double>& target);
+
+}  // namespace lpvid
