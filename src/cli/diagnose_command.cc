@@ -11,8 +11,10 @@
 #include "cli/inputs.h"
 #include "cli/report.h"
 #include "core/input_error.h"
+#include "core/parallel_for.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
+#include "diagnose/bound_windows.h"
 #include "diagnose/effect_ranking.h"
 #include "diagnose/window_bounds.h"
 #include "diagnose/window_identification.h"
@@ -44,6 +46,7 @@ struct DiagnoseArgs {
   long window_length = 0;
   std::string plots_dir;
   std::string model_out;
+  int threads = static_cast<int>(default_thread_count());
 };
 
 std::pair<long, long> parse_range(const std::string& text, const char* flag) {
@@ -158,10 +161,9 @@ int run_diagnose(DiagnoseArgs& a) {
   }
   if (a.window_length > 0) {
     if (!windows.empty()) throw InputError("--window and --window-length exclude each other");
-    for (Eigen::Index b = 0; b < est_q.n(); b += a.window_length)
-      windows.emplace_back(b, std::min<Eigen::Index>(est_q.n(), b + a.window_length));
+    windows = tile_windows(est_q.n(), a.window_length, std::min<Eigen::Index>(kDefaultMinLastWindow, a.window_length / 4));
   }
-  if (windows.empty()) windows.emplace_back(0, std::min<Eigen::Index>(est_q.n(), 200));
+  if (windows.empty()) windows = default_bound_windows(est_q.n());  // the whole estimation record
   for (const auto& [b, e] : windows)
     if (e > est_q.n())
       throw InputError("--window " + std::to_string(b) + ":" + std::to_string(e) + " is outside the " +
@@ -183,17 +185,25 @@ int run_diagnose(DiagnoseArgs& a) {
     const size_t dot = c.rfind(".json");
     return dot == std::string::npos ? c : c.substr(0, dot);
   }();
+  co.scale_signals = true;  // λ on unit-RMS signals (identify/bound_scaling.h)
   auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
   const LpvModel<double> before = round_fitted_model(rank.before);
   const LpvModel<double> after = round_fitted_model(rank.after);
-  std::vector<WindowBounds> bb, ba;
-  for (size_t i = 0; i < windows.size(); ++i) {
+  // Every window, before and after, is one independent job (core/parallel_for.h).
+  // --write-sdpa numbers the programs it writes in solve order: sequential then.
+  const unsigned threads = a.common.write_sdpa.empty() ? static_cast<unsigned>(a.threads) : 1u;
+  std::vector<WindowBounds> bb(windows.size()), ba(windows.size());
+  parallel_for(2 * windows.size(), threads, [&](size_t job) {
+    const size_t i = job / 2;
+    const bool is_after = job % 2 == 1;
     const std::string tag = windows.size() == 1 ? "" : ".w" + std::to_string(i + 1);
-    co.certificate_path = cert_stem + tag + ".before.json";
-    bb.push_back(certify_window(before, est_d, est_q, windows[i].first, windows[i].second, file_offset, co, *solver));
-    co.certificate_path = cert_stem + tag + ".after.json";
-    ba.push_back(certify_window(after, est_d, est_q, windows[i].first, windows[i].second, file_offset, co, *solver));
-  }
+    CertifyOptions wo = co;
+    wo.certificate_path = cert_stem + tag + (is_after ? ".after.json" : ".before.json");
+    // one backend object per job; SDP solves serialise inside (solvers/sdp_solver.cc)
+    auto own = threads > 1 ? make_solver_for_cli(a.common.solver, a.common.write_sdpa) : nullptr;
+    (is_after ? ba : bb)[i] = certify_window(is_after ? after : before, est_d, est_q, windows[i].first,
+                                             windows[i].second, file_offset, wo, own ? *own : *solver);
+  });
   co.certificate_path = cert_stem + ".before.thm31.json";
   WindowIdentification before_id = identify_on_window(before, est_d, est_q, windows[0].first, windows[0].second,
                                                       file_offset, co, *solver);
@@ -266,11 +276,16 @@ Runner add_diagnose_command(CLI::App& app) {
                 "do not try basis terms scheduled on the measured inputs (rho = u)");
   cmd->add_option("--window", a->windows,
                   "estimation rows B:E on which the bounds are certified, several separated by commas "
-                  "(default 0:min(n,200))")
+                  "(default: the whole estimation record in windows of 200 rows, a last one under 50 rows merged)")
       ->delimiter(',');
   cmd->add_option("--window-length", a->window_length,
-                  "certify consecutive windows of this length covering the whole estimation record")
+                  "certify consecutive windows of this length covering the whole estimation record (a last one "
+                  "shorter than min(50, L/4) rows merged)")
       ->check(CLI::Range(10L, 100000L));
+  cmd->add_option("--threads", a->threads,
+                  "bound windows certified at once (default: the number of hardware threads); results do not depend "
+                  "on it")
+      ->check(CLI::Range(1, 1024));
   cmd->add_option("--plots", a->plots_dir, "directory for the PNG plots and their CSV data");
   cmd->add_option("--model-out", a->model_out, "write the model after diagnosis (exact, as certified)");
   return [cmd, a] { return cmd->parsed() ? run_diagnose(*a) : -1; };

@@ -24,6 +24,20 @@ std::string num(double x, int digits = 4) {
 
 ojson finite_or_null(double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); }
 
+/// The scales of identify/bound_scaling.h and the bounds in scaled units.
+ojson scaling_json(const CertifiedBounds& b) {
+  const SignalScales& sc = b.scales;
+  return {{"y_scale", sc.y_scale_text()},
+          {"z_scale", sc.z_scale_text()},
+          {"lambda_scaled", sc.lambda_scaled},
+          {"lambda_original_units", sc.lambda_original},
+          {"delta_scaled", b.verified ? ojson(sc.scaled_delta(b.delta)) : ojson(nullptr)},
+          {"dmax_scaled", b.verified ? ojson(sc.scaled_dmax(b.dmax)) : ojson(nullptr)},
+          {"meaning", "the objective lambda*delta'^2 + (1-lambda)*dmax'^2 is minimised on z/z_scale and y/y_scale; "
+                      "delta' = delta*z_scale/y_scale, dmax' = dmax/y_scale exactly (docs/bound_scaling.md); delta, "
+                      "dmax and the certificate are in the data's units"}};
+}
+
 /// Over all windows: δ, d_max are the largest of the per-window bounds (each
 /// window satisfies them on its own rows; nothing is claimed across windows).
 ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>& ws) {
@@ -32,6 +46,7 @@ ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>&
   j["rms_validation"] = finite_or_null(rms_val);
   bool all = !ws.empty();
   double delta = 0, dmax = 0;
+  int uninformative = 0;
   ojson list = ojson::array();
   for (const WindowBounds& w : ws) {
     const CertifiedBounds& b = w.bounds;
@@ -42,15 +57,23 @@ ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>&
                {"delta", b.verified ? ojson(b.delta) : ojson(nullptr)}, {"dmax", b.verified ? ojson(b.dmax) : ojson(nullptr)},
                {"verified", b.verified}, {"certificate", w.certificate}};
     if (!b.verified) e["reason"] = b.reason;
+    e["rms_output"] = finite_or_null(w.rms_output);
+    e["informative"] = w.informative;
+    e["note"] = w.note;
+    if (b.scales.applied) e["scaling"] = scaling_json(b);
+    uninformative += b.verified && !w.informative ? 1 : 0;
     list.push_back(std::move(e));
   }
   j["delta"] = all ? ojson(delta) : ojson(nullptr);
   j["dmax"] = all ? ojson(dmax) : ojson(nullptr);
   j["verified"] = all;
+  j["uninformative_windows"] = uninformative;
   j["windows"] = std::move(list);
   j["bounds_meaning"] = "Theorem 2.1 on exactly the rows of each window: the model (numbers rounded to 12 digits, "
                         "initial state = the fitted model's own state at the window's first row) explains them with "
-                        "||Delta|| <= delta and noise RMS <= dmax; delta, dmax here are the largest over the windows";
+                        "||Delta|| <= delta and noise RMS <= dmax; delta, dmax here are the largest over the windows. "
+                        "A window is informative when verified and dmax < rms_output (the RMS of its measured "
+                        "output): a model with zero output meets dmax = rms_output";
   return j;
 }
 
@@ -70,8 +93,15 @@ ojson identification_json(const WindowIdentification& id) {
   j["dmax"] = b.verified ? ojson(b.dmax) : ojson(nullptr);
   j["verified"] = b.verified;
   if (!b.verified) j["reason"] = b.reason;
+  j["informative"] = id.bounds.informative;
+  j["note"] = id.bounds.note + "; Theorem 3.1 is run on the first bound window only";
   j["certificate"] = id.bounds.certificate;
   return j;
+}
+
+/// The text flag of a verified but vacuous bound (window_bounds.h).
+std::string uninformative_mark(const WindowBounds& w) {
+  return w.informative ? "" : "  UNINFORMATIVE: dmax >= RMS of y there (" + num(w.rms_output) + ")";
 }
 
 std::string identification_line(const WindowIdentification& id) {
@@ -80,7 +110,8 @@ std::string identification_line(const WindowIdentification& id) {
   std::string basis;
   for (const auto& f : id.basis) basis += (basis.empty() ? "" : ", ") + f;
   if (!b.verified) return "not verified (" + b.reason + ")";
-  return "delta <= " + num(b.delta) + ", dmax <= " + num(b.dmax) + " (verified; basis {" + basis + "})";
+  return "delta <= " + num(b.delta) + ", dmax <= " + num(b.dmax) + " (verified; basis {" + basis + "})" +
+         uninformative_mark(id.bounds);
 }
 
 bool all_verified(const std::vector<WindowBounds>& ws) {
@@ -153,7 +184,7 @@ std::string bound_line(const WindowBounds& w) {
   const CertifiedBounds& b = w.bounds;
   if (!b.verified) return "not verified (" + b.reason + ")";
   return "delta <= " + num(b.delta) + ", dmax <= " + num(b.dmax) + " (verified, file rows " +
-         std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + ")";
+         std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + ")" + uninformative_mark(w);
 }
 
 }  // namespace
@@ -215,11 +246,28 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
             << "  after       " << num(r.after_estimation) << std::string(16 - std::min<size_t>(15, num(r.after_estimation).size()), ' ')
             << num(r.after_validation) << std::string(16 - std::min<size_t>(15, num(r.after_validation).size()), ' ')
             << bound_line(in.after.front()) << "\n";
+  std::string rows;
+  for (const WindowBounds& w : in.before) rows += (rows.empty() ? "" : ", ") + std::to_string(w.begin) + ":" + std::to_string(w.end);
+  std::cout << "  bounds on " << in.before.size() << " window" << (in.before.size() == 1 ? "" : "s")
+            << " of estimation rows " << rows << " (Theorem 2.1 on each window's rows alone; window 1 above)\n";
   for (size_t i = 1; i < in.before.size(); ++i)
-    std::cout << "  window " << i + 1 << "    before: " << bound_line(in.before[i]) << "\n"
+    std::cout << "  window " << i + 1 << " (estimation rows " << in.before[i].begin << ":" << in.before[i].end << ")\n"
+              << "              before: " << bound_line(in.before[i]) << "\n"
               << "              after:  " << bound_line(in.after[i]) << "\n";
+  int uninformative = 0;
+  for (const auto* side : {&in.before, &in.after})
+    for (const WindowBounds& w : *side) uninformative += w.bounds.verified && !w.informative ? 1 : 0;
+  if (uninformative > 0)
+    std::cout << "  " << uninformative << " of " << 2 * in.before.size()
+              << " verified bounds are uninformative: dmax >= the RMS of the measured output on the "
+                 "window, which a model with zero output already meets\n";
+  const SignalScales& sc = in.before.front().bounds.scales;
+  if (sc.applied)
+    std::cout << "  objective on scaled signals: y / " << sc.y_scale_text() << ", z / " << sc.z_scale_text()
+              << " (window 1; lambda = " << num(sc.lambda_scaled) << " there is " << num(sc.lambda_original, 6)
+              << " in the data's units; bounds above in the data's units)\n";
   std::cout << "  Theorem 3.1 again on file rows " << in.before.front().file_begin << ":" << in.before.front().file_end
-            << " (the output map re-identified with x0 free, alternating method):\n"
+            << " (the first window only; the output map re-identified with x0 free, alternating method):\n"
             << "    before    " << identification_line(in.before_id) << "\n"
             << "    after     " << identification_line(in.after_id) << "\n";
   std::cout << "  certificates " << in.before.front().certificate << ", " << in.after.front().certificate

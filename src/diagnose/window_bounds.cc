@@ -1,5 +1,6 @@
 #include "diagnose/window_bounds.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -54,7 +55,23 @@ WindowBounds certify_window(const LpvModel<double>& model, const Experiment<doub
   options.row_end = w.file_end;
   w.certificate = options.certificate_path;
   w.bounds = certify_fixed_model(w.model, select_rows(est_q, begin, end), options, solver);
+  judge_informative(w, est_d.y.middleRows(begin, end - begin));
   return w;
+}
+
+void judge_informative(WindowBounds& w, const Mat<double>& y) {
+  w.rms_output = y.size() > 0 ? std::sqrt(y.squaredNorm() / static_cast<double>(y.size())) : 0.0;
+  if (!w.bounds.verified) {
+    w.informative = false;
+    w.note = "not verified";
+    return;
+  }
+  w.informative = w.bounds.dmax < w.rms_output;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "dmax %.4g %s the RMS %.4g of the measured output on these rows%s", w.bounds.dmax,
+                w.informative ? "is below" : ">=", w.rms_output,
+                w.informative ? "" : ": uninformative (a model with zero output meets dmax = that RMS)");
+  w.note = buf;
 }
 
 }  // namespace lpvid

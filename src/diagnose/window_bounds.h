@@ -27,7 +27,20 @@ struct WindowBounds {
   CertifiedBounds bounds;
   LpvModel<Rational> model;           ///< the exact model that was certified
   std::string certificate;            ///< its certificate file
+  /// Issue 9 item 5: a verified bound can still say nothing. RMS of the
+  /// measured output on the window (all n·ny entries, SPEC §4's
+  /// normalisation); the bound is informative when it is verified and
+  /// d_max < that RMS: a model with zero output (ŷ = 0, w = 0) already meets
+  /// d_max = rms(y), so a d_max at or above it does not show that the model
+  /// explains anything. `note` says why not.
+  double rms_output = 0;
+  bool informative = false;
+  std::string note;
 };
+
+/// Sets rms_output, informative and note from the bounds and the window's
+/// measured output `y` (n × ny).
+void judge_informative(WindowBounds& w, const Mat<double>& y);
 
 /// The fitted model's slot values rounded to `digits` significant digits.
 LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits = 12);

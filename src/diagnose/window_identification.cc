@@ -71,6 +71,7 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   co.row_end = out.bounds.file_end;
   if (out.result.taps.size() > 0) out.bounds.bounds = certify_with_taps(fixed, wq, out.result.taps, co, solver.name());
   if (!out.bounds.bounds.verified) out.bounds.bounds = certify_fixed_model(fixed, wq, co, solver);
+  judge_informative(out.bounds, wd.y);
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include "lmi/delta_form_lmi.h"
 #include "lmi/delta_kyp_lmi.h"
 #include "lmi/relaxed_bmi_lmi.h"
+#include "identify/bound_scaling.h"
 #include "identify/dual_certify.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "model/simulate.h"
@@ -291,17 +292,26 @@ double relative_gap(const CertifiedBounds& b) {
 }
 
 CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
-                                    const CertifyOptions& o, SdpSolver& solver) {
+                                    const CertifyOptions& options, SdpSolver& solver) {
   const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   const auto t0 = std::chrono::steady_clock::now();
   CertifiedBounds out;
-  if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
+  if (options.certificate_path.empty()) throw InputError("certify: no certificate path given");
   // 1. Exact signals.
   const Simulation<Rational> sim = simulate(model, exp);
   const Mat<Rational> r = exp.y - sim.output;
   const Eigen::Index n = exp.n();
   const Eigen::Index L = n - leading_zero_samples(sim.z);
   if (L == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(sim.z));  // throws the usual InputError
+  // A weighted objective stated on signals scaled to unit size (identify/
+  // bound_scaling.h): the same program in original units with λ_orig.
+  CertifyOptions o = options;
+  SignalScales scales;
+  if (o.scale_signals) {
+    scales = signal_scales(nearest_double(sim.z), nearest_double(exp.y), o.objective,
+                           model.uncertainty.structure == UncertaintyStructure::kMultiplicative);
+    o.objective = objective_in_original_units(o.objective, scales);
+  }
 
   // 2. Δ form in floating point; fixed bounds are tightened a little so that
   // rounding does not push the exact values over them.
@@ -405,6 +415,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
     out.lower.reason = "not requested";
   }
   if (kyp && feasibility && !out.verified) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
+  out.scales = scales;
   out.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -20,6 +20,7 @@
 
 #include "core/scalar.h"
 #include "data/experiment.h"
+#include "identify/bound_scaling.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
@@ -60,6 +61,10 @@ struct CertifyOptions {
   /// the full horizon.
   bool structured = true;
   long full_horizon_limit = 400;
+  /// A weighted objective λδ² + (1−λ)d_max² is meant for z and y scaled by
+  /// powers of ten to RMS ~1 (identify/bound_scaling.h); the certificate
+  /// stays in original units. Other objectives are unaffected.
+  bool scale_signals = false;
 };
 
 struct CertifiedBounds {
@@ -90,6 +95,7 @@ struct CertifiedBounds {
   Rational upper;             ///< the objective at the primal certificate (when verified)
   bool full_horizon = false;  ///< the certificates come from a full-horizon solve (K = L)
   double total_seconds = 0;
+  SignalScales scales;        ///< with CertifyOptions::scale_signals: the scales and λ in original units
 };
 
 /// Relative gap (upper − lower)/upper of a certified interval (0 when upper = 0).

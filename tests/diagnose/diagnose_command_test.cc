@@ -104,6 +104,37 @@ TEST_F(DiagnoseCommandTest, TestRoleIsScoredOnceAndNeverChooses) {
   EXPECT_TRUE(report("t3.json")["test"].is_null());
 }
 
+// Issue 9 item 5: without --window the bounds cover the whole estimation
+// record (windows of 200 rows; a last one of 70 >= 50 rows stays its own),
+// each window states its rows, every certificate passes the verifier, and
+// certifying the windows on two threads reports exactly what one thread does.
+TEST_F(DiagnoseCommandTest, WindowsCoverTheRecordAndThreadsDoNotChangeTheBounds) {
+  const EffectCase c = make_effect_case("none", 270, 7, 0.02);
+  write_csv(est, {{"u1", column_text(c.estimation.u, 0)}, {"y1", column_text(c.estimation.y, 0)},
+                  {"rho1", column_text(c.estimation.rho, 0)}});
+  const std::string common = "--data " + est + " --model " + model + " --validation " + val + " --max-effects 1";
+  ASSERT_EQ(run("diagnose", common + " --threads 1 --report " + file("seq.json")), 0) << output();
+  ASSERT_EQ(run("diagnose", common + " --threads 2 --report " + file("par.json")), 0) << output();
+  EXPECT_NE(output().find("estimation rows 200:270"), std::string::npos) << output();
+  EXPECT_NE(output().find("first window only"), std::string::npos) << output();
+  const nlohmann::json seq = report("seq.json"), par = report("par.json");
+  for (const char* side : {"before", "after"}) {
+    const nlohmann::json& ws = seq[side]["windows"];
+    ASSERT_EQ(ws.size(), 2u) << side;
+    EXPECT_EQ(ws[0]["estimation_rows"], nlohmann::json::array({0, 200}));
+    EXPECT_EQ(ws[1]["estimation_rows"], nlohmann::json::array({200, 270}));
+    ASSERT_EQ(par[side]["windows"].size(), 2u) << side;
+    for (size_t i = 0; i < 2; ++i) {
+      const nlohmann::json& a = ws[i];
+      const nlohmann::json& b = par[side]["windows"][i];
+      for (const char* key : {"estimation_rows", "file_rows", "delta", "dmax", "verified", "informative", "rms_output"})
+        EXPECT_EQ(a[key], b[key]) << side << " window " << i << " " << key;
+      EXPECT_TRUE(b["informative"].is_boolean());
+      EXPECT_EQ(run_program(verify_exe, "certificate " + b["certificate"].get<std::string>()), 0) << output();
+    }
+  }
+}
+
 TEST_F(DiagnoseCommandTest, BadInputIsRejectedWithTheReason) {
   const std::string base = "diagnose --data " + est + " --model " + model + " ";
   EXPECT_EQ(run_program(exe, base + "--validation-columns a,b,c"), 2);
@@ -113,6 +144,7 @@ TEST_F(DiagnoseCommandTest, BadInputIsRejectedWithTheReason) {
   EXPECT_EQ(run_program(exe, base + "--window 0:5000"), 2);
   EXPECT_NE(output().find("window"), std::string::npos) << output();
   EXPECT_EQ(run_program(exe, base + "--holdout 1.5"), 2);
+  EXPECT_EQ(run_program(exe, base + "--threads 0"), 2);
   std::ofstream(file("nan.csv")) << "u1,y1,rho1\n1,2,0\nnan,1,0\n";
   EXPECT_EQ(run_program(exe, "diagnose --data " + file("nan.csv") + " --model " + model), 2);
   EXPECT_NE(output().find("nan.csv:3"), std::string::npos) << output();

@@ -1,0 +1,109 @@
+// Issue 9 item 5: a verified bound is flagged uninformative when d_max is at
+// least the RMS of the measured output on its window. Known answers by
+// construction (tests/support/siso_window_case.h):
+//  - the model IS the generating system and the noise is 1 % of the signal:
+//    Δ = 0 gives d_max = RMS(noise), so the optimum of λδ² + (1−λ)d_max² has
+//    d_max ≤ RMS(noise) ≪ RMS(y): informative;
+//  - an unrelated model: u = 0 (so z = 0, and by causality w = 0) on the first
+//    30 of 40 rows, where y alternates ±1 and the model's offset is φ = 1.
+//    There d = y − φ, so ‖d‖² ≥ 15·(1−1)² + 15·(−1−1)² = 60, d_max² ≥ 60/40
+//    = 1.5 > RMS(y)² = 30/40: the bound must be vacuous, whatever the solver.
+#include <gtest/gtest.h>
+
+#include "diagnose/bound_windows.h"
+#include "diagnose/window_bounds.h"
+#include "support/gen_identify.h"
+#include "support/scratch_dir.h"
+#include "support/siso_window_case.h"
+#include "verify/certificate_check.h"
+
+namespace lpvid {
+namespace {
+
+using namespace gen;
+
+WindowBounds certify_case(const ScratchDir& dir, const std::string& model_json, const std::vector<long>& u,
+                          const std::vector<long>& y) {
+  const std::string data = dir.file("data.csv");
+  write_siso_csv(data, u, y, 6);
+  const LpvModel<double> md = parse_model_json<double>(model_json, "model");
+  const Experiment<double> ed = read_siso_csv(data, md);
+  const Experiment<Rational> eq = read_siso_csv(data, parse_model_json<Rational>(model_json, "model"));
+  auto solver = make_solver("csdp");
+  const CertifyOptions o = gen::certify_options(weighted_objective(), data, dir.file("cert.json"));
+  return certify_window(md, ed, eq, 0, ed.n(), 0, o, *solver);
+}
+
+TEST(WindowInformative, GeneratingSystemIsInformative) {
+  ScratchDir dir("informative_yes");
+  std::vector<long> u, y;
+  siso_generated(120, 10000, u, y);  // noise ≤ 0.01, y of RMS ~0.8
+  const WindowBounds w = certify_case(dir, siso_window_model_json(), u, y);
+  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  EXPECT_TRUE(check_certificate_file(w.certificate).holds);
+  EXPECT_TRUE(w.informative) << w.note;
+  EXPECT_LT(w.bounds.dmax, 0.02);  // ≤ RMS(noise) + rounding, by the argument above
+  EXPECT_GT(w.rms_output, 0.5);
+}
+
+TEST(WindowInformative, UnrelatedModelIsFlaggedButStaysVerified) {
+  ScratchDir dir("informative_no");
+  std::vector<long> u(40, 0), y(40, 0);
+  SmallLcg g;
+  for (size_t k = 0; k < 40; ++k) {
+    if (k < 30) y[k] = k % 2 == 0 ? 1000000 : -1000000;
+    else u[k] = g.next(1000000);
+  }
+  const WindowBounds w = certify_case(dir, siso_window_model_json("1"), u, y);
+  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  EXPECT_TRUE(check_certificate_file(w.certificate).holds);
+  EXPECT_GE(w.bounds.dmax2, Rational(3, 2));  // the exact lower bound derived above
+  EXPECT_DOUBLE_EQ(w.rms_output, std::sqrt(0.75));
+  EXPECT_FALSE(w.informative);
+  EXPECT_NE(w.note.find("uninformative"), std::string::npos) << w.note;
+}
+
+TEST(WindowInformative, UnverifiedIsNeverInformative) {
+  WindowBounds w;
+  w.bounds.verified = false;
+  w.bounds.dmax = 0;  // would pass the RMS rule
+  judge_informative(w, Mat<double>::Ones(5, 1));
+  EXPECT_FALSE(w.informative);
+}
+
+// Default windows (bound_windows.h): known by arithmetic.
+TEST(BoundWindows, DefaultCoversTheRecordAndMergesAShortTail) {
+  using W = std::vector<RowWindow>;
+  EXPECT_EQ(default_bound_windows(1000), (W{{0, 200}, {200, 400}, {400, 600}, {600, 800}, {800, 1000}}));
+  EXPECT_EQ(default_bound_windows(1049), (W{{0, 200}, {200, 400}, {400, 600}, {600, 800}, {800, 1049}}));
+  EXPECT_EQ(default_bound_windows(1050), (W{{0, 200}, {200, 400}, {400, 600}, {600, 800}, {800, 1000}, {1000, 1050}}));
+  EXPECT_EQ(default_bound_windows(120), (W{{0, 120}}));
+  EXPECT_EQ(default_bound_windows(30), (W{{0, 30}}));
+  EXPECT_TRUE(default_bound_windows(0).empty());
+  EXPECT_EQ(tile_windows(25, 10, 5), (W{{0, 10}, {10, 20}, {20, 25}}));
+  EXPECT_EQ(tile_windows(24, 10, 5), (W{{0, 10}, {10, 24}}));
+}
+
+TEST(BoundWindows, TilesAreContiguousAndLongEnough) {
+  for (Eigen::Index n = 1; n < 700; n += 7)
+    for (const Eigen::Index len : {10, 37, 200}) {
+      const Eigen::Index min_last = std::min<Eigen::Index>(50, len / 4);
+      const std::vector<RowWindow> w = tile_windows(n, len, min_last);
+      ASSERT_FALSE(w.empty());
+      EXPECT_EQ(w.front().first, 0);
+      EXPECT_EQ(w.back().second, n);
+      for (size_t i = 0; i < w.size(); ++i) {
+        if (i > 0) {
+          EXPECT_EQ(w[i].first, w[i - 1].second);
+        }
+        const Eigen::Index l = w[i].second - w[i].first;
+        EXPECT_LT(l, len + min_last) << n << " " << len;
+        if (w.size() > 1) {
+          EXPECT_GE(l, min_last) << n << " " << len;
+        }
+      }
+    }
+}
+
+}  // namespace
+}  // namespace lpvid
