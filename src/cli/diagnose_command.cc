@@ -42,6 +42,8 @@ struct DiagnoseArgs {
   int max_delay = 5;
   int init_samples = 5;
   bool input_scheduling = true;
+  int state_degree = CandidateOptions{}.state_degree;
+  bool joint_dynamics = RankingOptions{}.joint_dynamics;
   std::vector<std::string> windows;
   long window_length = 0;
   std::string plots_dir;
@@ -174,6 +176,8 @@ int run_diagnose(DiagnoseArgs& a) {
   ro.init_samples = a.init_samples;
   ro.candidates.max_degree = a.degree;
   ro.candidates.max_delay = a.max_delay;
+  ro.candidates.state_degree = a.state_degree;
+  ro.joint_dynamics = a.joint_dynamics;
   const RankingResult rank = rank_effects(declared, est_d, val_d, ro);
 
   CertifyOptions co = certify_options(a.common, in.objective);  // rows: set per window
@@ -270,6 +274,12 @@ Runner add_diagnose_command(CLI::App& app) {
   cmd->add_option("--min-gain", a->min_gain, "relative validation-RMS reduction an effect must reach (default 0.05)");
   cmd->add_option("--degree", a->degree, "largest degree of basis-term monomials (default 2)")->check(CLI::Range(1, 6));
   cmd->add_option("--max-delay", a->max_delay, "largest input delay tried (default 5)")->check(CLI::Range(0, 100));
+  cmd->add_option("--state-degree", a->state_degree,
+                  "candidates x1^1..x1^D in A, scheduled on the model's own state (model column \"@x1\"; 0: none; default 3)")
+      ->check(CLI::Range(0, 6));
+  cmd->add_flag("!--fixed-dynamics", a->joint_dynamics,
+                "keep A, B as declared in every candidate fit (default: each candidate is also fitted with A, B "
+                "re-fitted jointly, and the selection rows pick the better of the two)");
   cmd->add_option("--init-samples", a->init_samples, "validation samples used to fit the initial state (default 5)")
       ->check(CLI::Range(1, 100000));
   cmd->add_flag("!--no-input-scheduling", a->input_scheduling,
