@@ -6,6 +6,7 @@
 
 #include "diagnose/wiener_starts.h"
 #include "model/simulate.h"
+#include "model/state_scheduling.h"
 
 namespace lpvid {
 
@@ -199,6 +200,29 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
       s.offset.basis.push_back(one);
       s.offset.values.push_back(Vec<double>::Zero(base.ny));
       out.push_back(make("output_offset", "output_offset phi (constant)", base.ny, {s}));
+    }
+    // Φ(ρ) = Σ_j h_j(ρ) φ_j (eq. 20, SPEC §2) over {1, ρ_i, …, ρ_i^max_degree} for
+    // each measured scheduling variable ρ_i (not an input, not the model's state)
+    for (size_t i = 0; i < base.scheduling.size(); ++i) {
+      const std::string& col = base.columns.rho[i];
+      if (state_scheduling_index(col) >= 0 ||
+          std::find(base.columns.u.begin(), base.columns.u.end(), col) != base.columns.u.end())
+        continue;
+      LpvModel<double> s = base;
+      std::string basis_text;
+      int added = 0;
+      for (int d = 0; d <= o.max_degree; ++d) {
+        Monomial h = constant_monomial(base.scheduling.size());
+        h.powers[i] = d;
+        basis_text += (d ? ", " : "") + h.text(base.scheduling);
+        if (std::find(s.offset.basis.begin(), s.offset.basis.end(), h) != s.offset.basis.end()) continue;
+        s.offset.basis.push_back(h);
+        s.offset.values.push_back(Vec<double>::Zero(base.ny));
+        ++added;
+      }
+      if (added > 1)
+        out.push_back(make("output_offset", "output_offset phi(" + base.scheduling[i] + ") over {" + basis_text + "}",
+                           base.ny * added, {s}));
     }
   }
 

@@ -10,7 +10,8 @@
 ///                      in the output, f a monomial of the model's scheduling
 ///                      variables (with_input_scheduling adds the measured
 ///                      inputs as scheduling variables: ρ = u)
-///   output_offset      Φ(ρ) (eq. 20) with basis 1 (and ρ monomials)
+///   output_offset      Φ(ρ) (eq. 20): a constant, and Φ(ρ_i) over {1, ρ_i, …,
+///                      ρ_i^max_degree} for each measured scheduling variable
 ///   input_saturation   static input map (model/static_blocks.h)
 ///   output_saturation  static output map
 ///   dead_zone          static input map

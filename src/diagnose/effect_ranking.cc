@@ -174,6 +174,9 @@ ojson effect_parameters(const std::string& kind, const std::string& label, const
     ojson phi = ojson::array();
     for (const auto& v : fitted.offset.values) phi.push_back(matrix_json(v.transpose()).front());
     j["phi"] = std::move(phi);
+    ojson basis = ojson::array();
+    for (const Monomial& h : fitted.offset.basis) basis.push_back(h.text(fitted.scheduling));
+    j["basis"] = std::move(basis);
   }
   const auto map_json = [&](const StaticMap<double>& g) {
     ojson m = ojson::object();

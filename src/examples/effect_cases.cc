@@ -57,6 +57,9 @@ LpvModel<Rational> with_effect(const std::string& kind) {
     s.input.kind = StaticKind::kDeadZone;
     s.input.lower = dec("-0.4");
     s.input.upper = dec("0.4");
+  } else if (kind == "scheduled_offset") {
+    m.offset.basis = {kOne, kRho};
+    m.offset.values = {Vec<Rational>::Constant(1, dec("0.3")), Vec<Rational>::Constant(1, dec("0.6"))};
   } else if (kind == "output_saturation") {
     // one-sided: a sensor that clips at 1.2 (the lower limit is never reached)
     s.output.kind = StaticKind::kSaturation;
@@ -114,12 +117,14 @@ const std::vector<std::string>& effect_case_kinds() {
   static const std::vector<std::string> kinds = {"output_offset",     "input_saturation", "basis_term",
                                                  "abs_value",         "output_polynomial", "input_delay",
                                                  "dead_zone",         "output_saturation", "input_polynomial",
-                                                 "state_feedback",    "none"};
+                                                 "state_feedback",    "scheduled_offset",  "none"};
   return kinds;
 }
 
 std::string reported_effect_kind(const std::string& kind) {
-  return kind == "state_feedback" ? "basis_term" : kind;
+  if (kind == "state_feedback") return "basis_term";
+  if (kind == "scheduled_offset") return "output_offset";
+  return kind;
 }
 
 EffectCase make_effect_case(const std::string& kind, int n, uint64_t seed, double noise_std) {

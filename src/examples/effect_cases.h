@@ -18,6 +18,7 @@
 ///   state_feedback     A gains x1²·[0 0; −0.006 0] (a cubic stiffness −0.006 x1³,
 ///                      scheduled on the system's own state: "@x1"); diagnose
 ///                      reports it as kind basis_term, entering A
+///   scheduled_offset   y = ŷ + 0.3 + 0.6 ρ1 (Φ(ρ) of eq. 20; reported as output_offset)
 ///   none               nothing (the control case)
 ///
 /// Every number written is an exact decimal (8 digits), so the certificates
