@@ -70,12 +70,14 @@ TEST(EffectCases, UnknownKindIsAnInputError) {
   EXPECT_THROW(make_effect_case("none", 5, 1, 0.02), InputError);
 }
 
-/// The after-model of the input_saturation case, certified on a window: the
-/// verifier recomputes sat(u) exactly; moving the saturation level in the
-/// certificate text must make it invalid.
-TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
-  const EffectCase c = make_effect_case("input_saturation", 200, 3, 0.02);
-  ScratchDir dir("effect-cert");
+/// The truth of a generated case, certified on estimation rows [begin, end)
+/// through the data file as the CLI does (the certificate is written in `dir`).
+struct CertifiedTruth {
+  WindowBounds window;
+  std::string certificate;
+};
+
+CertifiedTruth certify_truth(const EffectCase& c, const ScratchDir& dir, Eigen::Index begin, Eigen::Index end) {
   const std::string data = dir.file("est.csv");
   write_experiment_csv(data, c.declared, c.estimation);
   const LpvModel<double> truth = convert_model<double>(c.truth);
@@ -86,13 +88,23 @@ TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
   co.certificate_path = dir.file("cert.json");
   co.max_taps = 16;
   auto solver = make_solver("csdp");
-  const WindowBounds w = certify_window(truth, est_d, est_q, 0, 120, 0, co, *solver);
+  return {certify_window(truth, est_d, est_q, begin, end, 0, co, *solver), co.certificate_path};
+}
+
+/// The after-model of the input_saturation case, certified on a window: the
+/// verifier recomputes sat(u) exactly; moving the saturation level in the
+/// certificate text must make it invalid.
+TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
+  const EffectCase c = make_effect_case("input_saturation", 200, 3, 0.02);
+  ScratchDir dir("effect-cert");
+  const CertifiedTruth ct = certify_truth(c, dir, 0, 120);
+  const WindowBounds& w = ct.window;
   ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
-  EXPECT_TRUE(check_certificate_file(co.certificate_path).holds);
+  EXPECT_TRUE(check_certificate_file(ct.certificate).holds);
   // the noise is the only misfit: dmax near the noise std
   EXPECT_LT(w.bounds.dmax, 0.03);
 
-  std::ifstream in(co.certificate_path);
+  std::ifstream in(ct.certificate);
   std::stringstream ss;
   ss << in.rdbuf();
   std::string text = ss.str();
@@ -116,22 +128,13 @@ TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
 TEST(EffectCases, StateScheduledCertificateVerifiesAndTamperingIsRejected) {
   const EffectCase c = make_effect_case("state_feedback", 160, 3, 0.02);
   ScratchDir dir("state-cert");
-  const std::string data = dir.file("est.csv");
-  write_experiment_csv(data, c.declared, c.estimation);
-  const LpvModel<double> truth = convert_model<double>(c.truth);
-  const Experiment<Rational> est_q = read_experiment<Rational>(data, c.truth);
-  const Experiment<double> est_d = read_experiment<double>(data, truth);
-  CertifyOptions co;
-  co.data_path = data;
-  co.certificate_path = dir.file("cert.json");
-  co.max_taps = 16;
-  auto solver = make_solver("csdp");
-  const WindowBounds w = certify_window(truth, est_d, est_q, 40, 140, 0, co, *solver);
+  const CertifiedTruth ct = certify_truth(c, dir, 40, 140);
+  const WindowBounds& w = ct.window;
   ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
-  ASSERT_TRUE(check_certificate_file(co.certificate_path).holds);
+  ASSERT_TRUE(check_certificate_file(ct.certificate).holds);
   EXPECT_LT(w.bounds.dmax, 0.03);
 
-  std::ifstream in(co.certificate_path);
+  std::ifstream in(ct.certificate);
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string text = ss.str();
