@@ -82,7 +82,12 @@ RC_GTEST_PROP(DeltaFormBarrier, FixedBoundsAgreeWithTheGeneralSdpSolver, ()) {
   const DeltaFormSolution ref = solve_delta_form(s.z, s.r, opt, *csdp, SolverOptions{}, 0);
   RC_PRE(ref.solve.status == SolveStatus::kOptimal);
   const double dmax_star = std::sqrt(ref.dmax2);
-  RC_PRE(dmax_star > 1e-8 * s.r.norm());
+  // The ±5 % margin (±10 % in d_max²) must exceed CSDP's own accuracy on the
+  // reference optimum, an absolute ~1e-8 at the problem's scale ‖r‖²/N (the
+  // objective at h = 0): CI seed 7581437237894660335 drew d_max*² = 7e-16 with
+  // ‖r‖²/N ~ 1e-7, where CSDP's d_max* is off by more than 5 % and the barrier
+  // rightly found 0.95·d_max* feasible.
+  RC_PRE(ref.dmax2 > 1e-5 * s.r.squaredNorm() / static_cast<double>(s.r.rows()));
   const bool above = *rc::gen::arbitrary<bool>();
   BoundObjective fixed;
   fixed.kind = BoundObjective::Kind::kFeasibility;
