@@ -264,6 +264,7 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
                        o.polynomial_degree, {with_input(StaticKind::kPolynomial, 0, 0, c)}));
   }
   if (free_output) {
+    const Vec<double> w = base.ny == 1 ? quadratic_kernel_signal(est) : Vec<double>{};
     out.push_back(make("output_saturation", "output_saturation", 2,
                        {with_output(StaticKind::kSaturation, quantile(v, 0.05), quantile(v, 0.95)),
                         with_output(StaticKind::kSaturation, vmin - vr, quantile(v, 0.85)),
@@ -281,6 +282,15 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
       std::vector<LpvModel<double>> starts = {s};
       // the linear part re-fitted to a sign-recovered y (diagnose/wiener_starts.h)
       if (base.ny == 1) starts.push_back(fitted_to_target(s, est, sign_recovered_target(est.y.col(0))));
+      // and to α·w, w the dominant direction of the best quadratic
+      // approximation (an even map's linear approximation is ~0), α from y ≈ c + α|w|
+      if (w.size() > 0) {
+        Mat<double> X(w.size(), 2);
+        X.col(0).setOnes();
+        X.col(1) = w.cwiseAbs();
+        const Vec<double> g = X.colPivHouseholderQr().solve(Vec<double>(est.y.col(0)));
+        if (g.allFinite()) starts.push_back(fitted_to_target(s, est, g(1) * w));
+      }
       out.push_back(make("abs_value", "abs_value (sensor)", extra, std::move(starts)));
     }
     std::vector<double> c(static_cast<size_t>(o.polynomial_degree + 1), 0.0);
@@ -302,6 +312,19 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
         starts.push_back(with_output(StaticKind::kPolynomial, 0, 0, cl));
         // and the linear part re-fitted to the map's inverse of y (diagnose/wiener_starts.h)
         starts.push_back(fitted_to_target(starts.back(), est, polynomial_inverse_target(cl, est.y.col(0), v.col(0))));
+      }
+    }
+    // and a start from the quadratic kernel: y ≈ Σ_e γ_e w^e, v* = γ_1 w, c_e = γ_e/γ_1^e
+    if (w.size() > 0) {
+      const Eigen::Index p = o.polynomial_degree;
+      Mat<double> X(w.size(), p + 1);
+      for (Eigen::Index e = 0; e <= p; ++e) X.col(e) = w.array().pow(static_cast<double>(e)).matrix();
+      const Vec<double> g = X.colPivHouseholderQr().solve(Vec<double>(est.y.col(0)));
+      if (g.allFinite() && std::abs(g(1)) > 0) {
+        std::vector<double> cl = c;
+        cl[0] = g(0);
+        for (Eigen::Index e = 2; e <= p; ++e) cl[static_cast<size_t>(e)] = g(e) / std::pow(g(1), static_cast<double>(e));
+        starts.push_back(fitted_to_target(with_output(StaticKind::kPolynomial, 0, 0, cl), est, g(1) * w));
       }
     }
     out.push_back(make("output_polynomial", "output_polynomial degree " + std::to_string(o.polynomial_degree),

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
 
 #include "diagnose/effect_candidates.h"
 #include "diagnose/output_error_fit.h"
@@ -49,6 +52,60 @@ Vec<double> sign_recovered_target(const Vec<double>& y) {
       armed = false;
     }
     out(k) = sign * y(k);
+  }
+  return out;
+}
+
+namespace {
+
+/// φ: each input through the Laguerre filters L_0 = √(1−a²)/(1 − a q⁻¹),
+/// L_j = L_{j−1}·(q⁻¹ − a)/(1 − a q⁻¹), j < m (L_0 keeps the feedthrough).
+Mat<double> laguerre_regressors(const Mat<double>& u, double a, int m) {
+  const Eigen::Index n = u.rows();
+  Mat<double> phi(n, u.cols() * m);
+  const double g = std::sqrt(1 - a * a);
+  for (Eigen::Index i = 0; i < u.cols(); ++i) {
+    Eigen::Index c = i * m;
+    for (Eigen::Index k = 0; k < n; ++k) phi(k, c) = g * u(k, i) + (k > 0 ? a * phi(k - 1, c) : 0.0);
+    for (int j = 1; j < m; ++j, ++c)
+      for (Eigen::Index k = 0; k < n; ++k)
+        phi(k, c + 1) = k > 0 ? a * phi(k - 1, c + 1) + phi(k - 1, c) - a * phi(k, c) : -a * phi(k, c);
+  }
+  return phi;
+}
+
+}  // namespace
+
+Vec<double> quadratic_kernel_signal(const Experiment<double>& est) {
+  constexpr int kFilters = 6;
+  const Eigen::Index n = est.n(), p = est.u.cols() * kFilters, q = 1 + p + p * (p + 1) / 2;
+  if (est.y.cols() != 1 || p == 0 || n < 3 * q || !est.u.allFinite() || !est.y.allFinite()) return {};
+  double best = std::numeric_limits<double>::infinity();
+  Vec<double> out;
+  for (const double a : {0.0, 0.5, 0.8}) {
+    const Mat<double> phi = laguerre_regressors(est.u, a, kFilters);
+    Mat<double> X(n, q);
+    X.col(0).setOnes();
+    X.middleCols(1, p) = phi;
+    for (Eigen::Index i = 0, c = 1 + p; i < p; ++i)
+      for (Eigen::Index j = i; j < p; ++j) X.col(c++) = phi.col(i).cwiseProduct(phi.col(j));
+    const Vec<double> beta = X.colPivHouseholderQr().solve(Vec<double>(est.y.col(0)));
+    if (!beta.allFinite()) continue;
+    const double res = (X * beta - est.y.col(0)).squaredNorm();
+    if (!(res < best)) continue;
+    Mat<double> K = Mat<double>::Zero(p, p);
+    for (Eigen::Index i = 0, c = 1 + p; i < p; ++i)
+      for (Eigen::Index j = i; j < p; ++j, ++c) {
+        K(i, j) += (i == j ? 1.0 : 0.5) * beta(c);
+        if (i != j) K(j, i) += 0.5 * beta(c);
+      }
+    const Eigen::SelfAdjointEigenSolver<Mat<double>> eig(K);
+    if (eig.info() != Eigen::Success) continue;
+    const Vec<double> ev = eig.eigenvalues();
+    Eigen::Index top = 0;
+    ev.cwiseAbs().maxCoeff(&top);
+    best = res;
+    out = phi * eig.eigenvectors().col(top);
   }
   return out;
 }

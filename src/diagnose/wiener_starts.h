@@ -18,6 +18,16 @@
 ///                linear approximation is close to zero for an even map) can
 ///                never become the signed v.
 
+///   quadratic    (even maps, where the best LINEAR approximation is ~0 and
+///   kernel       carries no sign information: |·|, strong v²) the best
+///                QUADRATIC approximation of y in the inputs, y ≈ c + gᵀφ +
+///                φᵀKφ with φ the inputs through Laguerre filters (pole a
+///                picked by least squares). For a Wiener system y = f(h∗u)
+///                with Gaussian-like v = h∗u, K ∝ E[f''] h hᵀ (Bussgang/Price):
+///                the dominant eigenvector e of K gives w = eᵀφ ≈ ±h∗u up to
+///                scale, the signal before the map; the scale and sign come
+///                from regressing y on the map of w.
+
 #include <vector>
 
 #include "data/experiment.h"
@@ -32,6 +42,11 @@ Vec<double> polynomial_inverse_target(const std::vector<double>& coefficients, c
 
 /// v* = s ⊙ y for an absolute-value sensor (see above).
 Vec<double> sign_recovered_target(const Vec<double>& y);
+
+/// w = eᵀφ of the quadratic kernel (above) on the estimation inputs, or an
+/// empty vector when the inputs are too few for the regression (fewer than
+/// three rows per regressor) or the fit is not finite.
+Vec<double> quadratic_kernel_signal(const Experiment<double>& est);
 
 /// `start` with its output map set to `map` after its linear part (A, B, C,
 /// D, offset, x0; output map identity) was fitted to the target v* on the

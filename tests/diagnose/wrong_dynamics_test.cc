@@ -6,6 +6,8 @@
 // Known answers by construction (examples/effect_cases.h).
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include "diagnose/effect_ranking.h"
 #include "examples/effect_cases.h"
 
@@ -21,11 +23,11 @@ LpvModel<double> fitted_through_effect(const LpvModel<double>& declared, const E
   return f.model;
 }
 
-class WrongDynamicsTest : public ::testing::TestWithParam<std::string> {};
+class WrongDynamicsTest : public ::testing::TestWithParam<std::tuple<std::string, int>> {};
 
 TEST_P(WrongDynamicsTest, RightKindFirstAndControlAnswersNone) {
-  const std::string kind = GetParam();
-  const EffectCase c = make_effect_case(kind, 300, 5, 0.02);
+  const auto& [kind, seed] = GetParam();
+  const EffectCase c = make_effect_case(kind, 300, static_cast<uint64_t>(seed), 0.02);
   const LpvModel<double> plain = convert_model<double>(c.declared);
   const LpvModel<double> scheduled = with_input_scheduling(plain);
   const Experiment<double> est = with_input_scheduling(nearest_double(c.estimation), plain, scheduled);
@@ -58,27 +60,23 @@ TEST_P(WrongDynamicsTest, RightKindFirstAndControlAnswersNone) {
       << kind << ": validation RMS " << r.before_validation << " -> " << r.after_validation;
 }
 
-/// Every generated kind except two that the joint re-fit does NOT yet recover
-/// when the dynamics were fitted through them (measured, seed 5; kept out so
-/// that the suite states what holds, listed here so that nobody mistakes the
-/// gap for coverage):
-///   abs_value          the best linear approximation of an even map is ~0, so
-///                      the fitted-through linear part is noise; from it (and
-///                      from the sign-recovered start of diagnose/wiener_starts.h)
-///                      the fit stops at est RMS ~1.5 (noise 0.02), and
-///                      "basis_term u1 in B" ranks first;
-///   output_polynomial  y = v + 0.4 v² with |v| up to ~8: the fit stops at est
-///                      RMS ~3.6 from every start (the truth's dynamics reach
-///                      the noise level), "basis_term u1 in B" ranks first.
-std::vector<std::string> recovered_kinds() {
-  std::vector<std::string> out;
-  for (const std::string& k : effect_case_kinds())
-    if (k != "abs_value" && k != "output_polynomial") out.push_back(k);
-  return out;
+std::string case_name(const ::testing::TestParamInfo<std::tuple<std::string, int>>& info) {
+  return std::get<0>(info.param) + "_seed" + std::to_string(std::get<1>(info.param));
 }
 
-INSTANTIATE_TEST_SUITE_P(Generated, WrongDynamicsTest, ::testing::ValuesIn(recovered_kinds()),
-                         [](const auto& info) { return info.param; });
+// Every generated kind, seed 5.
+INSTANTIATE_TEST_SUITE_P(Generated, WrongDynamicsTest,
+                         ::testing::Combine(::testing::ValuesIn(effect_case_kinds()), ::testing::Values(5)), case_name);
+
+// The even output maps once more on another seed: their linear part fitted
+// through the map carries no sign (best linear approximation ~0 for |.|), so
+// they depend on the quadratic-kernel start (diagnose/wiener_starts.h); without
+// it both fail (measured: abs_value ranks input_polynomial first,
+// output_polynomial ranks "basis_term u1 in B" first). Seeds 7, 11, 23, 31
+// passed for every kind when this was written.
+INSTANTIATE_TEST_SUITE_P(EvenMaps, WrongDynamicsTest,
+                         ::testing::Combine(::testing::Values("abs_value", "output_polynomial"), ::testing::Values(23)),
+                         case_name);
 
 }  // namespace
 }  // namespace lpvid
