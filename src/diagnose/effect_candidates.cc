@@ -170,18 +170,26 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
   // basis_term scheduled on the model's own state x_1 (model/state_scheduling.h):
   // A(ρ) = A_0 + ρ^j A_j with ρ = x_1, i.e. a polynomial state feedback
   // (cubic stiffness, a level-dependent outflow) as a quasi-LPV term
-  if (base.nx > 0 && o.state_degree > 0 &&
-      std::find(base.columns.rho.begin(), base.columns.rho.end(), "@x1") == base.columns.rho.end()) {
-    // x_1 rescaled (x → x/s, s a power of two ≥ max |x_1|): ρ = x_1 in [-1, 1],
-    // so ρ^j is well scaled and a finite-difference step in A_j stays small
-    double peak = sim.x.col(0).cwiseAbs().maxCoeff();
-    const double s_pow2 = std::isfinite(peak) && peak > 0 ? std::exp2(std::ceil(std::log2(peak))) : 1.0;
-    const LpvModel<double> sched =
-        add_scheduling_variable(scale_state(base, s_pow2), scheduling_name("xhat1", base.scheduling), "@x1");
-    const size_t j = sched.scheduling.size() - 1;
+  // (several degrees over the rounds: once x_1 is a scheduling variable, the
+  // degrees A does not have yet are offered on it, the state not rescaled again)
+  if (base.nx > 0 && o.state_degree > 0) {
+    const auto at = std::find(base.columns.rho.begin(), base.columns.rho.end(), "@x1");
+    LpvModel<double> sched;
+    if (at == base.columns.rho.end()) {
+      // x_1 rescaled (x → x/s, s a power of two ≥ max |x_1|): ρ = x_1 in [-1, 1],
+      // so ρ^j is well scaled and a finite-difference step in A_j stays small
+      double peak = sim.x.col(0).cwiseAbs().maxCoeff();
+      const double s_pow2 = std::isfinite(peak) && peak > 0 ? std::exp2(std::ceil(std::log2(peak))) : 1.0;
+      sched = add_scheduling_variable(scale_state(base, s_pow2), scheduling_name("xhat1", base.scheduling), "@x1");
+    } else {
+      sched = base;
+    }
+    const size_t j = at == base.columns.rho.end() ? sched.scheduling.size() - 1
+                                                  : static_cast<size_t>(at - base.columns.rho.begin());
     for (int d = 1; d <= o.state_degree; ++d) {
       Monomial f = constant_monomial(sched.scheduling.size());
       f.powers[j] = d;
+      if (has_term(sched.A, f)) continue;
       LpvModel<double> s = sched;
       s.A.add(f, Mat<double>::Zero(base.nx, base.nx));
       EffectCandidate c = make("basis_term",
@@ -264,7 +272,16 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
                        o.polynomial_degree, {with_input(StaticKind::kPolynomial, 0, 0, c)}));
   }
   if (free_output) {
-    const Vec<double> w = base.ny == 1 ? quadratic_kernel_signal(est) : Vec<double>{};
+    // the quadratic-kernel direction (diagnose/wiener_starts.h), used only
+    // where that regression already fits y better than the current model
+    // does (an even map hiding the linear part): elsewhere the start repeats
+    // what the model has, at the cost of two more joint fits per round
+    Vec<double> w;
+    if (base.ny == 1) {
+      const QuadraticKernel qk = quadratic_kernel_signal(est);
+      const double model_rms = std::sqrt((est.y - v).squaredNorm() / static_cast<double>(std::max<Eigen::Index>(est.y.size(), 1)));
+      if (qk.w.size() > 0 && qk.rms < model_rms) w = qk.w;
+    }
     out.push_back(make("output_saturation", "output_saturation", 2,
                        {with_output(StaticKind::kSaturation, quantile(v, 0.05), quantile(v, 0.95)),
                         with_output(StaticKind::kSaturation, vmin - vr, quantile(v, 0.85)),

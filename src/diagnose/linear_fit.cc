@@ -74,6 +74,25 @@ double rms(const Vec<double>& r) { return r.size() == 0 ? 0.0 : std::sqrt(r.squa
 
 }  // namespace
 
+namespace {
+
+/// Step 3: output-error refinement with stability as the admissible set.
+LmResult refine(ObserverForm& form, const Experiment<double>& est, const LmOptions& options) {
+  const Vec<double> y = est.y.col(0);
+  ObserverForm trial = form;
+  const Residual residual = [&](const Vec<double>& p) {
+    trial.set_parameters(p);
+    return Vec<double>(simulate_observer(trial, est.u) - y);
+  };
+  const int n = form.order();
+  const Admissible stable = [n](const Vec<double>& p) { return spectral_radius(p.head(n)) < kStableRadius; };
+  const LmResult lm = levenberg_marquardt(residual, form.parameters(), options, stable);
+  form.set_parameters(lm.p);
+  return lm;
+}
+
+}  // namespace
+
 LinearFit fit_linear(const Experiment<double>& est, const ColumnMap& columns, const LinearFitOptions& options) {
   check_inputs(est, options.order);
   LinearFit fit;
@@ -81,18 +100,21 @@ LinearFit fit_linear(const Experiment<double>& est, const ColumnMap& columns, co
   refit_numerator(fit.form, est);
   const Vec<double> y = est.y.col(0);
   fit.rms_arx = rms(y - simulate_observer(fit.form, est.u));
-  // Step 3: output-error refinement with stability as the admissible set.
-  ObserverForm trial = fit.form;
-  const Residual residual = [&](const Vec<double>& p) {
-    trial.set_parameters(p);
-    return Vec<double>(simulate_observer(trial, est.u) - y);
-  };
-  const int n = options.order;
-  const Admissible stable = [n](const Vec<double>& p) { return spectral_radius(p.head(n)) < kStableRadius; };
-  const LmResult lm = levenberg_marquardt(residual, fit.form.parameters(), options.lm, stable);
-  fit.form.set_parameters(lm.p);
-  fit.iterations = lm.iterations;
+  fit.iterations = refine(fit.form, est, options.lm).iterations;
   fit.rms_estimation = rms(y - simulate_observer(fit.form, est.u));
+  if (options.nested_denominator.size() == options.order && options.nested_denominator.allFinite() &&
+      spectral_radius(options.nested_denominator) < kStableRadius) {
+    ObserverForm nested = zero_observer_form(options.order, static_cast<int>(est.nu()), options.offset);
+    nested.a = options.nested_denominator;
+    refit_numerator(nested, est);
+    const int steps = refine(nested, est, options.lm).iterations;
+    const double r = rms(y - simulate_observer(nested, est.u));
+    if (r < fit.rms_estimation) {
+      fit.form = nested;
+      fit.rms_estimation = r;
+      fit.iterations = steps;
+    }
+  }
   fit.spectral_radius = spectral_radius(fit.form.a);
   fit.model = to_lpv_model(fit.form, columns);
   return fit;
@@ -102,11 +124,19 @@ OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>
                          int max_order, bool offset, int init_samples, const LmOptions& lm) {
   if (max_order < 1) throw InputError("fit-linear: the largest order must be >= 1, got " + std::to_string(max_order));
   OrderChoice choice;
+  Vec<double> previous;
+  std::vector<LinearFit> fits;
   for (int n = 1; n <= max_order; ++n) {
-    LinearFitOptions o{n, offset, lm};
+    LinearFitOptions o{n, offset, lm, {}};
+    if (!choice.scores.empty()) {  // order n − 1's denominator times (1 − 0·q⁻¹)
+      o.nested_denominator = Vec<double>::Zero(n);
+      o.nested_denominator.head(n - 1) = previous;
+    }
     try {
-      const LinearFit fit = fit_linear(est, columns, o);
+      LinearFit fit = fit_linear(est, columns, o);
+      previous = fit.form.a;
       choice.scores.push_back({n, fit.rms_estimation, validation_rms(fit.model, val, init_samples)});
+      fits.push_back(std::move(fit));
     } catch (const InputError&) {
       if (n == 1) throw;  // order 1 does not fit: the data is unusable
       break;              // too few samples for this and larger orders
@@ -118,6 +148,7 @@ OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>
   for (const OrderScore& s : choice.scores)
     if (s.rms_validation <= (1.0 + kOrderSlack) * best + floor) {
       choice.order = s.order;
+      choice.fit = fits[static_cast<size_t>(&s - choice.scores.data())];
       break;
     }
   return choice;

@@ -33,6 +33,11 @@ struct LinearFitOptions {
   int order = 2;        ///< n >= 1
   bool offset = false;  ///< fit a constant output offset c (SPEC §2 Φ, basis "1")
   LmOptions lm{};       ///< output-error refinement
+  /// A second starting denominator (size `order`; empty: none): steps 2–3 run
+  /// from it too and the fit with the lower estimation RMS is kept. choose_order
+  /// passes the order n − 1 fit's denominator with a root at 0 appended, so
+  /// order n contains the order n − 1 fit and never fits the rows worse.
+  Vec<double> nested_denominator{};
 };
 
 struct LinearFit {
@@ -61,6 +66,7 @@ struct OrderScore {
 struct OrderChoice {
   int order = 0;                    ///< the chosen order
   std::vector<OrderScore> scores;   ///< one per candidate order
+  LinearFit fit;                    ///< the chosen order's fit on `est` (the one scored)
 };
 
 /// Relative slack of the order rule: the smallest order whose validation RMS
@@ -72,7 +78,8 @@ constexpr double kOrderSlack = 0.05;
 /// RMS are rounding (noise-free data fit by several orders to ~1e-13).
 constexpr double kOrderFloor = 1e-9;
 
-/// Fits every order in [1, max_order] on `est`, scores it on `val` (x0 from
+/// Fits every order in [1, max_order] on `est` (order n also from order
+/// n − 1's fit: nested_denominator), scores it on `val` (x0 from
 /// the first init_samples samples of val) and chooses the smallest order with
 /// rms_validation <= (1 + kOrderSlack) · best + kOrderFloor · rms(y_val). Orders too large for the data
 /// are skipped (at least one must fit, else the InputError of fit_linear).

@@ -76,12 +76,12 @@ Mat<double> laguerre_regressors(const Mat<double>& u, double a, int m) {
 
 }  // namespace
 
-Vec<double> quadratic_kernel_signal(const Experiment<double>& est) {
+QuadraticKernel quadratic_kernel_signal(const Experiment<double>& est) {
   constexpr int kFilters = 6;
   const Eigen::Index n = est.n(), p = est.u.cols() * kFilters, q = 1 + p + p * (p + 1) / 2;
-  if (est.y.cols() != 1 || p == 0 || n < 3 * q || !est.u.allFinite() || !est.y.allFinite()) return {};
+  QuadraticKernel out;
+  if (est.y.cols() != 1 || p == 0 || n < 3 * q || !est.u.allFinite() || !est.y.allFinite()) return out;
   double best = std::numeric_limits<double>::infinity();
-  Vec<double> out;
   for (const double a : {0.0, 0.5, 0.8}) {
     const Mat<double> phi = laguerre_regressors(est.u, a, kFilters);
     Mat<double> X(n, q);
@@ -105,7 +105,8 @@ Vec<double> quadratic_kernel_signal(const Experiment<double>& est) {
     Eigen::Index top = 0;
     ev.cwiseAbs().maxCoeff(&top);
     best = res;
-    out = phi * eig.eigenvectors().col(top);
+    out.w = phi * eig.eigenvectors().col(top);
+    out.rms = std::sqrt(res / static_cast<double>(n));
   }
   return out;
 }

@@ -43,10 +43,15 @@ Vec<double> polynomial_inverse_target(const std::vector<double>& coefficients, c
 /// v* = s ⊙ y for an absolute-value sensor (see above).
 Vec<double> sign_recovered_target(const Vec<double>& y);
 
-/// w = eᵀφ of the quadratic kernel (above) on the estimation inputs, or an
-/// empty vector when the inputs are too few for the regression (fewer than
-/// three rows per regressor) or the fit is not finite.
-Vec<double> quadratic_kernel_signal(const Experiment<double>& est);
+struct QuadraticKernel {
+  Vec<double> w;    ///< eᵀφ (empty: no signal)
+  double rms = 0;   ///< RMS residual of the quadratic regression of y
+};
+
+/// w = eᵀφ of the quadratic kernel (above) on the estimation inputs, and the
+/// regression's RMS residual; w is empty when the inputs are too few for the
+/// regression (fewer than three rows per regressor) or the fit is not finite.
+QuadraticKernel quadratic_kernel_signal(const Experiment<double>& est);
 
 /// `start` with its output map set to `map` after its linear part (A, B, C,
 /// D, offset, x0; output map identity) was fitted to the target v* on the

@@ -38,9 +38,11 @@ const std::vector<double> kH = {0.5, 1.0, -0.3, 0.2};
 TEST(QuadraticKernelSignal, SquareOfAFirIsRecoveredUpToSignAndScale) {
   const Vec<double> u = gaussian(400, 1, 3).col(0);
   const Vec<double> v = fir(kH, u);
-  const Vec<double> w = quadratic_kernel_signal(wiener_record(u, v.array().square().matrix()));
+  const QuadraticKernel qk = quadratic_kernel_signal(wiener_record(u, v.array().square().matrix()));
+  const Vec<double>& w = qk.w;
   ASSERT_EQ(w.size(), u.size());
   EXPECT_GT(abs_correlation(w, v), 0.9999);
+  EXPECT_LT(qk.rms, 1e-9);  // y is in the regression's span
 }
 
 // |v| is not quadratic, but for Gaussian v its best quadratic approximation
@@ -49,7 +51,7 @@ TEST(QuadraticKernelSignal, SquareOfAFirIsRecoveredUpToSignAndScale) {
 TEST(QuadraticKernelSignal, AbsoluteValueSensorGivesTheSignedSignal) {
   const Vec<double> u = gaussian(600, 1, 4).col(0);
   const Vec<double> v = fir(kH, u);
-  const Vec<double> w = quadratic_kernel_signal(wiener_record(u, v.cwiseAbs()));
+  const Vec<double> w = quadratic_kernel_signal(wiener_record(u, v.cwiseAbs())).w;
   ASSERT_EQ(w.size(), u.size());
   EXPECT_GT(abs_correlation(w, v), 0.95);
   // while the linear correlation of |v| with v, all a linear fit can use, is ~0
@@ -58,11 +60,11 @@ TEST(QuadraticKernelSignal, AbsoluteValueSensorGivesTheSignedSignal) {
 
 TEST(QuadraticKernelSignal, TooFewRowsOrNonFiniteDataGiveNoSignal) {
   const Vec<double> u = gaussian(40, 1, 5).col(0);  // 28 regressors need ≥ 84 rows
-  EXPECT_EQ(quadratic_kernel_signal(wiener_record(u, fir(kH, u))).size(), 0);
+  EXPECT_EQ(quadratic_kernel_signal(wiener_record(u, fir(kH, u))).w.size(), 0);
   Vec<double> u2 = gaussian(400, 1, 6).col(0);
   Vec<double> y2 = fir(kH, u2);
   y2(7) = std::nan("");
-  EXPECT_EQ(quadratic_kernel_signal(wiener_record(u2, y2)).size(), 0);
+  EXPECT_EQ(quadratic_kernel_signal(wiener_record(u2, y2)).w.size(), 0);
 }
 
 }  // namespace
