@@ -346,6 +346,39 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
     }
     out.push_back(make("output_polynomial", "output_polynomial degree " + std::to_string(o.polynomial_degree),
                        o.polynomial_degree, std::move(starts)));
+    // piecewise-linear output map (√, one-sided clips, monotone curves): knots
+    // at the quantiles of v, values by linear least squares of y on the
+    // knots' hat functions (the map is linear in its values), then re-fitted
+    if (base.ny == 1 && o.pwl_knots >= 2 && est.y.rows() == v.rows() && v.allFinite()) {
+      std::vector<double> knots;
+      for (int i = 0; i < o.pwl_knots; ++i) {
+        const double x = quantile(v, static_cast<double>(i) / (o.pwl_knots - 1));
+        if (knots.empty() || x > knots.back() + 1e-9 * vr) knots.push_back(x);
+      }
+      if (knots.size() >= 2) {
+        LpvModel<double> s = base;
+        StaticMap<double>& g = s.statics.output;
+        g.kind = StaticKind::kPiecewiseLinear;
+        g.knots = knots;
+        g.coefficients = knots;  // identity
+        std::vector<LpvModel<double>> pstarts = {s};
+        Mat<double> H = Mat<double>::Zero(v.rows(), static_cast<Eigen::Index>(knots.size()));
+        for (size_t i = 0; i < knots.size(); ++i) {
+          StaticMap<double> hat = g;
+          std::fill(hat.coefficients.begin(), hat.coefficients.end(), 0.0);
+          hat.coefficients[i] = 1.0;
+          for (Eigen::Index k = 0; k < v.rows(); ++k) H(k, static_cast<Eigen::Index>(i)) = hat(v(k, 0));
+        }
+        const Vec<double> values = H.colPivHouseholderQr().solve(Vec<double>(est.y.col(0)));
+        if (values.allFinite()) {
+          g.coefficients.assign(values.data(), values.data() + values.size());
+          pstarts.push_back(s);
+        }
+        out.push_back(make("output_piecewise_linear",
+                           "output_piecewise_linear (" + std::to_string(knots.size()) + " knots)",
+                           static_cast<int>(knots.size()), std::move(pstarts)));
+      }
+    }
   }
   if (base.statics.input_delay == 0 && o.max_delay > 0) {
     std::vector<LpvModel<double>> starts;

@@ -18,6 +18,8 @@
 ///   abs_value          |·| at the sensor: static output map
 ///   input_polynomial   u' = c0 + u + c2 u² + c3 u³
 ///   output_polynomial  y  = c0 + v + c2 v² + c3 v³ (v = ŷ + Φ)
+///   output_piecewise_linear  y = g(v), g piecewise linear with knots at the
+///                      quantiles of v (√-like, clipping, monotone sensor curves)
 ///   input_delay        u'_k = u_{k−d}, d = 1 … max_delay
 ///   basis_term in A    A(ρ) = A_0 + ρ^j A_j with ρ = x_1, the model's own
 ///                      simulated state (model/state_scheduling.h), j = 1 …
@@ -39,6 +41,7 @@ struct CandidateOptions {
   int max_delay = 5;                ///< input delays 1..max_delay
   int polynomial_degree = 3;        ///< input/output polynomials
   int state_degree = 3;             ///< x1^1..x1^d in A (scheduling on the model's own state); 0: none
+  int pwl_knots = 6;                ///< knots of the piecewise-linear output map (at v's quantiles); < 2: none
 };
 
 struct EffectCandidate {

@@ -186,11 +186,16 @@ ojson effect_parameters(const std::string& kind, const std::string& label, const
       m["upper"] = g.upper;
     }
     if (g.kind == StaticKind::kPolynomial) m["coefficients"] = g.coefficients;
+    if (g.kind == StaticKind::kPiecewiseLinear) {
+      m["knots"] = g.knots;
+      m["values"] = g.coefficients;
+    }
     return m;
   };
   if (kind == "input_saturation" || kind == "dead_zone" || kind == "input_polynomial")
     j["input_map"] = map_json(fitted.statics.input);
-  if (kind == "output_saturation" || kind == "abs_value" || kind == "output_polynomial")
+  if (kind == "output_saturation" || kind == "abs_value" || kind == "output_polynomial" ||
+      kind == "output_piecewise_linear")
     j["output_map"] = map_json(fitted.statics.output);
   if (kind == "input_delay") j["delay_samples"] = fitted.statics.input_delay;
   j["label"] = label;

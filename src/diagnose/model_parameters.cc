@@ -52,6 +52,10 @@ void map_slots(const StaticMap<double>& g, Where lower, Where upper, Where coef,
       for (size_t i = 0; i < g.coefficients.size(); ++i)
         if (i != 1) out.push_back({coef, static_cast<int>(i), 0, 0, prefix + ".c" + std::to_string(i)});
       break;
+    case StaticKind::kPiecewiseLinear:  // every value (the knots stay where the start put them)
+      for (size_t i = 0; i < g.coefficients.size(); ++i)
+        out.push_back({coef, static_cast<int>(i), 0, 0, prefix + ".g" + std::to_string(i)});
+      break;
     case StaticKind::kIdentity:
     case StaticKind::kAbs: break;
   }

@@ -65,6 +65,12 @@ LpvModel<Rational> with_effect(const std::string& kind) {
     s.output.kind = StaticKind::kSaturation;
     s.output.lower = dec("-1000");
     s.output.upper = dec("1.2");
+  } else if (kind == "output_piecewise_linear") {
+    // a sensor whose gain drops to 1/3 above 1.5 (a kink no polynomial has):
+    // g(v) = v for v <= 1.5, 1.5 + (v - 1.5)/3 above
+    s.output.kind = StaticKind::kPiecewiseLinear;
+    s.output.knots = {dec("0"), dec("1.5"), dec("3")};
+    s.output.coefficients = {dec("0"), dec("1.5"), dec("2")};
   } else if (kind == "input_polynomial") {
     s.input.kind = StaticKind::kPolynomial;
     s.input.coefficients = {dec("0"), dec("1"), dec("0"), dec("0.3")};
@@ -117,7 +123,8 @@ const std::vector<std::string>& effect_case_kinds() {
   static const std::vector<std::string> kinds = {"output_offset",     "input_saturation", "basis_term",
                                                  "abs_value",         "output_polynomial", "input_delay",
                                                  "dead_zone",         "output_saturation", "input_polynomial",
-                                                 "state_feedback",    "scheduled_offset",  "none"};
+                                                 "state_feedback",    "scheduled_offset",  "output_piecewise_linear",
+                                                 "none"};
   return kinds;
 }
 

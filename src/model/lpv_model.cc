@@ -127,6 +127,7 @@ LpvModel<To> convert_model(const LpvModel<From>& m) {
     dst->lower = conv<To>(src->lower);
     dst->upper = conv<To>(src->upper);
     for (const auto& c : src->coefficients) dst->coefficients.push_back(conv<To>(c));
+    for (const auto& x : src->knots) dst->knots.push_back(conv<To>(x));
   }
   out.offset.basis = m.offset.basis;
   for (const auto& v : m.offset.values) out.offset.values.push_back(conv<To>(v));

@@ -403,7 +403,7 @@ class ModelReader {
     const std::string kind = string_at(k, member_path(path, "kind"));
     if (!static_kind_from_string(kind, g.kind))
       fail(k, member_path(path, "kind"),
-           "unknown static map \"" + kind + "\" (expected identity, saturation, dead_zone, abs or polynomial)");
+           "unknown static map \"" + kind + "\" (expected identity, saturation, dead_zone, abs, polynomial or piecewise_linear)");
     switch (g.kind) {
       case StaticKind::kSaturation:
       case StaticKind::kDeadZone:
@@ -419,6 +419,24 @@ class ModelReader {
         expect(c, Kind::kArray, cp);
         if (c.items.empty()) fail(c, cp, "a polynomial needs at least one coefficient (c0, c1, ...)");
         for (size_t i = 0; i < c.items.size(); ++i) g.coefficients.push_back(number<T>(c.items[i], index_path(cp, i)));
+        break;
+      }
+      case StaticKind::kPiecewiseLinear: {
+        check_keys(n, path, {"kind", "knots", "values"});
+        for (const char* key : {"knots", "values"}) {
+          const JsonNode& c = required(n, path, key);
+          const std::string cp = member_path(path, key);
+          expect(c, Kind::kArray, cp);
+          std::vector<T>& out = std::string(key) == "knots" ? g.knots : g.coefficients;
+          for (size_t i = 0; i < c.items.size(); ++i) out.push_back(number<T>(c.items[i], index_path(cp, i)));
+        }
+        if (g.knots.size() < 2) fail(n, path, "a piecewise_linear map needs at least two knots");
+        if (g.knots.size() != g.coefficients.size())
+          fail(n, path, std::to_string(g.knots.size()) + " knots but " + std::to_string(g.coefficients.size()) +
+                            " values (one value per knot)");
+        for (size_t i = 0; i + 1 < g.knots.size(); ++i)
+          if (!(g.knots[i] < g.knots[i + 1]))
+            fail(n, member_path(path, "knots"), "knots must be strictly increasing (entry " + std::to_string(i + 1) + ")");
         break;
       }
       case StaticKind::kIdentity:
@@ -610,6 +628,13 @@ ojson to_json(const LpvModel<T>& m) {
         ojson c = ojson::array();
         for (const T& x : g.coefficients) c.push_back(number_to_json(x));
         o["coefficients"] = std::move(c);
+      }
+      if (g.kind == StaticKind::kPiecewiseLinear) {
+        ojson x = ojson::array(), v = ojson::array();
+        for (const T& t : g.knots) x.push_back(number_to_json(t));
+        for (const T& t : g.coefficients) v.push_back(number_to_json(t));
+        o["knots"] = std::move(x);
+        o["values"] = std::move(v);
       }
       return o;
     };

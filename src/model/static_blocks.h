@@ -28,6 +28,11 @@
 ///   dead_zone    g(v) = v − upper (v > upper), v − lower (v < lower), else 0
 ///   abs          g(v) = |v|
 ///   polynomial   g(v) = Σ_k c_k v^k  (Horner)
+///   piecewise_linear  knots x_0 < … < x_m (m ≥ 1), values g_0 … g_m: linear
+///                interpolation between knots, the first and last segments
+///                extended beyond them (a √, a one-sided clip, any monotone
+///                or non-monotone curve up to the knots' resolution); exact on
+///                rationals (one division by x_{i+1} − x_i)
 
 #include <stdexcept>
 #include <string>
@@ -37,9 +42,9 @@
 
 namespace lpvid {
 
-enum class StaticKind { kIdentity, kSaturation, kDeadZone, kAbs, kPolynomial };
+enum class StaticKind { kIdentity, kSaturation, kDeadZone, kAbs, kPolynomial, kPiecewiseLinear };
 
-/// "identity", "saturation", "dead_zone", "abs", "polynomial".
+/// "identity", "saturation", "dead_zone", "abs", "polynomial", "piecewise_linear".
 inline const char* to_string(StaticKind k) {
   switch (k) {
     case StaticKind::kIdentity: return "identity";
@@ -47,6 +52,7 @@ inline const char* to_string(StaticKind k) {
     case StaticKind::kDeadZone: return "dead_zone";
     case StaticKind::kAbs: return "abs";
     case StaticKind::kPolynomial: return "polynomial";
+    case StaticKind::kPiecewiseLinear: return "piecewise_linear";
   }
   return "?";
 }
@@ -54,7 +60,7 @@ inline const char* to_string(StaticKind k) {
 /// Parses a kind name; false for an unknown name.
 inline bool static_kind_from_string(const std::string& s, StaticKind& k) {
   for (StaticKind c : {StaticKind::kIdentity, StaticKind::kSaturation, StaticKind::kDeadZone, StaticKind::kAbs,
-                       StaticKind::kPolynomial})
+                       StaticKind::kPolynomial, StaticKind::kPiecewiseLinear})
     if (s == to_string(c)) {
       k = c;
       return true;
@@ -66,7 +72,8 @@ template <typename T>
 struct StaticMap {
   StaticKind kind = StaticKind::kIdentity;
   T lower = T(0), upper = T(0);   ///< saturation and dead_zone (lower ≤ upper)
-  std::vector<T> coefficients;    ///< polynomial c_0, c_1, … (at least one)
+  std::vector<T> coefficients;    ///< polynomial c_0, c_1, … (at least one); piecewise_linear: the values g_i
+  std::vector<T> knots;           ///< piecewise_linear x_0 < x_1 < … (as many as values, at least two)
 
   bool is_identity() const { return kind == StaticKind::kIdentity; }
 
@@ -76,6 +83,12 @@ struct StaticMap {
       throw std::invalid_argument(where + ": lower must not exceed upper");
     if (kind == StaticKind::kPolynomial && coefficients.empty())
       throw std::invalid_argument(where + ": a polynomial needs at least one coefficient");
+    if (kind == StaticKind::kPiecewiseLinear) {
+      if (knots.size() < 2 || knots.size() != coefficients.size())
+        throw std::invalid_argument(where + ": a piecewise_linear map needs at least two knots and one value per knot");
+      for (size_t i = 0; i + 1 < knots.size(); ++i)
+        if (!(knots[i] < knots[i + 1])) throw std::invalid_argument(where + ": knots must be strictly increasing");
+    }
   }
 
   T operator()(const T& v) const {
@@ -88,6 +101,14 @@ struct StaticMap {
         T acc = coefficients.back();
         for (size_t i = coefficients.size() - 1; i-- > 0;) acc = T(acc * v + coefficients[i]);
         return acc;
+      }
+      case StaticKind::kPiecewiseLinear: {
+        if (knots.size() < 2 || knots.size() != coefficients.size())
+          throw std::invalid_argument("piecewise_linear map: needs at least two knots and one value per knot");
+        size_t i = 0;  // segment [x_i, x_{i+1}]: the last knot not above v, clamped to the end segments
+        while (i + 2 < knots.size() && !(v < knots[i + 1])) ++i;
+        const T t = T(T(v - knots[i]) / T(knots[i + 1] - knots[i]));
+        return T(coefficients[i] + t * T(coefficients[i + 1] - coefficients[i]));
       }
     }
     return v;
@@ -109,7 +130,8 @@ struct StaticMap {
       case StaticKind::kAbs: return 0;
       case StaticKind::kSaturation:
       case StaticKind::kDeadZone: return 2;
-      case StaticKind::kPolynomial: return static_cast<int>(coefficients.size());
+      case StaticKind::kPolynomial:
+      case StaticKind::kPiecewiseLinear: return static_cast<int>(coefficients.size());
     }
     return 0;
   }

@@ -119,6 +119,32 @@ TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
   EXPECT_FALSE(v.holds);
 }
 
+/// A piecewise-linear sensor (model/static_blocks.h): the verifier evaluates
+/// the map exactly from the certificate's knots and values; the truth
+/// certifies with d_max near the noise, a moved value is rejected.
+TEST(EffectCases, PiecewiseLinearCertificateVerifiesAndTamperingIsRejected) {
+  const EffectCase c = make_effect_case("output_piecewise_linear", 200, 3, 0.02);
+  ScratchDir dir("pwl-cert");
+  const CertifiedTruth ct = certify_truth(c, dir, 0, 120);
+  ASSERT_TRUE(ct.window.bounds.verified) << ct.window.bounds.reason;
+  ASSERT_TRUE(check_certificate_file(ct.certificate).holds);
+  EXPECT_LT(ct.window.bounds.dmax, 0.03);
+  std::ifstream in(ct.certificate);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const size_t values = text.find("\"values\"");
+  ASSERT_NE(values, std::string::npos) << "piecewise-linear values not found in the certificate";
+  // the last value (2, the sensor's level at the last knot) becomes 2.1
+  const size_t close = text.find(']', values), last = text.rfind(',', close);
+  ASSERT_NE(close, std::string::npos);
+  ASSERT_NE(last, std::string::npos);
+  text.replace(last + 1, close - last - 1, "\"2.1\"");
+  const std::string tampered = dir.file("tampered.json");
+  std::ofstream(tampered) << text;
+  EXPECT_FALSE(check_certificate_file(tampered).holds);
+}
+
 /// A model scheduled on its own state ("@x1", model/state_scheduling.h):
 /// the certifier and the verifier both recompute ρ from the certified model
 /// in exact arithmetic. The truth certifies with d_max near the noise; a

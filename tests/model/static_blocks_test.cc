@@ -53,6 +53,41 @@ RC_GTEST_PROP(StaticMapProperty, AbsAndHornerPolynomialAreExact, ()) {
   RC_ASSERT(map_of(StaticKind::kPolynomial, 0, 0, c)(v) == naive);
 }
 
+StaticMap<Rational> pwl(std::vector<Rational> knots, std::vector<Rational> values) {
+  StaticMap<Rational> g;
+  g.kind = StaticKind::kPiecewiseLinear;
+  g.knots = std::move(knots);
+  g.coefficients = std::move(values);
+  return g;
+}
+
+// The piecewise-linear map interpolates its values at the knots, is affine
+// between neighbouring knots (the midpoint gets the mean), extends its end
+// segments, and with knots (a, b) and values (a, b) plus flat end segments it
+// is exactly the saturation at [a, b] on every point.
+RC_GTEST_PROP(StaticMapProperty, PiecewiseLinearInterpolatesExactly, ()) {
+  const int m = *rc::gen::inRange(2, 6);
+  std::vector<Rational> knots, values;
+  Rational x = *gen::small_rational();
+  for (int i = 0; i < m; ++i) {
+    knots.push_back(x);
+    values.push_back(*gen::small_rational());
+    const Rational r = *gen::small_rational();
+    x += Rational(1, 8) + r * r;  // strictly increasing
+  }
+  const auto g = pwl(knots, values);
+  for (int i = 0; i < m; ++i) RC_ASSERT(g(knots[i]) == values[i]);
+  for (int i = 0; i + 1 < m; ++i)
+    RC_ASSERT(g((knots[i] + knots[i + 1]) / Rational(2)) == (values[i] + values[i + 1]) / Rational(2));
+  // beyond the last knot: the last segment's slope continues
+  const Rational slope = (values[m - 1] - values[m - 2]) / (knots[m - 1] - knots[m - 2]);
+  RC_ASSERT(g(knots[m - 1] + Rational(3)) == values[m - 1] + Rational(3) * slope);
+  // saturation as a piecewise-linear map
+  const Rational a = knots[0], b = knots[1], v = *gen::small_rational() * Rational(4);
+  const auto sat = pwl({a - Rational(1), a, b, b + Rational(1)}, {a, a, b, b});
+  RC_ASSERT(sat(v) == map_of(StaticKind::kSaturation, a, b)(v));
+}
+
 TEST(StaticBlocks, DelayHoldsTheFirstSample) {
   StaticBlocks<Rational> s;
   s.input_delay = 2;
@@ -91,6 +126,41 @@ TEST(StaticBlocks, ModelFileRoundTripIsExact) {
   EXPECT_EQ(back.statics.input.upper, m.statics.input.upper);
   EXPECT_EQ(back.statics.output.coefficients, m.statics.output.coefficients);
   EXPECT_EQ(back.statics.input_delay, 1);
+}
+
+TEST(StaticBlocks, PiecewiseLinearRoundTripIsExactAndBadKnotsAreNamed) {
+  const LpvModel<Rational> m = parse_model_json<Rational>(
+      model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0, "1.5", 3], "values": [0, "1.5", "2/1"]}})"),
+      "m.json");
+  ASSERT_EQ(m.statics.output.kind, StaticKind::kPiecewiseLinear);
+  EXPECT_EQ(m.statics.output(Rational(9, 4)), Rational(7, 4));  // 1.5 + (2.25 − 1.5)/3
+  const LpvModel<Rational> back = parse_model_json<Rational>(write_model_json(m), "back.json");
+  EXPECT_EQ(back.statics.output.knots, m.statics.output.knots);
+  EXPECT_EQ(back.statics.output.coefficients, m.statics.output.coefficients);
+  EXPECT_TRUE(contains(error_of([] {
+                         parse_model_json<Rational>(
+                             model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0, 1, 1], "values": [0, 1, 2]}})"),
+                             "m.json");
+                       }),
+                       "strictly increasing"));
+  EXPECT_TRUE(contains(error_of([] {
+                         parse_model_json<Rational>(
+                             model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0, 1], "values": [0]}})"),
+                             "m.json");
+                       }),
+                       "one value per knot"));
+  EXPECT_TRUE(contains(error_of([] {
+                         parse_model_json<Rational>(
+                             model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0], "values": [0]}})"),
+                             "m.json");
+                       }),
+                       "at least two knots"));
+  EXPECT_TRUE(contains(error_of([] {
+                         parse_model_json<Rational>(
+                             model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0, 1], "values": [0, 1], "slope": 2}})"),
+                             "m.json");
+                       }),
+                       "slope"));
 }
 
 TEST(StaticBlocks, MalformedBlocksNameTheField) {
