@@ -4,8 +4,9 @@
 //    and every candidate are fitted on Est rows 0:716, the order and the
 //    effects are chosen on Est rows 716:1024, and Val is scored once at the
 //    end; the benchmark's figure (free-run RMS on Val, x0 from the first 5 Val
-//    samples) must be below the published linear reference 0.7574 V and below
-//    the starting model's;
+//    samples) must be below the published linear reference 0.7574 V, below
+//    the starting model's and below 0.45 V (issue 9's goal, the top of the
+//    published nonlinear models' range);
 //  - dryer (linear with a transport delay): no nonlinear effect may be added.
 // The thresholds are the benchmark's published numbers, not our output.
 #include <filesystem>
@@ -28,12 +29,8 @@ struct Split {
 };
 
 RankingResult diagnose(const Split& s, int degree) {
-  LinearFitOptions lo;
-  lo.offset = true;
-  // the order as `fit-linear --order auto` chooses it (held-out last third of Est)
-  const Eigen::Index cut = s.est.n() * 2 / 3;
-  lo.order = choose_order(select_rows(s.est, 0, cut), select_rows(s.est, cut, s.est.n()), s.cols, 5, true, 5).order;
-  const LpvModel<double> linear = fit_linear(s.est, s.cols, lo).model;
+  // the order and fit as `fit-linear --order auto --validation-…` chooses them (scored on the selection rows)
+  const LpvModel<double> linear = choose_order(s.est, s.val, s.cols, 5, true, 5).fit.model;
   const LpvModel<double> declared = with_input_scheduling(linear);
   RankingOptions o;
   o.candidates.max_degree = degree;
@@ -50,12 +47,8 @@ TEST(MeasuredData, CascadedTanksBeatsTheLinearReference) {
   const Experiment<double> test = make_experiment<double>(t, ColumnMap{{"uVal"}, {"yVal"}, {}});
   const Eigen::Index cut = 716;  // estimation rows 0:716, selection rows 716:1024
   const Experiment<double> est = select_rows(est_all, 0, cut), sel = select_rows(est_all, cut, est_all.n());
-  LinearFitOptions lo;
-  lo.offset = true;
-  // the order as `fit-linear --rows 0:716 --order auto` chooses it (the last third of its rows held out)
-  const Eigen::Index third = cut * 2 / 3;
-  lo.order = choose_order(select_rows(est, 0, third), select_rows(est, third, cut), cols, 5, true, 5).order;
-  const LpvModel<double> linear = fit_linear(est, cols, lo).model;
+  // the order and fit as `fit-linear --rows 0:716 --validation-rows 716:1024 --order auto` choose them
+  const LpvModel<double> linear = choose_order(est, sel, cols, 5, true, 5).fit.model;
   const LpvModel<double> declared = with_input_scheduling(linear);
   RankingOptions o;
   o.candidates.max_degree = 3;
@@ -67,6 +60,7 @@ TEST(MeasuredData, CascadedTanksBeatsTheLinearReference) {
   ASSERT_FALSE(r.chosen.empty());
   EXPECT_LT(after, 0.7574);
   EXPECT_LT(after, before);
+  EXPECT_LT(after, 0.45);  // issue 9's goal: inside the published nonlinear models' range (0.34-0.45 V)
   RecordProperty("tanks_test_rms_before", std::to_string(before));
   RecordProperty("tanks_test_rms_after", std::to_string(after));
 }
