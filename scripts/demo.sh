@@ -27,7 +27,7 @@ mkdir -p "$out"
 #   estimation rows 0:716 of uEst/yEst   fit (the linear model and every candidate)
 #   selection  rows 716:1024 of uEst/yEst  choose the effects
 #   test       uVal/yVal                  scored once, at the end (the benchmark figure)
-echo "=== 1. Linear starting model: fit on uEst/yEst rows 0:716 (order chosen on their last third) ==="
+echo "=== 1. Linear starting model: fit on uEst/yEst rows 0:716 (order chosen by free-run RMS on the selection rows 716:1024) ==="
 ./build/lpvid fit-linear --data "$tanks" --u uEst --y yEst --rows 0:716 --order auto --offset \
   --validation-rows 716:1024 --out "$out/tanks_linear.json"
 echo
