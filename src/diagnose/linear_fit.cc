@@ -72,10 +72,6 @@ void refit_numerator(ObserverForm& f, const Experiment<double>& est) {
 
 double rms(const Vec<double>& r) { return r.size() == 0 ? 0.0 : std::sqrt(r.squaredNorm() / double(r.size())); }
 
-}  // namespace
-
-namespace {
-
 /// Step 3: output-error refinement with stability as the admissible set.
 LmResult refine(ObserverForm& form, const Experiment<double>& est, const LmOptions& options) {
   const Vec<double> y = est.y.col(0);
