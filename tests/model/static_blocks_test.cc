@@ -137,30 +137,16 @@ TEST(StaticBlocks, PiecewiseLinearRoundTripIsExactAndBadKnotsAreNamed) {
   const LpvModel<Rational> back = parse_model_json<Rational>(write_model_json(m), "back.json");
   EXPECT_EQ(back.statics.output.knots, m.statics.output.knots);
   EXPECT_EQ(back.statics.output.coefficients, m.statics.output.coefficients);
-  EXPECT_TRUE(contains(error_of([] {
-                         parse_model_json<Rational>(
-                             model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0, 1, 1], "values": [0, 1, 2]}})"),
-                             "m.json");
-                       }),
-                       "strictly increasing"));
-  EXPECT_TRUE(contains(error_of([] {
-                         parse_model_json<Rational>(
-                             model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0, 1], "values": [0]}})"),
-                             "m.json");
-                       }),
-                       "one value per knot"));
-  EXPECT_TRUE(contains(error_of([] {
-                         parse_model_json<Rational>(
-                             model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0], "values": [0]}})"),
-                             "m.json");
-                       }),
-                       "at least two knots"));
-  EXPECT_TRUE(contains(error_of([] {
-                         parse_model_json<Rational>(
-                             model_with(R"({"output": {"kind": "piecewise_linear", "knots": [0, 1], "values": [0, 1], "slope": 2}})"),
-                             "m.json");
-                       }),
-                       "slope"));
+  // the error of a model whose output map is {"kind": "piecewise_linear", <fields>}
+  const auto pwl_error = [](const std::string& fields) {
+    return error_of([&] {
+      parse_model_json<Rational>(model_with(R"({"output": {"kind": "piecewise_linear", )" + fields + "}}"), "m.json");
+    });
+  };
+  EXPECT_TRUE(contains(pwl_error(R"("knots": [0, 1, 1], "values": [0, 1, 2])"), "strictly increasing"));
+  EXPECT_TRUE(contains(pwl_error(R"("knots": [0, 1], "values": [0])"), "one value per knot"));
+  EXPECT_TRUE(contains(pwl_error(R"("knots": [0], "values": [0])"), "at least two knots"));
+  EXPECT_TRUE(contains(pwl_error(R"("knots": [0, 1], "values": [0, 1], "slope": 2)"), "slope"));
 }
 
 TEST(StaticBlocks, MalformedBlocksNameTheField) {
