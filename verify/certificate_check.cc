@@ -1,12 +1,14 @@
 #include "verify/certificate_check.h"
 
 #include <chrono>
+#include <gmp.h>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "core/sha256.h"
@@ -22,6 +24,27 @@
 
 namespace lpvid {
 namespace {
+
+/// A power of two s with s² within a factor 4 of q > 0 (1 for q ≤ 0), from
+/// the bit lengths of q's numerator and denominator: exact and cheap for any
+/// size of q (a double would overflow beyond 1e308).
+Rational sqrt_scale(const Rational& q) {
+  if (!(q > 0)) return Rational(1);
+  const long bits = static_cast<long>(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) -
+                    static_cast<long>(mpz_sizeinbase(mpq_denref(q.mpq()), 2));
+  const long e = bits >= 0 ? bits / 2 : -((-bits + 1) / 2);
+  mpz_t p;
+  mpz_init_set_ui(p, 1);
+  mpz_mul_2exp(p, p, static_cast<unsigned long>(e >= 0 ? e : -e));
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_z(r, p);
+  if (e < 0) mpq_inv(r, r);
+  Rational out(r);
+  mpq_clear(r);
+  mpz_clear(p);
+  return out;
+}
 
 std::string psd_note(const PsdResult& r) {
   return std::string(verdict_word(r.verdict)) + " (" +
@@ -118,10 +141,16 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
     // a congruence by a nonsingular matrix keeps the inertia), so that the
     // floating filter sees a matrix with unit diagonal blocks:
     //   [δ²/s² I, T_Δ/s; T_Δᵀ/s, I] ⪰ 0  ⇔  [δ² I, T_Δ; T_Δᵀ, I] ⪰ 0.
+    // Beyond the double range (δ² = 1e4000, say) s is a power of two from
+    // δ²'s bit lengths instead. (A tiny δ² keeps s from the double, 1 when
+    // it underflows: a smaller s would push T_Δ/s out of the double range.)
     Rational s(1);
     if (c.delta2 > 0) {
       const double approx_delta = std::sqrt(nearest_double(c.delta2));
-      if (approx_delta > 0 && std::isfinite(approx_delta)) s = exact_rational_of_double(approx_delta);
+      if (approx_delta > 0 && std::isfinite(approx_delta) && approx_delta < 1e150)
+        s = exact_rational_of_double(approx_delta);
+      else if (c.delta2 > 1)
+        s = sqrt_scale(c.delta2);
     }
     const Rational inv_s = Rational(1) / s;
     M = Mat<Rational>::Zero(L * (ny + nz), L * (ny + nz));
@@ -150,6 +179,15 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
     M.topRightCorner(n, n * ny) = Tw.transpose();
     for (Eigen::Index i = n; i < n + n * ny; ++i) M(i, i) = c.delta2;
     which = "[T_z'T_z, T_w'; T_w, delta2*I]";
+    // A δ² outside the range of doubles (1e4000, say) would leave the
+    // floating filter nothing to work with and the exact path huge numbers:
+    // balance by the congruence diag(I, I/s), s ≈ δ (inertia unchanged).
+    if (c.delta2 > 1 && !(nearest_double(c.delta2) < 1e300)) {
+      const Rational inv_s = Rational(1) / sqrt_scale(c.delta2);
+      M.bottomRows(n * ny) *= inv_s;
+      M.rightCols(n * ny) *= inv_s;
+      which += " (balanced by diag(I, I/s), s ~ delta)";
+    }
   }
   const PsdResult psd = decide_psd(M);
   if (psd.verdict == PsdVerdict::kNotPsd)
@@ -192,6 +230,9 @@ int run_certificate_command(const std::string& path, std::ostream& out, std::ost
   } catch (const InputError& e) {
     err << "lpvid-verify: " << e.what() << "\n";
     return 2;
+  } catch (const IoError& e) {
+    err << "lpvid-verify: " << e.what() << "\n";
+    return 6;
   } catch (const std::bad_alloc&) {
     err << "lpvid-verify: out of memory while checking '" << path << "'\n";
     return 2;

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "data/csv_reader.h"
 #include "model/model_file.h"
@@ -271,11 +272,7 @@ std::string certificate_json(const Certificate& c) {
 }
 
 void write_certificate(const std::string& path, const Certificate& c) {
-  const std::string text = certificate_json(c);
-  std::ofstream f(path, std::ios::binary);
-  if (!f) throw InputError("cannot write certificate '" + path + "'");
-  f << text;
-  if (!f) throw InputError("error while writing certificate '" + path + "'");
+  write_text_file(path, certificate_json(c), "certificate");
 }
 
 }  // namespace lpvid

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "verify/exact_psd.h"
@@ -84,6 +85,9 @@ int run_psd_command(const std::string& path, std::ostream& out, std::ostream& er
     return decide_and_print(path, out, options);
   } catch (const InputError& e) {
     err << "lpvid-verify psd: error: " << e.what() << '\n';
+  } catch (const IoError& e) {
+    err << "lpvid-verify psd: error: " << e.what() << '\n';
+    return kPsdExitIo;
   } catch (const std::invalid_argument& e) {
     err << "lpvid-verify psd: error: " << path << ": " << e.what() << '\n';
   } catch (const std::bad_alloc&) {

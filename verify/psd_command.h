@@ -5,7 +5,8 @@
 /// Output: the first word is `PD`, `PSD` or `NOT_PSD`, then the reason on the
 /// same line; indented detail lines follow (n, which path decided, pivot
 /// index, witness, timings). Exit code 0 for PD and PSD, 1 for NOT_PSD, 2 for
-/// input that cannot be decided: unreadable file, bad number text, zero
+/// input that cannot be decided (6 when the operating system could not read
+/// an existing file): missing or non-regular file, too large (core/limits.h), bad number text, zero
 /// denominator, NaN/inf, ragged or non-square matrix, non-symmetric matrix,
 /// out of memory, any other error (message on `err`, never a crash).
 
@@ -25,6 +26,7 @@ struct PsdCommandOptions {
 inline constexpr int kPsdExitPsd = 0;
 inline constexpr int kPsdExitNotPsd = 1;
 inline constexpr int kPsdExitBadInput = 2;
+inline constexpr int kPsdExitIo = 6;  ///< the file exists but could not be read (same code as lpvid's)
 
 int run_psd_command(const std::string& path, std::ostream& out, std::ostream& err,
                     const PsdCommandOptions& options = {});

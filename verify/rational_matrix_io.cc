@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 
@@ -85,10 +86,7 @@ Mat<Rational> read_rational_matrix(std::istream& in, const std::string& name) {
 }
 
 Mat<Rational> read_rational_matrix_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) fail(path, 0, 0, "cannot open: is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::istringstream in(read_text_file(path));
   return read_rational_matrix(in, path);
 }
 
@@ -108,11 +106,9 @@ void write_rational_matrix(std::ostream& out, const Mat<Rational>& M, const std:
 }
 
 void write_rational_matrix_file(const std::string& path, const Mat<Rational>& M, const std::string& comment) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) fail(path, 0, 0, std::string("cannot write: ") + std::strerror(errno));
+  std::ostringstream out;
   write_rational_matrix(out, M, comment);
-  out.flush();
-  if (!out) fail(path, 0, 0, "write failed");
+  write_text_file(path, out.str(), "matrix");
 }
 
 }  // namespace lpvid

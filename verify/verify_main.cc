@@ -1,9 +1,10 @@
 // lpvid-verify: the exact verifier's command line (SPEC §7, §8).
 //
 //   lpvid-verify psd M.txt [--exact-only] [--threads N]
-//       PD / PSD (exit 0), NOT_PSD (exit 1), bad input (exit 2).
+//       PD / PSD (exit 0), NOT_PSD (exit 1), bad input (exit 2), read failure (exit 6).
 //   lpvid-verify certificate C.json
-//       consistent (exit 0), invalid: <reason> (exit 1), unreadable (exit 2).
+//       consistent (exit 0), invalid: <reason> (exit 1), malformed (exit 2), read failure (exit 6).
+//   Limits on inputs (core/limits.h): --max-file-mb, --max-digits, --max-degree, --max-samples.
 //
 // Each subcommand is registered by one add_*_subcommand function below and
 // run by the dispatch in main(). Usage errors exit with 2 (like bad input).
@@ -13,6 +14,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/limit_options.h"
 #include "verify/certificate_check.h"
 #include "verify/psd_command.h"
 
@@ -31,7 +33,7 @@ CLI::App* add_psd_subcommand(CLI::App& app, PsdArgs& args) {
                 "skip the floating-point filter; decide by exact LDL^T only");
   psd->add_option("--threads", args.options.threads, "threads for the exact elimination (0: all cores, max 8)")
       ->check(CLI::Range(0, 64));
-  psd->footer("Exit status: 0 PD or PSD, 1 NOT_PSD, 2 unreadable/invalid/non-symmetric input.");
+  psd->footer("Exit status: 0 PD or PSD, 1 NOT_PSD, 2 missing/invalid/non-symmetric/too large input, 6 read failure.");
   return psd;
 }
 
@@ -42,7 +44,7 @@ struct CertificateArgs {
 CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
   CLI::App* c = app.add_subcommand("certificate", "Check an lpvid certificate exactly, from the data text to the PSD decision");
   c->add_option("file", args.file, "certificate (lpvid-certificate/1 JSON)")->required();
-  c->footer("Exit status: 0 consistent, 1 invalid (with the reason), 2 unreadable input.");
+  c->footer("Exit status: 0 consistent, 1 invalid (with the reason), 2 missing/malformed/too large input, 6 read failure.");
   return c;
 }
 
@@ -51,6 +53,7 @@ CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
 int main(int argc, char** argv) {
   CLI::App app{"lpvid-verify: exact verifier for lpvid (no floating-point answer is trusted)"};
   app.require_subcommand(1);
+  lpvid::add_limit_options(app);
 
   PsdArgs psd_args;
   CLI::App* psd = add_psd_subcommand(app, psd_args);

@@ -40,7 +40,7 @@ struct DiagnoseArgs {
   double min_gain = 0.05;
   int degree = 2;
   int max_delay = 5;
-  int init_samples = 5;
+  int init_samples = static_cast<int>(RankingOptions{}.init_samples);
   bool input_scheduling = true;
   int state_degree = CandidateOptions{}.state_degree;
   bool joint_dynamics = RankingOptions{}.joint_dynamics;

@@ -24,7 +24,7 @@ struct DiagnoseReportInputs {
   WindowIdentification before_id, after_id;  ///< Theorem 3.1 on the first window
   const LpvModel<double>*before_model = nullptr, *after_model = nullptr;  ///< as rounded for the certificates
   const Experiment<double>*est = nullptr, *val = nullptr;
-  int init_samples = 5;
+  int init_samples = static_cast<int>(RankingOptions{}.init_samples);
   std::vector<std::string> validation_outputs;  ///< the validation data's output column names (plot legends)
 };
 

@@ -9,6 +9,7 @@
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "identify/certify.h"
+#include "identify/fix_and_certify.h"
 #include "solvers/external_solvers.h"
 #include "identify/identify.h"
 
@@ -38,8 +39,8 @@ void set_correction_basis(LpvModel<T>& m, const std::vector<std::string>& texts)
 struct IdentifyArgs {
   CommonOptions common;
   bool iterate = false;
-  int max_iterations = 25;
-  double rel_tol = 1e-4;
+  int max_iterations = IdentifyOptions{}.max_iterations;
+  double rel_tol = IdentifyOptions{}.rel_tol;
   bool free_x0 = false;
   bool no_offset = false;
   std::string method = "relaxation";
@@ -106,25 +107,17 @@ int run_identify(IdentifyArgs& a) {
   }
 
   // Round θ to short rationals, fold it in, and certify the fixed model.
-  Vec<Rational> p_q(res.p.size());
-  Vec<double> p_rounded(res.p.size());
-  for (Eigen::Index i = 0; i < res.p.size(); ++i) {
-    p_q(i) = round_to_digits(res.p(i), 12);
-    p_rounded(i) = CGAL::to_double(p_q(i));
-  }
-  const LpvModel<Rational> fixed = apply_parameters(in.model_q, res.layout, p_q);
   CertifyOptions co = certify_options(a.common, in.objective);
   co.solver = opt.solver;
-  // The alternating method's own Δ certifies without a re-solve; otherwise
-  // (or if that fails) Theorem 2.1 is solved again for the fixed model.
-  CertifiedBounds b;
-  if (opt.method == IdentifyMethod::kAlternating && res.taps.size() > 0) {
-    b = certify_with_taps(fixed, in.exp_q, res.taps, co, solver->name());
-    if (!b.verified) std::cout << "\n  the iterate's own Delta did not certify (" << b.reason << "); solving again\n";
-  }
-  if (!b.verified) {
-    b = certify_fixed_model(fixed, in.exp_q, co, *solver);
-  } else if (in.objective.kind != BoundObjective::Kind::kFeasibility) {
+  const FixedParameters fp = fix_parameters(in.model_q, res.layout, res.p, co.digits);
+  const LpvModel<Rational>& fixed = fp.model;
+  const Vec<double>& p_rounded = fp.value;
+  std::string taps_note;
+  CertifiedBounds b = certify_identified(fixed, in.exp_q, res.taps, co, *solver, &taps_note);
+  if (!taps_note.empty()) std::cout << "\n  the iterate's own Delta did not certify (" << taps_note << "); solved again\n";
+  // Certified from the iterate's own Δ: the lower end of the interval still
+  // needs a dual point of the full-horizon problem for the same fixed model.
+  if (b.verified && res.taps.size() > 0 && taps_note.empty() && in.objective.kind != BoundObjective::Kind::kFeasibility) {
     // The lower end of the interval needs a dual point of the full-horizon
     // problem for the same fixed model (issue 8).
     CertifyOptions lo = co;
@@ -162,8 +155,8 @@ Runner add_identify_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("identify", "Theorem 3.1: identify the correction S_C(rho) with certified bounds");
   add_common_options(*cmd, args->common, true);
   cmd->add_flag("--iterate", args->iterate, "re-linearise at each solution until the objective stalls (beyond the paper)");
-  cmd->add_option("--max-iterations", args->max_iterations, "solves of --iterate (default 25)")->check(CLI::Range(1, 1000));
-  cmd->add_option("--rel-tol", args->rel_tol, "stop --iterate when the objective improves by less (default 1e-4)");
+  cmd->add_option("--max-iterations", args->max_iterations, "solves of --iterate")->capture_default_str()->check(CLI::Range(1, 1000));
+  cmd->add_option("--rel-tol", args->rel_tol, "stop --iterate when the objective improves by less")->capture_default_str();
   cmd->add_option("--method", args->method,
                   "relaxation: the paper's linearised BMI (default); alternating: Delta/theta block-coordinate descent "
                   "in the Delta form, every iterate feasible for the true BMI (fast for long records)")

@@ -4,12 +4,15 @@
 
 #include "cli/commands.h"
 #include "cli/report.h"
+#include "core/file_io.h"
 #include "core/input_error.h"
+#include "core/limit_options.h"
 
 int main(int argc, char** argv) {
   using namespace lpvid::cli;
   CLI::App app{"lpvid: robust LPV identification/invalidation with exactly verified bounds"};
   app.require_subcommand(1);
+  lpvid::add_limit_options(app);
   std::vector<Runner> runners = {add_invalidate_command(app), add_identify_command(app), add_simulate_command(app),
                                  add_generate_command(app)};
   runners.push_back(add_select_basis_command(app));
@@ -22,23 +25,29 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }
+  // A command that fails with an exception leaves none of its outputs behind
+  // (a certificate without its report would look like a finished run).
+  const auto fail = [](const std::string& message, int code) {
+    std::cerr << "lpvid: " << message << "\n";
+    if (const int n = lpvid::discard_outputs_of_this_run(); n > 0)
+      std::cerr << "lpvid: removed the " << n << " file(s) this run had written\n";
+    return code;
+  };
   try {
     for (auto& run : runners) {
       const int code = run();
       if (code >= 0) return code;
     }
   } catch (const lpvid::InputError& e) {
-    std::cerr << "lpvid: " << e.what() << "\n";
-    return kExitBadInput;
+    return fail(e.what(), kExitBadInput);
+  } catch (const lpvid::IoError& e) {
+    return fail(e.what(), kExitIo);
   } catch (const std::invalid_argument& e) {
-    std::cerr << "lpvid: " << e.what() << "\n";
-    return kExitBadInput;
+    return fail(e.what(), kExitBadInput);
   } catch (const std::bad_alloc&) {
-    std::cerr << "lpvid: out of memory\n";
-    return kExitSolver;
+    return fail("out of memory", kExitSolver);
   } catch (const std::exception& e) {
-    std::cerr << "lpvid: " << e.what() << "\n";
-    return kExitSolver;
+    return fail(e.what(), kExitSolver);
   }
   std::cerr << "lpvid: no command\n";
   return kExitBadInput;

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
@@ -88,9 +89,7 @@ nlohmann::ordered_json theta_json(const LpvModel<double>& model, const Parameter
 
 void write_json(const std::string& path, const nlohmann::ordered_json& j) {
   if (path.empty()) return;
-  std::ofstream f(path);
-  if (!f) throw InputError("cannot write report '" + path + "'");
-  f << j.dump(2) << "\n";
+  write_text_file(path, j.dump(2) + "\n", "report");
 }
 
 namespace {

@@ -16,10 +16,11 @@ namespace lpvid::cli {
 enum ExitCode {
   kExitOk = 0,           ///< bounds found and verified
   kExitInvalidated = 1,  ///< invalidated at the given bounds: an "invalidated" certificate was checked exactly
-  kExitBadInput = 2,     ///< unreadable/malformed input, bad options
+  kExitBadInput = 2,     ///< missing, malformed or too large input (core/limits.h), bad options
   kExitSolver = 3,       ///< the SDP backend failed (no bound is reported)
   kExitNotVerified = 4,  ///< bounds were computed but the exact check did not accept them
   kExitUndecided = 5,    ///< fixed bounds: neither consistency nor invalidation could be certified
+  kExitIo = 6,           ///< an existing input could not be read or an output could not be written (core/file_io.h)
 };
 
 /// The common fields: status, delta, dmax (only when verified), the exact

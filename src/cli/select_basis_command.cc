@@ -21,8 +21,8 @@ struct SelectArgs {
   CommonOptions common;
   int max_degree = 2;
   bool iterate = false;
-  int max_iterations = 25;
-  double rel_tol = 1e-4;
+  int max_iterations = IdentifyOptions{}.max_iterations;
+  double rel_tol = IdentifyOptions{}.rel_tol;
   bool free_x0 = false;
   bool no_offset = false;
   bool no_prune = false;
@@ -213,9 +213,9 @@ Runner add_select_basis_command(CLI::App& app) {
       ->check(CLI::Range(0, 8));
   cmd->add_flag("--iterate", a->iterate,
                 "per basis: minimise dmax at delta with iterated re-linearisation (beyond the paper), then certify");
-  cmd->add_option("--max-iterations", a->max_iterations, "solves of --iterate per basis (default 25)")
+  cmd->add_option("--max-iterations", a->max_iterations, "solves of --iterate per basis")->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--rel-tol", a->rel_tol, "stop --iterate when dmax^2 improves by less (default 1e-4)");
+  cmd->add_option("--rel-tol", a->rel_tol, "stop --iterate when dmax^2 improves by less")->capture_default_str();
   cmd->add_flag("--free-x0", a->free_x0, "the initial state is an unknown too");
   cmd->add_flag("--no-offset", a->no_offset, "do not identify the offset phi even if the model declares one");
   cmd->add_flag("--no-prune", a->no_prune, "skip the removal phase");

@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "identify/basis_selection.h"
 #include "identify/tradeoff.h"
@@ -24,8 +25,8 @@ struct TradeoffArgs {
   CommonOptions common;
   std::vector<double> lambdas;
   bool iterate = false;
-  int max_iterations = 25;
-  double rel_tol = 1e-4;
+  int max_iterations = IdentifyOptions{}.max_iterations;
+  double rel_tol = IdentifyOptions{}.rel_tol;
   bool free_x0 = false;
   bool no_offset = false;
   std::vector<std::string> basis;
@@ -119,11 +120,7 @@ int run_tradeoff(TradeoffArgs& a) {
   const std::string mono = tradeoff_monotonicity_violation(pts, 1e-3, 1e-6);
   if (!mono.empty()) std::cout << "  NOTE: the certified curve is not monotone in lambda: " << mono << "\n";
 
-  {
-    std::ofstream f(a.csv_path);
-    if (!f) throw InputError("cannot write '" + a.csv_path + "'");
-    f << tradeoff_csv(pts);
-  }
+  write_text_file(a.csv_path, tradeoff_csv(pts), "trade-off CSV");
   std::cout << "  wrote " << a.csv_path << "\n";
   std::string plot;
   if (!a.no_plot) {
@@ -188,9 +185,9 @@ Runner add_tradeoff_command(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--iterate", a->iterate, "re-linearise at each solution until the objective stalls (beyond the paper)");
-  cmd->add_option("--max-iterations", a->max_iterations, "solves of --iterate per lambda (default 25)")
+  cmd->add_option("--max-iterations", a->max_iterations, "solves of --iterate per lambda")->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--rel-tol", a->rel_tol, "stop --iterate when the objective improves by less (default 1e-4)");
+  cmd->add_option("--rel-tol", a->rel_tol, "stop --iterate when the objective improves by less")->capture_default_str();
   cmd->add_flag("--free-x0", a->free_x0, "the initial state is an unknown too");
   cmd->add_flag("--no-offset", a->no_offset, "do not identify the offset phi even if the model declares one");
   cmd->add_option("--basis", a->basis, "correction basis, e.g. 1,rho1,rho1*rho2 (replaces the model's)")->delimiter(',');

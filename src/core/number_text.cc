@@ -8,6 +8,7 @@
 #include <mpfr.h>
 
 #include "core/input_error.h"
+#include "core/limits.h"
 
 namespace lpvid {
 namespace {
@@ -17,6 +18,12 @@ namespace {
 constexpr long kMaxExponent = 4000;
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+/// The message for a number longer than InputLimits::max_number_digits.
+std::string too_many_digits(long size) {
+  return "a number of " + std::to_string(size) + " digits" +
+         limit_hint(static_cast<long double>(input_limits().max_number_digits), "--max-digits");
+}
 
 /// Parsed pieces of "[+-]digits[.digits][(e|E)[+-]digits]".
 struct Decimal {
@@ -65,6 +72,9 @@ std::optional<std::string> parse_decimal(std::string_view s, Decimal* out) {
   }
   if (i != s.size()) return "unexpected character '" + std::string(1, s[i]) + "' in '" + std::string(s) + "'";
   d.scale = exponent - static_cast<long>(frac_digits);
+  // The exact value has about digits + |scale| decimal digits (1e4000: 4001).
+  const long size = static_cast<long>(int_digits + frac_digits) + std::labs(d.scale);
+  if (size > input_limits().max_number_digits) return too_many_digits(size);
   if (out) *out = std::move(d);
   return std::nullopt;
 }
@@ -131,6 +141,8 @@ std::optional<std::string> number_text_problem(std::string_view text) {
   std::string_view p = trim(s.substr(0, slash)), q = trim(s.substr(slash + 1));
   if (auto e = parse_integer(p)) return "numerator: " + *e;
   if (auto e = parse_integer(q)) return "denominator: " + *e;
+  if (const long size = static_cast<long>(p.size() + q.size()); size > input_limits().max_number_digits)
+    return too_many_digits(size);
   if (q.find_first_not_of("+-0") == std::string_view::npos) return "zero denominator in '" + std::string(s) + "'";
   return std::nullopt;
 }

@@ -8,7 +8,9 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
+#include "core/limits.h"
 #include "core/number_text.h"
 
 namespace lpvid {
@@ -168,6 +170,10 @@ TextTable csv_rows(const std::vector<Line>& lines, size_t first, std::vector<std
       throw_input_error(name, lines[k].number, "",
                         "expected " + std::to_string(width) + " cells (" + list_names(table.header) + "), got " +
                             std::to_string(cells.size()));
+    if (static_cast<long>(table.rows.size()) >= input_limits().max_samples)
+      throw_input_error(name, lines[k].number, "",
+                        "more than " + std::to_string(input_limits().max_samples) + " data rows" +
+                            limit_hint(static_cast<long double>(input_limits().max_samples), "--max-samples"));
     table.rows.push_back(std::move(cells));
     table.line_numbers.push_back(lines[k].number);
   }
@@ -216,17 +222,6 @@ TextTable parse_headerless_csv(std::string_view text, const std::string& name, c
 }
 
 }  // namespace
-
-std::string read_text_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw_input_error(path, 0, "", "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw_input_error(path, 0, "", std::string("cannot open file (") + std::strerror(errno) + ")");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw_input_error(path, 0, "", "read error");
-  return buffer.str();
-}
 
 TextTable parse_csv(std::string_view text, const std::string& name) {
   std::vector<Line> lines = split_lines(text);

@@ -67,8 +67,4 @@ TextTable parse_table(std::string_view text, const std::string& name,
 /// Index of the column called `column`, or std::nullopt.
 std::optional<size_t> find_column(const TextTable& table, std::string_view column);
 
-/// The whole content of a file (binary). Throws InputError naming the path if
-/// it cannot be opened or read.
-std::string read_text_file(const std::string& path);
-
 }  // namespace lpvid

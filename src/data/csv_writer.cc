@@ -3,6 +3,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "core/file_io.h"
 #include "core/number_text.h"
 #include "model/model_file.h"
 
@@ -24,11 +25,7 @@ std::string csv_text(const std::vector<TextColumn>& columns) {
 }
 
 void write_csv(const std::string& path, const std::vector<TextColumn>& columns) {
-  std::string text = csv_text(columns);
-  std::ofstream f(path, std::ios::binary);
-  if (!f) throw std::runtime_error("cannot write '" + path + "'");
-  f << text;
-  if (!f) throw std::runtime_error("error while writing '" + path + "'");
+  write_text_file(path, csv_text(columns), "CSV file");
 }
 
 std::vector<std::string> column_text(const Mat<Rational>& m, Eigen::Index j) {

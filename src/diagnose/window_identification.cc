@@ -2,6 +2,7 @@
 
 #include "data/experiment_builder.h"
 #include "identify/affine_residual.h"
+#include "identify/fix_and_certify.h"
 #include "model/simulate.h"
 
 namespace lpvid {
@@ -62,15 +63,11 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
     out.bounds.bounds.reason = "identification ended with " + std::string(to_string(out.result.status));
     return out;
   }
-  Vec<Rational> p(out.result.p.size());
-  for (Eigen::Index i = 0; i < p.size(); ++i) p(i) = round_to_digits(out.result.p(i), 12);
-  const LpvModel<Rational> fixed = apply_parameters(mq, out.result.layout, p);
-  out.bounds.model = fixed;
   CertifyOptions co = options;
   co.row_begin = out.bounds.file_begin;
   co.row_end = out.bounds.file_end;
-  if (out.result.taps.size() > 0) out.bounds.bounds = certify_with_taps(fixed, wq, out.result.taps, co, solver.name());
-  if (!out.bounds.bounds.verified) out.bounds.bounds = certify_fixed_model(fixed, wq, co, solver);
+  out.bounds.model = fix_parameters(mq, out.result.layout, out.result.p, co.digits).model;
+  out.bounds.bounds = certify_identified(out.bounds.model, wq, out.result.taps, co, solver);
   judge_informative(out.bounds, wd.y);
   return out;
 }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "identify/fix_and_certify.h"
 #include "identify/identify.h"
 
 namespace lpvid {
@@ -218,15 +219,10 @@ class Selector {
         if (has_solution(it.status) && (best < 0 || it.dmax2 < best * best)) best = std::sqrt(std::max(0.0, it.dmax2));
       s.dmax_relaxation = best;
     }
-    Vec<Rational> pq(res.p.size());
-    s.p = Vec<double>(res.p.size());
-    for (Eigen::Index i = 0; i < res.p.size(); ++i) {
-      pq(i) = round_to_digits(res.p(i), 12);
-      s.p(i) = CGAL::to_double(pq(i));
-    }
+    const FixedParameters fp = fix_parameters(mq, res.layout, res.p, co.digits);
+    s.p = fp.value;
     s.layout = res.layout;
-    const LpvModel<Rational> fixed = apply_parameters(mq, res.layout, pq);
-    judge(s, certify_fixed_model(fixed, eq_, co, solver_), co, what);
+    judge(s, certify_fixed_model(fp.model, eq_, co, solver_), co, what);
   }
 
   const LpvModel<Rational>& mq_;

@@ -63,6 +63,7 @@
 #include "data/experiment.h"
 #include "identify/affine_residual.h"
 #include "identify/certify.h"
+#include "identify/identify.h"
 #include "model/lpv_model.h"
 #include "model/monomial.h"
 #include "solvers/sdp_solver.h"
@@ -113,8 +114,8 @@ struct BasisSelectionOptions {
   std::string delta_text, dmax_text; ///< their exact text for the certificate (empty: the doubles)
   int max_degree = 2;
   bool iterate = false;
-  int max_iterations = 25;
-  double rel_tol = 1e-4;
+  int max_iterations = IdentifyOptions{}.max_iterations;
+  double rel_tol = IdentifyOptions{}.rel_tol;
   bool prune = true;                 ///< run the removal phase
   Unknowns unknowns;                 ///< offset / x0 (correction is always on)
   SolverOptions solver;

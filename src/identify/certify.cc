@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "core/sha256.h"

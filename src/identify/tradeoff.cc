@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "identify/fix_and_certify.h"
 #include "identify/identify.h"
 #include "model/model_file.h"
 
@@ -83,14 +84,10 @@ std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, con
           if (has_solution(it.status) && (!best || it.objective < best->objective)) best = &it;
         pt.delta_solver = std::sqrt(std::max(0.0, best->delta2));
         pt.dmax_solver = std::sqrt(std::max(0.0, best->dmax2));
-        Vec<Rational> pq(res.p.size());
-        pt.p = Vec<double>(res.p.size());
-        for (Eigen::Index i = 0; i < res.p.size(); ++i) {
-          pq(i) = round_to_digits(res.p(i), 12);
-          pt.p(i) = CGAL::to_double(pq(i));
-        }
+        FixedParameters fp = fix_parameters(model_q, res.layout, res.p, co.digits);
+        pt.p = fp.value;
         pt.layout = res.layout;
-        fixed = apply_parameters(model_q, res.layout, pq);
+        fixed = std::move(fp.model);
       } else {
         pt.bounds.reason = std::string("the identification solve ended with status ") + to_string(res.status) +
                            (res.message.empty() ? "" : ": " + res.message);

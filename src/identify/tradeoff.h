@@ -32,6 +32,7 @@
 #include "data/experiment.h"
 #include "identify/affine_residual.h"
 #include "identify/certify.h"
+#include "identify/identify.h"
 #include "identify/gnuplot.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
@@ -57,8 +58,8 @@ struct TradeoffPoint {
 struct TradeoffOptions {
   std::vector<double> lambdas;       ///< empty: default_lambda_grid()
   bool iterate = false;
-  int max_iterations = 25;
-  double rel_tol = 1e-4;
+  int max_iterations = IdentifyOptions{}.max_iterations;
+  double rel_tol = IdentifyOptions{}.rel_tol;
   Unknowns unknowns;
   SolverOptions solver;
   CertifyOptions certify;            ///< data path etc.; objective and path are set per point

@@ -6,7 +6,9 @@
 #include <initializer_list>
 #include <stdexcept>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
+#include "core/limits.h"
 #include "core/number_text.h"
 #include "data/csv_reader.h"
 
@@ -418,6 +420,9 @@ class ModelReader {
         const std::string cp = member_path(path, "coefficients");
         expect(c, Kind::kArray, cp);
         if (c.items.empty()) fail(c, cp, "a polynomial needs at least one coefficient (c0, c1, ...)");
+        if (static_cast<long>(c.items.size()) - 1 > input_limits().max_degree)
+          fail(c, cp, "degree " + std::to_string(c.items.size() - 1) + " polynomial" +
+                          limit_hint(input_limits().max_degree, "--max-degree"));
         for (size_t i = 0; i < c.items.size(); ++i) g.coefficients.push_back(number<T>(c.items[i], index_path(cp, i)));
         break;
       }
@@ -647,12 +652,7 @@ ojson to_json(const LpvModel<T>& m) {
 
 template <typename T>
 void write_file(const std::string& path, const LpvModel<T>& model) {
-  const std::string text = write_model_json(model);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw_input_error(path, 0, "", "cannot open for writing");
-  out << text;
-  out.flush();
-  if (!out) throw_input_error(path, 0, "", "write error");
+  write_text_file(path, write_model_json(model), "model");
 }
 
 }  // namespace

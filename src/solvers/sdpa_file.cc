@@ -8,9 +8,11 @@
 #include <istream>
 #include <limits>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "solvers/csdp_backend.h"
 #include "solvers/sdpa_backend.h"
@@ -177,11 +179,8 @@ void apply_name_comments(const std::vector<std::string>& comments, LmiProgram& p
   if (any_var) p.var_names = std::move(var_names);
 }
 
-std::ifstream open_for_reading(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw_input_error(path, 0, "", "cannot open for reading");
-  return in;
-}
+/// The file's text as a stream (read_text_file: regular files within the size limit).
+std::istringstream open_for_reading(const std::string& path) { return std::istringstream(read_text_file(path)); }
 
 /// −⟨F0, Y⟩ over all blocks (Y from dual_blocks; diagonal blocks as columns).
 double dual_value(const LmiProgram& p, const std::vector<Eigen::MatrixXd>& Y) {
@@ -234,11 +233,9 @@ void write_sdpa(const LmiProgram& program, std::ostream& out) {
 }
 
 void write_sdpa_file(const LmiProgram& program, const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw_input_error(path, 0, "", "cannot open for writing");
+  std::ostringstream out;
   write_sdpa(program, out);
-  out.flush();
-  if (!out) throw_input_error(path, 0, "", "write failed");
+  write_text_file(path, out.str(), "SDPA file");
 }
 
 // --- read ----------------------------------------------------------------------
@@ -293,7 +290,7 @@ LmiProgram read_sdpa(std::istream& in, const std::string& name) {
 }
 
 LmiProgram read_sdpa_file(const std::string& path) {
-  std::ifstream in = open_for_reading(path);
+  std::istringstream in = open_for_reading(path);
   return read_sdpa(in, path);
 }
 
@@ -301,7 +298,7 @@ LmiProgram read_sdpa_file(const std::string& path) {
 
 SolveResult read_csdp_solution(const std::string& path, const LmiProgram& program, int exit_code) {
   program.validate();
-  std::ifstream in = open_for_reading(path);
+  std::istringstream in = open_for_reading(path);
   Lines lines(in, path);
   SolveResult r;
   r.backend = "csdp (command)";
@@ -351,7 +348,7 @@ SolveResult read_csdp_solution(const std::string& path, const LmiProgram& progra
 
 SolveResult read_sdpa_result(const std::string& path, const LmiProgram& program, const SolverOptions& options) {
   program.validate();
-  std::ifstream in = open_for_reading(path);
+  std::istringstream in = open_for_reading(path);
   Lines lines(in, path);
   SolveResult r;
   r.backend = "sdpa (command)";

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/file_io.h"
 #include "core/sha256.h"
 #include "data/csv_reader.h"
 #include "identify/certify.h"

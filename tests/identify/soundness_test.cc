@@ -20,6 +20,7 @@
 
 #include <cmath>
 
+#include "core/file_io.h"
 #include "core/sha256.h"
 #include "data/csv_reader.h"
 #include "identify/certify.h"

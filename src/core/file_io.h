@@ -1,0 +1,41 @@
+#pragma once
+/// Reading and writing files (issue 10): one place for the rules every
+/// command follows.
+///  - Inputs are regular files (not /dev/zero, a FIFO or a directory) no
+///    larger than input_limits().max_file_bytes: otherwise InputError (exit 2).
+///  - A file that exists but cannot be opened or read, and an output that
+///    cannot be written, is an IoError (exit 6, distinct from bad input and
+///    from solver failure).
+///  - Outputs are written to a temporary name in the same directory and
+///    renamed into place, so a reader never sees half a file; every output
+///    of the run is recorded, and discard_outputs_of_this_run() removes them
+///    when a later step fails ("nothing left behind").
+
+#include <stdexcept>
+#include <string>
+
+namespace lpvid {
+
+/// An input/output failure of the operating system (open, read, write, rename).
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The whole content of the regular file `path` (binary).
+std::string read_text_file(const std::string& path);
+
+/// Writes `text` to `path` atomically (temporary file + rename) and records
+/// `path` as an output of this run. `what` names the file in messages
+/// ("report", "certificate", ...). Throws IoError.
+void write_text_file(const std::string& path, const std::string& text, const std::string& what);
+
+/// Removes every file written by write_text_file in this process (used when
+/// a command fails after some outputs were written). Returns how many.
+int discard_outputs_of_this_run();
+
+/// Forgets the recorded outputs (they stay on disk): a command that
+/// succeeded, or a test that runs several commands in one process.
+void keep_outputs_of_this_run();
+
+}  // namespace lpvid
