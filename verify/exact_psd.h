@@ -10,8 +10,9 @@
 ///    positive scaling, so the verdict is that of M) modulo 31-bit primes,
 ///    lifted by the Chinese remainder theorem with enough primes for
 ///    Hadamard's bound: deterministic, exact, no floating point. In the rare
-///    case where the first prime divides a nonzero Schur diagonal it falls
-///    back to decide_psd_bareiss.
+///    case where the first prime divides a nonzero Schur diagonal, and when
+///    the bound needs more 31-bit primes than exist (about 7.8·10⁵), it falls
+///    back to decide_psd_bareiss (the reason says so): it never gives up.
 ///  - decide_psd_bareiss: fraction-free (Bareiss) symmetric elimination on
 ///    GMP integers, in place. Exact; slower for large n (bench/README.md).
 ///  - decide_psd_rational_ldlt: textbook LDLᵀ over GMP rationals, the slowest;

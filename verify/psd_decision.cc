@@ -73,11 +73,24 @@ void require_symmetric(const Mat<Rational>& M) {
 }
 
 PsdResult decide_psd_exact(const Mat<Rational>& M, int threads) {
-  require_symmetric(M);
-  psd_detail::ModularOutcome outcome = psd_detail::decide_psd_modular(M, psd_detail::resolve_threads(threads));
-  if (outcome.decided) return outcome.result;
-  return decide_psd_bareiss(M, threads);  // p₀ was unlucky (see the section comment)
+  return psd_detail::decide_psd_exact_limited(M, threads, psd_detail::ExactPsdLimits{});
 }
+
+namespace psd_detail {
+
+PsdResult decide_psd_exact_limited(const Mat<Rational>& M, int threads, const ExactPsdLimits& limits) {
+  require_symmetric(M);
+  const int workers = resolve_threads(threads);
+  ModularOutcome outcome = decide_psd_modular(M, workers, limits.max_primes);
+  if (outcome.decided) return outcome.result;
+  // The multi-modular path could not decide (verify/psd_modular.cc, 5.):
+  // Bareiss decides exactly, without primes.
+  PsdResult r = decide_psd_bareiss(M, threads);
+  r.reason += " [multi-modular path undecided (" + outcome.why + "); decided by fraction-free Bareiss elimination]";
+  return r;
+}
+
+}  // namespace psd_detail
 
 PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options) {
   require_symmetric(M);

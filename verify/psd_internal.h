@@ -43,14 +43,31 @@ inline int resolve_threads(int threads) {
   return static_cast<int>(std::clamp(hw, 1u, 8u));
 }
 
-/// Outcome of the multi-modular path: a result, or "undecided" (the caller
-/// then decides with Bareiss).
+/// Outcome of the multi-modular path: a result, or "undecided" with the
+/// reason in `why` (the caller then decides with Bareiss).
 struct ModularOutcome {
   bool decided = false;
   PsdResult result;
+  std::string why;
 };
 
-/// The multi-modular decision (verify/psd_modular.cc).
-ModularOutcome decide_psd_modular(const Mat<Rational>& M, int threads);
+/// No limit on the number of primes below the supply: the primes in
+/// (2^31 − 2^24, 2^31), about 7.8·10⁵ (2^24 / ln 2^31, prime number theorem),
+/// i.e. Hadamard bounds up to about 2·10⁷ bits.
+inline constexpr std::size_t kAllPrimes = static_cast<std::size_t>(-1);
+
+/// The multi-modular decision (verify/psd_modular.cc) with at most
+/// `max_primes` primes.
+ModularOutcome decide_psd_modular(const Mat<Rational>& M, int threads, std::size_t max_primes = kAllPrimes);
+
+/// Resource limits of decide_psd_exact. The defaults are the real ones; the
+/// tests lower them to reach the fallbacks on small matrices.
+struct ExactPsdLimits {
+  /// Most primes the multi-modular path may use (beyond: Bareiss decides).
+  std::size_t max_primes = kAllPrimes;
+};
+
+/// decide_psd_exact with explicit limits (same `threads` as decide_psd_exact).
+PsdResult decide_psd_exact_limited(const Mat<Rational>& M, int threads, const ExactPsdLimits& limits);
 
 }  // namespace lpvid::psd_detail

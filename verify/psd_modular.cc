@@ -24,6 +24,11 @@
 ///   4. Witnesses: the integer vector Δ_K·[−A₁₁⁻¹A₁ₜ; e_t] (entries are K×K
 ///      determinants by Cramer's rule) is computed mod every prime by
 ///      back-substitution and lifted, then checked exactly as always.
+///   5. Resources: H needs ⌈log₂ 4H / 30⌉ primes; there are about 7.8·10⁵
+///      in (2^31 − 2^24, 2^31) (2^24 / ln 2^31), and a caller may set a lower
+///      limit. When they do not suffice (or in the unlucky case of 3.) the
+///      outcome is "undecided" with the reason, and decide_psd_exact decides
+///      with Bareiss instead: the exact decision never gives up.
 
 #include <gmp.h>
 
@@ -164,13 +169,14 @@ void parallel_for(std::size_t count, int threads, F&& f) {
 
 class ModularElimination {
  public:
-  ModularElimination(const Mat<Rational>& M, int threads) : M_(M), A_(integer_matrix(M)), threads_(threads) {}
+  ModularElimination(const Mat<Rational>& M, int threads, std::size_t max_primes)
+      : M_(M), A_(integer_matrix(M)), threads_(threads), max_primes_(max_primes) {}
 
   ModularOutcome run() {
     const std::size_t n = A_->n;
     const std::size_t need_bits = hadamard_bits(*A_) + 3;  // P > 2H with margin
     std::size_t count = need_bits / kPrimeBits + 1;
-    primes_ = modular_primes(count);
+    if (!take_primes(count, need_bits, &primes_)) return undecided();
     choose_pivots_mod(*A_, primes_[0], &perm_, &rank_);
     ints_ = std::make_unique<LogicalInts>(*A_, perm_);
     const std::size_t r = rank_, rest = n - r;
@@ -183,10 +189,14 @@ class ModularElimination {
     std::size_t first_unused = 0;
     while (good.size() * kPrimeBits < need_bits) {
       const std::size_t missing = (need_bits - good.size() * kPrimeBits + kPrimeBits - 1) / kPrimeBits;
-      std::vector<Word> batch = modular_primes(first_unused + missing);
+      if (first_unused + missing > count + 64) {
+        why_ = "more than 64 primes divide a pivot";  // absurd: let Bareiss decide
+        return undecided();
+      }
+      std::vector<Word> batch;
+      if (!take_primes(first_unused + missing, need_bits, &batch)) return undecided();
       batch.erase(batch.begin(), batch.begin() + static_cast<std::ptrdiff_t>(first_unused));
       first_unused += missing;
-      if (first_unused > count + 64) return {};  // absurdly many bad primes: let Bareiss decide
       std::vector<std::vector<Word>> batch_pivots(batch.size());
       std::vector<char> batch_ok(batch.size(), 0);
       std::vector<std::size_t> all(n);
@@ -221,7 +231,10 @@ class ModularElimination {
     }
     primes_ = good;
     Crt crt(primes_);
-    if (!crt.ok()) return {};
+    if (!crt.ok()) {
+      why_ = "the CRT moduli are not coprime";  // never for distinct primes
+      return undecided();
+    }
 
     // Step 3: leading principal minors Δ_k = Π_{t<k} pivot_t.
     std::vector<Word> delta(primes_.size(), 1);
@@ -238,8 +251,8 @@ class ModularElimination {
         res.pivot_index = perm_[k];
         res.reason = "exact LDL^T: after " + std::to_string(k) + " positive pivot(s) the pivot of row " +
                      std::to_string(perm_[k]) + " is negative";
-        if (!witness(k, {k}, &res)) return {};
-        return {true, res};
+        if (!witness(k, {k}, &res)) return undecided();
+        return {true, res, {}};
       }
     }
     const std::string how = " (multi-modular: " + std::to_string(primes_.size()) + " primes of 31 bits, CRT)";
@@ -264,9 +277,12 @@ class ModularElimination {
                      std::to_string(rest) + "x" + std::to_string(rest) + " Schur complement is exactly zero (rank " +
                      std::to_string(r) + " < n = " + std::to_string(n) + ")" + how;
       }
-      return {true, res};
+      return {true, res, {}};
     }
-    if (any_diag) return {};  // p₀ divides a nonzero Schur diagonal: let Bareiss decide
+    if (any_diag) {
+      why_ = "the first prime divides a nonzero Schur diagonal";  // let Bareiss decide
+      return undecided();
+    }
     // Zero diagonal, nonzero entry: smallest (original row, original column).
     std::size_t bi = rest, bj = rest;
     std::pair<long, long> best{-1, -1};
@@ -287,11 +303,32 @@ class ModularElimination {
     res.reason = "exact LDL^T: after " + std::to_string(r) + " positive pivot(s) the pivot of row " +
                  std::to_string(perm_[li]) + " is 0 but its row is not (entry with row " + std::to_string(perm_[lj]) +
                  "): the 2x2 principal minor [[0,b],[b,0]] with b != 0 is indefinite";
-    if (!witness(r, {std::min(li, lj), std::max(li, lj)}, &res, li)) return {};
-    return {true, res};
+    if (!witness(r, {std::min(li, lj), std::max(li, lj)}, &res, li)) return undecided();
+    return {true, res, {}};
   }
 
  private:
+  ModularOutcome undecided() const {
+    ModularOutcome out;
+    out.why = why_;
+    return out;
+  }
+
+  /// The first `count` primes into *out; false (with why_) when they exceed
+  /// max_primes_ or the primes in (2^31 − 2^24, 2^31): a Hadamard bound of
+  /// `need_bits` bits can then not be certified by this path.
+  bool take_primes(std::size_t count, std::size_t need_bits, std::vector<Word>* out) {
+    if (count <= max_primes_) {
+      *out = modular_primes(count);
+      if (out->size() == count) return true;
+    }
+    const std::size_t have = count <= max_primes_ ? out->size() : max_primes_;
+    why_ = "out of 31-bit primes: Hadamard's bound of 2^" + std::to_string(need_bits) + " needs " +
+           std::to_string(count) + " primes, " + (count <= max_primes_ ? "only " : "the limit is ") +
+           std::to_string(have) + (count <= max_primes_ ? " lie in (2^31 - 2^24, 2^31)" : "");
+    return false;
+  }
+
   /// Step 4. K leading pivots; targets t (logical ≥ K, increasing). For one
   /// target: w = Δ_K·[−A₁₁⁻¹A₁ₜ; 1]. For two targets i = `first` and j:
   /// w = w(i) − sign(S_ij)·w(j). Fills res->witness (checked exactly).
@@ -330,7 +367,10 @@ class ModularElimination {
       ok[pi] = 1;
     });
     for (char c : ok)
-      if (!c) return false;
+      if (!c) {
+        why_ = "a prime divides a pivot of the witness";
+        return false;
+      }
     Crt crt(primes_);
     // Integer witness on logical rows: Σ_t coef_t · w(t).
     std::vector<Mpz> w_logical(A_->n);
@@ -339,7 +379,10 @@ class ModularElimination {
     if (T == 2) {
       crt.lift([&](std::size_t i) { return wres[i][T * (K + 1)]; }, val.z);
       const long s = mpz_sgn(val.z);
-      if (s == 0) return false;
+      if (s == 0) {
+        why_ = "the off-diagonal Schur entry of the witness lifted to 0";
+        return false;
+      }
       // x = e_first − sign(S_ij)·e_other
       coef[targets[0] == first ? 1 : 0] = -s;
     }
@@ -363,6 +406,8 @@ class ModularElimination {
   const Mat<Rational>& M_;
   std::unique_ptr<IntegerMatrix> A_;
   int threads_;
+  std::size_t max_primes_;
+  std::string why_;  // why the path is undecided
   std::vector<Word> primes_;
   std::vector<long> perm_;
   std::size_t rank_ = 0;
@@ -371,8 +416,8 @@ class ModularElimination {
 
 }  // namespace
 
-ModularOutcome decide_psd_modular(const Mat<Rational>& M, int threads) {
-  ModularElimination modular(M, threads);
+ModularOutcome decide_psd_modular(const Mat<Rational>& M, int threads, std::size_t max_primes) {
+  ModularElimination modular(M, threads, max_primes);
   return modular.run();
 }
 

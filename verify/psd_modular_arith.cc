@@ -3,8 +3,8 @@
 
 #include "verify/psd_modular_arith.h"
 
+#include <algorithm>
 #include <mutex>
-#include <stdexcept>
 
 namespace lpvid::psd_detail {
 
@@ -46,18 +46,23 @@ bool inv_mod(Word a, Word p, Word* out) {
 std::vector<Word> modular_primes(std::size_t count) {
   static std::mutex mutex;
   static std::vector<Word> cache;
+  static bool exhausted = false;  // the cache holds every prime in the range
   std::lock_guard<std::mutex> lock(mutex);
-  if (cache.size() < count) {
+  if (cache.size() < count && !exhausted) {
     Mpz z;
     mpz_set_ui(z.z, (1ul << 31) - (1ul << 24));
     if (!cache.empty()) mpz_set_ui(z.z, cache.back());
     while (cache.size() < count) {
       mpz_nextprime(z.z, z.z);
-      if (mpz_cmp_ui(z.z, 1ul << 31) >= 0) throw std::runtime_error("exact_psd: out of 31-bit primes");
+      if (mpz_cmp_ui(z.z, 1ul << 31) >= 0) {
+        exhausted = true;
+        break;
+      }
       cache.push_back(static_cast<Word>(mpz_get_ui(z.z)));
     }
   }
-  return std::vector<Word>(cache.begin(), cache.begin() + static_cast<std::ptrdiff_t>(count));
+  const std::size_t have = std::min(count, cache.size());
+  return std::vector<Word>(cache.begin(), cache.begin() + static_cast<std::ptrdiff_t>(have));
 }
 
 Crt::Crt(const std::vector<Word>& primes) : primes_(primes), basis_(primes.size()) {

@@ -40,7 +40,8 @@ bool inv_mod(Word a, Word p, Word* out);
 /// Bits credited to each prime (all primes lie in (2^31 − 2^24, 2^31)).
 constexpr unsigned kPrimeBits = 30;
 
-/// The first `count` primes above 2^31 − 2^24 (cached; thread-safe).
+/// The first `count` primes above 2^31 − 2^24 (cached; thread-safe); fewer
+/// when the range below 2^31 holds fewer (the caller must check the size).
 std::vector<Word> modular_primes(std::size_t count);
 
 /// Lifts residues (one per prime) to the integer in (−P/2, P/2], P = Π primes.
