@@ -81,6 +81,8 @@ namespace psd_detail {
 PsdResult decide_psd_exact_limited(const Mat<Rational>& M, int threads, const ExactPsdLimits& limits) {
   require_symmetric(M);
   const int workers = resolve_threads(threads);
+  PsdResult screened;
+  if (screen_leading_blocks(M, workers, limits, &screened)) return screened;
   ModularOutcome outcome = decide_psd_modular(M, workers, limits.max_primes);
   if (outcome.decided) return outcome.result;
   // The multi-modular path could not decide (verify/psd_modular.cc, 5.):

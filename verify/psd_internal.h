@@ -65,9 +65,18 @@ ModularOutcome decide_psd_modular(const Mat<Rational>& M, int threads, std::size
 struct ExactPsdLimits {
   /// Most primes the multi-modular path may use (beyond: Bareiss decides).
   std::size_t max_primes = kAllPrimes;
+  /// The leading-block screen decides the leading principal submatrices of
+  /// sizes 2, 4, 8, … ≤ n / screen_divisor first (verify/psd_screen.cc);
+  /// 0 turns the screen off.
+  std::size_t screen_divisor = 4;
 };
 
 /// decide_psd_exact with explicit limits (same `threads` as decide_psd_exact).
 PsdResult decide_psd_exact_limited(const Mat<Rational>& M, int threads, const ExactPsdLimits& limits);
+
+/// The leading-block screen: true with *out = NOT_PSD (witness padded by zeros
+/// and checked exactly on M) when a leading principal submatrix of M within
+/// the limits is not PSD; false when none is (which proves nothing about M).
+bool screen_leading_blocks(const Mat<Rational>& M, int threads, const ExactPsdLimits& limits, PsdResult* out);
 
 }  // namespace lpvid::psd_detail

@@ -1,5 +1,6 @@
 /// Bounded resources of the exact PSD decision (issue 10): the multi-modular
-/// path falls back to Bareiss instead of giving up when it runs out of primes.
+/// path falls back to Bareiss instead of giving up when it runs out of primes,
+/// and the leading-block screen decides easy NOT_PSD matrices early.
 
 #include <string>
 #include <vector>
@@ -52,6 +53,7 @@ TEST(ExactPsdResources, OutOfPrimesReportsUndecided) {
 TEST(ExactPsdResources, OutOfPrimesFallsBackToBareiss) {
   ExactPsdLimits no_primes;
   no_primes.max_primes = 0;
+  no_primes.screen_divisor = 0;
   const std::vector<Mat<Rational>> cases = {
       rank_one_shift(7, 1, 30),                    // PD
       rank_one_shift(7, 0, 0),                     // PSD of rank 1
@@ -80,6 +82,59 @@ TEST(ExactPsdResources, OutOfPrimesFallsBackToBareiss) {
     EXPECT_EQ(full.verdict, ref.verdict);
     EXPECT_FALSE(contains(full.reason, "Bareiss")) << full.reason;
   }
+}
+
+TEST(ExactPsdResources, LeadingBlockScreenDecidesRankOneMinusTinyIdentity) {
+  // The floating filter sees the rank-one v vᵀ; the leading 2×2 block has
+  // determinant −ε(v₀² + v₁²) + ε² < 0 (ε = 10⁻⁵⁰).
+  const Mat<Rational> M = rank_one_shift(60, -1, 50);
+  const PsdResult ref = decide_psd_rational_ldlt(M);
+  ASSERT_EQ(ref.verdict, PsdVerdict::kNotPsd);
+  const PsdResult r = decide_psd_exact(M);
+  EXPECT_EQ(r.verdict, ref.verdict);
+  EXPECT_TRUE(contains(r.reason, "leading 2x2 principal submatrix")) << r.reason;
+  ASSERT_EQ(r.witness.size(), 60);
+  EXPECT_LT(quadratic_form(M, r.witness), Rational(0));
+  for (Eigen::Index i = 2; i < 60; ++i) EXPECT_EQ(r.witness(i), Rational(0)) << i;
+  EXPECT_EQ(r.pivot_index, 1);
+  EXPECT_EQ(r.step, 1);
+  // Through the filter, and with the screen off (the full path agrees).
+  const PsdResult f = decide_psd(M);
+  EXPECT_EQ(f.verdict, PsdVerdict::kNotPsd) << f.reason;
+  EXPECT_LT(quadratic_form(M, f.witness), Rational(0));
+  ExactPsdLimits off;
+  off.screen_divisor = 0;
+  const PsdResult all = psd_detail::decide_psd_exact_limited(M, 0, off);
+  EXPECT_EQ(all.verdict, PsdVerdict::kNotPsd);
+  EXPECT_FALSE(contains(all.reason, "leading")) << all.reason;
+  EXPECT_LT(quadratic_form(M, all.witness), Rational(0));
+}
+
+TEST(ExactPsdResources, ScreenGrowsGeometricallyAndStopsAtAQuarter) {
+  std::vector<std::string> d(40, "1");
+  d[6] = "-1/3";  // first in the leading 8×8 block
+  const PsdResult at8 = decide_psd_exact(diagonal(d));
+  EXPECT_EQ(at8.verdict, PsdVerdict::kNotPsd);
+  EXPECT_TRUE(contains(at8.reason, "leading 8x8 principal submatrix")) << at8.reason;
+  EXPECT_EQ(at8.pivot_index, 6);
+  d[6] = "1";
+  d[12] = "-1/3";  // beyond 40/4 = 10: the full decision finds it
+  const PsdResult full = decide_psd_exact(diagonal(d));
+  EXPECT_EQ(full.verdict, PsdVerdict::kNotPsd);
+  EXPECT_FALSE(contains(full.reason, "leading")) << full.reason;
+  EXPECT_EQ(full.pivot_index, 12);
+  EXPECT_LT(quadratic_form(diagonal(d), full.witness), Rational(0));
+}
+
+TEST(ExactPsdResources, ScreenLeavesPdAndPsdToTheFullDecision) {
+  const Mat<Rational> pd = rank_one_shift(60, 1, 50);
+  const PsdResult r = decide_psd_exact(pd);
+  EXPECT_EQ(r.verdict, PsdVerdict::kPositiveDefinite) << r.reason;
+  EXPECT_EQ(r.rank, 60);
+  EXPECT_TRUE(contains(r.reason, "all 60 pivots are positive")) << r.reason;
+  const PsdResult s = decide_psd_exact(rank_one_shift(60, 0, 0));
+  EXPECT_EQ(s.verdict, PsdVerdict::kPositiveSemidefinite) << s.reason;
+  EXPECT_EQ(s.rank, 1);
 }
 
 }  // namespace

@@ -282,28 +282,35 @@ rc::Gen<gen::KnownMatrix> arbitrary_symmetric() {
 /// with B singular, BᵀB − c·vvᵀ). Every implementation agrees on the verdict
 /// with the rational reference; Bareiss also on the pivot row, rank and step;
 /// so does decide_psd_exact when it must fall back to Bareiss for want of
-/// primes; the fast path never contradicts the exact one.
+/// primes; the leading-block screen run on every block size (up to n) changes
+/// no verdict; the fast path never contradicts the exact one.
 RC_GTEST_PROP(PsdProperty, AllImplementationsAgreeOnArbitrarySymmetricMatrices, ()) {
   const auto k = *rc::gen::oneOf(arbitrary_symmetric(), gen::pd_gram_plus(), gen::psd_gram(true),
                                  gen::singular_minus(), gen::with_negative());
   const Mat<Rational>& M = k.M;
-  psd_detail::ExactPsdLimits no_primes;
+  psd_detail::ExactPsdLimits screen_all, no_primes;
+  screen_all.screen_divisor = 1;
   no_primes.max_primes = 0;
   const PsdResult ref = decide_psd_rational_ldlt(M);
   const PsdResult bar = decide_psd_bareiss(M);
   const PsdResult exa = decide_psd_exact(M);
   const PsdResult fast = decide_psd(M);
+  const PsdResult screened = psd_detail::decide_psd_exact_limited(M, 0, screen_all);
   const PsdResult fallback = psd_detail::decide_psd_exact_limited(M, 0, no_primes);
-  for (const PsdResult* r : {&bar, &exa, &fast, &fallback}) RC_ASSERT(r->verdict == ref.verdict);
+  for (const PsdResult* r : {&bar, &exa, &fast, &screened, &fallback}) RC_ASSERT(r->verdict == ref.verdict);
   for (const PsdResult* r : {&bar, &fallback}) {
     RC_ASSERT(r->pivot_index == ref.pivot_index);
     RC_ASSERT(r->rank == ref.rank);
     RC_ASSERT(r->step == ref.step);
   }
-  if (ref.verdict != PsdVerdict::kNotPsd) RC_ASSERT(exa.rank == ref.rank);
-  for (const PsdResult* r : {&ref, &bar, &exa, &fast, &fallback})
+  if (ref.verdict != PsdVerdict::kNotPsd) {
+    RC_ASSERT(exa.rank == ref.rank);
+    RC_ASSERT(screened.rank == ref.rank);
+  }
+  for (const PsdResult* r : {&ref, &bar, &exa, &fast, &screened, &fallback})
     if (r->verdict == PsdVerdict::kNotPsd) RC_ASSERT(quadratic_form(M, r->witness) < Rational(0));
   RC_TAG(verdict_word(ref.verdict));
+  RC_TAG(screened.reason.find("leading") != std::string::npos ? "screen decided" : "full decision");
 }
 
 RC_GTEST_PROP(PsdProperty, FastPathNeverDisagreesWithExactPath, ()) {
