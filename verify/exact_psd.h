@@ -10,8 +10,14 @@
 ///    positive scaling, so the verdict is that of M) modulo 31-bit primes,
 ///    lifted by the Chinese remainder theorem with enough primes for
 ///    Hadamard's bound: deterministic, exact, no floating point. In the rare
-///    case where the first prime divides a nonzero Schur diagonal it falls
-///    back to decide_psd_bareiss.
+///    case where the first prime divides a nonzero Schur diagonal, and when
+///    the bound needs more 31-bit primes than exist (about 7.8·10⁵), it falls
+///    back to decide_psd_bareiss (the reason says so): it never gives up.
+///    Before that, a screen decides the leading principal submatrices of
+///    sizes 2, 4, 8, … ≤ n/4 (at most ~0.5 % of the cost of the full
+///    decision): a principal submatrix of a PSD matrix is PSD, so a NOT_PSD
+///    block ends the decision with its witness padded by zeros. PD and PSD
+///    verdicts always come from the decision on all of M.
 ///  - decide_psd_bareiss: fraction-free (Bareiss) symmetric elimination on
 ///    GMP integers, in place. Exact; slower for large n (bench/README.md).
 ///  - decide_psd_rational_ldlt: textbook LDLᵀ over GMP rationals, the slowest;
@@ -31,7 +37,9 @@
 /// decide_psd_exact pivots on the first remaining row (smallest original
 /// index) whose Schur diagonal is nonzero (modulo a prime, hence exactly) and
 /// reports the first negative pivot in that order; its verdict is the same,
-/// its pivot_index may differ when M is not PSD.
+/// its pivot_index (and step) may differ when M is not PSD, in particular when
+/// the screen decided on a leading block (then they are that block's, whose
+/// rows are the first rows of M).
 /// Witness: with P the pivoted rows so far, x a vector on the remaining rows
 /// with xᵀSx < 0 (x = e_i in case 1, x = e_i − sign(b)·e_j in case 3),
 ///   v = [ −M_PP⁻¹ M_P· x ; x ]   (the back-substitution v = L⁻ᵀ x),

@@ -12,6 +12,7 @@
 
 #include "core/number_text.h"
 #include "support/gen_matrices.h"
+#include "verify/psd_internal.h"
 
 namespace lpvid {
 namespace {
@@ -259,28 +260,57 @@ RC_GTEST_PROP(PsdProperty, KnownNegativeDirectionGivesNotPsdWithExactWitness, ()
   }
 }
 
-/// Any symmetric matrix with entries in {-2..2} (many zero pivots): every
-/// implementation agrees; Bareiss and the rational reference agree on the
-/// pivot row, rank and step; the fast path never contradicts the exact one.
+/// Any symmetric matrix with entries in {-2..2} (many zero pivots).
+rc::Gen<gen::KnownMatrix> arbitrary_symmetric() {
+  return rc::gen::mapcat(gen::psd_dimension(), [](int n) {
+    const auto cells = static_cast<size_t>(n * n);
+    return rc::gen::map(rc::gen::container<std::vector<int>>(cells, rc::gen::inRange(-2, 3)),
+                        [n](const std::vector<int>& upper) {
+                          gen::KnownMatrix k;
+                          k.n = k.rank_bound = n;
+                          k.M.resize(n, n);
+                          for (int i = 0; i < n; ++i)
+                            for (int j = i; j < n; ++j)
+                              k.M(i, j) = k.M(j, i) = Rational(upper[static_cast<size_t>(i * n + j)]);
+                          return k;
+                        });
+  });
+}
+
+/// Symmetric matrices of every kind: arbitrary small integers, PD (BᵀB + εI),
+/// PSD of lower rank (BᵀB, B r×n, r < n) and indefinite rationals (BᵀB − εI
+/// with B singular, BᵀB − c·vvᵀ). Every implementation agrees on the verdict
+/// with the rational reference; Bareiss also on the pivot row, rank and step;
+/// so does decide_psd_exact when it must fall back to Bareiss for want of
+/// primes; the leading-block screen run on every block size (up to n) changes
+/// no verdict; the fast path never contradicts the exact one.
 RC_GTEST_PROP(PsdProperty, AllImplementationsAgreeOnArbitrarySymmetricMatrices, ()) {
-  const int n = *gen::psd_dimension();
-  const auto upper = *rc::gen::container<std::vector<int>>(static_cast<size_t>(n * n), rc::gen::inRange(-2, 3));
-  Mat<Rational> M(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = i; j < n; ++j) M(i, j) = M(j, i) = Rational(upper[static_cast<size_t>(i * n + j)]);
+  const auto k = *rc::gen::oneOf(arbitrary_symmetric(), gen::pd_gram_plus(), gen::psd_gram(true),
+                                 gen::singular_minus(), gen::with_negative());
+  const Mat<Rational>& M = k.M;
+  psd_detail::ExactPsdLimits screen_all, no_primes;
+  screen_all.screen_divisor = 1;
+  no_primes.max_primes = 0;
   const PsdResult ref = decide_psd_rational_ldlt(M);
   const PsdResult bar = decide_psd_bareiss(M);
   const PsdResult exa = decide_psd_exact(M);
   const PsdResult fast = decide_psd(M);
-  RC_ASSERT(bar.verdict == ref.verdict);
-  RC_ASSERT(exa.verdict == ref.verdict);
-  RC_ASSERT(fast.verdict == ref.verdict);
-  RC_ASSERT(bar.pivot_index == ref.pivot_index);
-  RC_ASSERT(bar.rank == ref.rank);
-  RC_ASSERT(bar.step == ref.step);
-  if (ref.verdict != PsdVerdict::kNotPsd) RC_ASSERT(exa.rank == ref.rank);
-  for (const PsdResult* r : {&ref, &bar, &exa, &fast})
+  const PsdResult screened = psd_detail::decide_psd_exact_limited(M, 0, screen_all);
+  const PsdResult fallback = psd_detail::decide_psd_exact_limited(M, 0, no_primes);
+  for (const PsdResult* r : {&bar, &exa, &fast, &screened, &fallback}) RC_ASSERT(r->verdict == ref.verdict);
+  for (const PsdResult* r : {&bar, &fallback}) {
+    RC_ASSERT(r->pivot_index == ref.pivot_index);
+    RC_ASSERT(r->rank == ref.rank);
+    RC_ASSERT(r->step == ref.step);
+  }
+  if (ref.verdict != PsdVerdict::kNotPsd) {
+    RC_ASSERT(exa.rank == ref.rank);
+    RC_ASSERT(screened.rank == ref.rank);
+  }
+  for (const PsdResult* r : {&ref, &bar, &exa, &fast, &screened, &fallback})
     if (r->verdict == PsdVerdict::kNotPsd) RC_ASSERT(quadratic_form(M, r->witness) < Rational(0));
+  RC_TAG(verdict_word(ref.verdict));
+  RC_TAG(screened.reason.find("leading") != std::string::npos ? "screen decided" : "full decision");
 }
 
 RC_GTEST_PROP(PsdProperty, FastPathNeverDisagreesWithExactPath, ()) {
