@@ -10,4 +10,5 @@ $SUDO apt-get install -y --no-install-recommends \
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
   libgtest-dev librapidcheck-dev nlohmann-json3-dev libcli11-dev \
   libsdp-dev coinor-csdp libsdpa-dev sdpa libmumps-seq-dev libopenblas-dev liblapack-dev gfortran \
+  python3 python3-jsonschema \
   gnuplot-nox

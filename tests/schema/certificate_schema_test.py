@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""docs/certificate.schema.json against real certificates (issue 10 item 4).
+
+Writes certificates with the built `lpvid` on fixtures/example1 (a primal
+"consistent" one in form delta, its dual "lower_bound" companion, form w of
+--toeplitz paper, a dual "invalidated" one) and validates each against the
+schema; then checks that broken copies (a required field removed, another
+format version, a key of the other form) FAIL. Also checks that the schema's
+version is the one verify/certificate_file.h reads, so neither can drift.
+
+usage: certificate_schema_test.py LPVID SOURCE_DIR WORK_DIR
+"""
+import copy
+import json
+import os
+import re
+import subprocess
+import sys
+
+import jsonschema
+
+lpvid, source, work = sys.argv[1:4]
+os.makedirs(work, exist_ok=True)
+ex1 = os.path.join(source, "fixtures", "example1")
+data = os.path.join(ex1, "noise_free_n40.csv")
+failures = []
+
+
+def check(ok, what):
+    print(("ok:     " if ok else "FAILED: ") + what)
+    if not ok:
+        failures.append(what)
+
+
+with open(os.path.join(source, "docs", "certificate.schema.json"), encoding="utf-8") as f:
+    schema = json.load(f)
+jsonschema.Draft202012Validator.check_schema(schema)
+validator = jsonschema.Draft202012Validator(schema)
+with open(os.path.join(source, "verify", "certificate_file.h"), encoding="utf-8") as f:
+    version = re.search(r'kCertificateFormat = "([^"]+)"', f.read()).group(1)
+check(schema["properties"]["format"]["const"] == version and schema["$id"].endswith(version),
+      f"schema format const and $id name {version}, the version the reader accepts")
+
+
+def lpvid_run(name, model, *options, exit_codes=(0,)):
+    cert = os.path.join(work, name + ".cert.json")
+    args = [lpvid, options[0], "--data", data, "--model", os.path.join(ex1, model), "--certificate", cert,
+            "--report", os.path.join(work, name + ".report.json"), *options[1:]]
+    r = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if r.returncode not in exit_codes:
+        print(r.stdout)
+        check(False, f"{' '.join(args)}: exit {r.returncode}")
+    return cert
+
+
+def errors(doc):
+    return [e.message for e in validator.iter_errors(doc)]
+
+
+certificates = [
+    lpvid_run("identify", "initial_model.json", "identify"),
+    lpvid_run("paper", "true_model.json", "invalidate", "--toeplitz", "paper"),
+    lpvid_run("invalidated", "initial_model.json", "invalidate", "--delta", "0.001", "--dmax", "0.001",
+              exit_codes=(1,)),  # 1: invalidated, certified
+]
+lower = os.path.join(work, "identify.cert.lower.json")
+if os.path.exists(lower):
+    certificates.append(lower)
+
+seen = set()
+for path in certificates:
+    if not os.path.exists(path):
+        check(False, f"{path} was written")
+        continue
+    with open(path, encoding="utf-8") as f:
+        cert = json.load(f)
+    seen.add((cert["claim"], cert["form"]))
+    e = errors(cert)
+    check(not e, f"{os.path.basename(path)} ({cert['claim']}, form {cert['form']}) is valid" + "".join("\n  " + m for m in e))
+
+    def broken(what, mutate):
+        doc = copy.deepcopy(cert)
+        mutate(doc)
+        check(bool(errors(doc)), f"{os.path.basename(path)} with {what} is rejected")
+
+    broken("no 'format'", lambda d: d.pop("format"))
+    broken("no 'data.sha256'", lambda d: d["data"].pop("sha256"))
+    broken("no 'model.columns'", lambda d: d["model"].pop("columns"))
+    broken("format lpvid-certificate/2", lambda d: d.update(format="lpvid-certificate/2"))
+    broken("an unknown key", lambda d: d.update(comment="x"))
+    broken("a number as text 'abc'", lambda d: d.update(delta2="abc") if "delta2" in d else d.update(lower_bound="abc"))
+    required = {"delta": "delta_taps", "w": "w", "dual_delta": "dual"}[cert["form"]]
+    broken(f"no '{required}'", lambda d: d.pop(required))
+
+for kind in [("consistent", "delta"), ("consistent", "w"), ("lower_bound", "dual_delta"),
+             ("invalidated", "dual_delta")]:
+    check(kind in seen, f"a certificate with claim {kind[0]}, form {kind[1]} was validated")
+print(f"{len(failures)} failed" if failures else "all schema checks passed")
+sys.exit(1 if failures else 0)
