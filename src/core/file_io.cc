@@ -32,7 +32,7 @@ std::string os_reason() { return std::strerror(errno); }
 std::string read_text_file(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) {
-    if (errno == ENOENT || errno == ENOTDIR) throw_input_error(path, 0, "", "no such file");
+    if (errno == ENOENT || errno == ENOTDIR) throw_input_error(path, 0, "", "cannot open: no such file");
     throw IoError(path + ": cannot open (" + os_reason() + ")");
   }
   if (S_ISDIR(st.st_mode)) throw_input_error(path, 0, "", "is a directory, not a file");
