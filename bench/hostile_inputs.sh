@@ -46,7 +46,7 @@ run() {
   code=$?
   end=$(date +%s.%N)
   printf '%-52s %5s %8.2f  %s\n' "$name" "$code" "$(awk -v a="$start" -v b="$end" 'BEGIN { print b - a }')" \
-    "$(grep -m1 -E 'lpvid|error|NOT_PSD|PSD|invalid' "$work/out.txt" | cut -c1-90)"
+    "$(grep -m1 -E '^(lpvid:|lpvid-verify|NOT_PSD|PSD|PD|consistent|invalid)' "$work/out.txt" | cut -c1-90)"
 }
 run "lpvid invalidate --data /dev/zero" "$lpvid" invalidate --data /dev/zero --model "$model"
 run "lpvid-verify psd /dev/zero" "$verify" psd /dev/zero

@@ -1,0 +1,282 @@
+#include "model/model_file.h"
+/// Writing lpvid-model/1 files and exact number text (the reader is
+/// model_file_reader.cc).
+
+#include <cmath>
+#include <gmp.h>
+#include <stdexcept>
+
+#include "core/file_io.h"
+#include "core/number_text.h"
+
+namespace lpvid {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+std::string dims(Eigen::Index r, Eigen::Index c) { return std::to_string(r) + "x" + std::to_string(c); }
+
+// ---------------------------------------------------------------- writing
+
+[[noreturn]] void bad_model(const std::string& what) {
+  throw std::invalid_argument("write_model_json: " + what);
+}
+
+template <typename T>
+ojson matrix_json(const Mat<T>& m) {
+  ojson rows = ojson::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    ojson row = ojson::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(number_to_json(m(i, j)));
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+template <typename T>
+ojson vector_json(const Vec<T>& v) {
+  ojson out = ojson::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(number_to_json(v(i)));
+  return out;
+}
+
+std::string basis_text(const Monomial& f, const std::vector<std::string>& names, const std::string& where) {
+  if (f.powers.size() != names.size())
+    bad_model(where + ": basis function has " + std::to_string(f.powers.size()) + " powers, the model has " +
+              std::to_string(names.size()) + " scheduling variables");
+  for (int p : f.powers)
+    if (p < 0 || p > kMaxMonomialPower) bad_model(where + ": basis power " + std::to_string(p) + " out of range");
+  return f.text(names);
+}
+
+template <typename T>
+ojson terms_json(const ParamMatrix<T>& pm, Eigen::Index rows, Eigen::Index cols, const std::vector<std::string>& names,
+                 const std::string& where) {
+  ojson out = ojson::array();
+  for (size_t i = 0; i < pm.terms.size(); ++i) {
+    const ParamTerm<T>& t = pm.terms[i];
+    const std::string w = where + "[" + std::to_string(i) + "]";
+    if (t.value.rows() != rows || t.value.cols() != cols)
+      bad_model(w + ": value is " + dims(t.value.rows(), t.value.cols()) + ", expected " + dims(rows, cols));
+    ojson term = ojson::object();
+    term["basis"] = basis_text(t.basis, names, w);
+    term["value"] = matrix_json(t.value);
+    out.push_back(std::move(term));
+  }
+  return out;
+}
+
+template <typename T>
+bool is_zero(const Mat<T>& m) {
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j)
+      if (m(i, j) != T(0)) return false;
+  return true;
+}
+
+template <typename T>
+ojson fixed_correction_json(const std::vector<Mat<T>>& mats, const std::vector<Monomial>& basis, Eigen::Index rows,
+                            Eigen::Index cols, const std::vector<std::string>& names, const std::string& where) {
+  if (!mats.empty() && mats.size() != basis.size())
+    bad_model(where + ": " + std::to_string(mats.size()) + " matrices for " + std::to_string(basis.size()) +
+              " basis functions");
+  ojson out = ojson::array();
+  for (size_t i = 0; i < mats.size(); ++i) {
+    const std::string w = where + "[" + std::to_string(i) + "]";
+    if (mats[i].rows() != rows || mats[i].cols() != cols)
+      bad_model(w + ": is " + dims(mats[i].rows(), mats[i].cols()) + ", expected " + dims(rows, cols));
+    if (is_zero(mats[i])) continue;
+    ojson term = ojson::object();
+    term["basis"] = basis_text(basis[i], names, w);
+    term["value"] = matrix_json(mats[i]);
+    out.push_back(std::move(term));
+  }
+  return out;
+}
+
+template <typename T>
+ojson to_json(const LpvModel<T>& m) {
+  if (m.nx < 0 || m.nu < 0 || m.ny < 0) bad_model("negative dimension");
+  const Eigen::Index nx = m.nx, nu = m.nu, ny = m.ny;
+  const auto& names = m.scheduling;
+  ojson j = ojson::object();
+  j["format"] = kModelFormat;
+  j["states"] = m.nx;
+  j["inputs"] = m.nu;
+  j["outputs"] = m.ny;
+  j["scheduling"] = names;
+
+  if (m.columns.u.size() != static_cast<size_t>(m.nu) || m.columns.y.size() != static_cast<size_t>(m.ny) ||
+      m.columns.rho.size() != names.size())
+    bad_model("columns: need " + std::to_string(m.nu) + " u, " + std::to_string(m.ny) + " y and " +
+              std::to_string(names.size()) + " rho names");
+  ojson columns = ojson::object();
+  columns["u"] = m.columns.u;
+  columns["y"] = m.columns.y;
+  columns["rho"] = m.columns.rho;
+  j["columns"] = std::move(columns);
+
+  ojson initial = ojson::object();
+  initial["A"] = terms_json(m.A, nx, nx, names, "initial.A");
+  initial["B"] = terms_json(m.B, nx, nu, names, "initial.B");
+  initial["C"] = terms_json(m.C, ny, nx, names, "initial.C");
+  initial["D"] = terms_json(m.D, ny, nu, names, "initial.D");
+  j["initial"] = std::move(initial);
+
+  const Correction<T>& c = m.correction;
+  if (!c.basis.empty() || !c.A.empty() || !c.B.empty()) {
+    ojson corr = ojson::object();
+    ojson basis = ojson::array();
+    for (size_t i = 0; i < c.basis.size(); ++i)
+      basis.push_back(basis_text(c.basis[i], names, "correction.basis[" + std::to_string(i) + "]"));
+    corr["basis"] = std::move(basis);
+    ojson a = fixed_correction_json(c.A, c.basis, nx, nx, names, "correction.A");
+    ojson b = fixed_correction_json(c.B, c.basis, nx, nu, names, "correction.B");
+    if (!a.empty()) corr["A"] = std::move(a);
+    if (!b.empty()) corr["B"] = std::move(b);
+    j["correction"] = std::move(corr);
+  }
+
+  const Uncertainty<T>& u = m.uncertainty;
+  ojson unc = ojson::object();
+  unc["structure"] = to_string(u.structure);
+  if (u.structure == UncertaintyStructure::kGeneral) {
+    if (u.weight != T(1)) bad_model("uncertainty: weight must be 1 with structure general (scale C1, D1 instead)");
+    Eigen::Index nz = std::max(u.C1.rows, u.D1.rows);
+    for (const auto& t : u.C1.terms) nz = std::max(nz, t.value.rows());
+    for (const auto& t : u.D1.terms) nz = std::max(nz, t.value.rows());
+    if (nz < 1) bad_model("uncertainty: structure general needs nz >= 1");
+    unc["nz"] = nz;
+    unc["C1"] = terms_json(u.C1, nz, nx, names, "uncertainty.C1");
+    unc["D1"] = terms_json(u.D1, nz, nu, names, "uncertainty.D1");
+  } else {
+    if (!(u.weight > T(0))) bad_model("uncertainty: weight must be positive");
+    unc["weight"] = number_to_json(u.weight);
+  }
+  j["uncertainty"] = std::move(unc);
+
+  if (!m.offset.basis.empty() || !m.offset.values.empty()) {
+    ojson off = ojson::object();
+    ojson basis = ojson::array();
+    for (size_t i = 0; i < m.offset.basis.size(); ++i)
+      basis.push_back(basis_text(m.offset.basis[i], names, "offset.basis[" + std::to_string(i) + "]"));
+    off["basis"] = std::move(basis);
+    if (!m.offset.values.empty()) {
+      if (m.offset.values.size() != m.offset.basis.size()) bad_model("offset: values and basis differ in length");
+      ojson values = ojson::array();
+      for (const auto& v : m.offset.values) {
+        if (v.size() != ny) bad_model("offset.values: vector of length " + std::to_string(v.size()) + ", expected " + std::to_string(ny));
+        values.push_back(vector_json(v));
+      }
+      off["values"] = std::move(values);
+    }
+    j["offset"] = std::move(off);
+  }
+
+  if (m.x0.size() != 0 && m.x0.size() != nx)
+    bad_model("x0 has length " + std::to_string(m.x0.size()) + ", expected " + std::to_string(nx));
+  bool x0_nonzero = false;
+  for (Eigen::Index i = 0; i < m.x0.size(); ++i) x0_nonzero = x0_nonzero || m.x0(i) != T(0);
+  if (x0_nonzero) j["x0"] = vector_json(m.x0);
+
+  if (!m.statics.empty()) {
+    if (m.statics.input_delay < 0) bad_model("static.input_delay must be >= 0");
+    ojson st = ojson::object();
+    if (m.statics.input_delay != 0) st["input_delay"] = m.statics.input_delay;
+    auto map_json = [](const StaticMap<T>& g, const std::string& where) {
+      g.check(where);
+      ojson o = ojson::object();
+      o["kind"] = to_string(g.kind);
+      if (g.kind == StaticKind::kSaturation || g.kind == StaticKind::kDeadZone) {
+        o["lower"] = number_to_json(g.lower);
+        o["upper"] = number_to_json(g.upper);
+      }
+      if (g.kind == StaticKind::kPolynomial) {
+        ojson c = ojson::array();
+        for (const T& x : g.coefficients) c.push_back(number_to_json(x));
+        o["coefficients"] = std::move(c);
+      }
+      if (g.kind == StaticKind::kPiecewiseLinear) {
+        ojson x = ojson::array(), v = ojson::array();
+        for (const T& t : g.knots) x.push_back(number_to_json(t));
+        for (const T& t : g.coefficients) v.push_back(number_to_json(t));
+        o["knots"] = std::move(x);
+        o["values"] = std::move(v);
+      }
+      return o;
+    };
+    if (!m.statics.input.is_identity()) st["input"] = map_json(m.statics.input, "static.input");
+    if (m.statics.has_output()) st["output"] = map_json(m.statics.output, "static.output");
+    j["static"] = std::move(st);
+  }
+  return j;
+}
+
+template <typename T>
+void write_file(const std::string& path, const LpvModel<T>& model) {
+  write_text_file(path, write_model_json(model), "model");
+}
+
+}  // namespace
+
+// ------------------------------------------------------------- numbers
+
+std::string exact_decimal_or_fraction(const Rational& q) {
+  constexpr unsigned long kMaxDecimals = 40;
+  mpz_srcptr num = mpq_numref(q.mpq());
+  mpz_srcptr den = mpq_denref(q.mpq());
+  if (mpz_cmp_ui(den, 1) == 0) return rational_to_text(q);
+  mpz_t rest, scaled, factor;
+  mpz_init_set(rest, den);
+  const unsigned long twos = mpz_scan1(rest, 0);
+  mpz_tdiv_q_2exp(rest, rest, twos);
+  unsigned long fives = 0;
+  while (fives <= kMaxDecimals && mpz_divisible_ui_p(rest, 5)) {
+    mpz_divexact_ui(rest, rest, 5);
+    ++fives;
+  }
+  const unsigned long k = std::max(twos, fives);
+  std::string out;
+  if (mpz_cmp_ui(rest, 1) != 0 || k > kMaxDecimals) {
+    out = rational_to_text(q);
+  } else {
+    // value = num / den = (num · 10^k / den) / 10^k, and 10^k / den = 2^(k-twos)·5^(k-fives).
+    mpz_init(scaled);
+    mpz_init(factor);
+    mpz_ui_pow_ui(factor, 5, k - fives);
+    mpz_mul_2exp(factor, factor, k - twos);
+    mpz_mul(scaled, num, factor);
+    const bool negative = mpz_sgn(scaled) < 0;
+    mpz_abs(scaled, scaled);
+    std::vector<char> buf(mpz_sizeinbase(scaled, 10) + 2);
+    mpz_get_str(buf.data(), 10, scaled);
+    std::string digits(buf.data());
+    if (digits.size() <= k) digits = std::string(k + 1 - digits.size(), '0') + digits;
+    out = (negative ? "-" : "") + digits.substr(0, digits.size() - k) + "." + digits.substr(digits.size() - k);
+    mpz_clear(scaled);
+    mpz_clear(factor);
+  }
+  mpz_clear(rest);
+  return out;
+}
+
+nlohmann::ordered_json rational_to_json(const Rational& q) {
+  mpz_srcptr num = mpq_numref(q.mpq());
+  if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) == 0 && mpz_fits_slong_p(num))
+    return nlohmann::ordered_json(static_cast<std::int64_t>(mpz_get_si(num)));
+  return nlohmann::ordered_json(exact_decimal_or_fraction(q));
+}
+
+nlohmann::ordered_json double_to_json(double x) {
+  if (!std::isfinite(x)) throw std::invalid_argument("cannot write a non-finite number to JSON");
+  return nlohmann::ordered_json(x);
+}
+
+nlohmann::ordered_json model_to_json(const LpvModel<Rational>& model) { return to_json(model); }
+nlohmann::ordered_json model_to_json(const LpvModel<double>& model) { return to_json(model); }
+std::string write_model_json(const LpvModel<Rational>& model) { return pretty_json(to_json(model)); }
+std::string write_model_json(const LpvModel<double>& model) { return pretty_json(to_json(model)); }
+void write_model_file(const std::string& path, const LpvModel<Rational>& model) { write_file(path, model); }
+void write_model_file(const std::string& path, const LpvModel<double>& model) { write_file(path, model); }
+
+}  // namespace lpvid
