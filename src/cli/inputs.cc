@@ -25,7 +25,10 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   solvers.push_back("csdp-command");
   app.add_option("--solver", o.solver, "SDP backend: csdp (default), sdpa, or csdp-command (the csdp program via an SDPA file)")
       ->check(CLI::IsMember(solvers));
-  app.add_option("--write-sdpa", o.write_sdpa, "also write each SDP solved as an SDPA sparse file (the last one to this path)");
+  app.add_option("--write-sdpa", o.write_sdpa,
+                 "write SDPA sparse files with a JSON sidecar F.json (scalings, variable meanings): for invalidate the "
+                 "Theorem 2.1 program (solve it outside, then 'lpvid certify --solution'); for the other commands each SDP "
+                 "solved (F.<k>.dat-s, the last one also to F)");
   app.add_option("--certificate", o.certificate_path, "where to write the certificate (JSON)");
   app.add_option("--report", o.report_path, "where to write the report (JSON)");
   app.add_option("--max-taps", o.max_taps,

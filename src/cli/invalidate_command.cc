@@ -7,6 +7,7 @@
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "identify/certify.h"
+#include "identify/outside_solution.h"
 #include "solvers/external_solvers.h"
 
 namespace lpvid::cli {
@@ -17,8 +18,17 @@ int run_invalidate(CommonOptions& c) {
   print_options(c, in.objective, "invalidate");
   if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
     throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" or use 'lpvid identify'");
-  auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
+  // --write-sdpa: the Theorem 2.1 program itself, for an outside solver and
+  // `lpvid certify --solution` (identify/outside_solution.h).
+  const bool export_program = !c.write_sdpa.empty() && in.mode == ToeplitzMode::kSignal;
+  auto solver = make_solver_for_cli(c.solver, export_program ? "" : c.write_sdpa);
   const CertifyOptions co = certify_options(c, in.objective);
+  if (export_program) {
+    export_theorem21_program(in.model_q, in.exp_q, co, c.write_sdpa);
+    std::cout << "wrote the Theorem 2.1 program " << c.write_sdpa << " and its sidecar " << c.write_sdpa
+              << ".json (scalings, variable meanings); solve it with e.g. 'csdp " << c.write_sdpa
+              << " P.sol', then 'lpvid certify' with the same options and --program, --solution\n";
+  }
   const CertifiedBounds b = in.mode == ToeplitzMode::kSignal ? certify_fixed_model(in.model_q, in.exp_q, co, *solver)
                                                              : certify_fixed_model_paper(in.model_q, in.exp_q, co, *solver);
   std::cout << "\nTheorem 2.1 (" << (in.mode == ToeplitzMode::kSignal ? "Delta form" : "w form, paper T_z")

@@ -286,6 +286,24 @@ std::string status_reason(const DeltaFormSolution& sol, const char* what) {
 
 }  // namespace
 
+BoundObjective solver_objective(BoundObjective objective) {
+  if (objective.dmax_fixed()) objective.dmax *= 1.0 - 1e-7;
+  if (objective.delta_fixed()) objective.delta *= 1.0 - 1e-7;
+  return objective;
+}
+
+CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<Rational>& model,
+                                 const Simulation<Rational>& sim, const Experiment<Rational>& exp, SignalScales* scales) {
+  CertifyOptions o = options;
+  if (!o.scale_signals) return o;
+  const SignalScales s = signal_scales(nearest_double(sim.z), nearest_double(exp.y), o.objective,
+                                       model.uncertainty.structure == UncertaintyStructure::kMultiplicative);
+  o.objective = objective_in_original_units(o.objective, s);
+  o.scale_signals = false;  // done: the objective is in original units now
+  if (scales) *scales = s;
+  return o;
+}
+
 double relative_gap(const CertifiedBounds& b) {
   if (!b.verified || !b.lower.verified) return NAN;
   if (b.upper == 0) return 0.0;
@@ -306,19 +324,11 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   if (L == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(sim.z));  // throws the usual InputError
   // A weighted objective stated on signals scaled to unit size (identify/
   // bound_scaling.h): the same program in original units with λ_orig.
-  CertifyOptions o = options;
   SignalScales scales;
-  if (o.scale_signals) {
-    scales = signal_scales(nearest_double(sim.z), nearest_double(exp.y), o.objective,
-                           model.uncertainty.structure == UncertaintyStructure::kMultiplicative);
-    o.objective = objective_in_original_units(o.objective, scales);
-  }
+  const CertifyOptions o = in_original_units(options, model, sim, exp, &scales);
 
-  // 2. Δ form in floating point; fixed bounds are tightened a little so that
-  // rounding does not push the exact values over them.
-  BoundObjective obj = o.objective;
-  if (obj.dmax_fixed()) obj.dmax *= 1.0 - 1e-7;
-  if (obj.delta_fixed()) obj.delta *= 1.0 - 1e-7;
+  // 2. Δ form in floating point.
+  const BoundObjective obj = solver_objective(o.objective);
   const bool kyp = o.delta_norm == DeltaNorm::kKyp;
   if (kyp && o.max_taps <= 0) throw InputError("certify: the KYP Delta form needs a finite number of taps (--max-taps > 0)");
   const bool feasibility = o.objective.kind == BoundObjective::Kind::kFeasibility;
@@ -440,6 +450,7 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
   out.horizon = horizon;
   out.delta2_solver = toeplitz_norm2(used, horizon, model.ny, model.nz());
   certify_taps(model, sim, r, used, horizon, o, solver_name, out);
+  if (out.verified) out.upper = objective_at(o.objective, out.delta2, out.dmax2);
   return out;
 }
 }  // namespace lpvid
@@ -459,9 +470,7 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
   sig.zb = nearest_double(sim.z);
   sig.rb = nearest_double(r);
   sig.Tz_paper = nearest_double(Tz);
-  BoundObjective obj = o.objective;
-  if (obj.dmax_fixed()) obj.dmax *= 1.0 - 1e-7;
-  if (obj.delta_fixed()) obj.delta *= 1.0 - 1e-7;
+  const BoundObjective obj = solver_objective(o.objective);
   const RelaxedSolution sol = solve_relaxed(sig, Vec<double>(0), obj, solver, o.solver);
   out.solver_status = to_string(sol.solve.status);
   out.solve_seconds = sol.solve.seconds;

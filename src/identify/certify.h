@@ -23,6 +23,7 @@
 #include "identify/bound_scaling.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
+#include "model/simulate.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {
@@ -97,6 +98,19 @@ struct CertifiedBounds {
   double total_seconds = 0;
   SignalScales scales;        ///< with CertifyOptions::scale_signals: the scales and λ in original units
 };
+
+/// Step 2's objective as the solver gets it: fixed bounds tightened by a
+/// relative 1e-7, so that rounding the taps does not push the exact values
+/// over them.
+BoundObjective solver_objective(BoundObjective objective);
+
+/// With CertifyOptions::scale_signals, the options with the weighted
+/// objective mapped to original units (identify/bound_scaling.h; `scales`
+/// receives the scales); otherwise `options` unchanged. `exp` has its
+/// state-scheduling columns, `sim` is its exact simulation.
+CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<Rational>& model,
+                                 const Simulation<Rational>& sim, const Experiment<Rational>& exp,
+                                 SignalScales* scales = nullptr);
 
 /// Relative gap (upper − lower)/upper of a certified interval (0 when upper = 0).
 double relative_gap(const CertifiedBounds& b);

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/input_error.h"
+#include "core/number_text.h"
 
 namespace lpvid {
 
@@ -46,6 +48,32 @@ struct DeltaFormLayout {
   double sigma_z = 1.0, sigma_r = 1.0;
 };
 
+/// LmiProgram::about of a Δ-form program (what an outside solver's x means).
+void describe(DeltaFormLayout& f, const BoundObjective& obj) {
+  auto& a = f.program.about;
+  a = {{"kind", kDeltaFormKind},
+       {"theorem", "Theorem 2.1 for a fixed model, Delta form: (C1') [t I, T_Delta; T_Delta', I] >= 0 and (C2) "
+                   "[n ny s, d'; d, I] >= 0 with d = r - Delta*z (lmi/delta_form_lmi.h)"},
+       {"objective", obj.describe()},
+       {"samples", std::to_string(f.n)},
+       {"leading_zeros", std::to_string(f.m)},
+       {"horizon", std::to_string(f.L)},
+       {"taps", std::to_string(f.K)},
+       {"ny", std::to_string(f.ny)},
+       {"nz", std::to_string(f.nz)},
+       {"sigma_z", double_to_text(f.sigma_z)},
+       {"sigma_r", double_to_text(f.sigma_r)},
+       {"scaling", "the solver saw z/sigma_z (samples leading_zeros..n-1 of z set its RMS) and r/sigma_r"},
+       {"tap_variables", "h<l>[<i>,<j>] is entry (i, j) of tap l of Delta times sigma_z/sigma_r (original = value * "
+                         "sigma_r / sigma_z)"}};
+  if (f.t >= 0) a.emplace_back("delta2_variable", "delta2 is delta^2 times (sigma_z/sigma_r)^2 (original = value * "
+                                                  "(sigma_r/sigma_z)^2)");
+  else a.emplace_back("delta_fixed", double_to_text(obj.delta));
+  if (f.s >= 0) a.emplace_back("dmax2_variable", "dmax2 is d_max^2 / sigma_r^2 (original = value * sigma_r^2)");
+  else a.emplace_back("dmax_fixed", double_to_text(obj.dmax));
+  if (obj.kind == BoundObjective::Kind::kWeighted) a.emplace_back("lambda", double_to_text(obj.lambda));
+}
+
 DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index max_taps) {
   obj.validate();
   if (z.rows() != r.rows()) throw std::invalid_argument("delta form: z and r have different lengths");
@@ -66,14 +94,17 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
 
   LmiProgram& p = f.program;
   const Eigen::Index taps_per = f.ny * f.nz;
-  f.tap0 = p.add_variables(static_cast<int>(f.K * taps_per));
+  f.tap0 = p.num_vars;
+  for (Eigen::Index l = 0; l < f.K; ++l)
+    for (Eigen::Index i = 0; i < f.ny; ++i)
+      for (Eigen::Index j = 0; j < f.nz; ++j)
+        p.add_variable("h" + std::to_string(l) + "[" + std::to_string(i) + "," + std::to_string(j) + "]");
   // Objective in original units divided by σ_r²: λ t + (1−λ) s = σ_r²[(λ/σ_z²) t' + (1−λ) s'].
   if (!obj.delta_fixed())
     f.t = p.add_variable("delta2", obj.kind == BoundObjective::Kind::kWeighted ? obj.lambda / (f.sigma_z * f.sigma_z) : 1.0);
   if (!obj.dmax_fixed())
     f.s = p.add_variable("dmax2", obj.kind == BoundObjective::Kind::kWeighted ? 1.0 - obj.lambda : 1.0);
-  if (p.var_names.size() == static_cast<size_t>(p.num_vars))
-    for (Eigen::Index v = 0; v < f.K * taps_per; ++v) p.var_names[static_cast<size_t>(f.tap0 + v)] = "h" + std::to_string(v);
+  describe(f, obj);
 
   // (C1'): [t I, T_Δ; T_Δᵀ, I] ⪰ 0, size L·ny + L·nz.
   const int A = p.add_block("C1_delta_form", static_cast<int>(f.L * (f.ny + f.nz)));
@@ -114,9 +145,10 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
 
 }  // namespace
 
-LmiProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                              Eigen::Index max_taps) {
-  return build(z, r, objective, max_taps).program;
+DeltaFormProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
+                                    Eigen::Index max_taps) {
+  DeltaFormLayout f = build(z, r, objective, max_taps);
+  return {std::move(f.program), {f.K, f.ny, f.nz, f.tap0, f.t, f.s, f.sigma_z, f.sigma_r}, f.m, f.L};
 }
 
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,

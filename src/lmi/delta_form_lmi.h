@@ -78,8 +78,20 @@ struct DeltaScaledVariables {
 void read_delta_solution(const SolveResult& solve, const DeltaScaledVariables& v, const BoundObjective& objective,
                          Mat<double>& taps, double& delta2, double& dmax2);
 
-/// The program alone (for --write-sdpa), same scaling as solve_delta_form.
-LmiProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                              Eigen::Index max_taps = 0);
+/// The program alone (for --write-sdpa and an outside solver's answer), the
+/// same program and scaling as solve_delta_form, with its variables named
+/// ("h<l>[<i>,<j>]", "delta2", "dmax2") and its meaning in
+/// LmiProgram::about: kind "theorem-2.1-delta-form", sigma_z, sigma_r,
+/// samples n, leading_zeros m, horizon L, taps K, ny, nz, and how each
+/// variable maps back to original units.
+struct DeltaFormProgram {
+  LmiProgram program;
+  DeltaScaledVariables variables;
+  Eigen::Index leading_zeros = 0, horizon = 0;
+};
+DeltaFormProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
+                                    Eigen::Index max_taps = 0);
+/// The value of LmiProgram::about's "kind" for these programs.
+inline constexpr const char* kDeltaFormKind = "theorem-2.1-delta-form";
 
 }  // namespace lpvid

@@ -78,6 +78,13 @@ struct LmiProgram {
   /// Cost vector c (MINIMISE cᵀx); exactly num_vars entries.
   std::vector<double> cost;
   std::vector<LmiBlock> blocks;
+  /// What the program means outside the solver, as (key, value) text pairs:
+  /// its kind ("kind" = "theorem-2.1-delta-form", …), the scalings applied to
+  /// the data before it reached the solver and how a variable maps back to
+  /// original units. Written as "*lpvid-about key value" comment lines of an
+  /// SDPA file and in its sidecar (solvers/sdpa_sidecar.h), read back by
+  /// read_sdpa. Keys and values have no line breaks; keys have no spaces.
+  std::vector<std::pair<std::string, std::string>> about;
 
   /// Name of the diagonal block that add_scalar_inequality creates and grows.
   static constexpr const char* kScalarBlockName = "scalar_inequalities";

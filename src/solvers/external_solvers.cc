@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "solvers/sdpa_file.h"
+#include "solvers/sdpa_sidecar.h"
 
 namespace lpvid {
 
@@ -19,8 +20,8 @@ SolveResult RecordingSolver::solve(const LmiProgram& program, const SolverOption
   std::string numbered = path_;
   const size_t dot = numbered.rfind(".dat-s");
   numbered = (dot == std::string::npos ? numbered : numbered.substr(0, dot)) + "." + std::to_string(count_) + ".dat-s";
-  write_sdpa_file(program, numbered);
-  write_sdpa_file(program, path_);
+  write_sdpa_with_sidecar(program, numbered);
+  write_sdpa_with_sidecar(program, path_);
   return inner_->solve(program, options);
 }
 

@@ -5,7 +5,8 @@
 ///
 ///  - RecordingSolver wraps a backend and writes each program it is given to
 ///    an SDPA file (`--write-sdpa F.dat-s`; with several solves, F.dat-s is
-///    the last one and F.<k>.dat-s the k-th).
+///    the last one and F.<k>.dat-s the k-th), each with its sidecar
+///    F….dat-s.json (solvers/sdpa_sidecar.h: scalings, variable meanings).
 ///  - CsdpCommandSolver writes the program, runs the `csdp` command-line
 ///    program (Debian package coinor-csdp) on it, and reads its solution
 ///    file back (`--solver csdp-command`). Nothing of CSDP is linked for it.

@@ -22,12 +22,19 @@ namespace {
 
 constexpr std::string_view kBlockTag = "*lpvid-block ";
 constexpr std::string_view kVarTag = "*lpvid-var ";
+constexpr std::string_view kAboutTag = "*lpvid-about ";
 
 // --- writing -----------------------------------------------------------------
 
 void check_name(const std::string& name, const std::string& what) {
   if (name.find_first_of("\r\n") != std::string::npos)
     throw std::invalid_argument("write_sdpa: " + what + " name '" + name + "' contains a line break");
+}
+
+void check_about(const std::pair<std::string, std::string>& kv) {
+  if (kv.first.empty() || kv.first.find_first_of(" \t\r\n") != std::string::npos)
+    throw std::invalid_argument("write_sdpa: about key '" + kv.first + "' is empty or contains white space");
+  check_name(kv.second, "about value of '" + kv.first + "': the");
 }
 
 /// "%.17g": enough digits for every double to read back as itself.
@@ -156,11 +163,18 @@ class HeaderNumbers {
   bool started_ = false;
 };
 
-/// Applies the "*lpvid-block b name" / "*lpvid-var k name" comments.
+/// Applies the "*lpvid-block b name" / "*lpvid-var k name" / "*lpvid-about key value" comments.
 void apply_name_comments(const std::vector<std::string>& comments, LmiProgram& p) {
   bool any_var = false;
   std::vector<std::string> var_names(static_cast<std::size_t>(p.num_vars));
   for (const std::string& c : comments) {
+    if (c.rfind(kAboutTag, 0) == 0) {
+      const std::string rest = c.substr(kAboutTag.size());
+      const std::size_t space = rest.find(' ');
+      if (space == std::string::npos || space == 0) continue;  // not ours after all
+      p.about.emplace_back(rest.substr(0, space), rest.substr(space + 1));
+      continue;
+    }
     const bool is_block = c.rfind(kBlockTag, 0) == 0;
     const bool is_var = c.rfind(kVarTag, 0) == 0;
     if (!is_block && !is_var) continue;
@@ -203,12 +217,14 @@ void write_sdpa(const LmiProgram& program, std::ostream& out) {
   program.validate();
   for (const LmiBlock& blk : program.blocks) check_name(blk.name, "block");
   for (const std::string& n : program.var_names) check_name(n, "variable");
+  for (const auto& kv : program.about) check_about(kv);
   const LmiProgram p = program.compressed();
 
   out << "\"lpvid LMI program: min c'x s.t. F0 + sum_k x_k F_k >= 0, written as SDPA's sum_k x_k F_k - F_0 "
          ">= 0 (matrix 0 = -F0)\n";
   for (std::size_t b = 0; b < p.blocks.size(); ++b) out << kBlockTag << b + 1 << ' ' << p.blocks[b].name << '\n';
   for (std::size_t k = 0; k < p.var_names.size(); ++k) out << kVarTag << k + 1 << ' ' << p.var_names[k] << '\n';
+  for (const auto& [key, value] : p.about) out << kAboutTag << key << ' ' << value << '\n';
   out << p.num_vars << " = mDIM\n";
   out << p.blocks.size() << " = nBLOCK\n";
   for (std::size_t b = 0; b < p.blocks.size(); ++b)

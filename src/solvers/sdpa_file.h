@@ -17,8 +17,9 @@
 /// Indices are 1-based; entries are upper triangle (i ≤ j), one per line,
 /// without duplicates, values with 17 significant digits (so a round trip is
 /// exact). Block and variable names travel in comment lines
-/// "*lpvid-block <b> <name>" and "*lpvid-var <k> <name>" that other readers
-/// skip. A variable that appears in no block is written as its cost alone;
+/// "*lpvid-block <b> <name>" and "*lpvid-var <k> <name>", the program's
+/// meaning (LmiProgram::about: kind, scalings) in "*lpvid-about <key> <value>";
+/// other readers skip them. A variable that appears in no block is written as its cost alone;
 /// CSDP and SDPA refuse such files (they need every F_k nonempty).
 ///
 /// Every reading error is an InputError "file:line: reason".

@@ -1,0 +1,122 @@
+#include "identify/outside_solution.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/input_error.h"
+#include "core/number_text.h"
+#include "model/simulate.h"
+#include "solvers/sdpa_file.h"
+#include "solvers/sdpa_sidecar.h"
+#include "toeplitz/fir.h"
+
+namespace lpvid {
+namespace {
+
+std::string about_value(const LmiProgram& p, const std::string& key) {
+  for (const auto& [k, v] : p.about)
+    if (k == key) return v;
+  return "";
+}
+
+/// Largest |value| over every stored entry (F0 and all F_i) and the cost.
+double largest_entry(const LmiProgram& p) {
+  double m = 0.0;
+  for (double c : p.cost) m = std::max(m, std::abs(c));
+  for (const LmiBlock& b : p.blocks) {
+    for (const SymEntry& e : b.F0.entries) m = std::max(m, std::abs(e.value));
+    for (const auto& [var, F] : b.Fi)
+      for (const SymEntry& e : F.entries) m = std::max(m, std::abs(e.value));
+  }
+  return m;
+}
+
+/// Why `file` is not `expected` (both compressed), or "" when they agree:
+/// same structure, and numbers equal up to a relative 1e-9 of the largest
+/// entry (a program rebuilt on another machine may differ in the last bits
+/// of σ_z, σ_r; the check is a guard against a foreign file, not a part of
+/// the certificate, which is checked exactly anyway).
+std::string mismatch(const LmiProgram& file, const LmiProgram& expected) {
+  for (const char* key : {"samples", "leading_zeros", "horizon", "taps", "ny", "nz", "objective", "delta_fixed",
+                          "dmax_fixed", "lambda"}) {
+    const std::string a = about_value(file, key), b = about_value(expected, key);
+    if (a != b) return std::string(key) + " is '" + a + "' in the file but '" + b + "' for these inputs";
+  }
+  if (file.num_vars != expected.num_vars || file.blocks.size() != expected.blocks.size())
+    return "the number of variables or blocks differs";
+  const double tol = 1e-9 * std::max(largest_entry(expected), 1e-300);
+  const auto close = [tol](const SymSparse& a, const SymSparse& b) {
+    if (a.entries.size() != b.entries.size()) return false;
+    for (std::size_t k = 0; k < a.entries.size(); ++k) {
+      const SymEntry &x = a.entries[k], &y = b.entries[k];
+      if (x.i != y.i || x.j != y.j || !(std::abs(x.value - y.value) <= tol)) return false;
+    }
+    return true;
+  };
+  for (std::size_t k = 0; k < file.cost.size(); ++k)
+    if (!(std::abs(file.cost[k] - expected.cost[k]) <= tol)) return "the cost of variable " + std::to_string(k + 1) + " differs";
+  for (std::size_t b = 0; b < file.blocks.size(); ++b) {
+    const LmiBlock &x = file.blocks[b], &y = expected.blocks[b];
+    if (x.size != y.size || x.diagonal != y.diagonal || !close(x.F0, y.F0) || x.Fi.size() != y.Fi.size())
+      return "block " + std::to_string(b + 1) + " differs (its size or its constant term: other data or model?)";
+    for (std::size_t k = 0; k < x.Fi.size(); ++k)
+      if (x.Fi[k].first != y.Fi[k].first || !close(x.Fi[k].second, y.Fi[k].second))
+        return "block " + std::to_string(b + 1) + ", the matrix of variable " + std::to_string(y.Fi[k].first + 1) +
+               " differs";
+  }
+  return "";
+}
+
+}  // namespace
+
+Theorem21Program theorem21_program(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
+                                   const CertifyOptions& options) {
+  const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
+  const Simulation<Rational> sim = simulate(model, exp);
+  const Mat<Rational> r = exp.y - sim.output;
+  Theorem21Program out;
+  out.options = in_original_units(options, model, sim, exp);
+  out.objective = solver_objective(out.options.objective);
+  const Eigen::Index L = exp.n() - leading_zero_samples(sim.z);
+  const long K = options.max_taps > 0 && options.max_taps < L ? options.max_taps : 0;  // 0: the full horizon
+  out.delta = delta_form_program(nearest_double(sim.z), nearest_double(r), out.objective, K);
+  return out;
+}
+
+void export_theorem21_program(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                              const CertifyOptions& options, const std::string& sdpa_path) {
+  write_sdpa_with_sidecar(theorem21_program(model, exp, options).delta.program, sdpa_path);
+}
+
+CertifiedBounds certify_outside_solution(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                         const CertifyOptions& options, const std::string& program_path,
+                                         const std::string& solution_path, SolutionFormat format, int exit_code) {
+  const LmiProgram file = read_sdpa_file(program_path);
+  if (about_value(file, "kind") != kDeltaFormKind)
+    throw InputError(program_path + ": not a Theorem 2.1 program written by lpvid (no '*lpvid-about kind " +
+                     std::string(kDeltaFormKind) + "' line); write it with 'lpvid invalidate ... --write-sdpa'");
+  const Theorem21Program expected = theorem21_program(model, exp, options);
+  const std::string why = mismatch(file, expected.delta.program.compressed());
+  if (!why.empty())
+    throw InputError(program_path + ": not the Theorem 2.1 program of this model, data and options (" + why +
+                     "); give the same --model, --data, --rows, --delta/--dmax/--lambda and --max-taps as when it was written");
+  const SolveResult sol = format == SolutionFormat::kCsdp ? read_csdp_solution(solution_path, file, exit_code)
+                                                          : read_sdpa_result(solution_path, file, options.solver);
+  CertifiedBounds out;
+  if (!has_solution(sol.status)) {
+    out.solver_status = to_string(sol.status);
+    out.reason = solution_path + ": the outside solver's status is " + out.solver_status +
+                 (sol.message.empty() ? "" : " (" + sol.message + ")") + ": no solution to certify";
+    return out;
+  }
+  Mat<double> taps;
+  double delta2 = 0, dmax2 = 0;
+  read_delta_solution(sol, expected.delta.variables, expected.objective, taps, delta2, dmax2);
+  out = certify_with_taps(model, exp, taps, expected.options, sol.backend);
+  out.solver_status = to_string(sol.status);
+  out.delta2_solver = delta2;
+  out.solve_seconds = sol.seconds;
+  return out;
+}
+
+}  // namespace lpvid
