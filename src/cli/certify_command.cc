@@ -37,10 +37,11 @@ int run_certify(CertifyArgs& a) {
   report["program"] = a.program_path;
   report["solution"] = a.solution_path;
   report["samples"] = in.exp_q.n();
+  const CertifyOutcome outcome = outcome_of(b, in.objective);
   if (in.objective.kind == BoundObjective::Kind::kFeasibility)
-    report["verdict"] = b.verified ? "consistent" : "undecided";
+    report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);
   write_json(c.report_path, report);
-  return b.verified ? kExitOk : kExitNotVerified;
+  return exit_code(outcome);
 }
 
 }  // namespace

@@ -29,8 +29,7 @@ int run_invalidate(CommonOptions& c) {
               << ".json (scalings, variable meanings); solve it with e.g. 'csdp " << c.write_sdpa
               << " P.sol', then 'lpvid certify' with the same options and --program, --solution\n";
   }
-  const CertifiedBounds b = in.mode == ToeplitzMode::kSignal ? certify_fixed_model(in.model_q, in.exp_q, co, *solver)
-                                                             : certify_fixed_model_paper(in.model_q, in.exp_q, co, *solver);
+  const CertifiedBounds b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
   std::cout << "\nTheorem 2.1 (" << (in.mode == ToeplitzMode::kSignal ? "Delta form" : "w form, paper T_z")
             << "), the correction basis is ignored: the model is fixed\n"
             << bounds_text(b, co.certificate_path);
@@ -38,32 +37,27 @@ int run_invalidate(CommonOptions& c) {
   report["relaxation"] = "none (fixed model: Theorem 2.1 is an LMI)";
   report["iterations"] = 1;
   report["samples"] = in.exp_q.n();
-  const bool fixed_bounds = in.objective.kind == BoundObjective::Kind::kFeasibility;
-  if (fixed_bounds) {
-    report["verdict"] = b.verified ? "consistent" : b.invalidated ? "invalidated" : "undecided";
-    if (!b.verified) report["status"] = b.invalidated ? "invalidated" : "undecided";
-    if (b.invalidated) {
+  const CertifyOutcome outcome = outcome_of(b, in.objective);
+  if (in.objective.kind == BoundObjective::Kind::kFeasibility) {
+    report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);
+    if (outcome != CertifyOutcome::kVerified) report["status"] = to_string(outcome);
+    if (outcome == CertifyOutcome::kInvalidated) {
       report["certificate"] = co.certificate_path;
       report["verified"] = true;
       std::cout << "  -> INVALIDATED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
                 << ": no causal LTI Delta with ||Delta||_inf <= delta and no noise with RMS <= dmax explain the data.\n"
                 << "     certificate " << co.certificate_path << " (claim \"invalidated\", a dual point of the full-horizon "
                 << "problem), checked exactly: " << b.lower.verifier_details << "\n";
-      write_json(c.report_path, report);
-      return kExitInvalidated;
     }
-    if (!b.verified) {
+    if (outcome == CertifyOutcome::kUndecided) {
       std::cout << "  -> UNDECIDED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
                 << ": neither a consistency nor an invalidation certificate passed the exact check\n";
-      write_json(c.report_path, report);
-      return kExitUndecided;
     }
   } else {
     report["interval"] = interval_json(b, in.objective);
   }
   write_json(c.report_path, report);
-  if (!b.verified && (b.solver_status == "backend_error" || b.solver_status == "iteration_limit")) return kExitSolver;
-  return b.verified ? kExitOk : kExitNotVerified;
+  return exit_code(outcome);
 }
 
 }  // namespace

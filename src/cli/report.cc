@@ -11,6 +11,17 @@
 
 namespace lpvid::cli {
 
+int exit_code(CertifyOutcome outcome) {
+  switch (outcome) {
+    case CertifyOutcome::kVerified: return kExitOk;
+    case CertifyOutcome::kInvalidated: return kExitInvalidated;
+    case CertifyOutcome::kUndecided: return kExitUndecided;
+    case CertifyOutcome::kSolverFailed: return kExitSolver;
+    case CertifyOutcome::kNotVerified: return kExitNotVerified;
+  }
+  return kExitNotVerified;
+}
+
 nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& toeplitz_mode,
                                    const std::string& solver, const std::string& certificate) {
   nlohmann::ordered_json j;
@@ -36,7 +47,7 @@ nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& 
   }
   c["delta2_solver"] = b.delta2_solver;
   c["delta2_margin"] = b.margin;
-  c["solver_status"] = b.solver_status;
+  c["solver_status"] = solve_status_text(b);
   c["solve_seconds"] = b.solve_seconds;
   c["verify_seconds"] = b.verify_seconds;
   c["verifier"] = b.verifier_details;

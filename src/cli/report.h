@@ -23,6 +23,9 @@ enum ExitCode {
   kExitIo = 6,           ///< an existing input could not be read or an output could not be written (core/file_io.h)
 };
 
+/// The exit code of a certification's outcome (0, 1, 5, 3, 4).
+int exit_code(CertifyOutcome outcome);
+
 /// The common fields: status, delta, dmax (only when verified), the exact
 /// δ²/d_max², noise_normalisation, toeplitz_mode, solver, certificate, verified.
 nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& toeplitz_mode,

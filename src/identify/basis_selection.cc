@@ -161,7 +161,7 @@ class Selector {
       s.verdict = BasisVerdict::kConsistent;
       s.certificate = co.certificate_path;
       s.detail = what + " is consistent at the given bounds: certificate verified exactly";
-    } else if (b.solver_status == "primal_infeasible") {
+    } else if (b.solve_status == SolveStatus::kPrimalInfeasible) {
       s.verdict = BasisVerdict::kInvalidated;
       s.detail = what + " is invalidated at the given bounds: the Theorem 2.1 LMI is infeasible (solver verdict, "
                         "not exactly certified)";

@@ -52,7 +52,7 @@ void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o,
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
   c.info["solver"] = solver_name;
-  c.info["solver_status"] = out.solver_status;
+  c.info["solver_status"] = solve_status_text(out);
   const double norm2 = o.objective.delta_fixed() ? 0.0 : norm2_fn();
   CertificateVerdict v;
   // The smallest margin is 1e-9. For large (C1) matrices the exact fallback
@@ -304,6 +304,36 @@ CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<R
   return o;
 }
 
+CertifiedBounds certify_fixed(const LpvModel<Rational>& model, const Experiment<Rational>& exp, ToeplitzMode mode,
+                              const CertifyOptions& options, SdpSolver& solver) {
+  return mode == ToeplitzMode::kSignal ? certify_fixed_model(model, exp, options, solver)
+                                       : certify_fixed_model_paper(model, exp, options, solver);
+}
+
+CertifyOutcome outcome_of(const CertifiedBounds& b, const BoundObjective& objective) {
+  if (b.verified) return CertifyOutcome::kVerified;
+  if (b.invalidated) return CertifyOutcome::kInvalidated;
+  if (objective.kind == BoundObjective::Kind::kFeasibility) return CertifyOutcome::kUndecided;
+  if (b.solve_status == SolveStatus::kBackendError || b.solve_status == SolveStatus::kIterationLimit)
+    return CertifyOutcome::kSolverFailed;
+  return CertifyOutcome::kNotVerified;
+}
+
+const char* to_string(CertifyOutcome outcome) {
+  switch (outcome) {
+    case CertifyOutcome::kVerified: return "verified";
+    case CertifyOutcome::kInvalidated: return "invalidated";
+    case CertifyOutcome::kUndecided: return "undecided";
+    case CertifyOutcome::kSolverFailed: return "solver_failed";
+    case CertifyOutcome::kNotVerified: return "not_verified";
+  }
+  return "?";
+}
+
+std::string solve_status_text(const CertifiedBounds& b) {
+  return b.solve_status ? to_string(*b.solve_status) : "given taps (no solve)";
+}
+
 double relative_gap(const CertifiedBounds& b) {
   if (!b.verified || !b.lower.verified) return NAN;
   if (b.upper == 0) return 0.0;
@@ -340,7 +370,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
 
   // 3–6. The primal certificate (upper end) from the K-tap solve.
   const auto primal = [&](const DeltaFormSolution& sol, CertifiedBounds& b) {
-    b.solver_status = to_string(sol.solve.status);
+    b.solve_status = sol.solve.status;
     b.solve_seconds += sol.solve.seconds;
     b.taps = sol.taps.rows();
     b.horizon = sol.horizon;
@@ -445,7 +475,6 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
     throw std::invalid_argument("certify_with_taps: taps have " + std::to_string(taps.cols()) + " columns, expected ny*nz");
   // Taps beyond the horizon never act on the data (w_k only sees h_0 … h_{L−1}).
   const Mat<double> used = taps.topRows(std::min<Eigen::Index>(taps.rows(), horizon));
-  out.solver_status = "given taps (no solve)";
   out.taps = used.rows();
   out.horizon = horizon;
   out.delta2_solver = toeplitz_norm2(used, horizon, model.ny, model.nz());
@@ -472,10 +501,10 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
   sig.Tz_paper = nearest_double(Tz);
   const BoundObjective obj = solver_objective(o.objective);
   const RelaxedSolution sol = solve_relaxed(sig, Vec<double>(0), obj, solver, o.solver);
-  out.solver_status = to_string(sol.solve.status);
+  out.solve_status = sol.solve.status;
   out.solve_seconds = sol.solve.seconds;
   if (!has_solution(sol.solve.status)) {
-    out.reason = "the w-form solve of Theorem 2.1 ended with status " + out.solver_status;
+    out.reason = std::string("the w-form solve of Theorem 2.1 ended with status ") + to_string(sol.solve.status);
     return out;
   }
   Certificate c;

@@ -15,6 +15,7 @@
 ///  6. the certificate is written and checked again from the file by the
 ///     verifier (verify/certificate_check.h). `verified` is that verdict.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {
+
+enum class ToeplitzMode;  // toeplitz/uncertainty_toeplitz.h
 
 /// How step 2 bounds ‖T_Δ‖ (the certificate is the same either way).
 enum class DeltaNorm {
@@ -76,7 +79,9 @@ struct CertifiedBounds {
   double delta2_solver = 0;     ///< the Δ-form solver's δ² before the margin
   double margin = 0;            ///< relative inflation of δ² that passed
   long taps = 0, horizon = 0;
-  std::string solver_status;
+  /// The status of the solve whose answer was certified; none when no solve
+  /// ran here (given taps: certify_with_taps).
+  std::optional<SolveStatus> solve_status;
   double solve_seconds = 0, verify_seconds = 0;
   std::string verifier_details;
 
@@ -112,6 +117,21 @@ CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<R
                                  const Simulation<Rational>& sim, const Experiment<Rational>& exp,
                                  SignalScales* scales = nullptr);
 
+/// How a certification ended (issue 10: typed, so that callers never compare
+/// status strings). Decided in this order:
+enum class CertifyOutcome {
+  kVerified,      ///< a consistency certificate was written and checked exactly
+  kInvalidated,   ///< fixed bounds: an "invalidated" certificate was written and checked exactly
+  kUndecided,     ///< fixed bounds: neither certificate passed the exact check
+  kSolverFailed,  ///< the SDP backend failed (backend error, iteration limit): no bound
+  kNotVerified,   ///< the solver answered, but the exact check did not accept its bounds
+};
+CertifyOutcome outcome_of(const CertifiedBounds& b, const BoundObjective& objective);
+const char* to_string(CertifyOutcome outcome);
+/// The status text of reports and certificates: the solve's status
+/// (to_string(SolveStatus)), or "given taps (no solve)".
+std::string solve_status_text(const CertifiedBounds& b);
+
 /// Relative gap (upper − lower)/upper of a certified interval (0 when upper = 0).
 double relative_gap(const CertifiedBounds& b);
 
@@ -135,6 +155,12 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
 /// records this can fail where the Δ form would pass (issue 3, item 5).
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                           const CertifyOptions& options, SdpSolver& solver);
+
+/// Theorem 2.1 for a fixed model in either Toeplitz mode: the Δ form
+/// (certify_fixed_model) for ToeplitzMode::kSignal, the w form
+/// (certify_fixed_model_paper) for kPaper.
+CertifiedBounds certify_fixed(const LpvModel<Rational>& model, const Experiment<Rational>& exp, ToeplitzMode mode,
+                              const CertifyOptions& options, SdpSolver& solver);
 
 struct Certificate;
 /// Fills the certificate's data reference (file relative to the certificate's

@@ -104,8 +104,8 @@ CertifiedBounds certify_outside_solution(const LpvModel<Rational>& model, const 
                                                           : read_sdpa_result(solution_path, file, options.solver);
   CertifiedBounds out;
   if (!has_solution(sol.status)) {
-    out.solver_status = to_string(sol.status);
-    out.reason = solution_path + ": the outside solver's status is " + out.solver_status +
+    out.solve_status = sol.status;
+    out.reason = solution_path + ": the outside solver's status is " + std::string(to_string(sol.status)) +
                  (sol.message.empty() ? "" : " (" + sol.message + ")") + ": no solution to certify";
     return out;
   }
@@ -113,7 +113,7 @@ CertifiedBounds certify_outside_solution(const LpvModel<Rational>& model, const 
   double delta2 = 0, dmax2 = 0;
   read_delta_solution(sol, expected.delta.variables, expected.objective, taps, delta2, dmax2);
   out = certify_with_taps(model, exp, taps, expected.options, sol.backend);
-  out.solver_status = to_string(sol.status);
+  out.solve_status = sol.status;
   out.delta2_solver = delta2;
   out.solve_seconds = sol.seconds;
   return out;

@@ -106,7 +106,7 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
   const double tiny = 1e-3 * c.dmax;
   const CertifiedBounds b = certify_fixed_model(
       c.model, c.exp, certify_options(feasibility_objective(0.0, tiny), data, dir.file("c.json")), *solver);
-  RC_LOG() << "certify: verified " << b.verified << ", reason: " << b.reason << ", status " << b.solver_status << "\n";
+  RC_LOG() << "certify: verified " << b.verified << ", reason: " << b.reason << ", status " << solve_status_text(b) << "\n";
   const FixedSignals s = fixed_signals(c.model, c.exp);
   RC_LOG() << "RMS(r) = " << rms(s.r) << ", fixed dmax = " << tiny << ", generating delta = " << c.delta << "\n";
   RC_ASSERT(rms(s.r) > 10 * tiny);  // by construction: the data contradicts (δ, d_max) = (0, tiny)

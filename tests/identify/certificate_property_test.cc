@@ -311,8 +311,8 @@ RC_GTEST_PROP(CertificateProperty, ToeplitzModesAgreeForLtiModels, ()) {
   RC_CLASSIFY(!sig.verified, "Delta form not certified");
   RC_CLASSIFY(!pap.verified, "w form not certified");
   if (cond <= kWellConditioned) {
-    RC_ASSERT(sig.solver_status == "optimal");
-    RC_ASSERT(pap.solver_status == "optimal");
+    RC_ASSERT(sig.solve_status == SolveStatus::kOptimal);
+    RC_ASSERT(pap.solve_status == SolveStatus::kOptimal);
     RC_ASSERT(std::abs(as - ps) <= 1e-4 * std::max(as, ps));
     RC_ASSERT(sig.verified);
     RC_ASSERT(pap.verified);
