@@ -39,7 +39,7 @@ int quadratic_form_sign(const Mat<Rational>& M, const std::vector<Mpz>& w) {
   std::vector<Eigen::Index> support;
   for (std::size_t i = 0; i < w.size(); ++i)
     if (mpz_sgn(w[i].z) != 0) support.push_back(static_cast<Eigen::Index>(i));
-  Mpz den, row, t;
+  Mpz den, row, whole, t;
   Mpq term, q;
   for (std::size_t a = 0; a < support.size(); ++a) {
     const Eigen::Index i = support[a];
@@ -48,13 +48,22 @@ int quadratic_form_sign(const Mat<Rational>& M, const std::vector<Mpz>& w) {
       mpz_srcptr d = mpq_denref(M(i, support[b]).mpq());
       if (!mpz_divisible_p(den.z, d)) mpz_lcm(den.z, den.z, d);
     }
-    mpz_set_ui(row.z, 0);  // D_i·Σ_{j>i} M_ij w_j
+    // D_i·Σ_{j>i} M_ij w_j; the integer entries (the common case) are summed
+    // apart and multiplied by D_i once.
+    mpz_set_ui(row.z, 0);
+    mpz_set_ui(whole.z, 0);
     for (std::size_t b = a + 1; b < support.size(); ++b) {
       mpq_srcptr m = M(i, support[b]).mpq();
+      mpz_srcptr wj = w[static_cast<std::size_t>(support[b])].z;
+      if (mpz_cmp_ui(mpq_denref(m), 1) == 0) {
+        mpz_addmul(whole.z, mpq_numref(m), wj);
+        continue;
+      }
       mpz_divexact(t.z, den.z, mpq_denref(m));
       mpz_mul(t.z, t.z, mpq_numref(m));
-      mpz_addmul(row.z, t.z, w[static_cast<std::size_t>(support[b])].z);
+      mpz_addmul(row.z, t.z, wj);
     }
+    mpz_addmul(row.z, den.z, whole.z);
     mpz_mul_2exp(row.z, row.z, 1);
     mpq_srcptr m = M(i, i).mpq();
     mpz_divexact(t.z, den.z, mpq_denref(m));
