@@ -17,6 +17,7 @@
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "toeplitz/toeplitz_gram.h"
 #include "verify/c1_check.h"
+#include "verify/column_gram.h"
 #include "verify/dual_check.h"
 #include "verify/verdict_text.h"
 
@@ -25,8 +26,7 @@ namespace {
 
 /// T_zᵀT_z of the paper mode, T_z = T_G12·T_u (uncertainty_toeplitz.h).
 Mat<Rational> paper_gram(const LpvModel<Rational>& model, const Experiment<Rational>& exp) {
-  const Mat<Rational> Tz = T_z_paper(model, exp);
-  return Tz.transpose() * Tz;
+  return column_gram(T_z_paper(model, exp));
 }
 
 }  // namespace
