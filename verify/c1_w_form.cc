@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "toeplitz/toeplitz_gram.h"
@@ -48,6 +49,9 @@ constexpr long kBalanceBits = 256;
 C1Outcome check_c1_w_form(Mat<Rational> gram_z, const Mat<Rational>& w, const Rational& delta2) {
   const std::string full = "[T_z'T_z, T_w'; T_w, delta2*I]";
   const Eigen::Index n = gram_z.rows(), ny = w.cols();
+  if (gram_z.cols() != n || w.rows() != n)
+    throw std::invalid_argument("check_c1_w_form: T_z'T_z is " + std::to_string(n) + "x" + std::to_string(gram_z.cols()) +
+                                " but w has " + std::to_string(w.rows()) + " samples");
   // (a) T_w = 0.
   Eigen::Index first_k = -1, first_i = -1;
   for (Eigen::Index k = 0; k < w.rows() && first_k < 0; ++k)

@@ -11,6 +11,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -159,6 +160,11 @@ TEST(VerifyC1WForm, TextNamesTheMatrixAndTheCase) {
   const C1Outcome no_w = w_form(Tz, Mat<Rational>::Zero(3, 1), Rational(0));
   EXPECT_TRUE(no_w.holds);
   EXPECT_NE(no_w.text.find("w = 0"), std::string::npos) << no_w.text;
+}
+
+TEST(VerifyC1WForm, SizeMismatchIsAnError) {
+  EXPECT_THROW(check_c1_w_form(Mat<Rational>::Identity(3, 3), Mat<Rational>::Ones(2, 1), Rational(1)),
+               std::invalid_argument);
 }
 
 // δ² with thousands of digits (1e−5000, 1e4000): balanced, decided at once.
