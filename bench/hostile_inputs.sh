@@ -20,6 +20,7 @@ cp "$data" "$work/data.csv"
 tamper() { sed -E "s|\"delta2\": \"[^\"]*\"|\"delta2\": \"$1\"|" "$work/c.json" >"$2"; }
 tamper "1/1$(printf '0%.0s' $(seq 1 100000))" "$work/denominator.json"
 tamper "1e4000" "$work/exp4000.json"
+tamper "1/1$(printf '0%.0s' $(seq 1 5000))" "$work/tiny5000.json"
 # A static output polynomial of degree 2000.
 coeffs="0, 1$(printf ', 0%.0s' $(seq 1 1999))"
 sed '$ d' "$model" >"$work/degree2000.json"
@@ -53,6 +54,7 @@ run "lpvid-verify psd /dev/zero" "$verify" psd /dev/zero
 run "lpvid-verify certificate /dev/zero" "$verify" certificate /dev/zero
 run "certificate with a 10^5-digit denominator" "$verify" certificate "$work/denominator.json"
 run "certificate with delta2 = 1e4000" "$verify" certificate "$work/exp4000.json"
+run "certificate with delta2 = 1/10^5000" "$verify" certificate "$work/tiny5000.json"
 run "model with a degree-2000 polynomial map" "$lpvid" invalidate --data "$data" --model "$work/degree2000.json"
 run "psd of 2000x2000 v v^T - 1e-50 I" "$verify" psd "$work/rank1.txt"
 run "report to a missing directory" "$lpvid" invalidate --data "$data" --model "$model" \

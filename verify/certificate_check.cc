@@ -1,8 +1,6 @@
 #include "verify/certificate_check.h"
 
 #include <chrono>
-#include <gmp.h>
-#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <ostream>
@@ -16,39 +14,19 @@
 #include "data/experiment_builder.h"
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
-#include "toeplitz/signal_toeplitz.h"
+#include "toeplitz/uncertainty_toeplitz.h"
 #include "toeplitz/toeplitz_gram.h"
+#include "verify/c1_check.h"
+#include "verify/column_gram.h"
 #include "verify/dual_check.h"
-#include "verify/exact_psd.h"
 #include "verify/verdict_text.h"
 
 namespace lpvid {
 namespace {
 
-/// A power of two s with s² within a factor 4 of q > 0 (1 for q ≤ 0), from
-/// the bit lengths of q's numerator and denominator: exact and cheap for any
-/// size of q (a double would overflow beyond 1e308).
-Rational sqrt_scale(const Rational& q) {
-  if (!(q > 0)) return Rational(1);
-  const long bits = static_cast<long>(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) -
-                    static_cast<long>(mpz_sizeinbase(mpq_denref(q.mpq()), 2));
-  const long e = bits >= 0 ? bits / 2 : -((-bits + 1) / 2);
-  mpz_t p;
-  mpz_init_set_ui(p, 1);
-  mpz_mul_2exp(p, p, static_cast<unsigned long>(e >= 0 ? e : -e));
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, p);
-  if (e < 0) mpq_inv(r, r);
-  Rational out(r);
-  mpq_clear(r);
-  mpz_clear(p);
-  return out;
-}
-
-std::string psd_note(const PsdResult& r) {
-  return std::string(verdict_word(r.verdict)) + " (" +
-         (r.decided_by_filter ? "floating filter with rigorous bound" : "exact elimination") + ")";
+/// T_zᵀT_z of the paper mode, T_z = T_G12·T_u (uncertainty_toeplitz.h).
+Mat<Rational> paper_gram(const LpvModel<Rational>& model, const Experiment<Rational>& exp) {
+  return column_gram(T_z_paper(model, exp));
 }
 
 }  // namespace
@@ -132,67 +110,14 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
                    details.str());
   details << "; (C2) holds: ||d||^2 = " << approx_text(dd) << " <= n*ny*dmax2 = " << approx_text(bound);
 
-  // 6. (C1), exactly.
-  Mat<Rational> M;
-  std::string which;
-  if (c.form == CertificateForm::kDelta) {
-    const Eigen::Index L = c.horizon, K = c.taps.rows();
-    // Balance by the congruence diag(I/s, I) with a rational s ≈ δ (exact:
-    // a congruence by a nonsingular matrix keeps the inertia), so that the
-    // floating filter sees a matrix with unit diagonal blocks:
-    //   [δ²/s² I, T_Δ/s; T_Δᵀ/s, I] ⪰ 0  ⇔  [δ² I, T_Δ; T_Δᵀ, I] ⪰ 0.
-    // Beyond the double range (δ² = 1e4000, say) s is a power of two from
-    // δ²'s bit lengths instead. (A tiny δ² keeps s from the double, 1 when
-    // it underflows: a smaller s would push T_Δ/s out of the double range.)
-    Rational s(1);
-    if (c.delta2 > 0) {
-      const double approx_delta = std::sqrt(nearest_double(c.delta2));
-      if (approx_delta > 0 && std::isfinite(approx_delta) && approx_delta < 1e150)
-        s = exact_rational_of_double(approx_delta);
-      else if (c.delta2 > 1)
-        s = sqrt_scale(c.delta2);
-    }
-    const Rational inv_s = Rational(1) / s;
-    M = Mat<Rational>::Zero(L * (ny + nz), L * (ny + nz));
-    const Rational d2 = c.delta2 * inv_s * inv_s;
-    for (Eigen::Index i = 0; i < L * ny; ++i) M(i, i) = d2;
-    for (Eigen::Index i = L * ny; i < L * (ny + nz); ++i) M(i, i) = Rational(1);
-    for (Eigen::Index a = 0; a < L; ++a)
-      for (Eigen::Index b = std::max<Eigen::Index>(0, a - K + 1); b <= a; ++b)
-        for (Eigen::Index i = 0; i < ny; ++i)
-          for (Eigen::Index j = 0; j < nz; ++j) {
-            const Rational h = c.taps(a - b, i * nz + j) * inv_s;
-            M(a * ny + i, L * ny + b * nz + j) = h;
-            M(L * ny + b * nz + j, a * ny + i) = h;
-          }
-    which = "[delta2*I, T_Delta; T_Delta', I] (balanced by diag(I/s, I), s = " + approx_text(s) + ")";
-  } else {
-    const Mat<Rational> G = c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)
-                                                             : Mat<Rational>([&] {
-                                                                 const Mat<Rational> Tz = T_z_paper(c.model, exp);
-                                                                 return Mat<Rational>(Tz.transpose() * Tz);
-                                                               }());
-    const Mat<Rational> Tw = signal_toeplitz(w);
-    M = Mat<Rational>::Zero(n + n * ny, n + n * ny);
-    M.topLeftCorner(n, n) = G;
-    M.bottomLeftCorner(n * ny, n) = Tw;
-    M.topRightCorner(n, n * ny) = Tw.transpose();
-    for (Eigen::Index i = n; i < n + n * ny; ++i) M(i, i) = c.delta2;
-    which = "[T_z'T_z, T_w'; T_w, delta2*I]";
-    // A δ² outside the range of doubles (1e4000, say) would leave the
-    // floating filter nothing to work with and the exact path huge numbers:
-    // balance by the congruence diag(I, I/s), s ≈ δ (inertia unchanged).
-    if (c.delta2 > 1 && !(nearest_double(c.delta2) < 1e300)) {
-      const Rational inv_s = Rational(1) / sqrt_scale(c.delta2);
-      M.bottomRows(n * ny) *= inv_s;
-      M.rightCols(n * ny) *= inv_s;
-      which += " (balanced by diag(I, I/s), s ~ delta)";
-    }
-  }
-  const PsdResult psd = decide_psd(M);
-  if (psd.verdict == PsdVerdict::kNotPsd)
-    return invalid_verdict("(C1) fails: " + which + " is not PSD (" + psd.reason + ")", details.str());
-  details << "; (C1) holds: " << which << " (size " << M.rows() << ") is " << psd_note(psd);
+  // 6. (C1), exactly (verify/c1_check.h).
+  const C1Outcome c1 = c.form == CertificateForm::kDelta
+                           ? check_c1_delta_form(c.taps, c.horizon, ny, nz, c.delta2)
+                           : check_c1_w_form(c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)
+                                                                              : paper_gram(c.model, exp),
+                                             w, c.delta2);
+  if (!c1.holds) return invalid_verdict(c1.text, details.str());
+  details << "; " << c1.text;
   return {true, "", details.str(), ""};
 }
 }  // namespace

@@ -10,7 +10,9 @@
 ///     z_k = 0 for every sample before the Δ horizon (k < n − L);
 ///  5. (C2): ‖d‖₂² ≤ n·ny·d_max², d = y − ŷ − Φ − w, exactly. This is the
 ///     LMI [n·ny·d_max², dᵀ; d, I] ⪰ 0 of SPEC §4 (Schur complement on I ≻ 0);
-///  6. (C1): form "w": [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 decided exactly;
+///  6. (C1): form "w": [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 decided exactly, on
+///     its Schur complement δ²T_zᵀT_z − T_wᵀT_w (n × n; w = 0 and δ² = 0
+///     apart; verify/c1_check.h);
 ///     form "delta": [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0 decided exactly, i.e.
 ///     ‖T_Δ‖ ≤ δ; then T_w = T_Δ T_z and T_wᵀT_w = T_zᵀT_ΔᵀT_ΔT_z ⪯ δ²T_zᵀT_z,
 ///     which is (C1). (The taps before the horizon multiply zero samples.)

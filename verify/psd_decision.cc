@@ -135,7 +135,6 @@ PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options) {
       return r;
     }
     if (f.negative_direction.size() == m && m > 0) {
-      auto A = psd_detail::integer_matrix(M);
       // Try short integer roundings of the candidate first (readable
       // witnesses), then its exact binary value.
       std::vector<Mpz> w;
@@ -148,7 +147,7 @@ PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options) {
                             (f.negative_direction * (std::ldexp(1.0, bits) / vmax)).array().round().matrix().eval());
         w = std::vector<Mpz>(static_cast<std::size_t>(n));
         for (std::size_t a = 0; a < keep.size(); ++a) mpz_swap(w[static_cast<std::size_t>(keep[a])].z, w_reduced[a].z);
-        if (psd_detail::quadratic_form_sign(*A, w) < 0) {
+        if (psd_detail::quadratic_form_sign(M, w) < 0) {
           found = true;
           break;
         }

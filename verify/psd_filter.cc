@@ -12,6 +12,7 @@
 #include <mpfr.h>
 
 #include "core/number_text.h"
+#include "verify/power_of_two.h"
 
 static_assert(std::numeric_limits<double>::is_iec559, "psd_filter needs IEEE-754 binary64 doubles");
 static_assert(std::numeric_limits<double>::digits == 53, "psd_filter needs 53-bit doubles");
@@ -114,20 +115,6 @@ std::string contraction_problem() {
   return {};
 }
 
-/// Exact rational of 2^e.
-Rational pow2(long e) {
-  mpq_t q;
-  mpq_init(q);
-  mpq_set_ui(q, 1, 1);
-  if (e >= 0)
-    mpq_mul_2exp(q, q, static_cast<mp_bitcnt_t>(e));
-  else
-    mpq_div_2exp(q, q, static_cast<mp_bitcnt_t>(-e));
-  Rational r(q);
-  mpq_clear(q);
-  return r;
-}
-
 /// The largest double ≤ q (MPFR, rounding downward twice: to 53 bits with an
 /// unbounded exponent, then to the double range; both round down).
 double round_down(const Rational& q) {
@@ -216,7 +203,7 @@ PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
   }
 
   // The constants of the theorem, exactly.
-  const Rational u = pow2(-53), eta = pow2(-1074), Nq(static_cast<long>(N));
+  const Rational u = power_of_two(-53), eta = power_of_two(-1074), Nq(static_cast<long>(N));
   const Rational two_n1 = Rational(2) * (Nq + Rational(1));
   if (!(Rational(2) * two_n1 * u < Rational(1))) {  // 4(N+1)u < 1
     out.reason = "matrix too large for the error bound";

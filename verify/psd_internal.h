@@ -27,8 +27,10 @@ struct IntegerMatrix {
 /// L·M for the symmetric rational M (upper triangle only).
 std::unique_ptr<IntegerMatrix> integer_matrix(const Mat<Rational>& M);
 
-/// Sign of wᵀAw for the symmetric integer A (upper triangle) and integer w.
-int quadratic_form_sign(const IntegerMatrix& A, const std::vector<Mpz>& w);
+/// Sign of wᵀMw, exactly, for the symmetric rational M (upper triangle) and
+/// integer w: over the support of w and with one common denominator per row
+/// (verify/psd_witness.cc), without forming L·M.
+int quadratic_form_sign(const Mat<Rational>& M, const std::vector<Mpz>& w);
 
 /// Divides w by the gcd of its entries (w ≠ 0) and returns it as rationals.
 Vec<Rational> reduced_witness(std::vector<Mpz>& w);

@@ -1,0 +1,34 @@
+#pragma once
+/// (C1) of Theorem 2.1 (SPEC §4) for a certificate, decided exactly
+/// (SPEC §7). Both forms end in the exact PSD decision of verify/exact_psd.h
+/// on a matrix with the same PSD verdict as (C1); the text names that matrix.
+///
+///  - form "w" (verify/c1_w_form.cc): (C1) is
+///      M = [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0     (size n + n·ny),
+///    decided on the n × n Schur complement δ²·T_zᵀT_z − T_wᵀT_w (proof there);
+///  - form "delta" (verify/c1_delta_form.cc): [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0, i.e.
+///    ‖T_Δ‖ ≤ δ, which implies (C1) for w = Δ ∗ z (certificate_check.h).
+
+#include <string>
+
+#include "core/scalar.h"
+
+namespace lpvid {
+
+struct C1Outcome {
+  bool holds = false;
+  /// "(C1) holds: <matrix> (size N) is PSD (…)" or "(C1) fails: <why>".
+  std::string text;
+};
+
+/// Form "w": `gram_z` = T_zᵀT_z (n × n, exact; taken by value to reuse its
+/// storage), `w` the n × ny signal (T_w = signal_toeplitz(w)), δ² ≥ 0.
+C1Outcome check_c1_w_form(Mat<Rational> gram_z, const Mat<Rational>& w, const Rational& delta2);
+
+/// Form "delta": `taps` K × (ny·nz), row t = vec of the tap Δ_t (row-major
+/// ny × nz, entry (i, j) at column i·nz + j), T_Δ the block lower-triangular
+/// Toeplitz matrix of the taps on `horizon` samples, δ² ≥ 0.
+C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, Eigen::Index ny, Eigen::Index nz,
+                              const Rational& delta2);
+
+}  // namespace lpvid

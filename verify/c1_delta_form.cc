@@ -1,0 +1,86 @@
+/// (C1) of Theorem 2.1 for form "delta" (verify/c1_check.h):
+///   M = [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0  (size L·(ny + nz)),  i.e. ‖T_Δ‖ ≤ δ.
+///
+///  1. Every entry h of T_Δ sits in a 2×2 principal submatrix [δ², h; h, 1]
+///     of M (its row in the δ² block, its column in the I block), whose
+///     determinant is δ² − h². A principal submatrix of a PSD matrix is PSD,
+///     so h² > δ² for one tap entry that T_Δ contains (tap index < L) decides
+///     NOT PSD at once, exactly: no elimination, whatever the size of δ².
+///  2. Otherwise every |h| ≤ δ, and the congruence diag(I/s, I) with s ≈ δ
+///     (nonsingular: same inertia) balances M to
+///       [δ²/s² I, T_Δ/s; T_Δᵀ/s, I],
+///     every entry within a factor 4 of 1 or smaller, which the floating
+///     filter reads for any δ². s is δ rounded to a double while δ is within
+///     [1e−150, 1e150], else a power of two (sqrt_scale: δ² = 1e4000 or
+///     1e−5000 would overflow or underflow a double).
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "core/number_text.h"
+#include "verify/c1_check.h"
+#include "verify/exact_psd.h"
+#include "verify/power_of_two.h"
+#include "verify/verdict_text.h"
+
+namespace lpvid {
+namespace {
+
+/// s ≈ δ > 0 (see the file comment, 2.) and its text for the message.
+std::pair<Rational, std::string> balancing_scale(const Rational& delta2) {
+  const double approx_delta = std::sqrt(nearest_double(delta2));
+  if (approx_delta >= 1e-150 && approx_delta <= 1e150) {
+    const Rational s = exact_rational_of_double(approx_delta);
+    return {s, approx_text(s)};
+  }
+  const Rational s = sqrt_scale(delta2);
+  return {s, "2^" + std::to_string(*binary_magnitude(s))};  // exactly e for s = 2^e
+}
+
+}  // namespace
+
+C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, Eigen::Index ny, Eigen::Index nz,
+                              const Rational& delta2) {
+  const Eigen::Index L = horizon, K = taps.rows();
+  const std::string full = "[delta2*I, T_Delta; T_Delta', I]";
+  // 1. The tap entry with the largest square, among the taps T_Δ contains.
+  Eigen::Index arg_t = -1, arg_c = -1;
+  Rational largest(0);
+  for (Eigen::Index t = 0; t < std::min(K, L); ++t)
+    for (Eigen::Index c = 0; c < ny * nz; ++c)
+      if (const Rational h2 = taps(t, c) * taps(t, c); h2 > largest) {
+        largest = h2;
+        arg_t = t;
+        arg_c = c;
+      }
+  if (arg_t >= 0 && largest > delta2) {
+    const Eigen::Index i = arg_c / nz, j = arg_c % nz;
+    return {false, "(C1) fails: " + full + " is not PSD: tap " + std::to_string(arg_t) + " entry (" + std::to_string(i) +
+                       "," + std::to_string(j) + ") = h = " + approx_text(taps(arg_t, arg_c)) +
+                       " has h^2 > delta2, so its 2x2 principal submatrix [delta2, h; h, 1] (rows " +
+                       std::to_string(arg_t * ny + i) + " and " + std::to_string(L * ny + j) +
+                       ") has determinant delta2 - h^2 < 0 (exact comparison of rationals)"};
+  }
+  // 2. Balanced by diag(I/s, I).
+  const auto [s, s_text] = delta2 > 0 ? balancing_scale(delta2) : std::pair<Rational, std::string>(Rational(1), "1");
+  const Rational inv_s = Rational(1) / s;
+  Mat<Rational> M = Mat<Rational>::Zero(L * (ny + nz), L * (ny + nz));
+  const Rational d2 = delta2 * inv_s * inv_s;
+  for (Eigen::Index i = 0; i < L * ny; ++i) M(i, i) = d2;
+  for (Eigen::Index i = L * ny; i < L * (ny + nz); ++i) M(i, i) = Rational(1);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index b = std::max<Eigen::Index>(0, a - K + 1); b <= a; ++b)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index j = 0; j < nz; ++j) {
+          const Rational h = taps(a - b, i * nz + j) * inv_s;
+          M(a * ny + i, L * ny + b * nz + j) = h;
+          M(L * ny + b * nz + j, a * ny + i) = h;
+        }
+  const std::string which = full + " (balanced by diag(I/s, I), s = " + s_text + ")";
+  const PsdResult psd = decide_psd(M);
+  if (psd.verdict == PsdVerdict::kNotPsd) return {false, "(C1) fails: " + which + " is not PSD (" + psd.reason + ")"};
+  return {true, "(C1) holds: " + which + " (size " + std::to_string(M.rows()) + ") is " + psd_note(psd)};
+}
+
+}  // namespace lpvid
