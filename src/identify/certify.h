@@ -150,7 +150,8 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
 
 /// Paper mode (T_z = T_G12 T_u is not a signal Toeplitz matrix, so there is
 /// no Δ form): the w form of Theorem 2.1 is solved, w rounded to `digits`
-/// digits, and (C1) [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 checked exactly with δ²
+/// digits, and (C1) [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 checked exactly (by the
+/// verifier, on its Schur complement δ²T_zᵀT_z − T_wᵀT_w: verify/c1_w_form.cc) with δ²
 /// inflated as above. T_zᵀT_z squares the data's conditioning; for long
 /// records this can fail where the Δ form would pass (issue 3, item 5).
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
