@@ -1,7 +1,7 @@
 // effect_explore: modelling evidence for issue 4 item 7 (cascaded tanks,
-// dryer). Fits the linear starting model (diagnose/linear_fit.h) on the
+// dryer). Fits the linear starting model (fit/linear_fit.h) on the
 // estimation data, adds each candidate effect of SPEC §6/§8 (and chosen
-// combinations) around it (diagnose/block_model.h), fits on estimation data
+// combinations) around it (explore/block_model.h), fits on estimation data
 // only and prints the free-run RMS on estimation and validation data:
 //   "A,B fixed": the denominator a and B of the linear fit stay, D, x0, c and
 //                the effect parameters are fitted (output error; for
@@ -9,7 +9,7 @@
 //   "full OE":   then everything is refitted by output error (A kept stable).
 // Effect names: offset, delayD, in_polyP, in_pathsR, in_sat, dead_zone,
 // lpv_u, lpv_y (ρ = own output one sample back), out_polyQ, out_sat, joined
-// by '+' (see diagnose/block_model.h for the equations).
+// by '+' (see explore/block_model.h for the equations).
 // Levels of input saturation and dead-zone are chosen on a 1-D grid by the
 // estimation RMS. Validation x0 comes from the first --init-samples samples.
 //
@@ -27,8 +27,8 @@
 #include "core/input_error.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
-#include "diagnose/block_model.h"
-#include "diagnose/linear_fit.h"
+#include "explore/block_model.h"
+#include "fit/linear_fit.h"
 
 using namespace lpvid;
 

@@ -30,7 +30,7 @@
 
 #include <Eigen/Dense>
 
-#include "lmi/lmi_program.h"
+#include "solvers/lmi_program.h"
 #include "solvers/sdp_solver.h"
 #include "solvers/sdpa_file.h"
 

@@ -15,9 +15,7 @@
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "diagnose/bound_windows.h"
-#include "diagnose/effect_ranking.h"
-#include "diagnose/window_bounds.h"
-#include "diagnose/window_identification.h"
+#include "diagnose/diagnose.h"
 #include "model/model_file.h"
 #include "solvers/external_solvers.h"
 
@@ -36,10 +34,10 @@ struct DiagnoseArgs {
   std::string test_path;
   std::vector<std::string> test_columns, test_names;
   std::string test_rows;
-  int max_effects = 3;
-  double min_gain = 0.05;
-  int degree = 2;
-  int max_delay = 5;
+  int max_effects = RankingOptions{}.max_effects;
+  double min_gain = RankingOptions{}.min_gain;
+  int degree = CandidateOptions{}.max_degree;
+  int max_delay = CandidateOptions{}.max_delay;
   int init_samples = static_cast<int>(RankingOptions{}.init_samples);
   bool input_scheduling = true;
   int state_degree = CandidateOptions{}.state_degree;
@@ -145,14 +143,12 @@ int run_diagnose(DiagnoseArgs& a) {
     val_text = a.common.data_path + " rows " + std::to_string(file_offset + cut) + ":" + std::to_string(file_offset + n) +
                " (held out: the last " + std::to_string(n - cut) + " samples, not used to fit)";
   }
-  if (val_d.n() < a.init_samples + 5) throw InputError("the validation data has too few samples");
   Experiment<double> test_d;
   std::string test_text;
   std::vector<std::string> test_outputs;
   const bool has_test = !a.test_path.empty() || !a.test_columns.empty();
   if (has_test) {
     test_d = load_other(a.test_path, a.test_names, a.test_columns, a.test_rows, "test", test_text, test_outputs);
-    if (test_d.n() < a.init_samples + 5) throw InputError("the test data has too few samples");
   }
 
   // verified bounds before and after, on the bound windows of the estimation data
@@ -165,72 +161,35 @@ int run_diagnose(DiagnoseArgs& a) {
     if (!windows.empty()) throw InputError("--window and --window-length exclude each other");
     windows = tile_windows(est_q.n(), a.window_length, std::min<Eigen::Index>(kDefaultMinLastWindow, a.window_length / 4));
   }
-  if (windows.empty()) windows = default_bound_windows(est_q.n());  // the whole estimation record
-  for (const auto& [b, e] : windows)
-    if (e > est_q.n())
-      throw InputError("--window " + std::to_string(b) + ":" + std::to_string(e) + " is outside the " +
-                       std::to_string(est_q.n()) + " estimation samples");
-  RankingOptions ro;
-  ro.max_effects = a.max_effects;
-  ro.min_gain = a.min_gain;
-  ro.init_samples = a.init_samples;
-  ro.candidates.max_degree = a.degree;
-  ro.candidates.max_delay = a.max_delay;
-  ro.candidates.state_degree = a.state_degree;
-  ro.joint_dynamics = a.joint_dynamics;
-  const RankingResult rank = rank_effects(declared, est_d, val_d, ro);
-
-  CertifyOptions co = certify_options(a.common, in.objective);  // rows: set per window
+  DiagnoseOptions o;
+  o.ranking.max_effects = a.max_effects;
+  o.ranking.min_gain = a.min_gain;
+  o.ranking.init_samples = a.init_samples;
+  o.ranking.candidates.max_degree = a.degree;
+  o.ranking.candidates.max_delay = a.max_delay;
+  o.ranking.candidates.state_degree = a.state_degree;
+  o.ranking.joint_dynamics = a.joint_dynamics;
+  o.windows = windows;
+  o.certify = certify_options(a.common, in.objective);  // rows: set per window
   // Many windows: the lower end comes from the K-tap solve's dual lifted to
   // the full horizon, without the extra full-horizon solve (issue 8).
-  co.full_horizon_limit = 0;
-  const std::string cert_stem = [&] {
-    std::string c = certificate_path(a.common);
-    const size_t dot = c.rfind(".json");
-    return dot == std::string::npos ? c : c.substr(0, dot);
-  }();
-  co.scale_signals = true;  // λ on unit-RMS signals (identify/bound_scaling.h)
-  auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
-  const LpvModel<double> before = round_fitted_model(rank.before);
-  const LpvModel<double> after = round_fitted_model(rank.after);
-  // Every window, before and after, is one independent job (core/parallel_for.h).
+  o.certify.full_horizon_limit = 0;
+  o.certify.certificate_path = certificate_path(a.common);
+  o.certify.scale_signals = true;  // λ on unit-RMS signals (identify/bound_scaling.h)
+  o.file_row_offset = file_offset;
   // --write-sdpa numbers the programs it writes in solve order: sequential then.
-  const unsigned threads = a.common.write_sdpa.empty() ? static_cast<unsigned>(a.threads) : 1u;
-  std::vector<WindowBounds> bb(windows.size()), ba(windows.size());
-  parallel_for(2 * windows.size(), threads, [&](size_t job) {
-    const size_t i = job / 2;
-    const bool is_after = job % 2 == 1;
-    const std::string tag = windows.size() == 1 ? "" : ".w" + std::to_string(i + 1);
-    CertifyOptions wo = co;
-    wo.certificate_path = cert_stem + tag + (is_after ? ".after.json" : ".before.json");
-    // one backend object per job; SDP solves serialise inside (solvers/sdp_solver.cc)
-    auto own = threads > 1 ? make_solver_for_cli(a.common.solver, a.common.write_sdpa) : nullptr;
-    (is_after ? ba : bb)[i] = certify_window(is_after ? after : before, est_d, est_q, windows[i].first,
-                                             windows[i].second, file_offset, wo, own ? *own : *solver);
-  });
-  co.certificate_path = cert_stem + ".before.thm31.json";
-  WindowIdentification before_id = identify_on_window(before, est_d, est_q, windows[0].first, windows[0].second,
-                                                      file_offset, co, *solver);
-  co.certificate_path = cert_stem + ".after.thm31.json";
-  WindowIdentification after_id = identify_on_window(after, est_d, est_q, windows[0].first, windows[0].second,
-                                                     file_offset, co, *solver);
+  o.threads = a.common.write_sdpa.empty() ? static_cast<unsigned>(a.threads) : 1u;
+  o.make_solver = [&a] { return make_solver_for_cli(a.common.solver, a.common.write_sdpa); };
+  auto solver = o.make_solver();
+  const DiagnoseResult result = diagnose(declared, est_d, est_q, val_d, has_test ? &test_d : nullptr, o, *solver);
 
   DiagnoseReportInputs ri;
-  ri.before_id = std::move(before_id);
-  ri.after_id = std::move(after_id);
+  ri.result = &result;
   ri.command_line_data = a.common.data_path;
   ri.validation = val_text;
   ri.estimation = a.common.data_path + " rows " + std::to_string(file_offset) + ":" + std::to_string(file_offset + est_d.n()) +
                   " (fit: every model and candidate)";
-  if (has_test) {
-    ri.test = &test_d;
-    ri.test_source = test_text;
-  }
-  ri.rank = &rank;
-  ri.before = bb;
-  ri.after = ba;
-  ri.before_model = &before;
-  ri.after_model = &after;
+  ri.test_source = test_text;
   ri.est = &est_d;
   ri.val = &val_d;
   ri.init_samples = a.init_samples;
@@ -238,12 +197,9 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;
   ri.solver = a.common.solver;
-  if (!a.model_out.empty()) write_model_file(a.model_out, ba.front().model);
+  if (!a.model_out.empty()) write_model_file(a.model_out, result.after.front().model);
   print_and_write_diagnose_report(ri, a.common.report_path);
-  bool verified = true;
-  for (const auto* side : {&bb, &ba})
-    for (const WindowBounds& w : *side) verified = verified && w.bounds.verified;
-  return verified ? kExitOk : kExitNotVerified;
+  return result.verified() ? kExitOk : kExitNotVerified;
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <iostream>
 
 #include "cli/report.h"
-#include "diagnose/diagnose_plots.h"
+#include "plot/diagnose_plots.h"
 #include "diagnose/residual_analysis.h"
 #include "model/simulate.h"
 
@@ -114,12 +114,6 @@ std::string identification_line(const WindowIdentification& id) {
          uninformative_mark(id.bounds);
 }
 
-bool all_verified(const std::vector<WindowBounds>& ws) {
-  bool all = !ws.empty();
-  for (const WindowBounds& w : ws) all = all && w.bounds.verified;
-  return all;
-}
-
 ojson candidate_json(const ScoredCandidate& c) {
   return {{"kind", c.kind},
           {"label", c.label},
@@ -190,14 +184,15 @@ std::string bound_line(const WindowBounds& w) {
 }  // namespace
 
 void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::string& report_path) {
-  const RankingResult& r = *in.rank;
+  const DiagnoseResult& res = *in.result;
+  const RankingResult& r = res.rank;
   std::cout << "lpvid diagnose\n"
             << "  estimation  " << (in.estimation.empty() ? in.command_line_data : in.estimation) << " ("
             << in.est->n() << " samples)\n"
             << "  validation  " << in.validation << " (" << in.val->n() << " samples; selection: ranks the effects; x0 "
             << "fitted on the first " << in.init_samples << ", then free-run simulation)\n"
             << "  test        "
-            << (in.test ? in.test_source + " (" + std::to_string(in.test->n()) + " samples; scored once, at the end)"
+            << (res.test ? in.test_source + " (" + std::to_string(res.test->samples) + " samples; scored once, at the end)"
                         : std::string("none given (--test / --test-columns): the validation figure chose the model"))
             << "\n";
   ojson rounds = ojson::array();
@@ -242,48 +237,47 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   std::cout << "\n\n              RMS estimation  RMS validation  bounds\n"
             << "  before      " << num(r.before_estimation) << std::string(16 - std::min<size_t>(15, num(r.before_estimation).size()), ' ')
             << num(r.before_validation) << std::string(16 - std::min<size_t>(15, num(r.before_validation).size()), ' ')
-            << bound_line(in.before.front()) << "\n"
+            << bound_line(res.before.front()) << "\n"
             << "  after       " << num(r.after_estimation) << std::string(16 - std::min<size_t>(15, num(r.after_estimation).size()), ' ')
             << num(r.after_validation) << std::string(16 - std::min<size_t>(15, num(r.after_validation).size()), ' ')
-            << bound_line(in.after.front()) << "\n";
+            << bound_line(res.after.front()) << "\n";
   std::string rows;
-  for (const WindowBounds& w : in.before) rows += (rows.empty() ? "" : ", ") + std::to_string(w.begin) + ":" + std::to_string(w.end);
-  std::cout << "  bounds on " << in.before.size() << " window" << (in.before.size() == 1 ? "" : "s")
+  for (const WindowBounds& w : res.before) rows += (rows.empty() ? "" : ", ") + std::to_string(w.begin) + ":" + std::to_string(w.end);
+  std::cout << "  bounds on " << res.before.size() << " window" << (res.before.size() == 1 ? "" : "s")
             << " of estimation rows " << rows << " (Theorem 2.1 on each window's rows alone; window 1 above)\n";
-  for (size_t i = 1; i < in.before.size(); ++i)
-    std::cout << "  window " << i + 1 << " (estimation rows " << in.before[i].begin << ":" << in.before[i].end << ")\n"
-              << "              before: " << bound_line(in.before[i]) << "\n"
-              << "              after:  " << bound_line(in.after[i]) << "\n";
+  for (size_t i = 1; i < res.before.size(); ++i)
+    std::cout << "  window " << i + 1 << " (estimation rows " << res.before[i].begin << ":" << res.before[i].end << ")\n"
+              << "              before: " << bound_line(res.before[i]) << "\n"
+              << "              after:  " << bound_line(res.after[i]) << "\n";
   int uninformative = 0;
-  for (const auto* side : {&in.before, &in.after})
+  for (const auto* side : {&res.before, &res.after})
     for (const WindowBounds& w : *side) uninformative += w.bounds.verified && !w.informative ? 1 : 0;
   if (uninformative > 0)
-    std::cout << "  " << uninformative << " of " << 2 * in.before.size()
+    std::cout << "  " << uninformative << " of " << 2 * res.before.size()
               << " verified bounds are uninformative: dmax >= the RMS of the measured output on the "
                  "window, which a model with zero output already meets\n";
-  const SignalScales& sc = in.before.front().bounds.scales;
+  const SignalScales& sc = res.before.front().bounds.scales;
   if (sc.applied)
     std::cout << "  objective on scaled signals: y / " << sc.y_scale_text() << ", z / " << sc.z_scale_text()
               << " (window 1; lambda = " << num(sc.lambda_scaled) << " there is " << num(sc.lambda_original, 6)
               << " in the data's units; bounds above in the data's units)\n";
-  std::cout << "  Theorem 3.1 again on file rows " << in.before.front().file_begin << ":" << in.before.front().file_end
+  std::cout << "  Theorem 3.1 again on file rows " << res.before.front().file_begin << ":" << res.before.front().file_end
             << " (the first window only; the output map re-identified with x0 free, alternating method):\n"
-            << "    before    " << identification_line(in.before_id) << "\n"
-            << "    after     " << identification_line(in.after_id) << "\n";
-  std::cout << "  certificates " << in.before.front().certificate << ", " << in.after.front().certificate
-            << (in.before.size() > 1 ? " (and one per further window)" : "") << " (check: lpvid-verify certificate FILE)\n";
+            << "    before    " << identification_line(res.before_id) << "\n"
+            << "    after     " << identification_line(res.after_id) << "\n";
+  std::cout << "  certificates " << res.before.front().certificate << ", " << res.after.front().certificate
+            << (res.before.size() > 1 ? " (and one per further window)" : "") << " (check: lpvid-verify certificate FILE)\n";
 
   // The test role: scored once, now, for the models chosen above.
   ojson test = nullptr;
-  if (in.test != nullptr) {
-    const double tb = validation_rms(*in.before_model, *in.test, in.init_samples);
-    const double ta = validation_rms(*in.after_model, *in.test, in.init_samples);
-    std::cout << "\ntest (" << in.test_source << ", " << in.test->n() << " samples): scored once, after the selection;"
+  if (res.test) {
+    const double tb = res.test->rms_before, ta = res.test->rms_after;
+    std::cout << "\ntest (" << in.test_source << ", " << res.test->samples << " samples): scored once, after the selection;"
               << " no fit and no choice used it\n"
               << "  free-run RMS, x0 from the first " << in.init_samples << " samples, over all samples:  before "
               << num(tb) << "   after " << num(ta) << "\n";
     test = {{"source", in.test_source},
-            {"samples", in.test->n()},
+            {"samples", res.test->samples},
             {"init_samples", in.init_samples},
             {"rms_before", finite_or_null(tb)},
             {"rms_after", finite_or_null(ta)},
@@ -293,8 +287,8 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
 
   // residual analysis and plots on the validation data (free run)
   Mat<double> yb, ya;
-  validation_rms(*in.before_model, *in.val, in.init_samples, &yb);
-  validation_rms(*in.after_model, *in.val, in.init_samples, &ya);
+  validation_rms(res.before_model, *in.val, in.init_samples, &yb);
+  validation_rms(res.after_model, *in.val, in.init_samples, &ya);
   const Mat<double> rb = in.val->y - yb, ra = in.val->y - ya;
   std::cout << "\nvalidation residual (free run)\n";
   ojson analysis = ojson::object();
@@ -309,7 +303,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
     std::vector<std::string> names = in.validation_outputs;
     if (names.size() != static_cast<size_t>(in.val->ny())) {  // held-out rows of --data
       names.clear();
-      for (const std::string& y : in.before_model->columns.y) names.push_back(y + " (held out)");
+      for (const std::string& y : res.before_model.columns.y) names.push_back(y + " (held out)");
     }
     const std::vector<std::pair<std::string, PlotOutcome>> made = {
         {d + "residual.png", plot_residual(rb, ra, d + "residual.png", names)},
@@ -323,7 +317,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   }
 
   ojson j = ojson::object();
-  const bool verified = all_verified(in.before) && all_verified(in.after);
+  const bool verified = res.verified();
   j["status"] = verified ? "ok" : "not verified";
   j["command"] = "diagnose";
   j["estimation"] = {{"file", in.command_line_data}, {"rows", in.estimation}, {"samples", in.est->n()}};
@@ -331,10 +325,10 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                      {"role", "selection: ranks the candidate effects"}};
   j["test"] = test;
   j["effects"] = effects;
-  j["before"] = side_json(r.before_estimation, r.before_validation, in.before);
-  j["after"] = side_json(r.after_estimation, r.after_validation, in.after);
-  j["before"]["theorem_3_1"] = identification_json(in.before_id);
-  j["after"]["theorem_3_1"] = identification_json(in.after_id);
+  j["before"] = side_json(r.before_estimation, r.before_validation, res.before);
+  j["after"] = side_json(r.after_estimation, r.after_validation, res.after);
+  j["before"]["theorem_3_1"] = identification_json(res.before_id);
+  j["after"]["theorem_3_1"] = identification_json(res.after_id);
   j["noise_normalisation"] = "RMS: ||d||_2 <= dmax*sqrt(n*ny) (SPEC 4)";
   j["toeplitz_mode"] = "signal";
   j["solver"] = in.solver;

@@ -6,23 +6,15 @@
 #include <vector>
 
 #include "data/experiment.h"
-#include "diagnose/effect_ranking.h"
-#include "diagnose/window_bounds.h"
-#include "diagnose/window_identification.h"
+#include "diagnose/diagnose.h"
 
 namespace lpvid::cli {
 
 struct DiagnoseReportInputs {
   std::string command_line_data, validation, plots_dir, model_out, solver;
   std::string estimation;  ///< file and rows of the fit role
-  /// The test role (issue 9): scored once here, after everything was chosen
-  /// on the estimation and validation (selection) data; nullptr: none given.
-  const Experiment<double>* test = nullptr;
-  std::string test_source;
-  const RankingResult* rank = nullptr;
-  std::vector<WindowBounds> before, after;  ///< one per bound window, same windows
-  WindowIdentification before_id, after_id;  ///< Theorem 3.1 on the first window
-  const LpvModel<double>*before_model = nullptr, *after_model = nullptr;  ///< as rounded for the certificates
+  std::string test_source;  ///< the test role's file and rows (when result.test is set)
+  const DiagnoseResult* result = nullptr;
   const Experiment<double>*est = nullptr, *val = nullptr;
   int init_samples = static_cast<int>(RankingOptions{}.init_samples);
   std::vector<std::string> validation_outputs;  ///< the validation data's output column names (plot legends)

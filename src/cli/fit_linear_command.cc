@@ -1,5 +1,5 @@
 // lpvid fit-linear: the linear starting model of diagnose (SPEC §6; issue 4
-// item 7): ARX, then output-error refinement (diagnose/linear_fit.h), written
+// item 7): ARX, then output-error refinement (fit/linear_fit.h), written
 // as an lpvid-model/1 file with "scheduling": [].
 #include <iomanip>
 #include <iostream>
@@ -13,7 +13,7 @@
 #include "core/input_error.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
-#include "diagnose/linear_fit.h"
+#include "fit/linear_fit.h"
 #include "model/model_file.h"
 
 namespace lpvid::cli {

@@ -1,6 +1,6 @@
 // lpvid identify: Theorem 3.1 (SPEC §5) + certificate (SPEC §7).
+#include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -11,29 +11,24 @@
 #include "identify/certify.h"
 #include "identify/fix_and_certify.h"
 #include "solvers/external_solvers.h"
-#include "identify/identify.h"
 
 namespace lpvid::cli {
 namespace {
 
-/// Replaces the correction basis (fixed A_i, B_i are zero for the new terms).
-template <typename T>
-void set_correction_basis(LpvModel<T>& m, const std::vector<std::string>& texts) {
-  Correction<T> c;
+/// The correction basis of --basis (fixed A_i, B_i zero for the new terms).
+std::vector<Monomial> parse_basis(const std::vector<std::string>& texts, const std::vector<std::string>& scheduling) {
+  std::vector<Monomial> basis;
   for (const std::string& t : texts) {
     Monomial f;
     try {
-      f = parse_monomial(t, m.scheduling);
+      f = parse_monomial(t, scheduling);
     } catch (const InputError& e) {
       throw InputError(std::string("--basis: ") + e.what());
     }
-    for (const Monomial& g : c.basis)
-      if (g == f) throw InputError("--basis: '" + t + "' appears twice");
-    c.basis.push_back(f);
-    c.A.push_back(Mat<T>::Zero(m.nx, m.nx));
-    c.B.push_back(Mat<T>::Zero(m.nx, m.nu));
+    if (std::find(basis.begin(), basis.end(), f) != basis.end()) throw InputError("--basis: '" + t + "' appears twice");
+    basis.push_back(f);
   }
-  m.correction = c;
+  return basis;
 }
 
 struct IdentifyArgs {
@@ -51,8 +46,9 @@ struct IdentifyArgs {
 int run_identify(IdentifyArgs& a) {
   Inputs in = load_inputs(a.common);
   if (!a.basis.empty()) {
-    set_correction_basis(in.model_q, a.basis);
-    set_correction_basis(in.model_d, a.basis);
+    const std::vector<Monomial> basis = parse_basis(a.basis, in.model_q.scheduling);
+    in.model_q.correction = zero_correction<Rational>(basis, in.model_q.nx, in.model_q.nu);
+    in.model_d.correction = zero_correction<double>(basis, in.model_d.nx, in.model_d.nu);
   }
   print_options(a.common, in.objective, "identify");
   std::cout << "  basis       ";
@@ -73,8 +69,11 @@ int run_identify(IdentifyArgs& a) {
   opt.unknowns.x0 = a.free_x0;
   opt.unknowns.offset = !a.no_offset;
   opt.solver.verbose = a.common.verbose;
+  CertifyOptions co = certify_options(a.common, in.objective);
+  co.solver = opt.solver;
   auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
-  const IdentifyResult res = identify(in.model_d, in.exp_d, opt, *solver);
+  const IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, *solver);
+  const IdentifyResult& res = id.fit;
 
   std::cout << "\nTheorem 3.1: " << res.relaxation << "\n"
             << "  unknowns    " << res.names.size() << " (" << res.free_directions << " free after pinning)\n";
@@ -106,28 +105,8 @@ int run_identify(IdentifyArgs& a) {
     return kExitSolver;
   }
 
-  // Round θ to short rationals, fold it in, and certify the fixed model.
-  CertifyOptions co = certify_options(a.common, in.objective);
-  co.solver = opt.solver;
-  const FixedParameters fp = fix_parameters(in.model_q, res.layout, res.p, co.digits);
-  const LpvModel<Rational>& fixed = fp.model;
-  const Vec<double>& p_rounded = fp.value;
-  std::string taps_note;
-  CertifiedBounds b = certify_identified(fixed, in.exp_q, res.taps, co, *solver, &taps_note);
-  if (!taps_note.empty()) std::cout << "\n  the iterate's own Delta did not certify (" << taps_note << "); solved again\n";
-  // Certified from the iterate's own Δ: the lower end of the interval still
-  // needs a dual point of the full-horizon problem for the same fixed model.
-  if (b.verified && res.taps.size() > 0 && taps_note.empty() && in.objective.kind != BoundObjective::Kind::kFeasibility) {
-    // The lower end of the interval needs a dual point of the full-horizon
-    // problem for the same fixed model (issue 8).
-    CertifyOptions lo = co;
-    const std::filesystem::path cp(co.certificate_path);
-    lo.certificate_path = (cp.parent_path() / (cp.stem().string() + ".dual_solve.json")).string();
-    const CertifiedBounds d = certify_fixed_model(fixed, in.exp_q, lo, *solver);
-    b.lower = d.lower;
-    std::error_code ec;
-    std::filesystem::remove(lo.certificate_path, ec);
-  }
+  const CertifiedBounds& b = id.bounds;
+  if (!id.taps_note.empty()) std::cout << "\n  the iterate's own Delta did not certify (" << id.taps_note << "); solved again\n";
 
   std::cout << "\nCertified bounds of the identified model (Theorem 2.1, Delta form, exact check)\n"
             << bounds_text(b, co.certificate_path);
@@ -141,7 +120,7 @@ int run_identify(IdentifyArgs& a) {
     its.push_back({{"solve", it.index}, {"status", to_string(it.status)}, {"delta_solver", std::sqrt(std::max(0.0, it.delta2))},
                    {"dmax_solver", std::sqrt(std::max(0.0, it.dmax2))}, {"objective", it.objective}, {"seconds", it.seconds}});
   report["iterates"] = its;
-  report["theta"] = theta_json(in.model_d, res.layout, p_rounded);
+  report["theta"] = theta_json(in.model_d, res.layout, id.fixed.value);
   report["samples"] = in.exp_q.n();
   if (in.objective.kind != BoundObjective::Kind::kFeasibility) report["interval"] = interval_json(b, in.objective);
   write_json(a.common.report_path, report);

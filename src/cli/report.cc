@@ -1,11 +1,13 @@
 #include "cli/report.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "core/file_io.h"
 #include "core/input_error.h"
+#include "core/number_text.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
 
@@ -160,6 +162,13 @@ std::string bounds_text(const CertifiedBounds& b, const std::string& certificate
       << "  (no bound is reported: nothing was verified)\n";
   }
   return o.str();
+}
+
+std::string cell_text(double x) {
+  if (x < 0) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
 }
 
 }  // namespace lpvid::cli

@@ -44,4 +44,8 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
 /// Readable lines for the bounds ("delta <= ... (verified)").
 std::string bounds_text(const CertifiedBounds& b, const std::string& certificate);
 
+/// A table cell of the tradeoff and select-basis tables: x with 6
+/// significant digits, "-" for a negative x (not computed).
+std::string cell_text(double x);
+
 }  // namespace lpvid::cli

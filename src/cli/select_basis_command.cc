@@ -38,13 +38,6 @@ std::string stem_of(const std::string& path) {
   return path;
 }
 
-std::string fmt(double x) {
-  if (x < 0) return "-";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
 class Table {
  public:
   explicit Table(size_t basis_width) : w_(basis_width) {}
@@ -63,8 +56,8 @@ class Table {
     std::snprintf(t, sizeof t, "%.2f", s.seconds);
     std::cout << std::left << std::setw(5) << s.index << std::setw(9) << s.phase << std::setw(static_cast<int>(w_) + 2)
               << s.basis_text << std::setw(13) << to_string(s.verdict) << std::setw(11)
-              << (v ? fmt(s.bounds.delta) : "-") << std::setw(11) << (v ? fmt(s.bounds.dmax) : "-") << std::setw(13)
-              << fmt(s.dmax_relaxation) << std::setw(7) << s.solves << std::setw(9) << t << note << "\n"
+              << (v ? cell_text(s.bounds.delta) : "-") << std::setw(11) << (v ? cell_text(s.bounds.dmax) : "-") << std::setw(13)
+              << cell_text(s.dmax_relaxation) << std::setw(7) << s.solves << std::setw(9) << t << note << "\n"
               << std::flush;
   }
 

@@ -13,6 +13,7 @@
 #include "cli/report.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
+#include "core/number_text.h"
 #include "identify/basis_selection.h"
 #include "identify/tradeoff.h"
 #include "model/model_file.h"
@@ -58,13 +59,6 @@ std::vector<Monomial> parse_basis(const std::vector<std::string>& texts, const s
   return out;
 }
 
-std::string fmt(double x) {
-  if (x < 0) return "-";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
 int run_tradeoff(TradeoffArgs& a) {
   CommonOptions& c = a.common;
   Inputs in = load_inputs(c);
@@ -106,9 +100,9 @@ int run_tradeoff(TradeoffArgs& a) {
     const bool v = p.bounds.verified;
     char t[32];
     std::snprintf(t, sizeof t, "%.2f", p.seconds);
-    std::cout << std::left << std::setw(9) << p.lambda << std::setw(13) << (v ? fmt(p.bounds.delta) : "-")
-              << std::setw(13) << (v ? fmt(p.bounds.dmax) : "-") << std::setw(10) << (v ? "true" : "false")
-              << std::setw(13) << fmt(p.delta_solver) << std::setw(13) << fmt(p.dmax_solver) << std::setw(7)
+    std::cout << std::left << std::setw(9) << p.lambda << std::setw(13) << (v ? cell_text(p.bounds.delta) : "-")
+              << std::setw(13) << (v ? cell_text(p.bounds.dmax) : "-") << std::setw(10) << (v ? "true" : "false")
+              << std::setw(13) << cell_text(p.delta_solver) << std::setw(13) << cell_text(p.dmax_solver) << std::setw(7)
               << p.solves << t << (v ? "" : "   " + p.bounds.reason) << "\n"
               << std::flush;
   };

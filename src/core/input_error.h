@@ -17,6 +17,11 @@ class InputError : public std::runtime_error {
 /// "file:line: field: reason" (parts that are empty/0 are left out).
 std::string input_location(const std::string& file, long line, const std::string& field);
 
+/// "rows x cols", the shape of a matrix in a message.
+inline std::string shape_text(long long rows, long long cols) {
+  return std::to_string(rows) + "x" + std::to_string(cols);
+}
+
 [[noreturn]] void throw_input_error(const std::string& file, long line, const std::string& field,
                                     const std::string& reason);
 

@@ -1,9 +1,11 @@
 #include "core/number_text.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 #include <gmp.h>
 #include <mpfr.h>
 
@@ -206,6 +208,45 @@ std::string double_to_text(double x) {
 Rational exact_rational_of_double(double x) {
   if (!std::isfinite(x)) throw InputError("not a finite number");
   return Rational(x);  // mpq_set_d is exact
+}
+
+std::string exact_decimal_or_fraction(const Rational& q) {
+  constexpr unsigned long kMaxDecimals = 40;
+  mpz_srcptr num = mpq_numref(q.mpq());
+  mpz_srcptr den = mpq_denref(q.mpq());
+  if (mpz_cmp_ui(den, 1) == 0) return rational_to_text(q);
+  mpz_t rest, scaled, factor;
+  mpz_init_set(rest, den);
+  const unsigned long twos = mpz_scan1(rest, 0);
+  mpz_tdiv_q_2exp(rest, rest, twos);
+  unsigned long fives = 0;
+  while (fives <= kMaxDecimals && mpz_divisible_ui_p(rest, 5)) {
+    mpz_divexact_ui(rest, rest, 5);
+    ++fives;
+  }
+  const unsigned long k = std::max(twos, fives);
+  std::string out;
+  if (mpz_cmp_ui(rest, 1) != 0 || k > kMaxDecimals) {
+    out = rational_to_text(q);
+  } else {
+    // value = num / den = (num · 10^k / den) / 10^k, and 10^k / den = 2^(k-twos)·5^(k-fives).
+    mpz_init(scaled);
+    mpz_init(factor);
+    mpz_ui_pow_ui(factor, 5, k - fives);
+    mpz_mul_2exp(factor, factor, k - twos);
+    mpz_mul(scaled, num, factor);
+    const bool negative = mpz_sgn(scaled) < 0;
+    mpz_abs(scaled, scaled);
+    std::vector<char> buf(mpz_sizeinbase(scaled, 10) + 2);
+    mpz_get_str(buf.data(), 10, scaled);
+    std::string digits(buf.data());
+    if (digits.size() <= k) digits = std::string(k + 1 - digits.size(), '0') + digits;
+    out = (negative ? "-" : "") + digits.substr(0, digits.size() - k) + "." + digits.substr(digits.size() - k);
+    mpz_clear(scaled);
+    mpz_clear(factor);
+  }
+  mpz_clear(rest);
+  return out;
 }
 
 }  // namespace lpvid

@@ -45,6 +45,10 @@ Mat<double> nearest_double(const Mat<Rational>& m);
 /// Exact text of a rational: "p/q", or "p" when q = 1. Round-trips exactly.
 std::string rational_to_text(const Rational& q);
 
+/// Shortest exact text of a rational: "p" for an integer, a terminating
+/// decimal when the denominator is 2^a·5^b (at most 40 decimals), else "p/q".
+std::string exact_decimal_or_fraction(const Rational& q);
+
 /// Shortest decimal text that reads back as the same double ("%.17g" style,
 /// but shortest). Its exact rational is the double's exact binary value only
 /// if you print enough digits; use exact_rational_of_double for that.

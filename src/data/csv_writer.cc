@@ -5,7 +5,6 @@
 
 #include "core/file_io.h"
 #include "core/number_text.h"
-#include "model/model_file.h"
 
 namespace lpvid {
 

@@ -4,7 +4,8 @@
 #include <cctype>
 #include <cmath>
 
-#include "diagnose/wiener_starts.h"
+#include "core/rms.h"
+#include "fit/wiener_starts.h"
 #include "model/simulate.h"
 #include "model/state_scheduling.h"
 
@@ -272,14 +273,14 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
                        o.polynomial_degree, {with_input(StaticKind::kPolynomial, 0, 0, c)}));
   }
   if (free_output) {
-    // the quadratic-kernel direction (diagnose/wiener_starts.h), used only
+    // the quadratic-kernel direction (fit/wiener_starts.h), used only
     // where that regression already fits y better than the current model
     // does (an even map hiding the linear part): elsewhere the start repeats
     // what the model has, at the cost of two more joint fits per round
     Vec<double> w;
     if (base.ny == 1) {
       const QuadraticKernel qk = quadratic_kernel_signal(est);
-      const double model_rms = std::sqrt((est.y - v).squaredNorm() / static_cast<double>(std::max<Eigen::Index>(est.y.size(), 1)));
+      const double model_rms = rms(est.y - v);
       if (qk.w.size() > 0 && qk.rms < model_rms) w = qk.w;
     }
     out.push_back(make("output_saturation", "output_saturation", 2,
@@ -297,7 +298,7 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
         extra = base.ny;
       }
       std::vector<LpvModel<double>> starts = {s};
-      // the linear part re-fitted to a sign-recovered y (diagnose/wiener_starts.h)
+      // the linear part re-fitted to a sign-recovered y (fit/wiener_starts.h)
       if (base.ny == 1) starts.push_back(fitted_to_target(s, est, sign_recovered_target(est.y.col(0))));
       // and to α·w, w the dominant direction of the best quadratic
       // approximation (an even map's linear approximation is ~0), α from y ≈ c + α|w|
@@ -327,7 +328,7 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
         for (Eigen::Index i = 0, e = 0; e <= p; ++e)
           if (e != 1) cl[static_cast<size_t>(e)] = beta(i++);
         starts.push_back(with_output(StaticKind::kPolynomial, 0, 0, cl));
-        // and the linear part re-fitted to the map's inverse of y (diagnose/wiener_starts.h)
+        // and the linear part re-fitted to the map's inverse of y (fit/wiener_starts.h)
         starts.push_back(fitted_to_target(starts.back(), est, polynomial_inverse_target(cl, est.y.col(0), v.col(0))));
       }
     }

@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "data/experiment.h"
-#include "diagnose/model_parameters.h"
+#include "fit/model_parameters.h"
 
 namespace lpvid {
 

@@ -1,7 +1,7 @@
 #pragma once
 /// Residual → missing effect (SPEC §6 steps 2–3, issue 4 items 3–4):
 /// every candidate of the effect library is fitted on the ESTIMATION data
-/// (output-error least squares, diagnose/output_error_fit.h) and scored on
+/// (output-error least squares, fit/output_error_fit.h) and scored on
 /// the VALIDATION data, which the fit never saw:
 ///
 ///   validation RMS   free-run simulation from an x0 fitted on the first
@@ -26,7 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "diagnose/effect_candidates.h"
-#include "diagnose/output_error_fit.h"
+#include "fit/output_error_fit.h"
 
 namespace lpvid {
 

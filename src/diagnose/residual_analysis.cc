@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "core/rms.h"
 #include "diagnose/quantiles.h"
 
 namespace lpvid {
@@ -43,7 +44,7 @@ ResidualRms residual_rms(const Mat<double>& r) {
   ResidualRms out;
   const double n = static_cast<double>(r.rows());
   out.per_output = (r.colwise().squaredNorm().transpose() / n).cwiseSqrt();
-  out.overall = std::sqrt(r.squaredNorm() / (n * static_cast<double>(r.cols())));
+  out.overall = rms(r);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/rms.h"
 #include "core/input_error.h"
 #include "data/experiment_builder.h"
 #include "diagnose/effect_candidates.h"
@@ -60,7 +61,7 @@ WindowBounds certify_window(const LpvModel<double>& model, const Experiment<doub
 }
 
 void judge_informative(WindowBounds& w, const Mat<double>& y) {
-  w.rms_output = y.size() > 0 ? std::sqrt(y.squaredNorm() / static_cast<double>(y.size())) : 0.0;
+  w.rms_output = rms(y);
   if (!w.bounds.verified) {
     w.informative = false;
     w.note = "not verified";

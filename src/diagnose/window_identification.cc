@@ -7,20 +7,6 @@
 
 namespace lpvid {
 
-namespace {
-
-template <typename T>
-void set_basis(LpvModel<T>& m, const std::vector<Monomial>& basis) {
-  m.correction = Correction<T>{};
-  for (const Monomial& f : basis) {
-    m.correction.basis.push_back(f);
-    m.correction.A.push_back(Mat<T>::Zero(m.nx, m.nx));
-    m.correction.B.push_back(Mat<T>::Zero(m.nx, m.nu));
-  }
-}
-
-}  // namespace
-
 WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
                                         const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
                                         long file_row_offset, const CertifyOptions& options, SdpSolver& solver) {
@@ -40,7 +26,7 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   const Simulation<double> sim = simulate(fitted, est_d);
   const Vec<double> xb = fitted.nx > 0 ? Vec<double>(sim.x.row(begin).transpose()) : Vec<double>();
   LpvModel<Rational> mq = exact_model(fitted, xb);
-  set_basis(mq, basis);
+  mq.correction = zero_correction<Rational>(basis, mq.nx, mq.nu);
   const LpvModel<double> md = convert_model<double>(mq);
   const Experiment<Rational> wq = select_rows(est_q, begin, end);
   const Experiment<double> wd = select_rows(est_d, begin, end);
@@ -52,22 +38,24 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   io.unknowns.correction = true;
   io.unknowns.offset = false;
   io.unknowns.x0 = true;
-  out.result = identify(md, wd, io, solver);
   out.applicable = true;
   out.bounds.begin = begin;
   out.bounds.end = end;
   out.bounds.file_begin = file_row_offset + static_cast<long>(begin);
   out.bounds.file_end = file_row_offset + static_cast<long>(end);
   out.bounds.certificate = options.certificate_path;
+  CertifyOptions co = options;
+  co.row_begin = out.bounds.file_begin;
+  co.row_end = out.bounds.file_end;
+  co.lower_end = false;  // the diagnose report states δ, d_max here, not the interval
+  IdentifiedModel id = identify_and_certify(mq, md, wq, wd, io, co, solver);
+  out.result = std::move(id.fit);
   if (!has_solution(out.result.status)) {
     out.bounds.bounds.reason = "identification ended with " + std::string(to_string(out.result.status));
     return out;
   }
-  CertifyOptions co = options;
-  co.row_begin = out.bounds.file_begin;
-  co.row_end = out.bounds.file_end;
-  out.bounds.model = fix_parameters(mq, out.result.layout, out.result.p, co.digits).model;
-  out.bounds.bounds = certify_identified(out.bounds.model, wq, out.result.taps, co, solver);
+  out.bounds.model = std::move(id.fixed.model);
+  out.bounds.bounds = std::move(id.bounds);
   judge_informative(out.bounds, wd.y);
   return out;
 }

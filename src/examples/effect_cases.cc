@@ -14,7 +14,9 @@ namespace lpvid {
 namespace {
 
 constexpr int kDigits = 8;
-const Monomial kOne{{0}}, kRho{{1}}, kRho2{{2}};
+using literals::kOne;
+using literals::kRho;
+using literals::kRho2;
 
 using literals::dec;
 

@@ -23,6 +23,9 @@ inline Mat<Rational> mat(int rows, int cols, std::initializer_list<const char*> 
   return m;
 }
 
+/// The monomials 1, ρ1 and ρ1² of one scheduling variable.
+inline const Monomial kOne{{0}}, kRho{{1}}, kRho2{{2}};
+
 /// An empty model with 2 states, input u1, output y1 and scheduling rho1
 /// (columns of the same names); A, B, C, D sized and without terms.
 inline LpvModel<Rational> siso_rho1_skeleton() {

@@ -52,12 +52,9 @@ LpvModel<Rational> example1_initial_model() {
   m.C.add(Monomial{{0, 0}}, m2("1", "0", "0", "1"));
   m.uncertainty.structure = UncertaintyStructure::kMultiplicative;
   m.uncertainty.weight = dec("0.01");
-  m.correction.basis = {Monomial{{0, 0}}, Monomial{{1, 0}}, Monomial{{0, 1}},
-                        Monomial{{1, 1}}, Monomial{{2, 0}}, Monomial{{0, 2}}};
-  for (size_t i = 0; i < m.correction.basis.size(); ++i) {
-    m.correction.A.push_back(Mat<Rational>::Zero(2, 2));
-    m.correction.B.push_back(Mat<Rational>::Zero(2, 2));
-  }
+  m.correction = zero_correction<Rational>({Monomial{{0, 0}}, Monomial{{1, 0}}, Monomial{{0, 1}}, Monomial{{1, 1}},
+                                           Monomial{{2, 0}}, Monomial{{0, 2}}},
+                                          2, 2);
   return m;
 }
 

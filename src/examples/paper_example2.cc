@@ -14,7 +14,9 @@ namespace {
 using literals::dec;
 using literals::mat;
 
-const Monomial kOne{{0}}, kRho{{1}}, kRho2{{2}};
+using literals::kOne;
+using literals::kRho;
+using literals::kRho2;
 
 LpvModel<Rational> example2_skeleton() {
   LpvModel<Rational> m = literals::siso_rho1_skeleton();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/rms.h"
 #include "lmi/delta_form_lmi.h"
 
 namespace lpvid {
@@ -20,8 +21,8 @@ std::string SignalScales::z_scale_text() const { return "10^" + std::to_string(z
 SignalScales signal_scales(const Mat<double>& z, const Mat<double>& y, const BoundObjective& objective,
                            bool z_output_side) {
   SignalScales s;
-  s.y_exponent = decimal_exponent(rms_scale(y));
-  s.z_exponent = z_output_side ? s.y_exponent : decimal_exponent(rms_scale(z));
+  s.y_exponent = decimal_exponent(rms(y));
+  s.z_exponent = z_output_side ? s.y_exponent : decimal_exponent(rms(z));
   s.lambda_scaled = s.lambda_original = objective.lambda;
   if (objective.kind != BoundObjective::Kind::kWeighted) return s;
   s.applied = true;

@@ -1,5 +1,7 @@
 #include "identify/fix_and_certify.h"
 
+#include <filesystem>
+
 namespace lpvid {
 
 FixedParameters fix_parameters(const LpvModel<Rational>& model, const ParameterLayout& layout, const Vec<double>& p,
@@ -20,10 +22,35 @@ CertifiedBounds certify_identified(const LpvModel<Rational>& fixed, const Experi
                                    std::string* note) {
   if (taps.size() > 0) {
     CertifiedBounds b = certify_with_taps(fixed, exp, taps, options, solver.name());
-    if (b.verified) return b;
+    if (b.verified) {
+      if (options.lower_end && options.objective.kind != BoundObjective::Kind::kFeasibility) {
+        // The lower end: Theorem 2.1 for the same fixed model, whose dual
+        // point is lifted and checked (certify_fixed_model); its own upper
+        // certificate is not the one reported, so it is written aside and removed.
+        CertifyOptions lo = options;
+        const std::filesystem::path cp(options.certificate_path);
+        lo.certificate_path = (cp.parent_path() / (cp.stem().string() + ".dual_solve.json")).string();
+        b.lower = certify_fixed_model(fixed, exp, lo, solver).lower;
+        std::error_code ec;
+        std::filesystem::remove(lo.certificate_path, ec);
+      }
+      return b;
+    }
     if (note) *note = b.reason;
   }
   return certify_fixed_model(fixed, exp, options, solver);
+}
+
+IdentifiedModel identify_and_certify(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
+                                     const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
+                                     const IdentifyOptions& identify_options, const CertifyOptions& certify_options,
+                                     SdpSolver& solver) {
+  IdentifiedModel out;
+  out.fit = identify(model_d, exp_d, identify_options, solver);
+  if (!has_solution(out.fit.status)) return out;
+  out.fixed = fix_parameters(model_q, out.fit.layout, out.fit.p, certify_options.digits);
+  out.bounds = certify_identified(out.fixed.model, exp_q, out.fit.taps, certify_options, solver, &out.taps_note);
+  return out;
 }
 
 }  // namespace lpvid

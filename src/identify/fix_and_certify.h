@@ -6,12 +6,17 @@
 ///            certificate names is a short rational one (SPEC §7);
 ///   certify: the identification's own Δ taps first when it has them (no
 ///            re-solve: certify_with_taps), else Theorem 2.1 solved again for
-///            the fixed model (certify_fixed_model).
+///            the fixed model (certify_fixed_model); when the taps certified
+///            the upper end, the lower end of the optimum still needs a dual
+///            point of the full-horizon problem (issue 8), solved here too
+///            unless CertifyOptions::lower_end is false.
+/// `identify_and_certify` runs fit → fix → certify for `lpvid identify`.
 
 #include "core/scalar.h"
 #include "data/experiment.h"
 #include "identify/affine_residual.h"
 #include "identify/certify.h"
+#include "identify/identify.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
 
@@ -33,5 +38,20 @@ FixedParameters fix_parameters(const LpvModel<Rational>& model, const ParameterL
 CertifiedBounds certify_identified(const LpvModel<Rational>& fixed, const Experiment<Rational>& exp,
                                    const Mat<double>& taps, const CertifyOptions& options, SdpSolver& solver,
                                    std::string* note = nullptr);
+
+/// fit → fix → certify (SPEC §5, §7): identify() on the double data, θ fixed
+/// to `certify.digits` digits in the exact model, the fixed model certified
+/// on the exact data. When the fit ends without a solution, `fixed` and
+/// `bounds` are left empty (not verified) and `fit.status` says why.
+struct IdentifiedModel {
+  IdentifyResult fit;
+  FixedParameters fixed;
+  CertifiedBounds bounds;
+  std::string taps_note;  ///< why the fit's own Δ did not certify (then Theorem 2.1 was solved again)
+};
+IdentifiedModel identify_and_certify(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
+                                     const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
+                                     const IdentifyOptions& identify_options, const CertifyOptions& certify_options,
+                                     SdpSolver& solver);
 
 }  // namespace lpvid

@@ -33,7 +33,7 @@
 #include "identify/affine_residual.h"
 #include "identify/certify.h"
 #include "identify/identify.h"
-#include "identify/gnuplot.h"
+#include "plot/gnuplot.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
 

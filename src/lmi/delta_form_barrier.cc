@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/rms.h"
 #include "toeplitz/correlation_2d.h"
 #include "toeplitz/fir.h"
 
@@ -126,8 +127,8 @@ Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObje
   p.L = p.n - p.m;
   p.N = static_cast<double>(p.n);
   p.nu = 2.0 * static_cast<double>(p.L) + p.N + 1.0;
-  sigma_z = rms_scale(z.bottomRows(p.L));
-  sigma_r = rms_scale(r);
+  sigma_z = rms(z.bottomRows(p.L));
+  sigma_r = rms(r);
   if (!(sigma_r > 0.0)) sigma_r = 1.0;
   const double kz = sigma_z / sigma_r;
   const Vecd zs = z.col(0).tail(p.L) / sigma_z;

@@ -4,14 +4,11 @@
 #include <cmath>
 #include <string>
 
+#include "core/rms.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 
 namespace lpvid {
-
-double rms_scale(const Mat<double>& m) {
-  return m.size() ? std::sqrt(m.squaredNorm() / static_cast<double>(m.size())) : 0.0;
-}
 
 Eigen::Index check_uncertainty_excited(const Mat<double>& z) {
   const Eigen::Index m = leading_zero_samples(z);
@@ -84,8 +81,8 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
   f.m = check_uncertainty_excited(z);
   f.L = f.n - f.m;
   f.K = max_taps > 0 ? std::min(max_taps, f.L) : f.L;
-  f.sigma_z = rms_scale(z.bottomRows(f.L));
-  f.sigma_r = rms_scale(r);
+  f.sigma_z = rms(z.bottomRows(f.L));
+  f.sigma_r = rms(r);
   if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
   const Mat<double> zs = z / f.sigma_z;
   const Mat<double> rs = r / f.sigma_r;

@@ -25,7 +25,7 @@
 
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
-#include "lmi/lmi_program.h"
+#include "solvers/lmi_program.h"
 #include "toeplitz/fir.h"
 #include "solvers/sdp_solver.h"
 
@@ -61,8 +61,6 @@ DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, c
 /// (or nz = 0); returns the number of leading zero samples m. Shared with
 /// delta_kyp_lmi.h.
 Eigen::Index check_uncertainty_excited(const Mat<double>& z);
-/// RMS of the entries (0 for an empty matrix): the scale σ of z and r.
-double rms_scale(const Mat<double>& m);
 
 /// Where a Δ-form program (this file or delta_kyp_lmi.h) keeps its scaled
 /// variables: h_l(i, j) at tap0 + l·ny·nz + i·nz + j (K taps), δ²' at t and

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/rms.h"
 #include "lmi/delta_form_lmi.h"
 
 namespace lpvid {
@@ -29,8 +30,8 @@ KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective
   f.nz = z.cols();
   f.ny = r.cols();
   f.K = std::clamp<Eigen::Index>(taps, 1, n);
-  f.sigma_z = rms_scale(z);
-  f.sigma_r = rms_scale(r);
+  f.sigma_z = rms(z);
+  f.sigma_r = rms(r);
   if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
   const Mat<double> zs = z / f.sigma_z;
   const Mat<double> rs = r / f.sigma_r;

@@ -40,7 +40,7 @@
 
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
-#include "lmi/lmi_program.h"
+#include "solvers/lmi_program.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/rms.h"
 #include "core/input_error.h"
 #include "lmi/delta_form_lmi.h"
 #include "toeplitz/toeplitz_gram.h"
@@ -55,9 +56,9 @@ Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObje
       throw std::invalid_argument("relaxed program: an unknown moves z at a sample the relaxation pins to zero");
 
   f.sigma_z = paper ? std::sqrt(sig.Tz_paper.col(0).squaredNorm() / static_cast<double>(f.n * f.nz))
-                    : rms_scale(zbar.bottomRows(f.L));
+                    : rms(zbar.bottomRows(f.L));
   if (!(f.sigma_z > 0.0)) f.sigma_z = 1.0;
-  f.sigma_r = rms_scale(sig.rb);
+  f.sigma_r = rms(sig.rb);
   if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
   const double kz = f.sigma_z / f.sigma_r;
   const double N = static_cast<double>(f.n * f.ny);
@@ -66,7 +67,7 @@ Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObje
   // Scale each unknown so that a unit step moves z and r by about their RMS.
   f.qscale.assign(static_cast<size_t>(sig.nq()), 1.0);
   for (Eigen::Index j = 0; j < sig.nq(); ++j) {
-    const double a = rms_scale(sig.Z[static_cast<size_t>(j)]) / f.sigma_z, b = rms_scale(sig.R[static_cast<size_t>(j)]) / f.sigma_r;
+    const double a = rms(sig.Z[static_cast<size_t>(j)]) / f.sigma_z, b = rms(sig.R[static_cast<size_t>(j)]) / f.sigma_r;
     const double c = std::max(a, b);
     f.qscale[static_cast<size_t>(j)] = c > 0.0 ? c : 1.0;
   }

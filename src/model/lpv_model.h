@@ -48,6 +48,17 @@ struct Correction {
   std::vector<Mat<T>> B;  ///< B_i (nx × nu) per basis function; zero by default
 };
 
+/// A correction over `basis` whose fixed parts A_i, B_i are all zero (the
+/// unknowns C_i, D_i are what identification adds on top).
+template <typename T>
+Correction<T> zero_correction(const std::vector<Monomial>& basis, Eigen::Index nx, Eigen::Index nu) {
+  Correction<T> c;
+  c.basis = basis;
+  c.A.assign(basis.size(), Mat<T>::Zero(nx, nx));
+  c.B.assign(basis.size(), Mat<T>::Zero(nx, nu));
+  return c;
+}
+
 /// Output offset Φ(ρ) = Σ_j h_j(ρ) φ_j (paper eq. 20). `values` empty means
 /// the φ_j are unknown (identified); otherwise one ny-vector per basis fn.
 template <typename T>

@@ -112,10 +112,6 @@ nlohmann::ordered_json double_to_json(double x);
 inline nlohmann::ordered_json number_to_json(const Rational& q) { return rational_to_json(q); }
 inline nlohmann::ordered_json number_to_json(double x) { return double_to_json(x); }
 
-/// Shortest exact text of a rational: "p" for an integer, a terminating
-/// decimal when the denominator is 2^a·5^b (at most 40 decimals), else "p/q".
-std::string exact_decimal_or_fraction(const Rational& q);
-
 /// A JSON number or a string holding a number, read as T. Throws InputError
 /// "file:line: path: reason".
 template <typename T>

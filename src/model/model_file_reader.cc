@@ -11,7 +11,6 @@
 #include "core/input_error.h"
 #include "core/limits.h"
 #include "core/number_text.h"
-#include "data/csv_reader.h"
 
 namespace lpvid {
 namespace {
@@ -35,8 +34,6 @@ const char* article_kind(Kind kind) {
   }
   return "a value";
 }
-
-std::string dims(Eigen::Index r, Eigen::Index c) { return std::to_string(r) + "x" + std::to_string(c); }
 
 bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
@@ -122,7 +119,7 @@ class ModelReader {
       got_cols = c;
     }
     if (got_rows != rows || got_cols != cols)
-      fail(n, path, "expected " + dims(rows, cols) + " matrix, got " + dims(got_rows, got_cols));
+      fail(n, path, "expected " + shape_text(rows, cols) + " matrix, got " + shape_text(got_rows, got_cols));
     Mat<T> m(rows, cols);
     for (Eigen::Index i = 0; i < rows; ++i)
       for (Eigen::Index j = 0; j < cols; ++j)

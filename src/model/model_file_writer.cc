@@ -7,14 +7,13 @@
 #include <stdexcept>
 
 #include "core/file_io.h"
+#include "core/input_error.h"
 #include "core/number_text.h"
 
 namespace lpvid {
 namespace {
 
 using ojson = nlohmann::ordered_json;
-
-std::string dims(Eigen::Index r, Eigen::Index c) { return std::to_string(r) + "x" + std::to_string(c); }
 
 // ---------------------------------------------------------------- writing
 
@@ -57,7 +56,7 @@ ojson terms_json(const ParamMatrix<T>& pm, Eigen::Index rows, Eigen::Index cols,
     const ParamTerm<T>& t = pm.terms[i];
     const std::string w = where + "[" + std::to_string(i) + "]";
     if (t.value.rows() != rows || t.value.cols() != cols)
-      bad_model(w + ": value is " + dims(t.value.rows(), t.value.cols()) + ", expected " + dims(rows, cols));
+      bad_model(w + ": value is " + shape_text(t.value.rows(), t.value.cols()) + ", expected " + shape_text(rows, cols));
     ojson term = ojson::object();
     term["basis"] = basis_text(t.basis, names, w);
     term["value"] = matrix_json(t.value);
@@ -84,7 +83,7 @@ ojson fixed_correction_json(const std::vector<Mat<T>>& mats, const std::vector<M
   for (size_t i = 0; i < mats.size(); ++i) {
     const std::string w = where + "[" + std::to_string(i) + "]";
     if (mats[i].rows() != rows || mats[i].cols() != cols)
-      bad_model(w + ": is " + dims(mats[i].rows(), mats[i].cols()) + ", expected " + dims(rows, cols));
+      bad_model(w + ": is " + shape_text(mats[i].rows(), mats[i].cols()) + ", expected " + shape_text(rows, cols));
     if (is_zero(mats[i])) continue;
     ojson term = ojson::object();
     term["basis"] = basis_text(basis[i], names, w);
@@ -221,44 +220,6 @@ void write_file(const std::string& path, const LpvModel<T>& model) {
 
 // ------------------------------------------------------------- numbers
 
-std::string exact_decimal_or_fraction(const Rational& q) {
-  constexpr unsigned long kMaxDecimals = 40;
-  mpz_srcptr num = mpq_numref(q.mpq());
-  mpz_srcptr den = mpq_denref(q.mpq());
-  if (mpz_cmp_ui(den, 1) == 0) return rational_to_text(q);
-  mpz_t rest, scaled, factor;
-  mpz_init_set(rest, den);
-  const unsigned long twos = mpz_scan1(rest, 0);
-  mpz_tdiv_q_2exp(rest, rest, twos);
-  unsigned long fives = 0;
-  while (fives <= kMaxDecimals && mpz_divisible_ui_p(rest, 5)) {
-    mpz_divexact_ui(rest, rest, 5);
-    ++fives;
-  }
-  const unsigned long k = std::max(twos, fives);
-  std::string out;
-  if (mpz_cmp_ui(rest, 1) != 0 || k > kMaxDecimals) {
-    out = rational_to_text(q);
-  } else {
-    // value = num / den = (num · 10^k / den) / 10^k, and 10^k / den = 2^(k-twos)·5^(k-fives).
-    mpz_init(scaled);
-    mpz_init(factor);
-    mpz_ui_pow_ui(factor, 5, k - fives);
-    mpz_mul_2exp(factor, factor, k - twos);
-    mpz_mul(scaled, num, factor);
-    const bool negative = mpz_sgn(scaled) < 0;
-    mpz_abs(scaled, scaled);
-    std::vector<char> buf(mpz_sizeinbase(scaled, 10) + 2);
-    mpz_get_str(buf.data(), 10, scaled);
-    std::string digits(buf.data());
-    if (digits.size() <= k) digits = std::string(k + 1 - digits.size(), '0') + digits;
-    out = (negative ? "-" : "") + digits.substr(0, digits.size() - k) + "." + digits.substr(digits.size() - k);
-    mpz_clear(scaled);
-    mpz_clear(factor);
-  }
-  mpz_clear(rest);
-  return out;
-}
 
 nlohmann::ordered_json rational_to_json(const Rational& q) {
   mpz_srcptr num = mpq_numref(q.mpq());

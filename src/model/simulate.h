@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "core/input_error.h"
 #include "core/scalar.h"
 #include "data/experiment.h"
 #include "model/lpv_model.h"
@@ -84,8 +85,7 @@ Mat<T> correction_matrix(const std::vector<Mat<T>>& list, size_t i, size_t n_bas
   if (m.size() == 0) return Mat<T>::Zero(rows, cols);
   if (m.rows() != rows || m.cols() != cols)
     throw std::invalid_argument(std::string("correction ") + name + "_" + std::to_string(i + 1) + " is " +
-                                std::to_string(m.rows()) + "x" + std::to_string(m.cols()) + ", expected " +
-                                std::to_string(rows) + "x" + std::to_string(cols));
+                                shape_text(m.rows(), m.cols()) + ", expected " + shape_text(rows, cols));
   return m;
 }
 
@@ -157,9 +157,8 @@ void check_experiment(const LpvModel<T>& model, const Experiment<T>& exp) {
     throw std::invalid_argument(src + " has nu = " + std::to_string(exp.u.cols()) + " input columns, model has nu = " +
                                 std::to_string(model.nu));
   if (exp.y.size() != 0 && (exp.y.cols() != model.ny || exp.y.rows() != n))
-    throw std::invalid_argument(src + ": y is " + std::to_string(exp.y.rows()) + "x" +
-                                std::to_string(exp.y.cols()) + ", expected n x ny = " + std::to_string(n) + "x" +
-                                std::to_string(model.ny));
+    throw std::invalid_argument(src + ": y is " + shape_text(exp.y.rows(), exp.y.cols()) +
+                                ", expected n x ny = " + shape_text(n, model.ny));
   if (exp.rho.cols() != model.n_rho())
     throw std::invalid_argument(src + " has n_rho = " + std::to_string(exp.rho.cols()) +
                                 " scheduling columns, model has n_rho = " + std::to_string(model.n_rho()));

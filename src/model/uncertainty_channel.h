@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/input_error.h"
 #include "core/scalar.h"
 #include "model/lpv_model.h"
 #include "model/param_matrix.h"
@@ -41,15 +42,14 @@ template <typename T>
 ParamMatrix<T> given_or_zero(const ParamMatrix<T>& m, Eigen::Index rows, Eigen::Index cols,
                              const std::string& name) {
   if (m.rows == 0 && m.cols == 0 && m.empty()) return ParamMatrix<T>(rows, cols);
-  auto size = [](Eigen::Index r, Eigen::Index c) { return std::to_string(r) + "x" + std::to_string(c); };
   if (m.rows != rows || m.cols != cols)
-    throw std::invalid_argument("model matrix " + name + " is " + size(m.rows, m.cols) + ", expected " +
-                                size(rows, cols));
+    throw std::invalid_argument("model matrix " + name + " is " + shape_text(m.rows, m.cols) + ", expected " +
+                                shape_text(rows, cols));
   for (size_t j = 0; j < m.terms.size(); ++j)
     if (m.terms[j].value.rows() != rows || m.terms[j].value.cols() != cols)
       throw std::invalid_argument("model matrix " + name + ": term " + std::to_string(j) + " is " +
-                                  size(m.terms[j].value.rows(), m.terms[j].value.cols()) + ", expected " +
-                                  size(rows, cols));
+                                  shape_text(m.terms[j].value.rows(), m.terms[j].value.cols()) + ", expected " +
+                                  shape_text(rows, cols));
   return m;
 }
 

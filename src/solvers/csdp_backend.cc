@@ -462,7 +462,7 @@ struct AttemptParameters {
 };
 constexpr AttemptParameters kAttempts[] = {{0, 0}, {0, 1}, {1, 0}};
 
-SolveResult solve_reduced(const LmiProgram& p, const SolverOptions& options) {
+SolveResult csdp_solve_reduced(const LmiProgram& p, const SolverOptions& options) {
   SolveResult r;
   if (p.num_vars > kMaxCsdpVariables) {
     r.status = SolveStatus::kBackendError;
@@ -519,7 +519,7 @@ SolveStatus csdp_status(int return_code, std::string* words) {
 }
 
 SolveResult CsdpSolver::solve(const LmiProgram& program, const SolverOptions& options) {
-  return sdp_detail::solve_with_presolve(program, options, name(), &solve_reduced);
+  return sdp_detail::solve_with_presolve(program, options, name(), &csdp_solve_reduced);
 }
 
 }  // namespace lpvid

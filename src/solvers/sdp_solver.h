@@ -17,7 +17,7 @@
 
 #include <Eigen/Dense>
 
-#include "lmi/lmi_program.h"
+#include "solvers/lmi_program.h"
 
 namespace lpvid {
 

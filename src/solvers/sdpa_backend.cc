@@ -159,7 +159,7 @@ class CoutCapture {
   std::streambuf* previous_ = nullptr;
 };
 
-SolveResult solve_reduced(const LmiProgram& p, const SolverOptions& options) {
+SolveResult sdpa_solve_reduced(const LmiProgram& p, const SolverOptions& options) {
   CoutCapture capture(!options.verbose);
   SDPA s;
   set_parameters(s, options);
@@ -228,7 +228,7 @@ SolveStatus sdpa_status(const std::string& phase_word, double relative_gap, bool
 }
 
 SolveResult SdpaSolver::solve(const LmiProgram& program, const SolverOptions& options) {
-  return sdp_detail::solve_with_presolve(program, options, name(), &solve_reduced);
+  return sdp_detail::solve_with_presolve(program, options, name(), &sdpa_solve_reduced);
 }
 
 }  // namespace lpvid

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "lmi/lmi_program.h"
+#include "solvers/lmi_program.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {

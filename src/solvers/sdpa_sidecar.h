@@ -18,7 +18,7 @@
 
 #include <string>
 
-#include "lmi/lmi_program.h"
+#include "solvers/lmi_program.h"
 
 namespace lpvid {
 

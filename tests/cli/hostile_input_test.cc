@@ -10,15 +10,15 @@
 #include <string>
 
 #include "support/cli_runner.h"
+#include "support/fixtures.h"
 
 namespace lpvid {
 namespace {
 
 using gen::CliRunner;
 
-const std::string kFixtures = std::string(LPVID_SOURCE_DIR) + "/fixtures/example1/";
-const std::string kData = kFixtures + "noise_free_n40.csv";
-const std::string kModel = kFixtures + "true_model.json";
+const std::string kData = gen::kExample1Fixtures + "noise_free_n40.csv";
+const std::string kModel = gen::kExample1Fixtures + "true_model.json";
 
 struct HostileInput : CliRunner {
   /// The text of a file.

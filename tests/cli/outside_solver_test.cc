@@ -10,17 +10,16 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.h"
+#include "support/fixtures.h"
 
 namespace lpvid {
 namespace {
 
 using gen::CliRunner;
 
-const std::string kFixtures = std::string(LPVID_SOURCE_DIR) + "/fixtures/example1/";
-
 struct OutsideSolver : CliRunner {
   std::string common() const {
-    return "--data " + kFixtures + "noise_free_n40.csv --model " + kFixtures + "initial_model.json --max-taps 6";
+    return "--data " + gen::kExample1Fixtures + "noise_free_n40.csv --model " + gen::kExample1Fixtures + "initial_model.json --max-taps 6";
   }
   nlohmann::json report(const std::string& path) const { return nlohmann::json::parse(std::ifstream(path)); }
   bool has(const std::string& needle) const { return output().find(needle) != std::string::npos; }

@@ -1,4 +1,4 @@
-// Diagnose plots (diagnose/diagnose_plots.h): the specifications, the
+// Diagnose plots (plot/diagnose_plots.h): the specifications, the
 // gnuplot script (checked as text, so these tests need no gnuplot), the CSV
 // written next to the PNG, and the PNG itself when gnuplot is installed.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
-#include "diagnose/diagnose_plots.h"
+#include "plot/diagnose_plots.h"
 #include "diagnose/test_signals.h"
 #include "support/gen_identify.h"
 

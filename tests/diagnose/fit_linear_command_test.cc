@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sys/wait.h>
 
-#include "diagnose/linear_fit.h"
+#include "fit/linear_fit.h"
 #include "model/model_file.h"
 #include "support/cli_runner.h"
 #include "support/gen_lti.h"

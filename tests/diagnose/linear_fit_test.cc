@@ -1,4 +1,4 @@
-// diagnose/linear_fit.h: ARX + output-error fit of an LTI model (SPEC §6,
+// fit/linear_fit.h: ARX + output-error fit of an LTI model (SPEC §6,
 // issue 4 item 7). Properties on noise-free data from random stable systems
 // (tests/support/gen_lti.h): the true order reproduces the free-run output,
 // A is stable, the order rule picks the true order, the model file round
@@ -11,7 +11,7 @@
 #include <limits>
 
 #include "core/input_error.h"
-#include "diagnose/linear_fit.h"
+#include "fit/linear_fit.h"
 #include "model/model_file.h"
 #include "support/gen_lti.h"
 

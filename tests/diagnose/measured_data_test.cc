@@ -16,7 +16,7 @@
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "diagnose/effect_ranking.h"
-#include "diagnose/linear_fit.h"
+#include "fit/linear_fit.h"
 
 namespace lpvid {
 namespace {

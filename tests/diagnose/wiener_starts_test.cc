@@ -1,11 +1,11 @@
-// The Wiener starting points of diagnose/wiener_starts.h against answers
+// The Wiener starting points of fit/wiener_starts.h against answers
 // known by construction.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "diagnose/test_signals.h"
-#include "diagnose/wiener_starts.h"
+#include "fit/wiener_starts.h"
 
 namespace lpvid {
 namespace {

@@ -70,7 +70,7 @@ INSTANTIATE_TEST_SUITE_P(Generated, WrongDynamicsTest,
 
 // The even output maps once more on another seed: their linear part fitted
 // through the map carries no sign (best linear approximation ~0 for |.|), so
-// they depend on the quadratic-kernel start (diagnose/wiener_starts.h); without
+// they depend on the quadratic-kernel start (fit/wiener_starts.h); without
 // it both fail (measured: abs_value ranks input_polynomial first,
 // output_polynomial ranks "basis_term u1 in B" first). Seeds 7, 11, 23, 31
 // passed for every kind when this was written.

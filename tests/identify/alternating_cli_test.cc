@@ -11,13 +11,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/fixtures.h"
 #include "support/gen_identify.h"
 #include "verify/certificate_check.h"
 
 namespace lpvid {
 namespace {
-
-const std::string kFixtures = std::string(LPVID_SOURCE_DIR) + "/fixtures/example1/";
 
 int run_lpvid(const std::string& args) {
   const std::string exe = std::string(LPVID_BINARY_DIR) + "/lpvid";
@@ -28,7 +27,7 @@ int run_lpvid(const std::string& args) {
 TEST(AlternatingCli, Example1IsIdentifiedAndCertified) {
   if (!std::filesystem::exists(std::string(LPVID_BINARY_DIR) + "/lpvid")) GTEST_SKIP() << "lpvid not built";
   gen::ScratchDir dir("alt-cli");
-  const std::string common = "identify --data " + kFixtures + "noise_free_n40.csv --model " + kFixtures +
+  const std::string common = "identify --data " + gen::kExample1Fixtures + "noise_free_n40.csv --model " + gen::kExample1Fixtures +
                              "initial_model.json --method alternating --certificate " + dir.file("c.json") +
                              " --report " + dir.file("r.json");
   ASSERT_EQ(run_lpvid(common), 0);

@@ -18,16 +18,15 @@
 #include "model/simulate.h"
 #include "solvers/sdpa_file.h"
 #include "solvers/sdpa_sidecar.h"
+#include "support/fixtures.h"
 #include "support/scratch_dir.h"
 
 namespace lpvid {
 namespace {
 
-const std::string kFixtures = std::string(LPVID_SOURCE_DIR) + "/fixtures/example1/";
-
 struct OutsideSolution : ::testing::Test {
-  LpvModel<Rational> model = read_model_file<Rational>(kFixtures + "initial_model.json");
-  Experiment<Rational> exp = make_experiment<Rational>(read_table(kFixtures + "noise_free_n40.csv"), model.columns);
+  LpvModel<Rational> model = read_model_file<Rational>(gen::kExample1Fixtures + "initial_model.json");
+  Experiment<Rational> exp = make_experiment<Rational>(read_table(gen::kExample1Fixtures + "noise_free_n40.csv"), model.columns);
   gen::ScratchDir dir{"outside_solution"};
   CertifyOptions options() const {
     CertifyOptions o;
@@ -35,7 +34,7 @@ struct OutsideSolution : ::testing::Test {
     o.objective.lambda = 0.5;
     o.max_taps = 6;
     o.lower_end = false;
-    o.data_path = kFixtures + "noise_free_n40.csv";
+    o.data_path = gen::kExample1Fixtures + "noise_free_n40.csv";
     o.certificate_path = dir.file("c.json");
     return o;
   }

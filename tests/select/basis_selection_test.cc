@@ -32,10 +32,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir : gen::ScratchDir {
-  TempDir() : gen::ScratchDir("select") {}
-};
-
 std::vector<std::string> texts(const std::vector<Monomial>& b, const std::vector<std::string>& names) {
   std::vector<std::string> out;
   for (const Monomial& m : b) out.push_back(m.text(names));
@@ -44,7 +40,7 @@ std::vector<std::string> texts(const std::vector<Monomial>& b, const std::vector
 
 /// Example 1 written as CSV and read back (the CLI's path), both scalars.
 struct Example1Data {
-  TempDir dir;
+  gen::ScratchDir dir{"select"};
   std::string csv;
   LpvModel<Rational> model_q;
   LpvModel<double> model_d;

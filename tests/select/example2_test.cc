@@ -29,10 +29,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir : gen::ScratchDir {
-  TempDir() : gen::ScratchDir("select") {}
-};
-
 std::vector<TextColumn> columns(const Experiment<Rational>& e) {
   return {{"u1", column_text(e.u, 0)}, {"y1", column_text(e.y, 0)}, {"rho1", column_text(e.rho, 0)}};
 }
@@ -86,7 +82,7 @@ TEST(Example2, FixturesAreTheGeneratorOutput) {
 }
 
 TEST(Example2, IdentifiesTheOffsetAndCertifies) {
-  TempDir dir;
+  gen::ScratchDir dir("select");
   Example2Options o;
   o.n = 40;
   const std::string csv = dir.file("data.csv");

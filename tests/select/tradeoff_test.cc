@@ -1,5 +1,5 @@
 // The δ–d_max trade-off curve (identify/tradeoff.h) and the gnuplot wrapper
-// (identify/gnuplot.h).
+// (plot/gnuplot.h).
 //
 // Monotonicity slack. Along the certified curve δ must not grow and d_max
 // must not fall as λ grows, up to 1e-3 relative + 1e-6 absolute. The exact
@@ -23,7 +23,7 @@
 #include "data/experiment_builder.h"
 #include "examples/paper_example1.h"
 #include "identify/basis_selection.h"
-#include "identify/gnuplot.h"
+#include "plot/gnuplot.h"
 #include "identify/tradeoff.h"
 #include "solvers/sdp_solver.h"
 #include "verify/certificate_check.h"
@@ -35,10 +35,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir : gen::ScratchDir {
-  TempDir() : gen::ScratchDir("select") {}
-};
-
 TEST(Tradeoff, DefaultGrid) {
   const std::vector<double> g = default_lambda_grid();
   ASSERT_EQ(g.size(), 11u);
@@ -49,7 +45,7 @@ TEST(Tradeoff, DefaultGrid) {
 }
 
 TEST(Tradeoff, Example1CurveIsMonotoneAndCertified) {
-  TempDir dir;
+  gen::ScratchDir dir("select");
   Example1Options eo;
   eo.n = 30;
   const Experiment<Rational> e = example1_experiment(eo);
@@ -126,7 +122,7 @@ TEST(Tradeoff, MonotonicityCheckFindsViolations) {
 
 TEST(Gnuplot, WritesAPngOrSaysWhyNot) {
   if (gnuplot_png_terminal().empty()) GTEST_SKIP() << "gnuplot with a PNG terminal is not installed";
-  TempDir dir;
+  gen::ScratchDir dir("select");
   PlotSpec spec;
   spec.title = "it's a test";  // a quote in a gnuplot string
   spec.xlabel = "x";
@@ -155,7 +151,7 @@ TEST(Gnuplot, MissingProgramIsAClearMessage) {
   s.x = {1};
   s.y = {1};
   spec.series.push_back(s);
-  TempDir dir;
+  gen::ScratchDir dir("select");
   const PlotOutcome out = plot_png(spec, dir.file("x.png"));
   if (old) setenv("LPVID_GNUPLOT", saved.c_str(), 1);
   else unsetenv("LPVID_GNUPLOT");

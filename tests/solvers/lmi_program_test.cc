@@ -1,4 +1,4 @@
-#include "lmi/lmi_program.h"
+#include "solvers/lmi_program.h"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>

@@ -24,8 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const int kSingleThreadedBlas = [] { return setenv("OPENBLAS_NUM_THREADS", "1", 0); }();
-
 std::string written(const LmiProgram& p) {
   std::ostringstream out;
   write_sdpa(p, out);

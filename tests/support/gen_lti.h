@@ -1,6 +1,6 @@
 #pragma once
 /// Generators for stable single-output LTI systems in observer canonical form
-/// (diagnose/observer_form.h) and their noise-free data, built by
+/// (fit/observer_form.h) and their noise-free data, built by
 /// construction: the denominator is the product of (z − p) over real poles
 /// and (z² − 2r cos ω z + r²) over complex pairs with |p|, r ≤ 0.9, so A is
 /// stable without rejection. Numerator (B, D), x0 and the input are uniform
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "data/experiment.h"
-#include "diagnose/observer_form.h"
+#include "fit/observer_form.h"
 #include "support/gen_models.h"
 
 namespace lpvid::gen {

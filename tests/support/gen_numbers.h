@@ -29,6 +29,9 @@ inline rc::Gen<Mat<Rational>> rational_matrix(int rows, int cols, rc::Gen<Ration
                       });
 }
 
+/// The 1 × 1 matrix [v].
+inline Mat<Rational> scalar_matrix(int v) { return Mat<Rational>::Constant(1, 1, Rational(v)); }
+
 /// Exact conversion Rational matrix -> double matrix (only for entries that
 /// are exactly representable, e.g. small integers; tests use it that way).
 inline Mat<double> to_double_matrix(const Mat<Rational>& m) {

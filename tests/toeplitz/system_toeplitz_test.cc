@@ -5,6 +5,7 @@
 
 #include "model/simulate.h"
 #include "support/gen_models.h"
+#include "support/gen_numbers.h"
 #include "toeplitz/signal_toeplitz.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 
@@ -13,7 +14,7 @@ namespace {
 
 using gen::exactly_equal;
 
-Mat<Rational> scalar_matrix(int v) { return Mat<Rational>::Constant(1, 1, Rational(v)); }
+using gen::scalar_matrix;
 
 /// x_{k+1} = ρ_k x_k + u_k, ŷ_k = x_k (scalar, one scheduling variable).
 LpvModel<Rational> scalar_lpv() {

@@ -6,6 +6,7 @@
 #include "core/input_error.h"
 #include "model/simulate.h"
 #include "support/gen_models.h"
+#include "support/gen_numbers.h"
 #include "toeplitz/signal_toeplitz.h"
 
 namespace lpvid {
@@ -13,7 +14,7 @@ namespace {
 
 using gen::exactly_equal;
 
-Mat<Rational> scalar_matrix(int v) { return Mat<Rational>::Constant(1, 1, Rational(v)); }
+using gen::scalar_matrix;
 
 /// Scalar model with one scheduling variable: A(ρ) = a·ρ, B = b, C = c,
 /// D(ρ) = d·ρ; multiplicative uncertainty with W = 1, so z = ŷ.

@@ -21,6 +21,7 @@
 #include "data/experiment_builder.h"
 #include "identify/certify.h"
 #include "model/model_file.h"
+#include "support/fixtures.h"
 #include "support/gen_files.h"
 #include "support/scratch_dir.h"
 #include "verify/certificate_check.h"
@@ -29,8 +30,6 @@
 namespace lpvid {
 namespace {
 
-const std::string kFixtures = std::string(LPVID_SOURCE_DIR) + "/fixtures/example1/";
-
 /// The genuine certificate's text and the data file it names (made once).
 struct Genuine {
   gen::ScratchDir dir{"corruption"};
@@ -38,10 +37,10 @@ struct Genuine {
   Genuine() {
     const std::string data = dir.file("data.csv"), cert = dir.file("c.json");
     {
-      std::ifstream in(kFixtures + "noise_free_n40.csv", std::ios::binary);
+      std::ifstream in(gen::kExample1Fixtures + "noise_free_n40.csv", std::ios::binary);
       std::ofstream(data, std::ios::binary) << in.rdbuf();
     }
-    const LpvModel<Rational> model = read_model_file<Rational>(kFixtures + "true_model.json");
+    const LpvModel<Rational> model = read_model_file<Rational>(gen::kExample1Fixtures + "true_model.json");
     const Experiment<Rational> exp = make_experiment<Rational>(read_table(data), model.columns);
     CertifyOptions o;
     o.objective.kind = BoundObjective::Kind::kWeighted;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/number_text.h"
+#include "support/input_error_text.h"
 #include "verify/exact_psd.h"
 #include "verify/psd_internal.h"
 
@@ -33,7 +34,7 @@ Mat<Rational> diagonal(const std::vector<std::string>& d) {
   return M;
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using gen::contains;
 
 TEST(ExactPsdResources, OutOfPrimesReportsUndecided) {
   const Mat<Rational> M = rank_one_shift(6, 1, 20);

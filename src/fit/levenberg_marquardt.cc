@@ -1,4 +1,4 @@
-#include "diagnose/levenberg_marquardt.h"
+#include "fit/levenberg_marquardt.h"
 
 #include <cmath>
 #include <limits>

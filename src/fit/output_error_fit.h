@@ -1,11 +1,11 @@
 #pragma once
-/// Least-squares fit of model slots (diagnose/model_parameters.h) to measured
+/// Least-squares fit of model slots (fit/model_parameters.h) to measured
 /// data: minimise Σ_k ‖y_k − ŷ_k(p)‖² over the slots p, where ŷ(p) is the
 /// model's prediction g_out(ŷ + Φ) of y (model/simulate.h). This is the
 /// output-error criterion: the state is simulated from u (and x0), never
 /// reset to the data, so the fitted model is judged the way it is used.
 ///
-/// Method: Levenberg–Marquardt (diagnose/levenberg_marquardt.h) with a
+/// Method: Levenberg–Marquardt (fit/levenberg_marquardt.h) with a
 /// forward-difference Jacobian. For a model without
 /// a static output map every C, D, φ and x0 slot enters ŷ affinely (eq. 14–15),
 /// so those directions converge in one step; the nonlinear ones (saturation
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "data/experiment.h"
-#include "diagnose/model_parameters.h"
-#include "diagnose/observer_form.h"
+#include "fit/model_parameters.h"
+#include "fit/observer_form.h"
 
 namespace lpvid {
 

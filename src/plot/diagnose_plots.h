@@ -1,6 +1,6 @@
 #pragma once
 /// The plots of `lpvid diagnose` (SPEC §6 step 4, issue 4 item 5), drawn by
-/// gnuplot through identify/gnuplot.h:
+/// gnuplot through plot/gnuplot.h:
 ///  (a) the residual r = y − ŷ − Φ before and after adding the effect, per
 ///      sample;
 ///  (b) its normalised autocorrelation (lags 0..L) before and after, with
@@ -24,7 +24,7 @@
 #include "core/scalar.h"
 #include "data/csv_writer.h"
 #include "diagnose/residual_analysis.h"
-#include "identify/gnuplot.h"
+#include "plot/gnuplot.h"
 
 namespace lpvid {
 

@@ -1,6 +1,6 @@
 #pragma once
 /// A single-output LTI model in observer canonical form (Kailath, Linear
-/// Systems, 1980, §2.1.3), the parametrisation of diagnose/linear_fit.h:
+/// Systems, 1980, §2.1.3), the parametrisation of fit/linear_fit.h:
 ///
 ///   A = [ -a_1  1  0 … 0 ]      B (n × nu) free,   C = [1 0 … 0],   D (1 × nu) free
 ///       [ -a_2  0  1 … 0 ]

@@ -1,7 +1,7 @@
 #pragma once
 /// Levenberg–Marquardt minimisation of ½‖r(p)‖² (Marquardt 1963; Nocedal &
 /// Wright, Numerical Optimization, 2nd ed., §10.3) with a forward-difference
-/// Jacobian. Used for the output-error refinement of diagnose/linear_fit.h and
+/// Jacobian. Used for the output-error refinement of fit/linear_fit.h and
 /// for fitting static blocks around it: the residual is a free-run simulation
 /// error, whose exact Jacobian would need one sensitivity simulation per
 /// parameter anyway.

@@ -3,7 +3,7 @@
 // diagnostic points into Eigen's headers, so it is silenced for them only.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include "diagnose/observer_form.h"
+#include "fit/observer_form.h"
 
 #include <complex>
 

@@ -1,10 +1,11 @@
-#include "diagnose/linear_fit.h"
+#include "fit/linear_fit.h"
 
 #include <cmath>
 #include <string>
 
 #include <Eigen/QR>
 
+#include "core/rms.h"
 #include "core/input_error.h"
 #include "model/simulate.h"
 
@@ -69,8 +70,6 @@ void refit_numerator(ObserverForm& f, const Experiment<double>& est) {
   p.tail(q) = J.colPivHouseholderQr().solve(est.y.col(0));
   f.set_parameters(p);
 }
-
-double rms(const Vec<double>& r) { return r.size() == 0 ? 0.0 : std::sqrt(r.squaredNorm() / double(r.size())); }
 
 /// Step 3: output-error refinement with stability as the admissible set.
 LmResult refine(ObserverForm& form, const Experiment<double>& est, const LmOptions& options) {
@@ -140,7 +139,7 @@ OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>
   }
   double best = choice.scores.front().rms_validation;
   for (const OrderScore& s : choice.scores) best = std::min(best, s.rms_validation);
-  const double floor = kOrderFloor * std::sqrt(val.y.squaredNorm() / double(std::max<Eigen::Index>(val.y.size(), 1)));
+  const double floor = kOrderFloor * rms(val.y);
   for (const OrderScore& s : choice.scores)
     if (s.rms_validation <= (1.0 + kOrderSlack) * best + floor) {
       choice.order = s.order;

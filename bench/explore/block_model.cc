@@ -1,16 +1,15 @@
-#include "diagnose/block_model.h"
+#include "explore/block_model.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <Eigen/LU>
 
-#include "diagnose/levenberg_marquardt.h"
+#include "core/rms.h"
+#include "fit/levenberg_marquardt.h"
 
 namespace lpvid {
 namespace {
-
-double rms(const Vec<double>& r) { return r.size() == 0 ? 0.0 : std::sqrt(r.squaredNorm() / double(r.size())); }
 
 /// g_in(v) of block_model.h.
 double input_block(const BlockModel& m, double v) {

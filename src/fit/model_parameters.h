@@ -42,7 +42,7 @@ std::vector<ParameterSlot> output_map_slots(const LpvModel<double>& m);
 std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Monomial& f);
 /// Slots of the state equation for the joint re-fit (issue 9 item 2): every
 /// entry of every B term, and of every A term, except that when the constant
-/// A term is in observer canonical form (diagnose/observer_form.h: ones on
+/// A term is in observer canonical form (fit/observer_form.h: ones on
 /// the superdiagonal, zeros elsewhere outside column 1) every A term moves
 /// only in its first column: -a, the minimal parametrisation of the
 /// denominator, and for a term f(ρ)·A_f a feedback f(ρ)·A_f(:,1)·x_1.

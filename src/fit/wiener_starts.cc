@@ -1,4 +1,4 @@
-#include "diagnose/wiener_starts.h"
+#include "fit/wiener_starts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "diagnose/effect_candidates.h"
-#include "diagnose/output_error_fit.h"
+#include "fit/output_error_fit.h"
 
 namespace lpvid {
 

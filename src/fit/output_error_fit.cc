@@ -1,10 +1,11 @@
-#include "diagnose/output_error_fit.h"
+#include "fit/output_error_fit.h"
 
 #include <cmath>
 #include <algorithm>
 #include <limits>
 
-#include "diagnose/levenberg_marquardt.h"
+#include "core/rms.h"
+#include "fit/levenberg_marquardt.h"
 #include "model/simulate.h"
 #include "toeplitz/signal_toeplitz.h"
 
@@ -39,7 +40,7 @@ double prediction_rms(const LpvModel<double>& model, const Experiment<double>& e
                       Eigen::Index last) {
   const Vec<double> r = residual(model, exp, window_of(exp, first, last));
   if (r.size() == 0) return std::numeric_limits<double>::infinity();
-  return std::sqrt(r.squaredNorm() / static_cast<double>(r.size()));
+  return rms(r);
 }
 
 double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,

@@ -1,4 +1,4 @@
-#include "diagnose/diagnose_plots.h"
+#include "plot/diagnose_plots.h"
 
 #include <cctype>
 #include <cstdio>

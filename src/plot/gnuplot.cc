@@ -1,4 +1,4 @@
-#include "identify/gnuplot.h"
+#include "plot/gnuplot.h"
 
 #include <unistd.h>
 

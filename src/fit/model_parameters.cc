@@ -1,4 +1,4 @@
-#include "diagnose/model_parameters.h"
+#include "fit/model_parameters.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-// diagnose/block_model.h: the linear model with candidate effects around it.
+// explore/block_model.h: the linear model with candidate effects around it.
 // With neutral effect parameters it is the linear model; an input delay that
 // the data has is found by the output-error fit.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "diagnose/block_model.h"
+#include "explore/block_model.h"
 #include "support/gen_lti.h"
 
 namespace lpvid {

@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "data/experiment.h"
-#include "diagnose/levenberg_marquardt.h"
-#include "diagnose/output_error_fit.h"
-#include "diagnose/observer_form.h"
+#include "fit/levenberg_marquardt.h"
+#include "fit/output_error_fit.h"
+#include "fit/observer_form.h"
 #include "model/lpv_model.h"
 
 namespace lpvid {
@@ -56,7 +56,7 @@ struct LinearFit {
 LinearFit fit_linear(const Experiment<double>& est, const ColumnMap& columns, const LinearFitOptions& options);
 
 // The free-run RMS (prediction_rms) and the validation RMS with x0 fitted on
-// the first samples (validation_rms) are in diagnose/output_error_fit.h.
+// the first samples (validation_rms) are in fit/output_error_fit.h.
 
 struct OrderScore {
   int order = 0;

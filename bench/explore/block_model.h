@@ -27,7 +27,7 @@
 #include <string>
 
 #include "core/scalar.h"
-#include "diagnose/observer_form.h"
+#include "fit/observer_form.h"
 
 namespace lpvid {
 

@@ -1,0 +1,95 @@
+#include "diagnose/diagnose.h"
+
+#include "core/input_error.h"
+#include "core/parallel_for.h"
+#include "fit/output_error_fit.h"
+
+namespace lpvid {
+
+bool DiagnoseResult::verified() const {
+  bool all = !before.empty() && before.size() == after.size();
+  for (const auto* side : {&before, &after})
+    for (const WindowBounds& w : *side) all = all && w.bounds.verified;
+  return all;
+}
+
+std::string diagnose_certificate_path(const std::string& certificate_path, size_t window, size_t windows, bool after) {
+  const size_t dot = certificate_path.rfind(".json");
+  const std::string stem = dot == std::string::npos ? certificate_path : certificate_path.substr(0, dot);
+  const std::string tag = windows == 1 ? "" : ".w" + std::to_string(window + 1);
+  return stem + tag + (after ? ".after.json" : ".before.json");
+}
+
+namespace {
+
+std::string theorem31_certificate_path(const std::string& certificate_path, bool after) {
+  const std::string p = diagnose_certificate_path(certificate_path, 0, 1, after);
+  return p.substr(0, p.size() - 5) + ".thm31.json";
+}
+
+void check_options(const Experiment<double>& est_d, const Experiment<Rational>& est_q,
+                   const Experiment<double>& selection, const Experiment<double>* test, const DiagnoseOptions& o,
+                   const std::vector<RowWindow>& windows) {
+  if (windows.empty()) throw InputError("diagnose: the estimation record is empty");
+  if (est_d.n() != est_q.n()) throw InputError("diagnose: the exact and double estimation records differ in length");
+  const Eigen::Index need = o.ranking.init_samples + 5;
+  if (selection.n() < need) throw InputError("the validation data has too few samples");
+  if (test != nullptr && test->n() < need) throw InputError("the test data has too few samples");
+  if (o.threads > 1 && !o.make_solver) throw InputError("diagnose: threads > 1 needs a solver factory");
+  for (const auto& [b, e] : windows)
+    if (b < 0 || e <= b || e > est_q.n())
+      throw InputError("--window " + std::to_string(b) + ":" + std::to_string(e) + " is outside the " +
+                       std::to_string(est_q.n()) + " estimation samples");
+}
+
+}  // namespace
+
+DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_d,
+                        const Experiment<Rational>& est_q, const Experiment<double>& selection,
+                        const Experiment<double>* test, const DiagnoseOptions& options, SdpSolver& solver) {
+  const std::vector<RowWindow> windows =
+      options.windows.empty() ? default_bound_windows(est_q.n()) : options.windows;
+  check_options(est_d, est_q, selection, test, options, windows);
+
+  // 1. effects: fitted on the estimation data, chosen on the selection data
+  DiagnoseResult out;
+  out.rank = rank_effects(declared, est_d, selection, options.ranking);
+  // 2. the numbers the certificates state
+  out.before_model = round_fitted_model(out.rank.before);
+  out.after_model = round_fitted_model(out.rank.after);
+
+  // 3. Theorem 2.1 on every window, before and after: one independent job each
+  // (core/parallel_for.h); SDP solves serialise inside (solvers/sdp_solver.cc).
+  out.before.resize(windows.size());
+  out.after.resize(windows.size());
+  const unsigned threads = options.make_solver ? std::max(1u, options.threads) : 1u;
+  parallel_for(2 * windows.size(), threads, [&](size_t job) {
+    const size_t i = job / 2;
+    const bool after = job % 2 == 1;
+    CertifyOptions wo = options.certify;
+    wo.certificate_path = diagnose_certificate_path(options.certify.certificate_path, i, windows.size(), after);
+    auto own = threads > 1 ? options.make_solver() : nullptr;
+    (after ? out.after : out.before)[i] =
+        certify_window(after ? out.after_model : out.before_model, est_d, est_q, windows[i].first, windows[i].second,
+                       options.file_row_offset, wo, own ? *own : solver);
+  });
+  CertifyOptions co = options.certify;
+  co.certificate_path = theorem31_certificate_path(options.certify.certificate_path, false);
+  out.before_id = identify_on_window(out.before_model, est_d, est_q, windows[0].first, windows[0].second,
+                                     options.file_row_offset, co, solver);
+  co.certificate_path = theorem31_certificate_path(options.certify.certificate_path, true);
+  out.after_id = identify_on_window(out.after_model, est_d, est_q, windows[0].first, windows[0].second,
+                                    options.file_row_offset, co, solver);
+
+  // 4. the test role, scored once, after everything above was chosen
+  if (test != nullptr) {
+    TestScore t;
+    t.samples = test->n();
+    t.rms_before = validation_rms(out.before_model, *test, options.ranking.init_samples);
+    t.rms_after = validation_rms(out.after_model, *test, options.ranking.init_samples);
+    out.test = t;
+  }
+  return out;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,79 @@
+#pragma once
+/// The closed loop of SPEC §6 as one library call (issue 10 item 1):
+///
+///   1. rank effects: every candidate is fitted on the ESTIMATION data and
+///      scored on the SELECTION (validation) data (diagnose/effect_ranking.h);
+///   2. fix: the models before and after are rounded to 12 significant digits
+///      (diagnose/window_bounds.h), the numbers the certificates state;
+///   3. certify: Theorem 2.1 on each bound window of the estimation record,
+///      before and after, each certificate re-checked exactly
+///      (diagnose/window_bounds.h), then Theorem 3.1 on the first window
+///      (diagnose/window_identification.h);
+///   4. test: only now, and only if a test set is given, the two chosen
+///      models are scored on it (free run, x0 from its first samples). It is
+///      the last step and nothing above reads it: the benchmark's protocol.
+///
+/// `lpvid diagnose` parses its options into these types, calls `diagnose`
+/// and renders the result (src/cli/diagnose_output.h).
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "data/experiment.h"
+#include "diagnose/bound_windows.h"
+#include "diagnose/effect_ranking.h"
+#include "diagnose/window_bounds.h"
+#include "diagnose/window_identification.h"
+#include "identify/certify.h"
+#include "solvers/sdp_solver.h"
+
+namespace lpvid {
+
+struct DiagnoseOptions {
+  RankingOptions ranking;
+  /// Windows of the estimation record on which the bounds are certified;
+  /// empty: default_bound_windows (diagnose/bound_windows.h).
+  std::vector<RowWindow> windows;
+  /// Options of every certificate. `certificate_path` is the stem's file:
+  /// "<stem>.json" gives <stem>.before.json, <stem>.after.json (".w<i>"
+  /// before the side when there are several windows) and
+  /// <stem>.before.thm31.json, <stem>.after.thm31.json.
+  CertifyOptions certify;
+  long file_row_offset = 0;  ///< data-file row of estimation sample 0 (certificates name file rows)
+  /// Windows certified at once; > 1 needs `make_solver` (one backend per
+  /// job). Results do not depend on it.
+  unsigned threads = 1;
+  std::function<std::unique_ptr<SdpSolver>()> make_solver;
+};
+
+/// The test role's score: free-run RMS over all its samples, x0 fitted on
+/// the first `init_samples` (the same rule as the selection score).
+struct TestScore {
+  Eigen::Index samples = 0;
+  double rms_before = 0, rms_after = 0;
+};
+
+struct DiagnoseResult {
+  RankingResult rank;
+  LpvModel<double> before_model, after_model;  ///< as rounded for the certificates
+  std::vector<WindowBounds> before, after;     ///< one per bound window, same windows
+  WindowIdentification before_id, after_id;    ///< Theorem 3.1 on the first window
+  std::optional<TestScore> test;               ///< set iff a test set was given
+  /// Every window's bound, before and after, verified exactly.
+  bool verified() const;
+};
+
+/// The certificate file of one window and side (see DiagnoseOptions::certify).
+std::string diagnose_certificate_path(const std::string& certificate_path, size_t window, size_t windows, bool after);
+
+/// Runs steps 1–4. `est_q` is the exact copy of `est_d` (the same rows);
+/// `test` may be null. Throws InputError for windows outside the estimation
+/// record or too short a selection/test set.
+DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_d,
+                        const Experiment<Rational>& est_q, const Experiment<double>& selection,
+                        const Experiment<double>* test, const DiagnoseOptions& options, SdpSolver& solver);
+
+}  // namespace lpvid

@@ -1,0 +1,136 @@
+// diagnose() as a library call (issue 10 item 1), on data made by
+// construction (examples/effect_cases.h: the declared LPV system plus an
+// undeclared output offset of 0.5 and white noise of std 0.02):
+//  - it names the offset, and the bounds after are verified, their
+//    certificates hold for the independent exact checker, and d_max falls
+//    to the noise level while before it cannot (the offset is unexplained);
+//  - the test role is scored last and chooses nothing: a different test set
+//    (even a wrong one) leaves every choice and every exact bound unchanged,
+//    and the score equals the free-run RMS of the chosen model on it;
+//  - bad options are refused before any work.
+#include <filesystem>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/input_error.h"
+#include "data/experiment_builder.h"
+#include "diagnose/diagnose.h"
+#include "fit/output_error_fit.h"
+#include "examples/effect_cases.h"
+#include "solvers/sdp_solver.h"
+#include "support/gen_identify.h"
+#include "verify/certificate_check.h"
+
+namespace lpvid {
+namespace {
+
+using gen::ScratchDir;
+
+struct OffsetCase {
+  LpvModel<double> declared;
+  Experiment<double> est_d, selection, test;
+  Experiment<Rational> est_q;
+  std::string data;
+};
+
+OffsetCase offset_case(const ScratchDir& dir) {
+  const EffectCase c = make_effect_case("output_offset", 200, 5, 0.02);
+  OffsetCase o;
+  o.data = dir.file("est.csv");
+  gen::write_experiment_csv(o.data, c.declared, c.estimation);
+  o.declared = convert_model<double>(c.declared);
+  o.est_q = gen::read_experiment<Rational>(o.data, c.declared);
+  o.est_d = gen::read_experiment<double>(o.data, o.declared);
+  // the validation record of the case, cut in two: selection, then test
+  const Experiment<double> val = nearest_double(c.validation);
+  o.selection = select_rows(val, 0, 100);
+  o.test = select_rows(val, 100, val.n());
+  return o;
+}
+
+DiagnoseOptions options(const OffsetCase& c, const ScratchDir& dir, const std::string& name) {
+  DiagnoseOptions o;
+  o.ranking.max_effects = 1;
+  o.windows = {{0, 80}};
+  o.certify.data_path = c.data;
+  o.certify.certificate_path = dir.file(name + ".json");
+  o.certify.max_taps = 16;
+  o.certify.full_horizon_limit = 0;
+  return o;
+}
+
+TEST(Diagnose, CertificatePathsNameWindowAndSide) {
+  EXPECT_EQ(diagnose_certificate_path("d/c.json", 0, 1, false), "d/c.before.json");
+  EXPECT_EQ(diagnose_certificate_path("d/c.json", 0, 1, true), "d/c.after.json");
+  EXPECT_EQ(diagnose_certificate_path("d/c.json", 1, 3, true), "d/c.w2.after.json");
+  EXPECT_EQ(diagnose_certificate_path("d/c", 2, 3, false), "d/c.w3.before.json");
+}
+
+TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
+  ScratchDir dir("diagnose-lib");
+  const OffsetCase c = offset_case(dir);
+  auto solver = make_solver("csdp");
+
+  const DiagnoseResult r = diagnose(c.declared, c.est_d, c.est_q, c.selection, &c.test, options(c, dir, "a"), *solver);
+  ASSERT_EQ(r.rank.chosen.size(), 1u);
+  EXPECT_EQ(r.rank.chosen.front().kind, "output_offset");
+  ASSERT_EQ(r.before.size(), 1u);
+  ASSERT_EQ(r.after.size(), 1u);
+  ASSERT_TRUE(r.verified()) << r.before[0].bounds.reason << " / " << r.after[0].bounds.reason;
+  for (const auto* w : {&r.before[0], &r.after[0]}) {
+    EXPECT_EQ(w->begin, 0);
+    EXPECT_EQ(w->end, 80);
+    const CertificateVerdict v = check_certificate_file(w->certificate);
+    EXPECT_TRUE(v.holds) << w->certificate << ": " << v.reason;
+  }
+  EXPECT_EQ(r.after[0].certificate, dir.file("a.after.json"));
+  // after: only the noise (std 0.02) is left; before: the 0.5 offset is not explained
+  EXPECT_LT(r.after[0].bounds.dmax, 0.04);
+  EXPECT_GT(r.before[0].bounds.dmax, 0.2);
+
+  // the test role: the chosen models' free-run RMS, computed here again
+  ASSERT_TRUE(r.test.has_value());
+  EXPECT_EQ(r.test->samples, c.test.n());
+  EXPECT_DOUBLE_EQ(r.test->rms_after, validation_rms(r.after_model, c.test, RankingOptions{}.init_samples));
+  EXPECT_LT(r.test->rms_after, 0.04);
+  EXPECT_GT(r.test->rms_before, 0.2);
+
+  // a wrong test set (outputs scaled by 10) and no test set at all change no choice and no exact bound
+  Experiment<double> wrong = c.test;
+  wrong.y *= 10.0;
+  for (const Experiment<double>* t : std::vector<const Experiment<double>*>{&wrong, nullptr}) {
+    const DiagnoseResult s = diagnose(c.declared, c.est_d, c.est_q, c.selection, t, options(c, dir, "b"), *solver);
+    EXPECT_EQ(s.test.has_value(), t != nullptr);
+    ASSERT_EQ(s.rank.chosen.size(), 1u);
+    EXPECT_EQ(s.rank.chosen.front().label, r.rank.chosen.front().label);
+    ASSERT_TRUE(s.verified());
+    EXPECT_EQ(s.before[0].bounds.delta2, r.before[0].bounds.delta2);
+    EXPECT_EQ(s.before[0].bounds.dmax2, r.before[0].bounds.dmax2);
+    EXPECT_EQ(s.after[0].bounds.delta2, r.after[0].bounds.delta2);
+    EXPECT_EQ(s.after[0].bounds.dmax2, r.after[0].bounds.dmax2);
+    if (t != nullptr) {
+      EXPECT_GT(s.test->rms_after, 2 * r.test->rms_after);
+    }
+  }
+}
+
+TEST(Diagnose, BadOptionsAreRefusedBeforeAnyWork) {
+  ScratchDir dir("diagnose-lib-bad");
+  const OffsetCase c = offset_case(dir);
+  auto solver = make_solver("csdp");
+  DiagnoseOptions o = options(c, dir, "x");
+  o.windows = {{150, 250}};  // the estimation record has 200 rows
+  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, nullptr, o, *solver), InputError);
+  o = options(c, dir, "x");
+  o.threads = 2;  // no solver factory
+  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, nullptr, o, *solver), InputError);
+  o = options(c, dir, "x");
+  const Experiment<double> short_sel = select_rows(c.selection, 0, 6);
+  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, short_sel, nullptr, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, &short_sel, o, *solver), InputError);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.before.json")));
+}
+
+}  // namespace
+}  // namespace lpvid
