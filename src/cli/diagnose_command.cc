@@ -49,20 +49,6 @@ struct DiagnoseArgs {
   int threads = static_cast<int>(default_thread_count());
 };
 
-std::pair<long, long> parse_range(const std::string& text, const char* flag) {
-  const size_t colon = text.find(':');
-  long b = 0, e = 0;
-  try {
-    if (colon == std::string::npos) throw std::invalid_argument("no colon");
-    b = std::stol(text.substr(0, colon));
-    e = std::stol(text.substr(colon + 1));
-  } catch (const std::exception&) {
-    throw InputError(std::string(flag) + ": expected B:E (0-based rows, E exclusive), got '" + text + "'");
-  }
-  if (b < 0 || e <= b) throw InputError(std::string(flag) + ": need 0 <= B < E, got '" + text + "'");
-  return {b, e};
-}
-
 /// Column map of the validation data: est column name → validation name.
 ColumnMap validation_map(const LpvModel<double>& declared, const LpvModel<double>& m,
                          const std::vector<std::string>& renamed, const std::string& flag) {
@@ -121,7 +107,7 @@ int run_diagnose(DiagnoseArgs& a) {
       for (size_t i = 0; i < columns.size(); ++i) text += (i ? "," : "") + columns[i];
     }
     if (!rows.empty()) {
-      const auto [b, e] = parse_range(rows, ("--" + role + "-rows").c_str());
+      const auto [b, e] = parse_row_range(rows, "--" + role + "-rows");
       if (e > d.n()) throw InputError("--" + role + "-rows: the " + role + " data has " + std::to_string(d.n()) + " rows");
       d = select_rows(d, b, e);
       text += " rows " + rows;
@@ -154,7 +140,7 @@ int run_diagnose(DiagnoseArgs& a) {
   // verified bounds before and after, on the bound windows of the estimation data
   std::vector<std::pair<Eigen::Index, Eigen::Index>> windows;
   for (const std::string& w : a.windows) {
-    const auto [b, e] = parse_range(w, "--window");
+    const auto [b, e] = parse_row_range(w, "--window");
     windows.emplace_back(b, e);
   }
   if (a.window_length > 0) {

@@ -35,8 +35,7 @@ Experiment<double> load(const std::string& path, const std::vector<std::string>&
   const TextTable table = names.empty() ? read_table(path) : read_table(path, names);
   Experiment<double> e = make_experiment<double>(table, cols);
   if (rows.empty()) return e;
-  long b = 0, end = 0;
-  parse_rows(rows, &b, &end);
+  const auto [b, end] = parse_row_range(rows, "--rows");
   if (end > e.n()) throw InputError("--rows " + rows + ": " + path + " has only " + std::to_string(e.n()) + " rows");
   return select_rows(e, b, end);
 }

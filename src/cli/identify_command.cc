@@ -15,22 +15,6 @@
 namespace lpvid::cli {
 namespace {
 
-/// The correction basis of --basis (fixed A_i, B_i zero for the new terms).
-std::vector<Monomial> parse_basis(const std::vector<std::string>& texts, const std::vector<std::string>& scheduling) {
-  std::vector<Monomial> basis;
-  for (const std::string& t : texts) {
-    Monomial f;
-    try {
-      f = parse_monomial(t, scheduling);
-    } catch (const InputError& e) {
-      throw InputError(std::string("--basis: ") + e.what());
-    }
-    if (std::find(basis.begin(), basis.end(), f) != basis.end()) throw InputError("--basis: '" + t + "' appears twice");
-    basis.push_back(f);
-  }
-  return basis;
-}
-
 struct IdentifyArgs {
   CommonOptions common;
   bool iterate = false;

@@ -1,5 +1,8 @@
 #include "cli/inputs.h"
 
+#include <algorithm>
+#include <charconv>
+#include <tuple>
 #include <iostream>
 
 #include "core/input_error.h"
@@ -77,16 +80,19 @@ BoundObjective make_objective(const CommonOptions& o) {
 
 }  // namespace
 
-void parse_rows(const std::string& text, long* begin, long* end) {
+std::pair<long, long> parse_row_range(const std::string& text, const std::string& flag) {
   const size_t colon = text.find(':');
-  if (colon == std::string::npos) throw InputError("--rows: expected B:E, got '" + text + "'");
-  try {
-    *begin = std::stol(text.substr(0, colon));
-    *end = std::stol(text.substr(colon + 1));
-  } catch (const std::exception&) {
-    throw InputError("--rows: expected two integers B:E, got '" + text + "'");
-  }
-  if (*begin < 0 || *end <= *begin) throw InputError("--rows: need 0 <= B < E, got '" + text + "'");
+  long b = 0, e = 0;
+  const auto whole_integer = [&](size_t from, size_t to, long* out) {
+    const char* first = text.data() + from;
+    const char* last = text.data() + to;
+    const auto [ptr, ec] = std::from_chars(first, last, *out);
+    return from < to && ec == std::errc() && ptr == last;
+  };
+  if (colon == std::string::npos || !whole_integer(0, colon, &b) || !whole_integer(colon + 1, text.size(), &e))
+    throw InputError(flag + ": expected B:E (two integers, 0-based rows, E exclusive), got '" + text + "'");
+  if (b < 0 || e <= b) throw InputError(flag + ": need 0 <= B < E, got '" + text + "'");
+  return {b, e};
 }
 
 Inputs load_inputs(const CommonOptions& o) {
@@ -98,7 +104,7 @@ Inputs load_inputs(const CommonOptions& o) {
   in.exp_d = make_experiment<double>(table, in.model_d.columns);
   CommonOptions& mo = const_cast<CommonOptions&>(o);
   if (!o.rows_text.empty()) {
-    parse_rows(o.rows_text, &mo.row_begin, &mo.row_end);
+    std::tie(mo.row_begin, mo.row_end) = parse_row_range(o.rows_text, "--rows");
     if (o.row_end > in.exp_q.n())
       throw InputError("--rows " + o.rows_text + ": the data has only " + std::to_string(in.exp_q.n()) + " rows");
     in.exp_q = select_rows(in.exp_q, o.row_begin, o.row_end);
@@ -144,6 +150,28 @@ std::string certificate_path(const CommonOptions& o) {
     return p + ".cert.json";
   }
   return "lpvid.cert.json";
+}
+
+std::string stem_of(const std::string& path, const std::vector<std::string>& extensions) {
+  for (const std::string& e : extensions)
+    if (path.size() > e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0)
+      return path.substr(0, path.size() - e.size());
+  return path;
+}
+
+std::vector<Monomial> parse_basis(const std::vector<std::string>& texts, const std::vector<std::string>& scheduling) {
+  std::vector<Monomial> basis;
+  for (const std::string& t : texts) {
+    Monomial f;
+    try {
+      f = parse_monomial(t, scheduling);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--basis: ") + e.what());
+    }
+    if (std::find(basis.begin(), basis.end(), f) != basis.end()) throw InputError("--basis: '" + t + "' appears twice");
+    basis.push_back(f);
+  }
+  return basis;
 }
 
 }  // namespace lpvid::cli

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -58,14 +59,24 @@ struct Inputs {
 /// Reads and checks everything (throws InputError with file/line/field).
 Inputs load_inputs(const CommonOptions& o);
 
-/// Parses a --rows window "B:E" (0-based, E exclusive, 0 <= B < E); throws
-/// InputError naming the text otherwise.
-void parse_rows(const std::string& text, long* begin, long* end);
+/// Parses a row window "B:E" (0-based, E exclusive, 0 <= B < E) given to
+/// option `flag` (--rows, --window, --test-rows, ...); throws InputError
+/// naming the flag and the text otherwise.
+std::pair<long, long> parse_row_range(const std::string& text, const std::string& flag);
 
 /// Prints the options a command ran with (DESIGN §7).
 void print_options(const CommonOptions& o, const BoundObjective& objective, const std::string& command);
 
 /// The certificate path to use.
 std::string certificate_path(const CommonOptions& o);
+
+/// `path` without the first of `extensions` it ends with ("a.cert.json" →
+/// "a"); unchanged when it ends with none of them.
+std::string stem_of(const std::string& path, const std::vector<std::string>& extensions);
+
+/// The correction basis of --basis: each text parsed as a monomial of
+/// `scheduling`; an unknown name or a function given twice is an InputError
+/// naming --basis.
+std::vector<Monomial> parse_basis(const std::vector<std::string>& texts, const std::vector<std::string>& scheduling);
 
 }  // namespace lpvid::cli

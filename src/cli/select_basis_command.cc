@@ -28,16 +28,6 @@ struct SelectArgs {
   bool no_prune = false;
 };
 
-/// "a.cert.json" → "a", "a.json" → "a", else unchanged.
-std::string stem_of(const std::string& path) {
-  for (const char* ext : {".cert.json", ".json"}) {
-    const std::string e(ext);
-    if (path.size() > e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0)
-      return path.substr(0, path.size() - e.size());
-  }
-  return path;
-}
-
 class Table {
  public:
   explicit Table(size_t basis_width) : w_(basis_width) {}
@@ -98,7 +88,7 @@ int run_select(SelectArgs& a) {
   o.solver.verbose = c.verbose;
   o.certify = certify_options(c, in.objective);  // objective, bounds and certificate path: set per step
   const std::string final_cert = certificate_path(c);
-  o.certificate_stem = stem_of(final_cert);
+  o.certificate_stem = stem_of(final_cert, {".cert.json", ".json"});
   const Table table(std::max<size_t>(16, std::min<size_t>(60, basis_text(order, in.model_d.scheduling).size())));
   table.header();
   o.on_step = [&](const BasisStep& s) { table.row(s); };

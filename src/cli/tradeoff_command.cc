@@ -36,29 +36,6 @@ struct TradeoffArgs {
   bool no_plot = false;
 };
 
-std::string stem_of(const std::string& path, const std::vector<std::string>& exts) {
-  for (const std::string& e : exts)
-    if (path.size() > e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0)
-      return path.substr(0, path.size() - e.size());
-  return path;
-}
-
-std::vector<Monomial> parse_basis(const std::vector<std::string>& texts, const std::vector<std::string>& names) {
-  std::vector<Monomial> out;
-  for (const std::string& t : texts) {
-    Monomial f;
-    try {
-      f = parse_monomial(t, names);
-    } catch (const InputError& e) {
-      throw InputError(std::string("--basis: ") + e.what());
-    }
-    for (const Monomial& g : out)
-      if (g == f) throw InputError("--basis: '" + t + "' appears twice");
-    out.push_back(f);
-  }
-  return out;
-}
-
 int run_tradeoff(TradeoffArgs& a) {
   CommonOptions& c = a.common;
   Inputs in = load_inputs(c);

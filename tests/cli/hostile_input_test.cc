@@ -112,6 +112,15 @@ TEST_F(HostileInput, RowsAboveTheSampleLimitAreRejectedAndTheLimitCanBeRaised) {
       << output();
 }
 
+TEST_F(HostileInput, RowWindowsMustBeTwoWholeIntegers) {
+  for (const std::string rows : {"3:7x", "3", "a:9", "-1:5", "9:9", "1:", " 1:5"}) {
+    EXPECT_EQ(run("invalidate", "--rows '" + rows + "' --data " + kData + " --model " + kModel), 2) << rows;
+    EXPECT_TRUE(has("--rows") && has("'" + rows + "'")) << output();
+  }
+  EXPECT_EQ(run("invalidate", "--rows 0:41 --data " + kData + " --model " + kModel), 2);
+  EXPECT_TRUE(has("only 40 rows")) << output();
+}
+
 TEST_F(HostileInput, FilesAboveTheSizeLimitAreRejected) {
   EXPECT_EQ(run("invalidate", "--max-file-mb 0.001 --data " + kData + " --model " + kModel), 2);
   EXPECT_TRUE(has("file too large") && has("--max-file-mb")) << output();
