@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "examples/random_stream.h"

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "examples/paper_example1.h"

@@ -14,6 +14,7 @@
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "fit/linear_fit.h"
+#include "fit/output_error_fit.h"
 #include "model/model_file.h"
 
 namespace lpvid::cli {
@@ -25,7 +26,7 @@ struct FitLinearArgs {
   std::string val_data, val_rows;
   std::vector<std::string> val_names, val_u, val_y;
   int max_order = 5;       ///< --max-order for --order auto
-  int init_samples = 5;    ///< --init-samples: x0 of validation data from its first samples (benchmark rule)
+  int init_samples = static_cast<int>(kValidationInitSamples);  ///< --init-samples: x0 of validation data from its first samples (benchmark rule)
   bool offset = false;     ///< --offset: fit a constant output offset
 };
 

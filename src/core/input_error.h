@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace lpvid {
 
@@ -21,6 +22,10 @@ std::string input_location(const std::string& file, long line, const std::string
 inline std::string shape_text(long long rows, long long cols) {
   return std::to_string(rows) + "x" + std::to_string(cols);
 }
+
+/// Up to `max_chars` of the text an input holds, safe to print in a message:
+/// control bytes as \xNN, "..." when cut.
+std::string printable_excerpt(std::string_view text, size_t max_chars);
 
 [[noreturn]] void throw_input_error(const std::string& file, long line, const std::string& field,
                                     const std::string& reason);

@@ -56,22 +56,7 @@ bool is_comment_line(std::string_view line) {
   return !t.empty() && (t.front() == '#' || t.front() == '%');
 }
 
-std::string show(std::string_view s) {
-  constexpr size_t kMax = 40;
-  std::string out;
-  for (char c : s.substr(0, kMax)) {
-    unsigned char u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", u);
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  if (s.size() > kMax) out += "...";
-  return out;
-}
+std::string show(std::string_view s) { return printable_excerpt(s, 40); }
 
 /// Splits one CSV line into trimmed, unquoted cells.
 std::vector<std::string> split_csv_line(const Line& line, const std::string& file) {

@@ -34,7 +34,7 @@ struct RankingOptions {
   CandidateOptions candidates;
   int max_effects = 3;
   double min_gain = 0.05;           ///< relative validation-RMS reduction an effect must achieve
-  Eigen::Index init_samples = 5;    ///< validation samples used to fit x0
+  Eigen::Index init_samples = kValidationInitSamples;  ///< validation samples used to fit x0
   FitOptions fit;
   /// Re-fit A and B together with each effect and with the no-effect
   /// reference (Wiener/Hammerstein: issue 9 item 2); false: only the output

@@ -43,7 +43,7 @@ struct WindowBounds {
 void judge_informative(WindowBounds& w, const Mat<double>& y);
 
 /// The fitted model's slot values rounded to `digits` significant digits.
-LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits = 12);
+LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits = CertifyOptions{}.digits);
 
 /// Exact (decimal) copy of a double model, x0 replaced by `x0`.
 LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0);

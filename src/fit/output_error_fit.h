@@ -41,6 +41,10 @@ struct FitResult {
 double prediction_rms(const LpvModel<double>& model, const Experiment<double>& exp, Eigen::Index first = 0,
                       Eigen::Index last = -1);
 
+/// How many leading validation samples an x0 may be fitted on (the cascaded
+/// tanks benchmark's rule); the default of every option that takes it.
+inline constexpr Eigen::Index kValidationInitSamples = 5;
+
 /// Free-run RMS on `val` from an x0 fitted on its first `init_samples`
 /// samples only (the cascaded tanks benchmark's rule), RMS over all samples.
 /// Also returns the simulated output in `yhat` if non-null.

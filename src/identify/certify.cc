@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/decimal_rounding.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
@@ -23,12 +24,6 @@
 
 namespace lpvid {
 namespace {
-
-Rational pow10(int e) {
-  Rational r(1);
-  for (int i = 0; i < std::abs(e); ++i) r *= 10;
-  return e >= 0 ? r : Rational(1) / r;
-}
 
 /// Largest singular value² of the block Toeplitz T_Δ (L blocks, K taps).
 double toeplitz_norm2(const Mat<double>& taps, Eigen::Index horizon, Eigen::Index ny, Eigen::Index nz) {
@@ -157,6 +152,28 @@ void certify_taps(const LpvModel<Rational>& model, const Simulation<Rational>& s
   finish_certificate(c, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver_name, out);
 }
 
+/// The exact signals every certification starts from: the data with the
+/// state-scheduling columns ("@x<i>"), the model's exact simulation, the
+/// residual r = y − ŷ (eq. 5) and the horizon L after the leading z = 0 rows.
+struct ExactSignals {
+  Experiment<Rational> exp;
+  Simulation<Rational> sim;
+  Mat<Rational> r;
+  Eigen::Index n = 0, horizon = 0;
+};
+
+ExactSignals exact_signals(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
+                           const std::string& certificate_path) {
+  if (certificate_path.empty()) throw InputError("certify: no certificate path given");
+  ExactSignals s;
+  s.exp = with_state_scheduling(model, exp_in);
+  s.sim = simulate(model, s.exp);
+  s.r = s.exp.y - s.sim.output;
+  s.n = s.exp.n();
+  s.horizon = s.n - leading_zero_samples(s.sim.z);
+  return s;
+}
+
 }  // namespace
 
 std::string set_data_reference(Certificate& c, const CertifyOptions& o, const std::string& certificate_path) {
@@ -170,57 +187,6 @@ std::string set_data_reference(Certificate& c, const CertifyOptions& o, const st
   if (c.data_file.empty()) c.data_file = data_abs.string();
   c.data_sha256 = sha256_hex(read_text_file(o.data_path));
   return cert_dir.string();
-}
-
-Rational round_to_digits(double x, int digits) {
-  if (!std::isfinite(x)) throw std::invalid_argument("round_to_digits: not finite");
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*e", digits - 1, x);
-  return rational_from_text(buf);
-}
-
-namespace {
-
-/// q > 0 rounded to `digits` significant decimal digits, towards +∞ (up) or 0.
-Rational round_directed(const Rational& q, int digits, bool up) {
-  // e = floor(log10 q) estimated from the double, then corrected exactly.
-  int e = static_cast<int>(std::floor(std::log10(nearest_double(q))));
-  while (pow10(e) > q) --e;
-  while (pow10(e + 1) <= q) ++e;
-  const Rational unit = pow10(e - digits + 1);
-  const Rational s = q / unit;  // in [10^(digits−1), 10^digits)
-  mpz_t c;
-  mpz_init(c);
-  if (up)
-    mpz_cdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
-  else
-    mpz_fdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, c);
-  Rational out = Rational(r) * unit;
-  mpq_clear(r);
-  mpz_clear(c);
-  return out;
-}
-
-}  // namespace
-
-Rational round_up_to_digits(const Rational& q, int digits) {
-  if (q == 0) return Rational(0);
-  if (q < 0) throw std::invalid_argument("round_up_to_digits: negative value");
-  return round_directed(q, digits, true);
-}
-
-Rational round_down_to_digits(const Rational& q, int digits) {
-  if (q == 0) return Rational(0);
-  return q > 0 ? round_directed(q, digits, false) : -round_directed(-q, digits, true);
-}
-
-double sqrt_up(const Rational& q) {
-  double s = std::sqrt(nearest_double(q));
-  while (Rational(s) * Rational(s) < q) s = std::nextafter(s, INFINITY);
-  return s;
 }
 
 namespace {
@@ -342,15 +308,14 @@ double relative_gap(const CertifiedBounds& b) {
 
 CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                     const CertifyOptions& options, SdpSolver& solver) {
-  const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   const auto t0 = std::chrono::steady_clock::now();
   CertifiedBounds out;
-  if (options.certificate_path.empty()) throw InputError("certify: no certificate path given");
   // 1. Exact signals.
-  const Simulation<Rational> sim = simulate(model, exp);
-  const Mat<Rational> r = exp.y - sim.output;
-  const Eigen::Index n = exp.n();
-  const Eigen::Index L = n - leading_zero_samples(sim.z);
+  const ExactSignals es = exact_signals(model, exp_in, options.certificate_path);
+  const Experiment<Rational>& exp = es.exp;
+  const Simulation<Rational>& sim = es.sim;
+  const Mat<Rational>& r = es.r;
+  const Eigen::Index n = es.n, L = es.horizon;
   if (L == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(sim.z));  // throws the usual InputError
   // A weighted objective stated on signals scaled to unit size (identify/
   // bound_scaling.h): the same program in original units with λ_orig.
@@ -463,13 +428,11 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
 
 CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                   const Mat<double>& taps, const CertifyOptions& o, const std::string& solver_name) {
-  const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   CertifiedBounds out;
-  if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
-  const Simulation<Rational> sim = simulate(model, exp);
-  const Mat<Rational> r = exp.y - sim.output;
-  const Eigen::Index n = exp.n();
-  const Eigen::Index horizon = n - leading_zero_samples(sim.z);
+  const ExactSignals es = exact_signals(model, exp_in, o.certificate_path);
+  const Simulation<Rational>& sim = es.sim;
+  const Mat<Rational>& r = es.r;
+  const Eigen::Index horizon = es.horizon;
   if (horizon == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(sim.z));  // throws the usual InputError
   if (taps.cols() != model.ny * model.nz())
     throw std::invalid_argument("certify_with_taps: taps have " + std::to_string(taps.cols()) + " columns, expected ny*nz");
@@ -488,12 +451,12 @@ namespace lpvid {
 
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                           const CertifyOptions& o, SdpSolver& solver) {
-  const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   CertifiedBounds out;
-  if (o.certificate_path.empty()) throw InputError("certify: no certificate path given");
-  const Simulation<Rational> sim = simulate(model, exp);
-  const Mat<Rational> r = exp.y - sim.output;
-  const Eigen::Index n = exp.n(), ny = model.ny;
+  const ExactSignals es = exact_signals(model, exp_in, o.certificate_path);
+  const Experiment<Rational>& exp = es.exp;
+  const Simulation<Rational>& sim = es.sim;
+  const Mat<Rational>& r = es.r;
+  const Eigen::Index n = es.n, ny = model.ny;
   const Mat<Rational> Tz = T_z_paper(model, exp);
   AffineSignals sig;
   sig.zb = nearest_double(sim.z);

@@ -169,13 +169,5 @@ struct Certificate;
 /// certificate's folder.
 std::string set_data_reference(Certificate& c, const CertifyOptions& o, const std::string& certificate_path);
 
-/// x rounded to `digits` significant decimal digits, as an exact rational.
-Rational round_to_digits(double x, int digits);
-/// The smallest decimal with `digits` significant digits that is ≥ q.
-Rational round_up_to_digits(const Rational& q, int digits);
-/// The largest decimal with `digits` significant digits that is ≤ q.
-Rational round_down_to_digits(const Rational& q, int digits);
-/// √q rounded up to a double (for display only).
-double sqrt_up(const Rational& q);
 
 }  // namespace lpvid

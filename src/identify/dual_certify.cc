@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/fir.h"
@@ -18,12 +19,6 @@ Rational on_grid(double x, double unit_d, const Rational& unit) {
   const double k = std::nearbyint(x / unit_d);
   if (!std::isfinite(k) || std::fabs(k) > 9e15) throw std::invalid_argument("dual certificate: entry off the grid");
   return Rational(static_cast<long>(k)) * unit;
-}
-
-Rational pow10_rational(int e) {
-  Rational r(1);
-  for (int i = 0; i < std::abs(e); ++i) r *= 10;
-  return e >= 0 ? r : Rational(1) / r;
 }
 
 DualClaim claim_of(const BoundObjective& obj) {
@@ -115,7 +110,7 @@ DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Ratio
   const int digits = 14;
   const int e = -digits;  // entries are ≤ 1 in magnitude
   const double unit_d = std::pow(10.0, e);
-  const Rational unit = pow10_rational(e);
+  const Rational unit = power_of_ten(e);
   Mat<Rational> g(n, ny);
   Mat<double> g_d(n, ny);
   for (Eigen::Index k = 0; k < n; ++k)

@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include "core/decimal_rounding.h"
+
 namespace lpvid {
 
 FixedParameters fix_parameters(const LpvModel<Rational>& model, const ParameterLayout& layout, const Vec<double>& p,

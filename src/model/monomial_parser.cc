@@ -30,22 +30,7 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-std::string quoted(std::string_view s) {
-  constexpr size_t kMax = 60;
-  std::string out = "'";
-  for (char c : s.substr(0, kMax)) {
-    unsigned char u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", u);
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  if (s.size() > kMax) out += "...";
-  return out + "'";
-}
+std::string quoted(std::string_view s) { return "'" + printable_excerpt(s, 60) + "'"; }
 
 [[noreturn]] void fail(std::string_view text, const std::string& reason) {
   throw InputError("basis function " + quoted(text) + ": " + reason);

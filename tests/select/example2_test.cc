@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "data/csv_reader.h"
 #include "data/csv_writer.h"

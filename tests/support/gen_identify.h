@@ -32,6 +32,7 @@
 
 #include <unistd.h>
 
+#include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "core/scalar.h"
 #include "support/scratch_dir.h"

@@ -1,0 +1,88 @@
+#include "core/decimal_rounding.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "core/number_text.h"
+
+namespace lpvid {
+
+Rational power_of_ten(int e) {
+  mpz_t p;
+  mpz_init(p);
+  mpz_ui_pow_ui(p, 10, static_cast<unsigned long>(std::abs(e)));
+  mpq_t q;
+  mpq_init(q);
+  if (e >= 0) {
+    mpq_set_z(q, p);
+  } else {
+    mpq_set_den(q, p);  // 1/10^|e|: the numerator of a fresh mpq is 0, set it to 1
+    mpz_set_ui(mpq_numref(q), 1);
+  }
+  Rational out(q);
+  mpq_clear(q);
+  mpz_clear(p);
+  return out;
+}
+
+Rational round_to_digits(double x, int digits) {
+  if (!std::isfinite(x)) throw std::invalid_argument("round_to_digits: not finite");
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*e", digits - 1, x);
+  return rational_from_text(buf);
+}
+
+namespace {
+
+/// q > 0 rounded to `digits` significant decimal digits, towards +∞ (up) or 0.
+Rational round_directed(const Rational& q, int digits, bool up) {
+  // e = floor(log10 q) estimated from the double (from the bit lengths when
+  // q is outside the double range), then corrected exactly.
+  const double d = nearest_double(q);
+  const double log10_q =
+      d > 0 && std::isfinite(d)
+          ? std::log10(d)
+          : (static_cast<double>(mpz_sizeinbase(mpq_numref(q.mpq()), 2)) -
+             static_cast<double>(mpz_sizeinbase(mpq_denref(q.mpq()), 2))) * 0.30102999566398120;
+  int e = static_cast<int>(std::floor(log10_q));
+  while (power_of_ten(e) > q) --e;
+  while (power_of_ten(e + 1) <= q) ++e;
+  const Rational unit = power_of_ten(e - digits + 1);
+  const Rational s = q / unit;  // in [10^(digits−1), 10^digits)
+  mpz_t c;
+  mpz_init(c);
+  if (up)
+    mpz_cdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
+  else
+    mpz_fdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
+  mpq_t r;
+  mpq_init(r);
+  mpq_set_z(r, c);
+  Rational out = Rational(r) * unit;
+  mpq_clear(r);
+  mpz_clear(c);
+  return out;
+}
+
+}  // namespace
+
+Rational round_up_to_digits(const Rational& q, int digits) {
+  if (q == 0) return Rational(0);
+  if (q < 0) throw std::invalid_argument("round_up_to_digits: negative value");
+  return round_directed(q, digits, true);
+}
+
+Rational round_down_to_digits(const Rational& q, int digits) {
+  if (q == 0) return Rational(0);
+  return q > 0 ? round_directed(q, digits, false) : -round_directed(-q, digits, true);
+}
+
+double sqrt_up(const Rational& q) {
+  double s = std::sqrt(nearest_double(q));
+  while (Rational(s) * Rational(s) < q) s = std::nextafter(s, INFINITY);
+  return s;
+}
+
+}  // namespace lpvid
