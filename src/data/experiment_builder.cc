@@ -3,7 +3,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "data/csv_reader.h"
-#include "model/state_scheduling.h"
+#include "data/column_map.h"
 
 namespace lpvid {
 namespace {
@@ -60,7 +60,7 @@ Experiment<T> make_experiment(const TextTable& table, const ColumnMap& columns) 
   // Report unknown columns before any number, whatever the order.
   column_indices(table, columns.u);
   column_indices(table, columns.y);
-  // "@x<i>" scheduling columns are the model's own state (model/state_scheduling.h):
+  // "@x<i>" scheduling columns are the model's own state (data/column_map.h, model/state_scheduling.h):
   // zero here, computed by simulate() / with_state_scheduling().
   std::vector<std::string> data_rho;
   for (const std::string& c : columns.rho) {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "data/experiment.h"
-#include "model/lpv_model.h"
+#include "data/column_map.h"
 
 namespace lpvid {
 

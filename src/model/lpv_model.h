@@ -14,16 +14,12 @@
 #include <vector>
 
 #include "core/scalar.h"
+#include "data/column_map.h"
 #include "model/monomial.h"
 #include "model/param_matrix.h"
 #include "model/static_blocks.h"
 
 namespace lpvid {
-
-/// Which columns of the data file hold u, y and ρ (SPEC §8 "columns").
-struct ColumnMap {
-  std::vector<std::string> u, y, rho;
-};
 
 enum class UncertaintyStructure {
   kMultiplicative,  ///< z = W·ŷ: C1 = W·C2, D1 = W·D2 (default, W = 1)

@@ -24,15 +24,11 @@
 #include <vector>
 
 #include "core/scalar.h"
+#include "data/column_map.h"
 
 namespace lpvid {
 
 constexpr int kSchedulingGridBits = 32;
-
-/// 0-based state index named by a column "@x<i>", or -1 if the column does
-/// not start with '@' (a data column). Throws std::invalid_argument for any
-/// other "@..." name.
-int state_scheduling_index(const std::string& column);
 
 /// (scheduling index j, state index i) for every "@x<i>" column of `rho`
 /// (indices 0-based). Throws std::invalid_argument if i >= nx.
