@@ -11,7 +11,7 @@
 
 #include "core/input_error.h"
 #include "diagnose/residual_analysis.h"
-#include "diagnose/test_signals.h"
+#include "support/test_signals.h"
 
 namespace lpvid {
 namespace {

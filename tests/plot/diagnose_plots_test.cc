@@ -10,7 +10,7 @@
 
 #include "core/input_error.h"
 #include "plot/diagnose_plots.h"
-#include "diagnose/test_signals.h"
+#include "support/test_signals.h"
 #include "support/gen_identify.h"
 
 namespace lpvid {

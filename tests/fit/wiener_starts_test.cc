@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "diagnose/test_signals.h"
+#include "support/test_signals.h"
 #include "fit/wiener_starts.h"
 
 namespace lpvid {
