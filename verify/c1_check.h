@@ -7,7 +7,9 @@
 ///      M = [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0     (size n + n·ny),
 ///    decided on the n × n Schur complement δ²·T_zᵀT_z − T_wᵀT_w (proof there);
 ///  - form "delta" (verify/c1_delta_form.cc): [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0, i.e.
-///    ‖T_Δ‖ ≤ δ, which implies (C1) for w = Δ ∗ z (certificate_check.h).
+///    ‖T_Δ‖ ≤ δ, which implies (C1) for w = Δ ∗ z (certificate_check.h),
+///    decided on the L·min(ny, nz) Schur complement δ²I − T_ΔT_Δᵀ (or
+///    δ²I − T_ΔᵀT_Δ) after balancing.
 
 #include <string>
 

@@ -13,6 +13,16 @@
 ///     filter reads for any δ². s is δ rounded to a double while δ is within
 ///     [1e−150, 1e150], else a power of two (sqrt_scale: δ² = 1e4000 or
 ///     1e−5000 would overflow or underflow a double).
+///  3. M ⪰ 0 is decided on a Schur complement of the balanced matrix, of
+///     size L·min(ny, nz) instead of L·(ny + nz) (memory ÷ 4 or more, the
+///     elimination ÷ 8 or more), with T = T_Δ/s and d² = δ²/s²:
+///       ny ≤ nz: d²I − T Tᵀ ⪰ 0, the complement of the I block (I ≻ 0, so
+///                exactly equivalent for every d² ≥ 0);
+///       ny > nz: d²I − TᵀT ⪰ 0, the complement of the d²I block: for
+///                d² > 0 equivalent (multiply I − TᵀT/d² ⪰ 0 by d²); for
+///                d² = 0, 1. has left T = 0, and both sides hold.
+///     T is block banded (taps 0 … K−1), so T Tᵀ and TᵀT are block banded
+///     with K − 1 blocks on each side: formed in O(L·K²) block products.
 
 #include <cmath>
 #include <string>
@@ -36,6 +46,39 @@ std::pair<Rational, std::string> balancing_scale(const Rational& delta2) {
   }
   const Rational s = sqrt_scale(delta2);
   return {s, "2^" + std::to_string(*binary_magnitude(s))};  // exactly e for s = 2^e
+}
+
+/// The Schur complement of 3. (file comment): d2·I − T Tᵀ (ny ≤ nz) or
+/// d2·I − TᵀT, T the block lower-triangular Toeplitz matrix of `taps` (row t
+/// = Δ_t row-major, ny × nz) on L samples, formed on its band only.
+Mat<Rational> schur_complement(const Mat<Rational>& taps, Eigen::Index L, Eigen::Index ny, Eigen::Index nz,
+                               const Rational& d2) {
+  const Eigen::Index K = taps.rows();
+  const auto tap = [&](Eigen::Index t, Eigen::Index i, Eigen::Index j) -> const Rational& { return taps(t, i * nz + j); };
+  const bool rows = ny <= nz;  // T Tᵀ (blocks ny × ny) or TᵀT (blocks nz × nz)
+  const Eigen::Index m = rows ? ny : nz;
+  Mat<Rational> S = Mat<Rational>::Zero(L * m, L * m);
+  for (Eigen::Index k = 0; k < L * m; ++k) S(k, k) = d2;
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index c = a; c < std::min(L, a + K); ++c) {
+      // T Tᵀ block (a, c) = Σ_b Δ_{a−b} Δ_{c−b}ᵀ over b ≤ a with c − b < K;
+      // TᵀT block (a, c) = Σ_r Δ_{r−a}ᵀ Δ_{r−c} over r ≥ c with r − a < K.
+      for (Eigen::Index p = 0; p < m; ++p)
+        for (Eigen::Index q = 0; q < m; ++q) {
+          Rational sum(0);
+          if (rows) {
+            for (Eigen::Index b = std::max<Eigen::Index>(0, c - K + 1); b <= a; ++b)
+              for (Eigen::Index j = 0; j < nz; ++j) sum += tap(a - b, p, j) * tap(c - b, q, j);
+          } else {
+            for (Eigen::Index r = c; r < std::min(L, a + K); ++r)
+              for (Eigen::Index i = 0; i < ny; ++i) sum += tap(r - a, i, p) * tap(r - c, i, q);
+          }
+          if (sum == 0) continue;
+          S(a * m + p, c * m + q) -= sum;
+          if (c != a) S(c * m + q, a * m + p) -= sum;
+        }
+    }
+  return S;
 }
 
 }  // namespace
@@ -62,22 +105,14 @@ C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, E
                        std::to_string(arg_t * ny + i) + " and " + std::to_string(L * ny + j) +
                        ") has determinant delta2 - h^2 < 0 (exact comparison of rationals)"};
   }
-  // 2. Balanced by diag(I/s, I).
+  // 2. Balanced by diag(I/s, I), then the Schur complement (3.).
   const auto [s, s_text] = delta2 > 0 ? balancing_scale(delta2) : std::pair<Rational, std::string>(Rational(1), "1");
   const Rational inv_s = Rational(1) / s;
-  Mat<Rational> M = Mat<Rational>::Zero(L * (ny + nz), L * (ny + nz));
   const Rational d2 = delta2 * inv_s * inv_s;
-  for (Eigen::Index i = 0; i < L * ny; ++i) M(i, i) = d2;
-  for (Eigen::Index i = L * ny; i < L * (ny + nz); ++i) M(i, i) = Rational(1);
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index b = std::max<Eigen::Index>(0, a - K + 1); b <= a; ++b)
-      for (Eigen::Index i = 0; i < ny; ++i)
-        for (Eigen::Index j = 0; j < nz; ++j) {
-          const Rational h = taps(a - b, i * nz + j) * inv_s;
-          M(a * ny + i, L * ny + b * nz + j) = h;
-          M(L * ny + b * nz + j, a * ny + i) = h;
-        }
-  const std::string which = full + " (balanced by diag(I/s, I), s = " + s_text + ")";
+  const Mat<Rational> scaled = taps.topRows(std::min(K, L)) * inv_s;  // Δ_t / s
+  const Mat<Rational> M = schur_complement(scaled, L, ny, nz, d2);
+  const std::string which = std::string(ny <= nz ? "d2*I - T*T'" : "d2*I - T'*T") + ", T = T_Delta/s, d2 = delta2/s^2" +
+                            ", s = " + s_text + " (Schur complement of " + full + ")";
   const PsdResult psd = decide_psd(M);
   if (psd.verdict == PsdVerdict::kNotPsd) return {false, "(C1) fails: " + which + " is not PSD (" + psd.reason + ")"};
   return {true, "(C1) holds: " + which + " (size " + std::to_string(M.rows()) + ") is " + psd_note(psd)};

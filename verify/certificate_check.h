@@ -14,7 +14,8 @@
 ///     its Schur complement δ²T_zᵀT_z − T_wᵀT_w (n × n; w = 0 and δ² = 0
 ///     apart; verify/c1_check.h);
 ///     form "delta": [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0 decided exactly, i.e.
-///     ‖T_Δ‖ ≤ δ; then T_w = T_Δ T_z and T_wᵀT_w = T_zᵀT_ΔᵀT_ΔT_z ⪯ δ²T_zᵀT_z,
+///     ‖T_Δ‖ ≤ δ, on its Schur complement δ²I − T_ΔT_Δᵀ or δ²I − T_ΔᵀT_Δ
+///     (size L·min(ny, nz), verify/c1_delta_form.cc); then T_w = T_Δ T_z and T_wᵀT_w = T_zᵀT_ΔᵀT_ΔT_z ⪯ δ²T_zᵀT_z,
 ///     which is (C1). (The taps before the horizon multiply zero samples.)
 /// Any failure is "invalid" with the constraint, the index and the numbers.
 /// Dual claims ("invalidated", "lower_bound") share steps 1–3 and continue in

@@ -191,8 +191,8 @@ TEST(VerifyC1WForm, DeltaSquaredFarOutsideTheDoubleRange) {
 // Form "delta": random taps (K may exceed L: taps beyond the horizon do not
 // enter T_Δ), δ² random, against the unbalanced full matrix.
 RC_GTEST_PROP(VerifyC1DeltaForm, AgreesWithTheUnbalancedFullMatrix, ()) {
-  const int K = *rc::gen::inRange(1, 4), L = *rc::gen::inRange(1, 4);
-  const int ny = *rc::gen::inRange(1, 3), nz = *rc::gen::inRange(1, 3);
+  const int K = *rc::gen::inRange(1, 6), L = *rc::gen::inRange(1, 7);
+  const int ny = *rc::gen::inRange(1, 4), nz = *rc::gen::inRange(1, 4);
   const Rational scale = pow10(*decade());
   Mat<Rational> taps = *gen::rational_matrix(K, ny * nz, gen::small_rational()) * scale;
   if (*rc::gen::inRange(0, 5) == 0) taps.setZero();
@@ -217,6 +217,27 @@ RC_GTEST_PROP(VerifyC1DeltaForm, SingleTapBoundary, ()) {
     RC_LOG() << got.text << "\n";
     RC_ASSERT(got.holds == expected);
   }
+}
+
+// One rank-one tap Δ_0 = u vᵀ (ny × nz): T_Δ = blockdiag(Δ_0), ‖T_Δ‖² =
+// |u|²|v|² exactly, so (C1) holds at δ² = |u|²|v|² and fails just below, in
+// both Schur orientations (ny ≤ nz and ny > nz).
+RC_GTEST_PROP(VerifyC1DeltaForm, RankOneTapBoundary, ()) {
+  const int L = *rc::gen::inRange(1, 5);
+  const int ny = *rc::gen::inRange(1, 4), nz = *rc::gen::inRange(1, 4);
+  const Mat<Rational> u = *gen::rational_matrix(ny, 1, gen::small_rational());
+  const Mat<Rational> v = *gen::rational_matrix(nz, 1, gen::small_rational());
+  Mat<Rational> taps(1, ny * nz);
+  for (int i = 0; i < ny; ++i)
+    for (int j = 0; j < nz; ++j) taps(0, i * nz + j) = u(i, 0) * v(j, 0);
+  const Rational norm2 = (u.transpose() * u)(0, 0) * (v.transpose() * v)(0, 0);
+  RC_PRE(norm2 > 0);
+  const C1Outcome at = check_c1_delta_form(taps, L, ny, nz, norm2);
+  RC_LOG() << at.text << "\n";
+  RC_ASSERT(at.holds);
+  const C1Outcome below = check_c1_delta_form(taps, L, ny, nz, norm2 * (Rational(1) - pow10(-30)));
+  RC_LOG() << below.text << "\n";
+  RC_ASSERT(!below.holds);
 }
 
 // The hostile case of issue 10: δ² = 10^−5000 on a horizon of 40 samples.
