@@ -31,6 +31,7 @@
 #include "core/number_text.h"
 #include "verify/c1_check.h"
 #include "verify/exact_psd.h"
+#include "verify/gmp_raii.h"
 #include "verify/power_of_two.h"
 #include "verify/verdict_text.h"
 
@@ -50,32 +51,60 @@ std::pair<Rational, std::string> balancing_scale(const Rational& delta2) {
 
 /// The Schur complement of 3. (file comment): d2·I − T Tᵀ (ny ≤ nz) or
 /// d2·I − TᵀT, T the block lower-triangular Toeplitz matrix of `taps` (row t
-/// = Δ_t row-major, ny × nz) on L samples, formed on its band only.
+/// = Δ_t row-major, ny × nz) on L samples, formed on its band only. The taps
+/// are held as integers N over one common denominator D, so each entry is one
+/// integer dot product over D² (as in verify/column_gram.h), not a sum of
+/// rational products with a gcd each.
 Mat<Rational> schur_complement(const Mat<Rational>& taps, Eigen::Index L, Eigen::Index ny, Eigen::Index nz,
                                const Rational& d2) {
-  const Eigen::Index K = taps.rows();
-  const auto tap = [&](Eigen::Index t, Eigen::Index i, Eigen::Index j) -> const Rational& { return taps(t, i * nz + j); };
+  using psd_detail::Mpq;
+  using psd_detail::Mpz;
+  using psd_detail::MpzArray;
+  const Eigen::Index K = taps.rows(), width = ny * nz;
+  Mpz D, f;
+  mpz_set_ui(D.z, 1);
+  for (Eigen::Index t = 0; t < K; ++t)
+    for (Eigen::Index c = 0; c < width; ++c)
+      if (mpq_srcptr q = taps(t, c).mpq(); !mpz_divisible_p(D.z, mpq_denref(q))) mpz_lcm(D.z, D.z, mpq_denref(q));
+  MpzArray num(static_cast<std::size_t>(K * width));
+  const auto at = [width](Eigen::Index t, Eigen::Index c) { return static_cast<std::size_t>(t * width + c); };
+  for (Eigen::Index t = 0; t < K; ++t)
+    for (Eigen::Index c = 0; c < width; ++c) {
+      mpq_srcptr q = taps(t, c).mpq();
+      mpz_divexact(f.z, D.z, mpq_denref(q));
+      mpz_mul(num[at(t, c)], f.z, mpq_numref(q));
+    }
+  Mpz D2;
+  mpz_mul(D2.z, D.z, D.z);
   const bool rows = ny <= nz;  // T Tᵀ (blocks ny × ny) or TᵀT (blocks nz × nz)
   const Eigen::Index m = rows ? ny : nz;
   Mat<Rational> S = Mat<Rational>::Zero(L * m, L * m);
   for (Eigen::Index k = 0; k < L * m; ++k) S(k, k) = d2;
+  Mpz dot;
+  Mpq g;
   for (Eigen::Index a = 0; a < L; ++a)
     for (Eigen::Index c = a; c < std::min(L, a + K); ++c) {
       // T Tᵀ block (a, c) = Σ_b Δ_{a−b} Δ_{c−b}ᵀ over b ≤ a with c − b < K;
       // TᵀT block (a, c) = Σ_r Δ_{r−a}ᵀ Δ_{r−c} over r ≥ c with r − a < K.
       for (Eigen::Index p = 0; p < m; ++p)
         for (Eigen::Index q = 0; q < m; ++q) {
-          Rational sum(0);
+          mpz_set_ui(dot.z, 0);
           if (rows) {
             for (Eigen::Index b = std::max<Eigen::Index>(0, c - K + 1); b <= a; ++b)
-              for (Eigen::Index j = 0; j < nz; ++j) sum += tap(a - b, p, j) * tap(c - b, q, j);
+              for (Eigen::Index j = 0; j < nz; ++j)
+                mpz_addmul(dot.z, num[at(a - b, p * nz + j)], num[at(c - b, q * nz + j)]);
           } else {
             for (Eigen::Index r = c; r < std::min(L, a + K); ++r)
-              for (Eigen::Index i = 0; i < ny; ++i) sum += tap(r - a, i, p) * tap(r - c, i, q);
+              for (Eigen::Index i = 0; i < ny; ++i)
+                mpz_addmul(dot.z, num[at(r - a, i * nz + p)], num[at(r - c, i * nz + q)]);
           }
-          if (sum == 0) continue;
-          S(a * m + p, c * m + q) -= sum;
-          if (c != a) S(c * m + q, a * m + p) -= sum;
+          if (mpz_sgn(dot.z) == 0) continue;
+          mpz_neg(mpq_numref(g.q), dot.z);
+          mpz_set(mpq_denref(g.q), D2.z);
+          mpq_canonicalize(g.q);
+          const Rational entry(g.q);  // −(block entry of T Tᵀ or TᵀT)
+          S(a * m + p, c * m + q) += entry;
+          if (c != a) S(c * m + q, a * m + p) += entry;
         }
     }
   return S;
