@@ -62,7 +62,7 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
       return invalid_verdict("data.rows ends at " + std::to_string(c.row_end) + " but the data has " + std::to_string(exp.n()) + " rows");
     exp = select_rows(exp, c.row_begin, c.row_end);
   }
-  // "@x<i>" scheduling: the certified model's own exact state on these rows
+  // "@x<i>", "@sqrt(x<i>-c)", … scheduling: functions of the certified model's own exact state on these rows
   try {
     exp = with_state_scheduling(c.model, exp);
   } catch (const std::invalid_argument& e) {
@@ -71,6 +71,9 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   if (c.model.offset.values.empty() && !c.model.offset.basis.empty())
     return invalid_verdict("the model still has an unknown offset (offset.values missing)");
   if (c.delta2 < 0 || c.dmax2 < 0) return invalid_verdict("delta2 and dmax2 must be >= 0");
+  // a state offset E(ρ) (issue 18) is part of the exact simulation below; T_G12·T_u cannot hold it
+  if (c.mode == ToeplitzMode::kPaper && has_state_offset(c.model))
+    return invalid_verdict("toeplitz mode \"paper\" does not support state_offset (T_z = T_G12 T_u drops E(rho))");
 
   // 3. Exact simulation.
   const Simulation<Rational> sim = simulate(c.model, exp);

@@ -1,5 +1,6 @@
 // lpvid diagnose: residual → missing effect → better model, before/after
 // (SPEC §6, §8; issue 4). See src/diagnose/effect_ranking.h for the method.
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include "data/experiment_builder.h"
 #include "diagnose/bound_windows.h"
 #include "diagnose/diagnose.h"
+#include "diagnose/fold_plan.h"
 #include "model/model_file.h"
 #include "solvers/external_solvers.h"
 
@@ -47,7 +49,18 @@ struct DiagnoseArgs {
   std::string plots_dir;
   std::string model_out;
   int threads = static_cast<int>(default_thread_count());
+  int folds = RankingOptions{}.folds;
+  int warmup = -1;            ///< --warmup (test part and folds); -1: from --benchmark or the default
+  std::string benchmark;      ///< --benchmark: sets the warm-up of SPEC §6
 };
+
+/// The test warm-up of SPEC §6 per benchmark (the nonlinear_benchmarks
+/// loader, version 1.0.1): used for x0, left out of the RMS.
+int benchmark_warmup(const std::string& name) {
+  if (name == "cascaded-tanks" || name == "silverbox") return 50;
+  if (name == "coupled-drives") return 10;
+  throw InputError("--benchmark '" + name + "' is not known: cascaded-tanks, silverbox or coupled-drives (or give --warmup N)");
+}
 
 /// Column map of the validation data: est column name → validation name.
 ColumnMap validation_map(const LpvModel<double>& declared, const LpvModel<double>& m,
@@ -71,6 +84,11 @@ ColumnMap validation_map(const LpvModel<double>& declared, const LpvModel<double
 
 int run_diagnose(DiagnoseArgs& a) {
   if (!(a.holdout > 0 && a.holdout < 1)) throw InputError("--holdout must be in (0, 1)");
+  if (a.folds == 0 || a.folds < 1) throw InputError("--folds must be 1 (one held-out block) or at least 2");
+  const int warmup = a.warmup > 0 ? a.warmup : (!a.benchmark.empty() ? benchmark_warmup(a.benchmark) : a.init_samples);
+  if (!a.benchmark.empty() && a.warmup > 0 && a.warmup != benchmark_warmup(a.benchmark))
+    throw InputError("--warmup " + std::to_string(a.warmup) + " contradicts --benchmark " + a.benchmark + " (" +
+                     std::to_string(benchmark_warmup(a.benchmark)) + ")");
   if (!(a.min_gain >= 0 && a.min_gain < 1)) throw InputError("--min-gain must be in [0, 1)");
   Inputs in = load_inputs(a.common);
   LpvModel<double> declared = in.model_d;
@@ -114,7 +132,15 @@ int run_diagnose(DiagnoseArgs& a) {
     }
     return d;
   };
-  if (separate) {
+  const bool by_folds = !separate && a.folds >= 2;
+  if (by_folds) {
+    // every estimation row is fitted and held out in turn (diagnose/fold_plan.h);
+    // the last block is what the report's residual analysis and plots show
+    const std::vector<FoldBlock> blocks = blocked_folds(est_d.n(), a.folds, warmup);
+    val_d = select_rows(est_d, blocks.back().first, blocks.back().last);
+    val_text = a.common.data_path + " rows " + std::to_string(file_offset + blocks.back().first) + ":" +
+               std::to_string(file_offset + blocks.back().last);
+  } else if (separate) {
     val_d = load_other(a.validation_path, a.validation_names, a.validation_columns, a.validation_rows, "validation",
                        val_text, val_outputs);
   } else {
@@ -155,6 +181,15 @@ int run_diagnose(DiagnoseArgs& a) {
   o.ranking.candidates.max_delay = a.max_delay;
   o.ranking.candidates.state_degree = a.state_degree;
   o.ranking.joint_dynamics = a.joint_dynamics;
+  o.ranking.folds = by_folds ? a.folds : 1;
+  o.ranking.fold_warmup = warmup;
+  o.ranking.threads = static_cast<unsigned>(a.threads);
+  const auto started = std::chrono::steady_clock::now();
+  o.ranking.progress = [started](const std::string& status) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    std::fprintf(stderr, "[diagnose %6.1f s] effects, %s\n", s, status.c_str());
+  };
+  o.test_warmup = warmup;
   o.windows = windows;
   o.certify = certify_options(a.common, in.objective);  // rows: set per window
   // Many windows: the lower end comes from the K-tap solve's dual lifted to
@@ -167,7 +202,9 @@ int run_diagnose(DiagnoseArgs& a) {
   o.threads = a.common.write_sdpa.empty() ? static_cast<unsigned>(a.threads) : 1u;
   o.make_solver = [&a] { return make_solver_for_cli(a.common.solver, a.common.write_sdpa); };
   auto solver = o.make_solver();
-  const DiagnoseResult result = diagnose(declared, est_d, est_q, val_d, has_test ? &test_d : nullptr, o, *solver);
+  const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record
+  const DiagnoseResult result =
+      diagnose(declared, est_d, est_q, by_folds ? no_selection : val_d, has_test ? &test_d : nullptr, o, *solver);
 
   DiagnoseReportInputs ri;
   ri.result = &result;
@@ -178,7 +215,11 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.test_source = test_text;
   ri.est = &est_d;
   ri.val = &val_d;
-  ri.init_samples = a.init_samples;
+  ri.init_samples = by_folds ? warmup : a.init_samples;
+  ri.folds = by_folds;
+  ri.fold_warmup = warmup;
+  ri.test_warmup = warmup;
+  ri.file_row_offset = file_offset;
   ri.validation_outputs = val_outputs;
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;
@@ -203,7 +244,20 @@ Runner add_diagnose_command(CLI::App& app) {
   cmd->add_option("--validation-names", a->validation_names, "column names of a headerless validation file")
       ->delimiter(',');
   cmd->add_option("--validation-rows", a->validation_rows, "rows B:E of the validation data");
-  cmd->add_option("--holdout", a->holdout, "fraction of --data held out for validation when none is given (0.3)");
+  cmd->add_option("--folds", a->folds,
+                  "blocked folds of the estimation record that rank and accept the effects when no --validation is "
+                  "given (default 4: each candidate is fitted on 3 blocks and scored on the 4th, in turn); 1: hold out "
+                  "the last --holdout share once instead")
+      ->check(CLI::Range(1, 20));
+  cmd->add_option("--holdout", a->holdout,
+                  "with --folds 1: fraction of --data held out for validation when none is given (0.3)");
+  cmd->add_option("--warmup", a->warmup,
+                  "samples at the start of the test part (and of each fold) used for the initial state and left out "
+                  "of the RMS and fit % (default: --init-samples, 5)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--benchmark", a->benchmark,
+                  "the benchmark's warm-up (SPEC 6, nonlinear_benchmarks 1.0.1): cascaded-tanks 50, silverbox 50, "
+                  "coupled-drives 10");
   cmd->add_option("--test", a->test_path,
                   "test data file, scored once after the selection and never used to fit or choose (default: --data "
                   "when --test-columns is given)");

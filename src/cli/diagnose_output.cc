@@ -114,6 +114,20 @@ std::string identification_line(const WindowIdentification& id) {
          uninformative_mark(id.bounds);
 }
 
+/// Held-out RMS of each fold (null when not finite); null in one-split mode.
+ojson folds_json(const FoldFigures& f) {
+  if (f.empty()) return nullptr;
+  ojson a = ojson::array();
+  for (size_t j = 0; j < f.sse.size(); ++j) a.push_back(finite_or_null(f.rms(j)));
+  return a;
+}
+
+std::string folds_text(const FoldFigures& f) {
+  std::string t;
+  for (size_t j = 0; j < f.sse.size(); ++j) t += (j ? " " : "") + num(f.rms(j), 3);
+  return t;
+}
+
 ojson candidate_json(const ScoredCandidate& c) {
   return {{"kind", c.kind},
           {"label", c.label},
@@ -122,6 +136,9 @@ ojson candidate_json(const ScoredCandidate& c) {
           {"rms_validation", finite_or_null(c.rms_validation)},
           {"explained_validation", finite_or_null(c.explained)},
           {"score", finite_or_null(c.score)},
+          {"joint_refit_of_A_B", c.joint},
+          {"held_out_folds", folds_json(c.folds)},
+          {"folds_won", c.folds.empty() ? ojson(nullptr) : ojson(c.folds_won)},
           {"parameters", c.parameters}};
 }
 
@@ -174,6 +191,14 @@ std::vector<double> estimation_shares(const RankingRound& rr, const Experiment<d
   return out;
 }
 
+/// "0:256, 256:512, …" in data-file rows.
+std::string fold_rows_text(const RankingResult& r, long offset) {
+  std::string t;
+  for (const FoldBlock& b : r.fold_blocks)
+    t += (t.empty() ? "" : ", ") + std::to_string(offset + b.first) + ":" + std::to_string(offset + b.last);
+  return t;
+}
+
 std::string bound_line(const WindowBounds& w) {
   const CertifiedBounds& b = w.bounds;
   if (!b.verified) return "not verified (" + b.reason + ")";
@@ -189,8 +214,16 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   std::cout << "lpvid diagnose\n"
             << "  estimation  " << (in.estimation.empty() ? in.command_line_data : in.estimation) << " ("
             << in.est->n() << " samples)\n"
-            << "  validation  " << in.validation << " (" << in.val->n() << " samples; selection: ranks the effects; x0 "
-            << "fitted on the first " << in.init_samples << ", then free-run simulation)\n"
+            << (in.folds ? "  selection   " + std::to_string(r.fold_blocks.size()) +
+                               " blocked folds of the estimation record, rows " + fold_rows_text(r, in.file_row_offset) +
+                               ": each candidate is fitted " + std::to_string(r.fold_blocks.size()) +
+                               " times on the other folds and scored on the held-out one (x0 from its first " +
+                               std::to_string(in.fold_warmup) + " samples, RMS over the rest)\n  rule        " +
+                               acceptance_rule_text(r.fold_blocks.size(), r.min_gain) +
+                               "; the model kept is the one fitted on all estimation rows\n"
+                         : "  validation  " + in.validation + " (" + std::to_string(in.val->n()) +
+                               " samples; selection: ranks the effects; x0 fitted on the first " +
+                               std::to_string(in.init_samples) + ", then free-run simulation)\n")
             << "  test        "
             << (res.test ? in.test_source + " (" + std::to_string(res.test->samples) + " samples; scored once, at the end)"
                         : std::string("none given (--test / --test-columns): the validation figure chose the model"))
@@ -198,11 +231,18 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   ojson rounds = ojson::array();
   for (size_t i = 0; i < r.rounds.size(); ++i) {
     const RankingRound& rr = r.rounds[i];
-    std::cout << "\nround " << i + 1 << ": validation RMS of the current model " << num(rr.current_validation)
-              << ", re-fitted without a new effect " << num(rr.refit_validation) << "\n"
-              << "  explained: share of the validation residual energy removed; est share: share of the estimation "
-                 "residual\n  energy that the candidate's added output signal explains (least-squares projection)\n"
-              << "  rank  kind               val RMS    explained  est RMS    est share  params  candidate\n";
+    const char* what = in.folds ? "held-out RMS (all folds)" : "validation RMS";
+    std::cout << "\nround " << i + 1 << ": " << what << " of the current model " << num(rr.current_validation)
+              << ", re-fitted without a new effect " << num(rr.refit_validation) << "\n";
+    if (in.folds)
+      std::cout << "  reference per fold: " << folds_text(rr.reference_folds) << "\n"
+                << "  held-out: RMS over the held-out folds; folds: per fold, and how many the candidate wins against the "
+                   "reference\n";
+    std::cout << "  explained: share of the " << (in.folds ? "held-out" : "validation")
+              << " residual energy removed; est share: share of the estimation residual\n  energy that the candidate's "
+                 "added output signal explains (least-squares projection)\n"
+              << "  rank  kind               " << (in.folds ? "held-out" : "val RMS ")
+              << "   explained  est RMS    est share  params  candidate\n";
     ojson cands = ojson::array();
     const std::vector<double> shares = estimation_shares(rr, *in.est);
     for (size_t k = 0; k < rr.ranked.size(); ++k) {
@@ -213,14 +253,18 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                     num(c.rms_estimation).c_str(), (num(100 * shares[k], 3) + "%").c_str(), c.effect_parameters,
                     c.label.c_str(), static_cast<int>(k) == rr.chosen ? "   <- chosen" : "");
       std::cout << line;
+      if (in.folds)
+        std::cout << "        folds " << folds_text(c.folds) << "  (wins " << c.folds_won << " of " << c.folds.sse.size()
+                  << (c.joint ? "; A, B re-fitted" : "") << ")\n";
       ojson cj = candidate_json(c);
       cj["share_of_estimation_residual"] = shares[k];
       cands.push_back(cj);
     }
     if (rr.chosen < 0)
-      std::cout << "  -> none: no candidate lowers the validation RMS by the required share below "
+      std::cout << "  -> none: no candidate " << (in.folds ? "passes the rule above against " : "lowers the validation RMS by the required share below ")
                 << num(rr.reference_validation) << "\n";
     rounds.push_back({{"reference_validation", rr.reference_validation},
+                      {"reference_held_out_folds", folds_json(rr.reference_folds)},
                       {"chosen", rr.chosen >= 0 ? ojson(rr.ranked[static_cast<size_t>(rr.chosen)].kind) : ojson("none")},
                       {"candidates", cands}});
   }
@@ -234,13 +278,18 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   std::cout << "\neffects added: ";
   if (r.chosen.empty()) std::cout << "none";
   for (size_t i = 0; i < r.chosen.size(); ++i) std::cout << (i ? ", " : "") << r.chosen[i].label;
-  std::cout << "\n\n              RMS estimation  RMS validation  bounds\n"
+  std::cout << "\n\n              RMS estimation  " << (in.folds ? "RMS held-out  " : "RMS validation") << "  bounds\n"
             << "  before      " << num(r.before_estimation) << std::string(16 - std::min<size_t>(15, num(r.before_estimation).size()), ' ')
             << num(r.before_validation) << std::string(16 - std::min<size_t>(15, num(r.before_validation).size()), ' ')
             << bound_line(res.before.front()) << "\n"
             << "  after       " << num(r.after_estimation) << std::string(16 - std::min<size_t>(15, num(r.after_estimation).size()), ' ')
             << num(r.after_validation) << std::string(16 - std::min<size_t>(15, num(r.after_validation).size()), ' ')
             << bound_line(res.after.front()) << "\n";
+  if (in.folds)
+    std::cout << "  held-out RMS per fold: before " << folds_text(r.before_folds) << "; after " << folds_text(r.after_folds)
+              << (r.chosen.empty() ? " (no effect passed: the starting model is kept)"
+                                   : " (every effect added passed the rule against the model before it)")
+              << "\n";
   std::string rows;
   for (const WindowBounds& w : res.before) rows += (rows.empty() ? "" : ", ") + std::to_string(w.begin) + ":" + std::to_string(w.end);
   std::cout << "  bounds on " << res.before.size() << " window" << (res.before.size() == 1 ? "" : "s")
@@ -271,16 +320,23 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   // The test role: scored once, now, for the models chosen above.
   ojson test = nullptr;
   if (res.test) {
-    const double tb = res.test->rms_before, ta = res.test->rms_after;
+    const FreeRunScore &tb = res.test->before, &ta = res.test->after;
+    const std::string rule = "free run; x0 from the first " + std::to_string(tb.warmup) +
+                             " samples (warm-up), RMS and fit % over the remaining " + std::to_string(tb.scored);
     std::cout << "\ntest (" << in.test_source << ", " << res.test->samples << " samples): scored once, after the selection;"
               << " no fit and no choice used it\n"
-              << "  free-run RMS, x0 from the first " << in.init_samples << " samples, over all samples:  before "
-              << num(tb) << "   after " << num(ta) << "\n";
+              << "  rule: " << rule << "\n"
+              << "  before: RMS " << num(tb.rms) << ", fit " << num(tb.fit_percent, 4) << " %   after: RMS " << num(ta.rms)
+              << ", fit " << num(ta.fit_percent, 4) << " %\n";
     test = {{"source", in.test_source},
             {"samples", res.test->samples},
-            {"init_samples", in.init_samples},
-            {"rms_before", finite_or_null(tb)},
-            {"rms_after", finite_or_null(ta)},
+            {"rule", rule},
+            {"warmup_samples", tb.warmup},
+            {"scored_samples", tb.scored},
+            {"rms_before", finite_or_null(tb.rms)},
+            {"rms_after", finite_or_null(ta.rms)},
+            {"fit_percent_before", finite_or_null(tb.fit_percent)},
+            {"fit_percent_after", finite_or_null(ta.fit_percent)},
             {"note", "scored once, after the effects were selected on the validation (selection) data; the models "
                      "were fitted on the estimation rows only"}};
   }
@@ -290,7 +346,9 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   validation_rms(res.before_model, *in.val, in.init_samples, &yb);
   validation_rms(res.after_model, *in.val, in.init_samples, &ya);
   const Mat<double> rb = in.val->y - yb, ra = in.val->y - ya;
-  std::cout << "\nvalidation residual (free run)\n";
+  std::cout << (in.folds ? "\nresidual on the last fold's rows (" + in.validation +
+                               "; free run, x0 from its first samples; the final models were fitted on these rows too)\n"
+                         : std::string("\nvalidation residual (free run)\n"));
   ojson analysis = ojson::object();
   if (rb.allFinite() && ra.allFinite()) {
     analysis["before"] = analysis_json("before", rb, in.val->u);
@@ -321,8 +379,20 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   j["status"] = verified ? "ok" : "not verified";
   j["command"] = "diagnose";
   j["estimation"] = {{"file", in.command_line_data}, {"rows", in.estimation}, {"samples", in.est->n()}};
-  j["validation"] = {{"source", in.validation}, {"samples", in.val->n()}, {"init_samples", in.init_samples},
-                     {"role", "selection: ranks the candidate effects"}};
+  if (in.folds) {
+    ojson blocks = ojson::array();
+    for (const FoldBlock& b : r.fold_blocks) blocks.push_back({in.file_row_offset + b.first, in.file_row_offset + b.last});
+    j["selection"] = {{"method", "blocked folds of the estimation record"},
+                      {"folds", r.fold_blocks.size()},
+                      {"file_rows", blocks},
+                      {"warmup_samples", in.fold_warmup},
+                      {"rule", acceptance_rule_text(r.fold_blocks.size(), r.min_gain)},
+                      {"before_held_out_folds", folds_json(r.before_folds)},
+                      {"after_held_out_folds", folds_json(r.after_folds)}};
+  } else {
+    j["validation"] = {{"source", in.validation}, {"samples", in.val->n()}, {"init_samples", in.init_samples},
+                       {"role", "selection: ranks the candidate effects"}};
+  }
   j["test"] = test;
   j["effects"] = effects;
   j["before"] = side_json(r.before_estimation, r.before_validation, res.before);

@@ -17,6 +17,12 @@ struct DiagnoseReportInputs {
   const DiagnoseResult* result = nullptr;
   const Experiment<double>*est = nullptr, *val = nullptr;
   int init_samples = static_cast<int>(RankingOptions{}.init_samples);
+  /// Fold mode: `val` is the estimation record's last fold block, shown for
+  /// the residual analysis and plots (the final models saw those rows).
+  bool folds = false;
+  Eigen::Index fold_warmup = 0, test_warmup = 0;
+  std::string estimation_rows_text;  ///< "file rows a:b" of the estimation record (fold mode)
+  long file_row_offset = 0;
   std::vector<std::string> validation_outputs;  ///< the validation data's output column names (plot legends)
 };
 

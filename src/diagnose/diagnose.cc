@@ -33,8 +33,11 @@ void check_options(const Experiment<double>& est_d, const Experiment<Rational>& 
   if (windows.empty()) throw InputError("diagnose: the estimation record is empty");
   if (est_d.n() != est_q.n()) throw InputError("diagnose: the exact and double estimation records differ in length");
   const Eigen::Index need = o.ranking.init_samples + 5;
-  if (selection.n() < need) throw InputError("the validation data has too few samples");
-  if (test != nullptr && test->n() < need) throw InputError("the test data has too few samples");
+  if (selection.n() != 0 && selection.n() < need) throw InputError("the validation data has too few samples");
+  if (o.test_warmup < 1) throw InputError("the test warm-up must be at least 1 sample");
+  if (test != nullptr && test->n() < o.test_warmup + 5)
+    throw InputError("the test data has " + std::to_string(test->n()) + " samples: too few for a warm-up of " +
+                     std::to_string(o.test_warmup) + " and a score");
   if (o.threads > 1 && !o.make_solver) throw InputError("diagnose: threads > 1 needs a solver factory");
   for (const auto& [b, e] : windows)
     if (b < 0 || e <= b || e > est_q.n())
@@ -85,8 +88,8 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   if (test != nullptr) {
     TestScore t;
     t.samples = test->n();
-    t.rms_before = validation_rms(out.before_model, *test, options.ranking.init_samples);
-    t.rms_after = validation_rms(out.after_model, *test, options.ranking.init_samples);
+    t.before = warmup_score(out.before_model, *test, options.test_warmup);
+    t.after = warmup_score(out.after_model, *test, options.test_warmup);
     out.test = t;
   }
   return out;

@@ -1,8 +1,9 @@
 #pragma once
 /// The closed loop of SPEC §6 as one library call (issue 10 item 1):
 ///
-///   1. rank effects: every candidate is fitted on the ESTIMATION data and
-///      scored on the SELECTION (validation) data (diagnose/effect_ranking.h);
+///   1. rank effects: every candidate is fitted and scored on held-out folds
+///      of the ESTIMATION record (selection empty), or fitted on it and
+///      scored on the SELECTION data (diagnose/effect_ranking.h);
 ///   2. fix: the models before and after are rounded to 12 significant digits
 ///      (diagnose/window_bounds.h), the numbers the certificates state;
 ///   3. certify: Theorem 2.1 on each bound window of the estimation record,
@@ -10,8 +11,9 @@
 ///      (diagnose/window_bounds.h), then Theorem 3.1 on the first window
 ///      (diagnose/window_identification.h);
 ///   4. test: only now, and only if a test set is given, the two chosen
-///      models are scored on it (free run, x0 from its first samples). It is
-///      the last step and nothing above reads it: the benchmark's protocol.
+///      models are scored on it by the benchmark protocol of SPEC §6: x0
+///      from the first `test_warmup` samples, RMS and fit % over the rest.
+///      It is the last step and nothing above reads it.
 ///
 /// `lpvid diagnose` parses its options into these types, calls `diagnose`
 /// and renders the result (src/cli/diagnose_output.h).
@@ -47,13 +49,16 @@ struct DiagnoseOptions {
   /// job). Results do not depend on it.
   unsigned threads = 1;
   std::function<std::unique_ptr<SdpSolver>()> make_solver;
+  /// The test part's warm-up (SPEC §6: cascaded tanks 50, Silverbox 50,
+  /// coupled electric drives 10): used for x0, left out of the RMS.
+  Eigen::Index test_warmup = kValidationInitSamples;
 };
 
-/// The test role's score: free-run RMS over all its samples, x0 fitted on
-/// the first `init_samples` (the same rule as the selection score).
+/// The test role's score by the benchmark protocol (fit/output_error_fit.h
+/// warmup_score), before and after.
 struct TestScore {
   Eigen::Index samples = 0;
-  double rms_before = 0, rms_after = 0;
+  FreeRunScore before, after;
 };
 
 struct DiagnoseResult {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include "core/rms.h"
 #include "fit/wiener_starts.h"
@@ -70,6 +71,64 @@ EffectCandidate make(const std::string& kind, const std::string& label, int extr
   return c;
 }
 
+/// 4 significant digits, for labels.
+std::string short_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+/// state_nonlinearity (issue 18 item 2): x_{k+1} = A x + B u' + e·f(x_i − c),
+/// f = √|·|, |·| or max(·, 0), as a scheduling column "@f(x<i>-c)" and a state
+/// offset term ρ_new·e (model.state_offset). e starts at 0 (the start is the
+/// current model), c below the simulated range of x_i for √ and |·| (so the
+/// argument keeps its sign along the trajectory), at its 0.9 quantile for the
+/// hinge (an overflow level). The joint re-fit moves e, c, A and B.
+void state_nonlinearity_candidates(const LpvModel<double>& base, const Simulation<double>& sim,
+                                   std::vector<EffectCandidate>& out) {
+  struct Kind {
+    StateFunction f;
+    const char* name;
+    const char* before;  ///< the words around x_i
+    const char* after;
+  };
+  const Kind kinds[] = {
+      {StateFunction::kSqrt, "sqrt", "e*sqrt|", " - c| (square-root outflow, e.g. a tank draining through an orifice)"},
+      {StateFunction::kAbs, "abs", "e*|", " - c| (a V-shaped, level-dependent feedback)"},
+      {StateFunction::kHinge, "hinge", "e*max(", " - c, 0) (an overflow: with e = -1 the level is clipped at c)"},
+  };
+  std::vector<StateColumn> existing;
+  for (const std::string& col : base.columns.rho) existing.push_back(parse_state_column(col));
+  for (int i = 0; i < base.nx; ++i) {
+    const Mat<double> xi = sim.x.col(i);
+    if (xi.size() == 0 || !xi.allFinite()) continue;
+    const double lo = xi.minCoeff(), hi = xi.maxCoeff();
+    const double margin = std::max(0.05 * (hi - lo), 1e-6 * std::max(1.0, std::abs(lo)));
+    for (const Kind& k : kinds) {
+      const bool has = std::any_of(existing.begin(), existing.end(),
+                                   [&](const StateColumn& c) { return c.state == i && c.function == k.f; });
+      if (has) continue;
+      const double c = k.f == StateFunction::kHinge ? quantile(xi, 0.9) : lo - margin;
+      const std::string x = "x" + std::to_string(i + 1);
+      LpvModel<double> s = add_scheduling_variable(base, scheduling_name(std::string(k.name) + "_" + x, base.scheduling),
+                                                   state_column_text(k.f, i, c));
+      const int j = s.n_rho() - 1;
+      Monomial h = constant_monomial(static_cast<size_t>(s.n_rho()));
+      h.powers[static_cast<size_t>(j)] = 1;
+      s.state_offset.basis.push_back(h);
+      s.state_offset.values.push_back(Vec<double>::Zero(base.nx));
+      const std::string words = k.before + x + k.after;
+      EffectCandidate cand = make("state_nonlinearity",
+                                  "state_nonlinearity " + std::string(k.name) + "(" + x + ") in the state equation: " +
+                                      words + ", c fitted (start " + short_text(c) + ")",
+                                  base.nx + 1, {s});
+      cand.slots.push_back(state_shift_slot(s, j));
+      cand.slots = with_dynamics_slots(cand.slots, s);  // E's values, A and B move
+      out.push_back(std::move(cand));
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m) {
@@ -118,6 +177,7 @@ LpvModel<double> scale_state(const LpvModel<double>& m, double s) {
   for (auto& t : out.C.terms) t.value *= s;
   for (auto& t : out.uncertainty.C1.terms) t.value *= s;
   for (auto& b : out.correction.B) b /= s;
+  for (auto& e : out.state_offset.values) e /= s;
   out.x0 /= s;
   return out;
 }
@@ -130,6 +190,7 @@ LpvModel<double> add_scheduling_variable(const LpvModel<double>& m, const std::s
   for (ParamMatrix<double>* pm : {&out.A, &out.B, &out.C, &out.D, &out.uncertainty.C1, &out.uncertainty.D1}) pad(*pm);
   for (Monomial& f : out.correction.basis) pad(f);
   for (Monomial& f : out.offset.basis) pad(f);
+  for (Monomial& f : out.state_offset.basis) pad(f);
   return out;
 }
 
@@ -180,7 +241,10 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
       // x_1 rescaled (x → x/s, s a power of two ≥ max |x_1|): ρ = x_1 in [-1, 1],
       // so ρ^j is well scaled and a finite-difference step in A_j stays small
       double peak = sim.x.col(0).cwiseAbs().maxCoeff();
-      const double s_pow2 = std::isfinite(peak) && peak > 0 ? std::exp2(std::ceil(std::log2(peak))) : 1.0;
+      // not with state columns already there (their values would change with the scale)
+      const bool own_columns = !state_scheduled(base.columns.rho, base.nx).empty();
+      const double s_pow2 =
+          std::isfinite(peak) && peak > 0 && !own_columns ? std::exp2(std::ceil(std::log2(peak))) : 1.0;
       sched = add_scheduling_variable(scale_state(base, s_pow2), scheduling_name("xhat1", base.scheduling), "@x1");
     } else {
       sched = base;
@@ -200,6 +264,8 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
       out.push_back(std::move(c));
     }
   }
+
+  if (o.state_functions) state_nonlinearity_candidates(base, sim, out);
 
   // output_offset: Φ = φ_1 (basis 1) when the model has no constant offset
   {

@@ -25,6 +25,14 @@
 ///                      simulated state (model/state_scheduling.h), j = 1 …
 ///                      state_degree: a state-dependent nonlinearity as a
 ///                      quasi-LPV term, needs the joint re-fit (A moves)
+///   state_nonlinearity e·f(x_i − c) added to the state equation (issue 18
+///                      item 2): a scheduling column "@sqrt(x<i>-c)",
+///                      "@abs(x<i>-c)" or "@hinge(x<i>-c)" (model/state_scheduling.h)
+///                      and a state offset E(ρ) = ρ_new·e (model.state_offset),
+///                      i = 1 … nx. √ is a tank's outflow (c started below the
+///                      state's simulated range), hinge an overflow clip
+///                      (c started at the 0.9 quantile of x_i, e → −1 clips).
+///                      e (from 0), c and A, B move in the joint re-fit.
 /// A candidate never depends on the data set's name: only on the model's
 /// structure and the ranges of the estimation signals (starting guesses).
 
@@ -42,6 +50,7 @@ struct CandidateOptions {
   int polynomial_degree = 3;        ///< input/output polynomials
   int state_degree = 3;             ///< x1^1..x1^d in A (scheduling on the model's own state); 0: none
   int pwl_knots = 6;                ///< knots of the piecewise-linear output map (at v's quantiles); < 2: none
+  bool state_functions = true;      ///< state_nonlinearity candidates (sqrt, abs, hinge of x_i − c in the state equation)
 };
 
 struct EffectCandidate {
@@ -76,12 +85,14 @@ Experiment<double> with_input_scheduling(const Experiment<double>& e, const LpvM
 
 /// The same input-output model with its state scaled, x' = x/s: B and the
 /// correction's B_i divided by s, C and the uncertainty channel's C1 times
-/// s, x0/s; A and the correction's A_i are unchanged (a diagonal similarity
-/// by a scalar). For a model whose A terms do not depend on the state.
+/// s, x0/s, the state offset's values e_j/s; A and the correction's A_i are
+/// unchanged (a diagonal similarity by a scalar). For a model without
+/// state-scheduling columns (their values would change with the scale).
 LpvModel<double> scale_state(const LpvModel<double>& m, double s);
 
 /// The model with one more scheduling variable `name` read from data column
-/// `column` (every basis monomial padded with a zero power).
+/// `column` (every basis monomial, also of the state offset, padded with a
+/// zero power).
 LpvModel<double> add_scheduling_variable(const LpvModel<double>& m, const std::string& name, const std::string& column);
 
 }  // namespace lpvid

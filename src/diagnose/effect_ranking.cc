@@ -2,8 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <mutex>
 
+#include "core/parallel_for.h"
+#include "data/experiment_builder.h"
+#include "diagnose/order_variants.h"
 #include "model/simulate.h"
 
 namespace lpvid {
@@ -73,6 +78,7 @@ ScoredCandidate fit_candidate(const EffectCandidate& c, const Experiment<double>
     if (g_val < val_rms || !f.finite) {
       f = g;
       val_rms = g_val;
+      s.joint = true;
     }
   }
   if (!f.finite) {
@@ -87,6 +93,199 @@ ScoredCandidate fit_candidate(const EffectCandidate& c, const Experiment<double>
   s.score = s.rms_validation * s.rms_validation * (1.0 + 2.0 * s.effect_parameters / nval);
   s.parameters = effect_parameters(c.kind, c.label, s.model, previous);
   return s;
+}
+
+
+/// The round's candidates: the effect library on the current model, and
+/// the output maps on the current model with one more state.
+std::vector<EffectCandidate> round_candidates(const LpvModel<double>& current, const Experiment<double>& est,
+                                              const RankingOptions& o) {
+  std::vector<EffectCandidate> c = candidate_effects(current, est, o.candidates);
+  if (o.order_variants)
+    for (EffectCandidate& r : raised_order_candidates(current, est, o.candidates)) c.push_back(std::move(r));
+  return c;
+}
+
+/// The fit options of training set t: fold t leaves its block out of the
+/// cost (t < K); t == K is the whole record.
+FitOptions training_options(const FitOptions& base, const std::vector<FoldBlock>& blocks, size_t t) {
+  FitOptions f = base;
+  if (t < blocks.size()) {
+    f.skip_first = blocks[t].first;
+    f.skip_last = blocks[t].last;
+  }
+  return f;
+}
+
+/// Held-out squared error of `m` on block j (fold_plan.h "score").
+void score_block(const FitResult& f, const Experiment<double>& est, const std::vector<FoldBlock>& blocks, size_t j,
+                 Eigen::Index warmup, FoldFigures& out) {
+  const Experiment<double> b = select_rows(est, blocks[j].first, blocks[j].last);
+  out.count[j] = (b.n() - warmup) * b.ny();
+  out.sse[j] = std::numeric_limits<double>::infinity();
+  if (!f.finite) return;
+  const FreeRunScore s = warmup_score(f.model, b, warmup);
+  if (std::isfinite(s.rms)) out.sse[j] = s.rms * s.rms * static_cast<double>(out.count[j]);
+}
+
+FoldFigures empty_figures(size_t k) {
+  FoldFigures f;
+  f.sse.assign(k, std::numeric_limits<double>::infinity());
+  f.count.assign(k, 0);
+  return f;
+}
+
+/// One family of models (a candidate, the no-effect re-fit, the declared
+/// model) fitted on every training set: its fold figures and its fit on the
+/// whole record.
+struct FoldedFamily {
+  FitResult whole;
+  FoldFigures figures;
+};
+
+/// How a family is fitted on one training set.
+using FamilyFit = std::function<FitResult(const FitOptions& fit)>;
+
+/// Runs every (family, training set) pair as one job (core/parallel_for.h).
+std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, const std::vector<std::string>& labels,
+                                       const std::string& stage, const Experiment<double>& est,
+                                       const std::vector<FoldBlock>& blocks, const RankingOptions& o) {
+  const size_t k = blocks.size(), sets = k + 1, jobs = families.size() * sets;
+  std::vector<FoldedFamily> out(families.size());
+  for (FoldedFamily& f : out) f.figures = empty_figures(k);
+  std::mutex report;
+  size_t done = 0;
+  parallel_for(jobs, o.threads, [&](size_t job) {
+    const size_t i = job / sets, t = job % sets;
+    const FitResult r = families[i](training_options(o.fit, blocks, t));
+    if (t == k)
+      out[i].whole = r;
+    else
+      score_block(r, est, blocks, t, o.fold_warmup, out[i].figures);
+    if (o.progress) {
+      const std::lock_guard<std::mutex> lock(report);
+      ++done;
+      o.progress(stage + ": fit " + std::to_string(done) + " of " + std::to_string(jobs) + " (" + labels[i] + ", " +
+                 (t == k ? std::string("all rows") : "without fold " + std::to_string(t + 1)) + ")");
+    }
+  });
+  return out;
+}
+
+/// A candidate's family: the effect fitted from every start. In fold mode
+/// A, B move with the effect (the joint re-fit) unless the user fixed them
+/// (--fixed-dynamics): dynamics kept from a model fitted on the same record
+/// would carry the held-out block's information into every fold.
+FamilyFit candidate_family(const EffectCandidate& c, const Experiment<double>& est, const RankingOptions& o) {
+  const EffectCandidate* cp = &c;
+  const Experiment<double>* ep = &est;
+  const bool joint = o.joint_dynamics;
+  return [cp, ep, joint](const FitOptions& fit) { return best_fit(cp->starts, nullptr, cp->slots, joint, *ep, fit); };
+}
+
+ScoredCandidate scored_from_family(const EffectCandidate& c, const FoldedFamily& f, const LpvModel<double>& previous,
+                                   bool joint) {
+  ScoredCandidate s;
+  s.kind = c.kind;
+  s.label = c.label;
+  s.effect_parameters = c.effect_parameters;
+  s.joint = joint;
+  s.folds = f.figures;
+  const FitResult& w = f.whole;
+  s.rms_validation = s.folds.total_rms();
+  if (!w.finite || !std::isfinite(s.rms_validation)) {
+    s.rms_estimation = s.rms_validation = s.score = std::numeric_limits<double>::infinity();
+    s.model = c.starts.front();
+    return s;
+  }
+  s.model = w.model;
+  s.rms_estimation = w.rms;
+  Eigen::Index scored = 0;
+  for (Eigen::Index n : s.folds.count) scored += n;
+  s.score = s.rms_validation * s.rms_validation * (1.0 + 2.0 * s.effect_parameters / static_cast<double>(scored));
+  s.parameters = effect_parameters(c.kind, c.label, s.model, previous);
+  return s;
+}
+
+void set_explained(RankingRound& r) {
+  for (ScoredCandidate& s : r.ranked)
+    s.explained = std::isfinite(s.rms_validation)
+                      ? 1.0 - (s.rms_validation * s.rms_validation) / (r.reference_validation * r.reference_validation)
+                      : -std::numeric_limits<double>::infinity();
+  std::stable_sort(r.ranked.begin(), r.ranked.end(),
+                   [](const ScoredCandidate& a, const ScoredCandidate& b) { return a.score < b.score; });
+}
+
+/// Fold mode (val empty): see the header.
+RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Experiment<double>& est,
+                                    const RankingOptions& o) {
+  RankingResult res;
+  res.min_gain = o.min_gain;
+  res.fold_blocks = blocked_folds(est.n(), o.folds, o.fold_warmup);
+  // before: the declared unknowns fitted on each training set
+  const FitResult before = fit_declared(declared, est, o.fit);
+  res.before = before.model;
+  res.before_estimation = before.rms;
+  LpvModel<double> current = res.before;
+  double current_est = res.before_estimation;
+  FoldFigures current_folds;  // set in round 1 (the declared structure re-fitted per fold)
+  for (int round = 0; round < o.max_effects; ++round) {
+    RankingRound r;
+    r.current = current;
+    r.current_validation = current_folds.total_rms();
+    std::vector<EffectCandidate> cands = round_candidates(current, est, o);
+    EffectCandidate refit;  // the no-effect reference: the same freedom, no new effect
+    refit.kind = "none";
+    refit.starts = {current};
+    refit.slots = refit_slots(current);
+    std::vector<FamilyFit> families{candidate_family(refit, est, o)};
+    std::vector<std::string> labels{"no new effect"};
+    for (const EffectCandidate& c : cands) {
+      families.push_back(candidate_family(c, est, o));
+      labels.push_back(c.label);
+    }
+    const std::vector<FoldedFamily> fitted =
+        fit_families(families, labels, "round " + std::to_string(round + 1), est, res.fold_blocks, o);
+    const FoldFigures& refit_folds = fitted[0].figures;
+    r.refit_validation = refit_folds.total_rms();
+    // round 1: the declared model's own figures are not held out (its A, B may
+    // have been fitted on these rows), so the reference is its structure re-fitted
+    // on each fold; later rounds: the better of that and the chosen model's folds
+    r.reference_folds = round == 0 || refit_folds.total_rms() < current_folds.total_rms() ? refit_folds : current_folds;
+    if (round == 0) {
+      res.before_folds = refit_folds;
+      res.before_validation = refit_folds.total_rms();
+      r.current_validation = res.before_validation;
+      current_folds = refit_folds;
+    }
+    r.reference_validation = r.reference_folds.total_rms();
+    for (size_t i = 0; i < cands.size(); ++i) {
+      r.ranked.push_back(scored_from_family(cands[i], fitted[i + 1], current, o.joint_dynamics));
+      r.ranked.back().folds_won = folds_won(r.ranked.back().folds, r.reference_folds);
+    }
+    set_explained(r);
+    // the best-scored candidate that passes the rule of fold_plan.h
+    for (size_t i = 0; i < r.ranked.size(); ++i)
+      if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain)) {
+        r.chosen = static_cast<int>(i);
+        break;
+      }
+    if (r.chosen >= 0) {
+      const ScoredCandidate& c = r.ranked[static_cast<size_t>(r.chosen)];
+      current = c.model;
+      current_est = c.rms_estimation;
+      current_folds = c.folds;
+      res.chosen.push_back(c);
+    }
+    const bool stop = r.chosen < 0;
+    res.rounds.push_back(std::move(r));
+    if (stop) break;
+  }
+  res.after = current;
+  res.after_estimation = current_est;
+  res.after_folds = current_folds;
+  res.after_validation = current_folds.total_rms();
+  return res;
 }
 
 }  // namespace
@@ -109,7 +308,9 @@ FitResult fit_declared(const LpvModel<double>& declared, const Experiment<double
 
 RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<double>& est,
                            const Experiment<double>& val, const RankingOptions& o) {
+  if (val.n() == 0) return rank_effects_by_folds(declared, est, o);
   RankingResult res;
+  res.min_gain = o.min_gain;
   const FitResult before = fit_declared(declared, est, o.fit);
   res.before = before.model;
   res.before_estimation = before.rms;
@@ -128,14 +329,18 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
       if (joint.finite) r.refit_validation = std::min(r.refit_validation, validation_rms(joint.model, val, o.init_samples));
     }
     r.reference_validation = std::min(current_val, r.refit_validation);
-    for (const EffectCandidate& c : candidate_effects(current, est, o.candidates))
-      r.ranked.push_back(fit_candidate(c, est, val, o, current));
-    for (ScoredCandidate& s : r.ranked)
-      s.explained = std::isfinite(s.rms_validation)
-                        ? 1.0 - (s.rms_validation * s.rms_validation) / (r.reference_validation * r.reference_validation)
-                        : -std::numeric_limits<double>::infinity();
-    std::stable_sort(r.ranked.begin(), r.ranked.end(),
-                     [](const ScoredCandidate& a, const ScoredCandidate& b) { return a.score < b.score; });
+    const std::vector<EffectCandidate> cands = round_candidates(current, est, o);
+    r.ranked.resize(cands.size());
+    std::mutex report;
+    size_t done = 0;
+    parallel_for(cands.size(), o.threads, [&](size_t i) {
+      r.ranked[i] = fit_candidate(cands[i], est, val, o, current);
+      if (!o.progress) return;
+      const std::lock_guard<std::mutex> lock(report);
+      o.progress("round " + std::to_string(round + 1) + ": candidate " + std::to_string(++done) + " of " +
+                 std::to_string(cands.size()) + " (" + cands[i].label + ")");
+    });
+    set_explained(r);
     if (!r.ranked.empty() && r.ranked.front().rms_validation <= (1.0 - o.min_gain) * r.reference_validation) {
       r.chosen = 0;
       current = r.ranked.front().model;
@@ -198,6 +403,18 @@ ojson effect_parameters(const std::string& kind, const std::string& label, const
       kind == "output_piecewise_linear")
     j["output_map"] = map_json(fitted.statics.output);
   if (kind == "input_delay") j["delay_samples"] = fitted.statics.input_delay;
+  if (kind == "state_nonlinearity") {  // x+ = A x + B u + E(ρ): the function column(s) and e
+    ojson cols = ojson::object();
+    for (size_t i = previous.scheduling.size(); i < fitted.scheduling.size(); ++i)
+      cols[fitted.scheduling[i]] = fitted.columns.rho[i];
+    j["new_scheduling"] = std::move(cols);
+    ojson terms = ojson::array();
+    for (size_t t = 0; t < fitted.state_offset.basis.size() && t < fitted.state_offset.values.size(); ++t)
+      terms.push_back({{"basis", fitted.state_offset.basis[t].text(fitted.scheduling)},
+                       {"e", matrix_json(fitted.state_offset.values[t].transpose()).front()}});
+    j["state_offset"] = std::move(terms);
+    j["enters"] = "the state equation: x+ = A x + B u + sum_j h_j(rho) e_j (model field state_offset)";
+  }
   j["label"] = label;
   return j;
 }

@@ -1,6 +1,18 @@
 #pragma once
-/// Residual → missing effect (SPEC §6 steps 2–3, issue 4 items 3–4):
-/// every candidate of the effect library is fitted on the ESTIMATION data
+/// Residual → missing effect (SPEC §6 steps 2–3, issue 4 items 3–4,
+/// issue 18 items 1 and 5). Two ways to hold data out:
+///
+/// FOLDS (the default of `lpvid diagnose`, val empty): K blocked folds of
+/// the estimation record (diagnose/fold_plan.h). Every candidate, and the
+/// no-effect reference, is fitted K times, each time on the record without
+/// one block, and scored on that block; its held-out RMS is the total over
+/// the blocks. A candidate is accepted only by the rule of fold_plan.h (a
+/// clear majority of folds and `min_gain` on the total), so the model after
+/// a round is never worse than before it on the held-out total. Whether A, B
+/// move with the effect (joint re-fit) is chosen by the same folds. The
+/// model kept is the candidate fitted on the whole record.
+///
+/// ONE SPLIT (val given): every candidate is fitted on the ESTIMATION data
 /// (output-error least squares, fit/output_error_fit.h) and scored on
 /// the VALIDATION data, which the fit never saw:
 ///
@@ -20,12 +32,14 @@
 /// effects are added and the search repeats (at most `max_effects` rounds).
 /// Nothing here looks at the data set's name.
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "diagnose/effect_candidates.h"
+#include "diagnose/fold_plan.h"
 #include "fit/output_error_fit.h"
 
 namespace lpvid {
@@ -40,6 +54,20 @@ struct RankingOptions {
   /// reference (Wiener/Hammerstein: issue 9 item 2); false: only the output
   /// map, offset, x0 and the effect move (the issue-4 behaviour).
   bool joint_dynamics = true;
+  /// Blocked folds of the estimation record when no validation set is given
+  /// (>= 2). Their held-out scores use `fold_warmup` samples of each block for
+  /// x0 and leave them out of the RMS.
+  int folds = 4;
+  /// Also offer every static output map on the current model with one more
+  /// state (diagnose/order_variants.h): the linear order re-chosen with it.
+  bool order_variants = true;
+  Eigen::Index fold_warmup = kValidationInitSamples;
+  /// Candidates fitted at once (results do not depend on it).
+  unsigned threads = 1;
+  /// Called (serialised) after every fit of a fold or of the whole record
+  /// with a one-line status ("round 1: fit 37 of 110, input_delay, fold 3");
+  /// the CLI prints it on stderr with the elapsed time. Empty: silent.
+  std::function<void(const std::string&)> progress;
 };
 
 struct ScoredCandidate {
@@ -48,12 +76,16 @@ struct ScoredCandidate {
   double rms_estimation = 0, rms_validation = 0, explained = 0, score = 0;
   LpvModel<double> model;          ///< fitted on estimation data (x0 of the estimation record)
   nlohmann::ordered_json parameters;  ///< the effect's own parameters
+  FoldFigures folds;               ///< fold mode: held-out figures (rms_validation is their total)
+  int folds_won = 0;               ///< fold mode: folds on which it beats the round's reference
+  bool joint = false;              ///< A, B were re-fitted with the effect
 };
 
 struct RankingRound {
   LpvModel<double> current;         ///< the model the candidates were added to
   double reference_validation = 0;  ///< what an effect must beat
   double current_validation = 0, refit_validation = 0;
+  FoldFigures reference_folds;      ///< fold mode: the reference's held-out figures
   std::vector<ScoredCandidate> ranked;  ///< best score first
   int chosen = -1;                      ///< index into ranked, -1: none
 };
@@ -63,6 +95,11 @@ struct RankingResult {
   double before_estimation = 0, before_validation = 0, after_estimation = 0, after_validation = 0;
   std::vector<RankingRound> rounds;
   std::vector<ScoredCandidate> chosen;  ///< in the order they were added
+  /// Fold mode: the blocks, and the held-out figures of the model before
+  /// and after (empty in one-split mode; then *_validation is on val).
+  std::vector<FoldBlock> fold_blocks;
+  FoldFigures before_folds, after_folds;
+  double min_gain = 0;              ///< the acceptance share used
 };
 
 /// "Before": the declared model with its declared unknowns (correction C_i,
@@ -70,7 +107,7 @@ struct RankingResult {
 /// S_I itself is kept.
 FitResult fit_declared(const LpvModel<double>& declared, const Experiment<double>& est, const FitOptions& fit);
 
-/// Runs the rounds.
+/// Runs the rounds: fold mode when `val` has no samples, one split otherwise.
 RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<double>& est,
                            const Experiment<double>& val, const RankingOptions& options);
 

@@ -2,7 +2,9 @@
 
 #include <stdexcept>
 
+#include "core/number_text.h"
 #include "model/simulate.h"
+#include "model/state_scheduling.h"
 
 namespace lpvid {
 
@@ -83,14 +85,50 @@ double& slot_value(LpvModel<double>& m, const ParameterSlot& s) {
     case Where::kOutputLower: return m.statics.output.lower;
     case Where::kOutputUpper: return m.statics.output.upper;
     case Where::kOutputCoef: return index_checked(m.statics.output.coefficients, s.term);
+    case Where::kStateOffset: {
+      Vec<double>& v = index_checked(m.state_offset.values, s.term);
+      if (s.row < 0 || s.row >= v.size()) throw std::out_of_range("state_offset slot outside its vector");
+      return v(s.row);
+    }
+    case Where::kStateShift:
+      throw std::invalid_argument("slot " + s.name + ": a state-function shift is column text, use slot_values/with_slot_values");
   }
   throw std::out_of_range("unknown parameter slot");
 }
 
+namespace {
+
+/// The parsed state column of a kStateShift slot (checked).
+StateColumn shift_column(const LpvModel<double>& m, const ParameterSlot& s) {
+  if (s.term < 0 || static_cast<size_t>(s.term) >= m.columns.rho.size())
+    throw std::out_of_range("state shift slot outside the scheduling columns");
+  const StateColumn c = parse_state_column(m.columns.rho[static_cast<size_t>(s.term)]);
+  if (c.state < 0 || c.function == StateFunction::kState)
+    throw std::out_of_range("state shift slot on column '" + m.columns.rho[static_cast<size_t>(s.term)] +
+                            "', which has no shift");
+  return c;
+}
+
+double get_slot(LpvModel<double>& m, const ParameterSlot& s) {
+  if (s.where == Where::kStateShift) return double_from_text(shift_column(m, s).shift);
+  return slot_value(m, s);
+}
+
+void set_slot(LpvModel<double>& m, const ParameterSlot& s, double v) {
+  if (s.where == Where::kStateShift) {
+    const StateColumn c = shift_column(m, s);
+    m.columns.rho[static_cast<size_t>(s.term)] = state_column_text(c.function, c.state, v);
+    return;
+  }
+  slot_value(m, s) = v;
+}
+
+}  // namespace
+
 Vec<double> slot_values(const LpvModel<double>& m, const std::vector<ParameterSlot>& slots) {
   LpvModel<double> copy = m;
   Vec<double> p(static_cast<Eigen::Index>(slots.size()));
-  for (size_t i = 0; i < slots.size(); ++i) p(static_cast<Eigen::Index>(i)) = slot_value(copy, slots[i]);
+  for (size_t i = 0; i < slots.size(); ++i) p(static_cast<Eigen::Index>(i)) = get_slot(copy, slots[i]);
   return p;
 }
 
@@ -100,7 +138,7 @@ LpvModel<double> with_slot_values(const LpvModel<double>& m, const std::vector<P
     throw std::invalid_argument("with_slot_values: " + std::to_string(p.size()) + " values for " +
                                 std::to_string(slots.size()) + " slots");
   LpvModel<double> out = m;
-  for (size_t i = 0; i < slots.size(); ++i) slot_value(out, slots[i]) = p(static_cast<Eigen::Index>(i));
+  for (size_t i = 0; i < slots.size(); ++i) set_slot(out, slots[i], p(static_cast<Eigen::Index>(i)));
   // keep saturation/dead-zone limits ordered whatever the fit did
   for (StaticMap<double>* g : {&out.statics.input, &out.statics.output})
     if (g->lower > g->upper) std::swap(g->lower, g->upper);
@@ -124,18 +162,13 @@ std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Mon
   return out;
 }
 
-namespace {
-
-/// Ones on the superdiagonal, zeros elsewhere outside the first column.
-bool observer_shaped(const Mat<double>& a) {
-  if (a.rows() != a.cols() || a.rows() < 2) return false;
+bool observer_shaped(const Mat<double>& a, Eigen::Index min_order) {
+  if (a.rows() != a.cols() || a.rows() < min_order) return false;
   for (Eigen::Index i = 0; i < a.rows(); ++i)
     for (Eigen::Index j = 1; j < a.cols(); ++j)
       if (a(i, j) != (j == i + 1 ? 1.0 : 0.0)) return false;
   return true;
 }
-
-}  // namespace
 
 std::vector<ParameterSlot> dynamics_slots(const LpvModel<double>& m) {
   std::vector<ParameterSlot> out;
@@ -153,7 +186,28 @@ std::vector<ParameterSlot> dynamics_slots(const LpvModel<double>& m) {
                        entry("A", f, static_cast<int>(r), static_cast<int>(c))});
   }
   term_slots(m.B, Where::kB, "B", m.scheduling, out);
+  const std::vector<ParameterSlot> e = state_offset_slots(m);
+  out.insert(out.end(), e.begin(), e.end());
   return out;
+}
+
+std::vector<ParameterSlot> state_offset_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> out;
+  for (size_t j = 0; j < m.state_offset.values.size(); ++j)
+    for (int r = 0; r < m.state_offset.values[j].size(); ++r)
+      out.push_back({Where::kStateOffset, static_cast<int>(j), r, 0,
+                     "E[" + m.state_offset.basis[j].text(m.scheduling) + "](" + std::to_string(r + 1) + ")"});
+  return out;
+}
+
+ParameterSlot state_shift_slot(const LpvModel<double>& m, int j) {
+  if (j < 0 || static_cast<size_t>(j) >= m.columns.rho.size())
+    throw std::invalid_argument("state_shift_slot: no scheduling column " + std::to_string(j + 1));
+  const StateColumn c = parse_state_column(m.columns.rho[static_cast<size_t>(j)]);
+  if (c.state < 0 || c.function == StateFunction::kState)
+    throw std::invalid_argument("state_shift_slot: column '" + m.columns.rho[static_cast<size_t>(j)] +
+                                "' is not a state function with a shift");
+  return {Where::kStateShift, j, 0, 0, "shift[" + m.scheduling[static_cast<size_t>(j)] + "]"};
 }
 
 double constant_a_radius(const LpvModel<double>& m) {

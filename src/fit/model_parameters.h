@@ -11,6 +11,13 @@
 /// linear part re-estimated together with the static map. Without A, B slots
 /// and without a static output map the output is affine in every C, D, φ
 /// and x0 slot.
+///
+/// Issue 18 item 2: an entry of a state offset value e_j (kStateOffset,
+/// E(ρ) = Σ_j h_j(ρ) e_j in the state equation) and the shift c of a
+/// state-function scheduling column "@sqrt(x<i>-c)" (kStateShift, the
+/// fitted level). The shift lives in the column text: slot_values reads it
+/// from the text, with_slot_values re-renders the text from the double
+/// (model/state_scheduling.h: the shortest text that reads back exactly).
 
 #include <string>
 #include <vector>
@@ -21,14 +28,17 @@
 namespace lpvid {
 
 struct ParameterSlot {
-  enum class Where { kA, kC, kD, kB, kOffset, kX0, kInputLower, kInputUpper, kInputCoef, kOutputLower, kOutputUpper, kOutputCoef };
+  enum class Where { kA, kC, kD, kB, kOffset, kX0, kInputLower, kInputUpper, kInputCoef, kOutputLower, kOutputUpper, kOutputCoef,
+                     kStateOffset, kStateShift };
   Where where = Where::kC;
-  int term = 0;  ///< term index (C, D), offset basis index, coefficient index
+  int term = 0;  ///< term index (C, D), (state) offset basis index, coefficient index, scheduling index (kStateShift)
   int row = 0, col = 0;
   std::string name;  ///< e.g. "C[rho1](1,2)", "input.upper", "x0(1)"
 };
 
-/// The scalar a slot names (throws std::out_of_range for a stale slot).
+/// The scalar a slot names (throws std::out_of_range for a stale slot, and
+/// std::invalid_argument for kStateShift, whose value is column text: use
+/// slot_values / with_slot_values).
 double& slot_value(LpvModel<double>& m, const ParameterSlot& s);
 
 /// Current values of the slots.
@@ -46,7 +56,19 @@ std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Mon
 /// the superdiagonal, zeros elsewhere outside column 1) every A term moves
 /// only in its first column: -a, the minimal parametrisation of the
 /// denominator, and for a term f(ρ)·A_f a feedback f(ρ)·A_f(:,1)·x_1.
+/// With a state offset, also every entry of its values (state_offset_slots).
 std::vector<ParameterSlot> dynamics_slots(const LpvModel<double>& m);
+
+/// Slots of every entry of every state offset value e_j (issue 18).
+std::vector<ParameterSlot> state_offset_slots(const LpvModel<double>& m);
+/// Slot of the shift c of scheduling column j, which must be
+/// "@abs/@sqrt/@hinge(x<i>-c)" (throws std::invalid_argument otherwise).
+ParameterSlot state_shift_slot(const LpvModel<double>& m, int j);
+
+/// Ones on the superdiagonal, zeros elsewhere outside the first column, and
+/// at least `min_order` rows: the observer canonical form (fit/observer_form.h)
+/// whose A terms move only in their first column.
+bool observer_shaped(const Mat<double>& a, Eigen::Index min_order = 2);
 
 /// Spectral radius of the constant A term (0 without one). The stability
 /// guard of the joint re-fit; ρ-dependent A terms are judged by whether the

@@ -15,13 +15,19 @@ namespace {
 
 struct Window {
   Eigen::Index first = 0, last = 0;
+  Eigen::Index skip_first = 0, skip_last = 0;  ///< rows left out of the cost (empty if skip_first >= skip_last)
 };
 
-Window window_of(const Experiment<double>& exp, Eigen::Index first, Eigen::Index last) {
-  Window w{first, last < 0 ? exp.n() : last};
+Window window_of(const Experiment<double>& exp, Eigen::Index first, Eigen::Index last, Eigen::Index skip_first = 0,
+                 Eigen::Index skip_last = 0) {
+  Window w{first, last < 0 ? exp.n() : last, std::max(skip_first, first), std::min(skip_last, last < 0 ? exp.n() : last)};
   if (w.first < 0 || w.first >= w.last || w.last > exp.n())
     throw std::invalid_argument("fit window [" + std::to_string(first) + ", " + std::to_string(last) +
                                 ") is empty or outside the " + std::to_string(exp.n()) + " samples");
+  if (w.skip_first < w.skip_last && w.skip_last - w.skip_first >= w.last - w.first)
+    throw std::invalid_argument("the held-out block [" + std::to_string(skip_first) + ", " + std::to_string(skip_last) +
+                                ") leaves no sample of the fit window [" + std::to_string(w.first) + ", " +
+                                std::to_string(w.last) + ")");
   return w;
 }
 
@@ -29,7 +35,13 @@ Window window_of(const Experiment<double>& exp, Eigen::Index first, Eigen::Index
 Vec<double> residual(const LpvModel<double>& m, const Experiment<double>& exp, const Window& w) {
   const Simulation<double> sim = simulate(m, exp);
   const Eigen::Index rows = w.last - w.first;
-  const Mat<double> r = exp.y.middleRows(w.first, rows) - sim.output.middleRows(w.first, rows);
+  Mat<double> r = exp.y.middleRows(w.first, rows) - sim.output.middleRows(w.first, rows);
+  if (w.skip_first < w.skip_last) {  // drop the held-out block's rows
+    const Eigen::Index a = w.skip_first - w.first, b = w.skip_last - w.first;
+    Mat<double> kept(rows - (b - a), r.cols());
+    kept << r.topRows(a), r.bottomRows(rows - b);
+    r = std::move(kept);
+  }
   if (!r.allFinite()) return {};
   return stack_rows(r);
 }
@@ -55,9 +67,38 @@ double validation_rms(const LpvModel<double>& model, const Experiment<double>& v
   return prediction_rms(f.model, val);
 }
 
+FreeRunScore warmup_score(const LpvModel<double>& model, const Experiment<double>& exp, Eigen::Index warmup,
+                          Mat<double>* yhat) {
+  if (warmup < 1 || warmup >= exp.n())
+    throw std::invalid_argument("warm-up of " + std::to_string(warmup) + " samples leaves nothing to score in " +
+                                std::to_string(exp.n()) + " samples");
+  LpvModel<double> m = model;
+  m.x0 = Vec<double>::Zero(model.nx);
+  FitOptions x0fit;
+  x0fit.last_sample = warmup;
+  const FitResult f = fit_slots(m, x0_slots(m), exp, x0fit);
+  const Mat<double> out = simulate(f.model, exp).output;
+  if (yhat) *yhat = out;
+  FreeRunScore s;
+  s.warmup = warmup;
+  s.scored = exp.n() - warmup;
+  const Mat<double> y = exp.y.bottomRows(s.scored);
+  const Mat<double> e = y - out.bottomRows(s.scored);
+  if (!e.allFinite()) {
+    s.rms = std::numeric_limits<double>::infinity();
+    s.fit_percent = -std::numeric_limits<double>::infinity();
+    return s;
+  }
+  s.rms = std::sqrt(e.squaredNorm() / static_cast<double>(e.size()));
+  const Mat<double> centred = y.rowwise() - y.colwise().mean();
+  const double spread = centred.norm();
+  s.fit_percent = spread > 0 ? 100.0 * (1.0 - e.norm() / spread) : -std::numeric_limits<double>::infinity();
+  return s;
+}
+
 FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,
                     const Experiment<double>& exp, const FitOptions& o) {
-  const Window w = window_of(exp, o.first_sample, o.last_sample);
+  const Window w = window_of(exp, o.first_sample, o.last_sample, o.skip_first, o.skip_last);
   FitResult res;
   res.model = model;
   const Vec<double> p0 = slot_values(model, slots);

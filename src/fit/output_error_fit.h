@@ -24,6 +24,11 @@ struct FitOptions {
   double rel_tol = 1e-10;      ///< stop when the cost falls by less (relative)
   Eigen::Index first_sample = 0;  ///< the cost starts here (earlier samples only run the state)
   Eigen::Index last_sample = -1;  ///< one past the last sample of the cost (-1: n)
+  /// A held-out block [skip_first, skip_last) inside the cost window whose
+  /// residuals are left out of the cost (the state still runs through it):
+  /// the fit of one fold of a blocked cross-validation (diagnose/fold_plan.h).
+  /// Empty (skip_first >= skip_last): nothing is left out.
+  Eigen::Index skip_first = 0, skip_last = 0;
   /// Stability guard when A is a slot (issue 9 item 2): a step to a constant
   /// A term with spectral radius >= this is rejected (observer_form.h).
   double max_radius = kStableRadius;
@@ -50,6 +55,20 @@ inline constexpr Eigen::Index kValidationInitSamples = 5;
 /// Also returns the simulated output in `yhat` if non-null.
 double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
                       Mat<double>* yhat = nullptr);
+
+/// A free-run score under the benchmark protocol of SPEC §6 (the
+/// nonlinear_benchmarks loader since version 1.0.1): x0 fitted on the first
+/// `warmup` samples only, the RMS and the fit % over the samples after them:
+///   fit % = 100 · (1 − ‖y − ŷ‖ / ‖y − ȳ‖),  ȳ the mean of the scored y.
+struct FreeRunScore {
+  double rms = 0, fit_percent = 0;
+  Eigen::Index warmup = 0, scored = 0;  ///< samples used for x0 / in the RMS
+};
+
+/// Throws std::invalid_argument unless 1 <= warmup < exp.n(). Non-finite
+/// simulation: rms = +inf, fit_percent = -inf.
+FreeRunScore warmup_score(const LpvModel<double>& model, const Experiment<double>& exp, Eigen::Index warmup,
+                          Mat<double>* yhat = nullptr);
 
 /// Fits the slots of `model` to `exp`.
 FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,

@@ -77,21 +77,38 @@ AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experime
         a.names.push_back("phi[" + model.offset.basis[j].text(model.scheduling) + "](" + std::to_string(r + 1) + ")");
   }
   if (unknowns.x0 && model.nx > 0) {
-    // The response to x0 with zero input: column c is the simulation from e_c.
-    Experiment<T> free = exp;
-    free.u.setZero();
-    LpvModel<T> m0 = model;
-    m0.offset.values.clear();
-    m0.statics = StaticBlocks<T>{};  // zero u' (g_in(0) need not be 0)
     Mat<T> Jy(a.n * a.ny, model.nx), Jz1(a.n * a.nz, model.nx);
-    for (int c = 0; c < model.nx; ++c) {
-      m0.x0 = Vec<T>::Zero(model.nx);
-      m0.x0(c) = T(1);
-      const Simulation<T> s = simulate(m0, free);
-      Jy.col(c) = stack_rows(s.yhat);
-      Jz1.col(c) = stack_rows(s.z);
-      a.names.push_back("x0(" + std::to_string(c + 1) + ")");
+    if (has_state_offset(model)) {
+      // With a state offset E(ρ) (issue 18) the response to x0 is not linear
+      // (E acts from x = 0, and "@sqrt(x<i>-c)" columns follow x): column c is
+      // the secant sim(x0 + e_c) − sim(x0) along the actual input. Only the
+      // identification's objective is approximate; the certificate checks the
+      // folded model (x0 + p_x0) by its exact simulation.
+      const Vec<T> base = model.x0.size() == model.nx ? model.x0 : Vec<T>(Vec<T>::Zero(model.nx));
+      for (int c = 0; c < model.nx; ++c) {
+        LpvModel<T> m1 = model;
+        m1.x0 = base;
+        m1.x0(c) += T(1);
+        const Simulation<T> s = simulate(m1, exp);
+        Jy.col(c) = stack_rows(Mat<T>(s.yhat - sim.yhat));
+        Jz1.col(c) = stack_rows(Mat<T>(s.z - sim.z));
+      }
+    } else {
+      // The response to x0 with zero input: column c is the simulation from e_c.
+      Experiment<T> free = exp;
+      free.u.setZero();
+      LpvModel<T> m0 = model;
+      m0.offset.values.clear();
+      m0.statics = StaticBlocks<T>{};  // zero u' (g_in(0) need not be 0)
+      for (int c = 0; c < model.nx; ++c) {
+        m0.x0 = Vec<T>::Zero(model.nx);
+        m0.x0(c) = T(1);
+        const Simulation<T> s = simulate(m0, free);
+        Jy.col(c) = stack_rows(s.yhat);
+        Jz1.col(c) = stack_rows(s.z);
+      }
     }
+    for (int c = 0; c < model.nx; ++c) a.names.push_back("x0(" + std::to_string(c + 1) + ")");
     a.layout.n_x0 = model.nx;
     jy.push_back(Jy);
     jz.push_back(Jz1);

@@ -131,6 +131,8 @@ LpvModel<To> convert_model(const LpvModel<From>& m) {
   }
   out.offset.basis = m.offset.basis;
   for (const auto& v : m.offset.values) out.offset.values.push_back(conv<To>(v));
+  out.state_offset.basis = m.state_offset.basis;
+  for (const auto& v : m.state_offset.values) out.state_offset.values.push_back(conv<To>(v));
   out.x0 = conv<To>(m.x0);
   return out;
 }

@@ -1,7 +1,7 @@
 #pragma once
 /// The LPV model of SPEC §2 (paper eq. 1 with G11 = 0, G21 = I, and eq. 8–10):
 ///
-///   x_{k+1} = A(ρ_k) x_k + B(ρ_k) u_k
+///   x_{k+1} = A(ρ_k) x_k + B(ρ_k) u_k + E(ρ_k)   (E: state_offset, zero by default)
 ///   z_k     = C1(ρ_k) x_k + D1(ρ_k) u_k      (uncertainty channel)
 ///   y_k     = C2(ρ_k) x_k + D2(ρ_k) u_k + w_k + d_k + Φ(ρ_k)
 ///
@@ -63,6 +63,20 @@ struct Offset {
   std::vector<Vec<T>> values;
 };
 
+/// Affine term of the state equation (issue 18 item 2, beyond SPEC §2):
+/// E(ρ) = Σ_j h_j(ρ) e_j, e_j ∈ R^nx, so x_{k+1} = A(ρ_k) x_k + B(ρ_k) u'_k + E(ρ_k).
+/// With a scheduling column "@sqrt(x1-c)" (model/state_scheduling.h) a basis
+/// term ρ with value e adds e·√|x1 − c|: a tank's outflow. The values are
+/// always given (no unknowns: Theorem 3.1's state must not depend on θ).
+/// Empty basis: no term.
+template <typename T>
+struct StateOffset {
+  std::vector<Monomial> basis;
+  std::vector<Vec<T>> values;  ///< one nx-vector per basis function
+
+  bool empty() const { return basis.empty() && values.empty(); }
+};
+
 template <typename T>
 struct LpvModel {
   int nx = 0, nu = 0, ny = 0;
@@ -73,6 +87,7 @@ struct LpvModel {
   Correction<T> correction;
   Uncertainty<T> uncertainty;
   Offset<T> offset;
+  StateOffset<T> state_offset;  ///< E(ρ) in the state equation; none by default
   Vec<T> x0;  ///< length nx; zero unless given
   StaticBlocks<T> statics;  ///< input delay, static input/output maps (model/static_blocks.h); none by default
 

@@ -25,6 +25,10 @@
 ///                digits or '_' (so that basis texts like rho1^2*rho2 parse).
 ///   columns      required {"u": [nu names], "y": [ny names],
 ///                "rho": [nρ names]}; "rho" defaults to the scheduling names.
+///                A rho name "@x<i>", "@abs(x<i>-c)", "@sqrt(x<i>-c)" or
+///                "@hinge(x<i>-c)" is a function of the model's own state
+///                (data/column_map.h, model/state_scheduling.h); it must
+///                parse and name a state 1..nx.
 ///   initial      required object {A, B, C, D}; each a list of terms
 ///                {"basis": text, "value": matrix}; absent or [] is zero.
 ///                Sizes: A nx×nx, B nx×nu, C ny×nx, D ny×nu. A matrix is a
@@ -41,6 +45,12 @@
 ///                Default: multiplicative with weight 1.
 ///   offset       optional {"basis": [distinct texts], "values": [ny-vectors,
 ///                one per basis function]}; without values, φ_j are unknown.
+///   state_offset optional {"basis": [distinct texts], "values": [nx-vectors,
+///                one per basis function]} (values required): the affine term
+///                E(ρ) = Σ_j h_j(ρ) e_j of x_{k+1} = A(ρ)x + B(ρ)u' + E(ρ)
+///                (issue 18 item 2; with a column "@sqrt(x1-c)" a term
+///                ρ·e is the outflow e·√|x1 − c|). Absent: no term. Toeplitz
+///                mode "paper" refuses a model with it.
 ///   x0           optional list of nx numbers (default zero).
 ///
 /// Errors: InputError "file:line: json.path: reason", e.g.
@@ -53,7 +63,7 @@
 /// the denominator is 2^a·5^b with at most 40 decimals, else "p/q". Doubles
 /// are written as JSON numbers in the shortest text that reads back as the
 /// same double. Only non-zero correction A_i/B_i are written; x0 only when
-/// non-zero.
+/// non-zero; state_offset only when it has a basis.
 
 #include <string>
 #include <string_view>

@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "core/limits.h"
 #include "core/number_text.h"
+#include "model/state_scheduling.h"
 
 namespace lpvid {
 namespace {
@@ -233,7 +234,7 @@ class ModelReader {
            "expected \"" + std::string(kModelFormat) + "\", got \"" + format + "\"");
     check_keys(root, path,
                {"format", "description", "states", "inputs", "outputs", "scheduling", "columns", "initial",
-                "correction", "uncertainty", "offset", "x0", "static"});
+                "correction", "uncertainty", "offset", "state_offset", "x0", "static"});
     if (const JsonNode* d = root.find("description")) string_at(*d, member_path(path, "description"));
 
     LpvModel<T> m;
@@ -283,6 +284,17 @@ class ModelReader {
         m.columns.rho = column_list("rho", names.size(), "scheduling variables");
       else
         m.columns.rho = names;
+      // state-scheduling columns (data/column_map.h): the text parses and names a state 1..nx
+      for (size_t i = 0; i < m.columns.rho.size(); ++i) {
+        const std::string rp = index_path(member_path(cp, "rho"), i);
+        const JsonNode* rn = c.find("rho");
+        const JsonNode& at = rn && rn->is_array() && i < rn->items.size() ? rn->items[i] : c;
+        try {
+          state_functions<T>({m.columns.rho[i]}, m.nx);
+        } catch (const std::invalid_argument& e) {
+          fail(at, rp, e.what());
+        }
+      }
     }
 
     // initial model S_I
@@ -364,6 +376,22 @@ class ModelReader {
         for (size_t i = 0; i < v->items.size(); ++i)
           m.offset.values.push_back(vector<T>(v->items[i], index_path(vp, i), ny));
       }
+    }
+
+    // state offset E(ρ) (issue 18 item 2): values required, one nx-vector per basis function
+    if (const JsonNode* o = root.find("state_offset")) {
+      const std::string op = member_path(path, "state_offset");
+      expect(*o, Kind::kObject, op);
+      check_keys(*o, op, {"basis", "values"});
+      m.state_offset.basis = basis_list(required(*o, op, "basis"), member_path(op, "basis"), names);
+      const std::string vp = member_path(op, "values");
+      const JsonNode& v = required(*o, op, "values");
+      expect(v, Kind::kArray, vp);
+      if (v.items.size() != m.state_offset.basis.size())
+        fail(v, vp, "expected " + std::to_string(m.state_offset.basis.size()) +
+                        " vectors (one per state_offset basis function), got " + std::to_string(v.items.size()));
+      for (size_t i = 0; i < v.items.size(); ++i)
+        m.state_offset.values.push_back(vector<T>(v.items[i], index_path(vp, i), nx));
     }
 
     // x0

@@ -9,6 +9,7 @@
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "model/state_scheduling.h"
 
 namespace lpvid {
 namespace {
@@ -109,6 +110,11 @@ ojson to_json(const LpvModel<T>& m) {
       m.columns.rho.size() != names.size())
     bad_model("columns: need " + std::to_string(m.nu) + " u, " + std::to_string(m.ny) + " y and " +
               std::to_string(names.size()) + " rho names");
+  try {
+    state_functions<T>(m.columns.rho, m.nx);  // state columns parse and name a state (data/column_map.h)
+  } catch (const std::invalid_argument& e) {
+    bad_model(std::string("columns.rho: ") + e.what());
+  }
   ojson columns = ojson::object();
   columns["u"] = m.columns.u;
   columns["y"] = m.columns.y;
@@ -170,6 +176,23 @@ ojson to_json(const LpvModel<T>& m) {
       off["values"] = std::move(values);
     }
     j["offset"] = std::move(off);
+  }
+
+  if (!m.state_offset.empty()) {
+    const StateOffset<T>& so = m.state_offset;
+    if (so.values.size() != so.basis.size()) bad_model("state_offset: values and basis differ in length");
+    ojson off = ojson::object();
+    ojson basis = ojson::array();
+    for (size_t i = 0; i < so.basis.size(); ++i)
+      basis.push_back(basis_text(so.basis[i], names, "state_offset.basis[" + std::to_string(i) + "]"));
+    off["basis"] = std::move(basis);
+    ojson values = ojson::array();
+    for (const auto& v : so.values) {
+      if (v.size() != nx) bad_model("state_offset.values: vector of length " + std::to_string(v.size()) + ", expected " + std::to_string(nx));
+      values.push_back(vector_json(v));
+    }
+    off["values"] = std::move(values);
+    j["state_offset"] = std::move(off);
   }
 
   if (m.x0.size() != 0 && m.x0.size() != nx)

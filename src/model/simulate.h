@@ -3,14 +3,15 @@
 /// and eq. 8–10) along a measured trajectory, and the data that makes the
 /// model output affine in the unknown correction θ (Theorem 3.1, eq. 14–15).
 ///
-///   x_{k+1} = A(ρ_k) x_k + B(ρ_k) u_k,        x_0 = model.x0 (zero if empty)
+///   x_{k+1} = A(ρ_k) x_k + B(ρ_k) u_k + E(ρ_k),   x_0 = model.x0 (zero if empty)
 ///   ŷ_k     = C(ρ_k) x_k + D(ρ_k) u_k          (C = C2, D = D2; no offset)
 ///   z_k     = C1(ρ_k) x_k + D1(ρ_k) u_k        (model/uncertainty_channel.h)
 ///   Φ_k     = Σ_j h_j(ρ_k) φ_j                 (offset, zero unless given)
 ///
 /// with A(ρ) = A_0(ρ) + Σ_i f_i(ρ) A_i and B(ρ) = B_0(ρ) + Σ_i f_i(ρ) B_i: the
 /// fixed A_i, B_i of the correction S_C (eq. 10) are part of the state
-/// equation. The correction's C_i, D_i are unknowns; since A_i, B_i are fixed
+/// equation, and so is the state offset E(ρ) = Σ_j h_j(ρ) e_j (model.state_offset,
+/// issue 18 item 2; zero unless given). The correction's C_i, D_i are unknowns; since A_i, B_i are fixed
 /// the state x does not depend on them and
 ///
 ///   ŷ_k(θ) = ŷ_k + Σ_i f_i(ρ_k) (C_i x_k + D_i u_k)
@@ -18,7 +19,8 @@
 /// is affine in θ (output_jacobian below gives the exact linear part).
 ///
 /// Everything is templated on the scalar (double or Rational) and uses only
-/// +, −, ×: no tolerance, no sqrt (DESIGN §4).
+/// +, −, ×: no tolerance, no sqrt (DESIGN §4); the one root, of a
+/// "@sqrt(x<i>-c)" column, is the exact rounded root of model/state_scheduling.h.
 
 #include <stdexcept>
 #include <string>
@@ -140,6 +142,17 @@ SystemMatrices<T> system_matrices(const LpvModel<T>& model) {
                                     std::to_string(off.values[j].size()) + ", expected ny = " +
                                     std::to_string(ny));
   }
+  const auto& soff = model.state_offset;
+  for (size_t j = 0; j < soff.basis.size(); ++j)
+    detail::check_basis(soff.basis[j], n_rho, "state_offset basis " + std::to_string(j + 1));
+  if (soff.values.size() != soff.basis.size())
+    throw std::invalid_argument("state_offset has " + std::to_string(soff.values.size()) + " values but " +
+                                std::to_string(soff.basis.size()) + " basis functions");
+  for (size_t j = 0; j < soff.values.size(); ++j)
+    if (soff.values[j].size() != nx)
+      throw std::invalid_argument("state_offset value " + std::to_string(j + 1) + " has length " +
+                                  std::to_string(soff.values[j].size()) + ", expected nx = " + std::to_string(nx));
+  state_functions<T>(model.columns.rho, nx);  // state columns name existing states and parse
   if (model.x0.size() != 0 && model.x0.size() != nx)
     throw std::invalid_argument("x0 has length " + std::to_string(model.x0.size()) + ", expected nx = " +
                                 std::to_string(nx));
@@ -170,11 +183,29 @@ void check_experiment(const LpvModel<T>& model, const Experiment<T>& exp) {
 /// Output offset Φ(ρ) = Σ_j h_j(ρ) φ_j (paper eq. 20) at one sample; zero
 /// when the values are unknown (empty). Length ny.
 template <typename T>
+Vec<T> basis_sum(const std::vector<Monomial>& basis, const std::vector<Vec<T>>& values, Eigen::Index size,
+                 const Vec<T>& rho) {
+  Vec<T> sum = Vec<T>::Zero(size);
+  for (size_t j = 0; j < values.size(); ++j) sum += basis[j].template eval<T>(rho) * values[j];
+  return sum;
+}
+
+template <typename T>
 Vec<T> offset_at(const LpvModel<T>& model, const Vec<T>& rho) {
-  Vec<T> phi = Vec<T>::Zero(model.ny);
-  for (size_t j = 0; j < model.offset.values.size(); ++j)
-    phi += model.offset.basis[j].template eval<T>(rho) * model.offset.values[j];
-  return phi;
+  return basis_sum(model.offset.basis, model.offset.values, model.ny, rho);
+}
+
+/// State offset E(ρ) = Σ_j h_j(ρ) e_j (model.state_offset) at one sample;
+/// length nx (zero without a state offset).
+template <typename T>
+Vec<T> state_offset_at(const LpvModel<T>& model, const Vec<T>& rho) {
+  return basis_sum(model.state_offset.basis, model.state_offset.values, model.nx, rho);
+}
+
+/// True when the model has a state offset term (model.state_offset).
+template <typename T>
+bool has_state_offset(const LpvModel<T>& model) {
+  return !model.state_offset.empty();
 }
 
 /// The trajectories of one simulation; row k is sample k (k = 0 … n−1).
@@ -190,9 +221,10 @@ struct Simulation {
 
 /// Simulates the model (SPEC §2, paper eq. 1 / 8–10) along the experiment's u
 /// and ρ from x_0 = model.x0 (zero if empty). The LPV part sees the input
-/// u' = g_in(u_{k−d}) of the model's static blocks (identity unless declared);
+/// u' = g_in(u_{k−d}) of the model's static blocks (identity unless declared),
+/// plus the state offset E(ρ_k) (model.state_offset);
 /// the model's prediction of y is output = g_out(yhat + offset). A scheduling
-/// column "@x<i>" is the model's own state (model/state_scheduling.h): the
+/// column "@x<i>" (or "@sqrt(x<i>-c)", …) is a function of the model's own state (model/state_scheduling.h): the
 /// experiment's column is ignored and recomputed. Throws std::invalid_argument on size mismatches.
 namespace detail {
 
@@ -224,21 +256,25 @@ Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp_in) {
   sim.z = Mat<T>::Zero(n, nz);
   sim.offset = Mat<T>::Zero(n, model.ny);
   sim.rho = exp.rho;
-  const std::vector<std::pair<int, int>> own = state_scheduled(model.columns.rho, model.nx);
+  const std::vector<StateScheduled<T>> own = state_functions<T>(model.columns.rho, model.nx);
+  const bool affine = has_state_offset(model);
   const Mat<T> u_model = model.statics.model_input(exp.u);  // u' = g_in(u_{k−d})
   Vec<T> x = model.x0.size() == 0 ? Vec<T>(Vec<T>::Zero(model.nx)) : model.x0;
   for (Eigen::Index k = 0; k < n; ++k) {
     Vec<T> rho = detail::rho_at(exp.rho, k);
-    for (const auto& [j, i] : own) {
-      rho(j) = scheduling_grid(T(x(i)));
-      sim.rho(k, j) = rho(j);
+    for (const StateScheduled<T>& f : own) {
+      rho(f.j) = state_function_value(f.function, T(x(f.i)), f.shift);
+      sim.rho(k, f.j) = rho(f.j);
     }
     const Vec<T> u = u_model.row(k).transpose();
     sim.x.row(k) = x.transpose();
     sim.yhat.row(k) = (s.C.at(rho) * x + s.D.at(rho) * u).transpose();
     sim.z.row(k) = (s.C1.at(rho) * x + s.D1.at(rho) * u).transpose();
     sim.offset.row(k) = offset_at(model, rho).transpose();
-    if (k + 1 < n) x = (s.A.at(rho) * x + s.B.at(rho) * u).eval();
+    if (k + 1 < n) {
+      x = (s.A.at(rho) * x + s.B.at(rho) * u).eval();
+      if (affine) x += state_offset_at(model, rho);  // E(ρ_k)
+    }
   }
   sim.output = model.statics.output.apply(Mat<T>(sim.yhat + sim.offset));
   return sim;

@@ -70,10 +70,14 @@ enum class SystemChannel {
 /// Eq. (2) for the model (SPEC §2, with the fixed correction A_i, B_i in the
 /// state equation) along ρ (n × nρ; n × 0 when nρ = 0):
 /// T_G22 ((n·ny) × (n·nu)) or T_G12 ((n·nz) × (n·nu)). Maps u to the output
-/// from x_0 = 0, whatever model.x0 says.
+/// from x_0 = 0, whatever model.x0 says. Throws std::invalid_argument for a
+/// model with a state offset (model.state_offset): T_G would silently drop it.
 template <typename T>
 Mat<T> system_toeplitz(const LpvModel<T>& model, const Mat<T>& rho, SystemChannel channel = SystemChannel::kOutput) {
   const SystemMatrices<T> s = system_matrices(model);
+  if (has_state_offset(model))
+    throw std::invalid_argument("system_toeplitz: the model has a state_offset E(rho), which T_G (a linear map of u, "
+                                "eq. 2) cannot hold; paper mode does not support state_offset");
   if (rho.cols() != model.n_rho())
     throw std::invalid_argument("system_toeplitz: rho has " + std::to_string(rho.cols()) +
                                 " columns, model has n_rho = " + std::to_string(model.n_rho()));

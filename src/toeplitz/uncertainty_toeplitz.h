@@ -65,6 +65,7 @@ Mat<T> T_z_signal(const Simulation<T>& sim) {
 /// to z from x_0 = 0, so a model with a non-zero x0 is rejected
 /// (std::invalid_argument): the paper's formula has no term for x_0, and
 /// silently dropping it would describe a different z than the simulation.
+/// Likewise a model with a state offset E(ρ) (model.state_offset) is rejected.
 template <typename T>
 Mat<T> T_z_paper(const LpvModel<T>& model, const Experiment<T>& exp) {
   for (Eigen::Index i = 0; i < model.x0.size(); ++i)
@@ -72,6 +73,10 @@ Mat<T> T_z_paper(const LpvModel<T>& model, const Experiment<T>& exp) {
       throw std::invalid_argument(
           "Toeplitz mode 'paper' (T_z = T_G12 T_u, eq. 4) assumes x_0 = 0, but the model has a non-zero x0; "
           "use mode 'signal'");
+  if (has_state_offset(model))
+    throw std::invalid_argument(
+        "Toeplitz mode 'paper' (T_z = T_G12 T_u, eq. 4) does not support state_offset: the affine term E(rho) of "
+        "the state equation is not a map of u; use mode 'signal'");
   const Mat<T> TG12 = system_toeplitz(model, exp, SystemChannel::kUncertainty);
   return TG12 * signal_toeplitz(Mat<T>(model.statics.model_input(exp.u)));  // u' (model/static_blocks.h)
 }

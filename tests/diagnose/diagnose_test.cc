@@ -92,9 +92,9 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   // the test role: the chosen models' free-run RMS, computed here again
   ASSERT_TRUE(r.test.has_value());
   EXPECT_EQ(r.test->samples, c.test.n());
-  EXPECT_DOUBLE_EQ(r.test->rms_after, validation_rms(r.after_model, c.test, RankingOptions{}.init_samples));
-  EXPECT_LT(r.test->rms_after, 0.04);
-  EXPECT_GT(r.test->rms_before, 0.2);
+  EXPECT_DOUBLE_EQ(r.test->after.rms, warmup_score(r.after_model, c.test, DiagnoseOptions{}.test_warmup).rms);
+  EXPECT_LT(r.test->after.rms, 0.04);
+  EXPECT_GT(r.test->before.rms, 0.2);
 
   // a wrong test set (outputs scaled by 10) and no test set at all change no choice and no exact bound
   Experiment<double> wrong = c.test;
@@ -110,7 +110,7 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
     EXPECT_EQ(s.after[0].bounds.delta2, r.after[0].bounds.delta2);
     EXPECT_EQ(s.after[0].bounds.dmax2, r.after[0].bounds.dmax2);
     if (t != nullptr) {
-      EXPECT_GT(s.test->rms_after, 2 * r.test->rms_after);
+      EXPECT_GT(s.test->after.rms, 2 * r.test->after.rms);
     }
   }
 }

@@ -1,0 +1,58 @@
+#pragma once
+/// Blocked cross-validation of the estimation record (issue 18 item 1,
+/// SPEC §6 "held-out folds"): the effects of `lpvid diagnose` are ranked and
+/// accepted by free-run error on blocks of the estimation record that the
+/// fit did not see, so that one lucky block of held-out rows cannot decide.
+///
+///   folds      K contiguous blocks B_1 … B_K of the n estimation samples
+///              (sizes differ by at most one sample, in record order).
+///   fit        fold j fits on every sample outside B_j: the output-error
+///              cost leaves B_j out, the simulated state runs through it
+///              (FitOptions::skip_first/skip_last, fit/output_error_fit.h).
+///   score      the fold-j model on B_j alone, by the benchmark protocol
+///              (warmup_score): x0 fitted on B_j's first `warmup` samples,
+///              squared error summed over the rest of B_j.
+///   total      held-out RMS = √(Σ_j SSE_j / Σ_j count_j).
+///
+/// Acceptance (accepts): a candidate beats the reference if it lowers the
+/// held-out error on a clear majority of folds (more than half: 3 of 4,
+/// 3 of 5) AND its total held-out RMS is at least `min_gain` below the
+/// reference's total. Blocked rather than shuffled folds: the samples of a
+/// dynamic system are not exchangeable, and a free run needs contiguous rows.
+
+#include <string>
+#include <vector>
+
+#include "core/scalar.h"
+
+namespace lpvid {
+
+struct FoldBlock {
+  Eigen::Index first = 0, last = 0;  ///< rows [first, last) of the estimation record
+};
+
+/// K blocked folds of n samples. Throws InputError unless K >= 2 and every
+/// block has more than 2·warmup samples (a warm-up and as many scored).
+std::vector<FoldBlock> blocked_folds(Eigen::Index n, int k, Eigen::Index warmup);
+
+/// Held-out figures of one model family over the folds (+inf when a fold's
+/// fit or free run was not finite).
+struct FoldFigures {
+  std::vector<double> sse;           ///< Σ of squared errors on the scored rows of each block
+  std::vector<Eigen::Index> count;   ///< scored entries (rows × outputs) of each block
+
+  bool empty() const { return sse.empty(); }
+  double rms(size_t j) const;   ///< held-out RMS of fold j
+  double total_rms() const;     ///< √(Σ SSE / Σ count)
+};
+
+/// Folds on which `candidate` has a strictly lower SSE than `reference`.
+int folds_won(const FoldFigures& candidate, const FoldFigures& reference);
+
+/// The acceptance rule above (min_gain in [0, 1)).
+bool accepts(const FoldFigures& candidate, const FoldFigures& reference, double min_gain);
+
+/// "3 of 4 folds and at least 5 % on the total" — the rule in words.
+std::string acceptance_rule_text(size_t folds, double min_gain);
+
+}  // namespace lpvid
