@@ -187,7 +187,7 @@ int run_diagnose(DiagnoseArgs& a) {
   const auto started = std::chrono::steady_clock::now();
   o.ranking.progress = [started](const std::string& status) {
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    std::fprintf(stderr, "[diagnose %6.1f s] effects, %s\n", s, status.c_str());
+    std::fprintf(stderr, "[diagnose %6.1f s] %s\n", s, status.c_str());
   };
   o.test_warmup = warmup;
   o.windows = windows;

@@ -1,5 +1,7 @@
 #include "diagnose/diagnose.h"
 
+#include <mutex>
+
 #include "core/input_error.h"
 #include "core/parallel_for.h"
 #include "fit/output_error_fit.h"
@@ -66,6 +68,8 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   out.before.resize(windows.size());
   out.after.resize(windows.size());
   const unsigned threads = options.make_solver ? std::max(1u, options.threads) : 1u;
+  std::mutex report;
+  size_t done = 0;
   parallel_for(2 * windows.size(), threads, [&](size_t job) {
     const size_t i = job / 2;
     const bool after = job % 2 == 1;
@@ -75,7 +79,14 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
     (after ? out.after : out.before)[i] =
         certify_window(after ? out.after_model : out.before_model, est_d, est_q, windows[i].first, windows[i].second,
                        options.file_row_offset, wo, own ? *own : solver);
+    if (options.ranking.progress) {
+      const std::lock_guard<std::mutex> lock(report);
+      options.ranking.progress("bounds (Theorem 2.1), " + std::to_string(++done) + " of " +
+                               std::to_string(2 * windows.size()) + ": window " + std::to_string(i + 1) + " " +
+                               (after ? "after" : "before") + " done");
+    }
   });
+  if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
   CertifyOptions co = options.certify;
   co.certificate_path = theorem31_certificate_path(options.certify.certificate_path, false);
   out.before_id = identify_on_window(out.before_model, est_d, est_q, windows[0].first, windows[0].second,

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/rms.h"
+#include "diagnose/cascade_form.h"
 #include "fit/wiener_starts.h"
 #include "model/simulate.h"
 #include "model/state_scheduling.h"
@@ -127,6 +128,47 @@ void state_nonlinearity_candidates(const LpvModel<double>& base, const Simulatio
       out.push_back(std::move(cand));
     }
   }
+}
+
+/// The √ outflow and the overflow hinge on the levels of the cascade
+/// realisation (diagnose/cascade_form.h): one candidate per store and kind,
+/// started from both pole orderings (same structure, so the same slots).
+void cascade_state_nonlinearity_candidates(const LpvModel<double>& base, const Experiment<double>& est,
+                                           std::vector<EffectCandidate>& out) {
+  const std::vector<LpvModel<double>> cascades = cascade_realisations(base);
+  if (cascades.empty()) return;
+  const StateFunction kinds[] = {StateFunction::kSqrt, StateFunction::kHinge};
+  for (int i = 0; i < 2; ++i)
+    for (StateFunction f : kinds) {
+      std::vector<LpvModel<double>> starts;
+      for (const LpvModel<double>& c : cascades) {
+        const Mat<double> zi = simulate(c, est).x.col(i);
+        if (zi.size() == 0 || !zi.allFinite()) continue;
+        const double lo = zi.minCoeff(), hi = zi.maxCoeff();
+        const double shift = f == StateFunction::kHinge ? quantile(zi, 0.9)
+                                                        : lo - std::max(0.05 * (hi - lo), 1e-6 * std::max(1.0, std::abs(lo)));
+        const std::string z = "x" + std::to_string(i + 1);
+        LpvModel<double> s = add_scheduling_variable(
+            c, scheduling_name(std::string(f == StateFunction::kSqrt ? "sqrt_" : "hinge_") + "level" + std::to_string(i + 1), c.scheduling),
+            state_column_text(f, i, shift));
+        Monomial h = constant_monomial(static_cast<size_t>(s.n_rho()));
+        h.powers[static_cast<size_t>(s.n_rho() - 1)] = 1;
+        s.state_offset.basis.push_back(h);
+        s.state_offset.values.push_back(Vec<double>::Zero(base.nx));
+        starts.push_back(std::move(s));
+      }
+      if (starts.empty()) continue;
+      const std::string level = i == 0 ? "the upstream level x1 (feeds x2)" : "the downstream level x2 (y = x2)";
+      EffectCandidate cand = make(
+          "state_nonlinearity",
+          std::string("state_nonlinearity ") + (f == StateFunction::kSqrt ? "sqrt" : "hinge") + " of " + level +
+              ", states in cascade form: " +
+              (f == StateFunction::kSqrt ? "e*sqrt|x - c| (square-root outflow)" : "e*max(x - c, 0) (overflow at level c)"),
+          base.nx + 1, starts);
+      cand.slots.push_back(state_shift_slot(starts.front(), starts.front().n_rho() - 1));
+      cand.slots = with_dynamics_slots(cand.slots, starts.front());
+      out.push_back(std::move(cand));
+    }
 }
 
 }  // namespace
@@ -265,7 +307,10 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
     }
   }
 
-  if (o.state_functions) state_nonlinearity_candidates(base, sim, out);
+  if (o.state_functions) {
+    state_nonlinearity_candidates(base, sim, out);
+    cascade_state_nonlinearity_candidates(base, est, out);
+  }
 
   // output_offset: Φ = φ_1 (basis 1) when the model has no constant offset
   {

@@ -165,7 +165,7 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
     if (o.progress) {
       const std::lock_guard<std::mutex> lock(report);
       ++done;
-      o.progress(stage + ": fit " + std::to_string(done) + " of " + std::to_string(jobs) + " (" + labels[i] + ", " +
+      o.progress("effects, " + stage + ": fit " + std::to_string(done) + " of " + std::to_string(jobs) + " (" + labels[i] + ", " +
                  (t == k ? std::string("all rows") : "without fold " + std::to_string(t + 1)) + ")");
     }
   });
@@ -337,7 +337,7 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
       r.ranked[i] = fit_candidate(cands[i], est, val, o, current);
       if (!o.progress) return;
       const std::lock_guard<std::mutex> lock(report);
-      o.progress("round " + std::to_string(round + 1) + ": candidate " + std::to_string(++done) + " of " +
+      o.progress("effects, round " + std::to_string(round + 1) + ": candidate " + std::to_string(++done) + " of " +
                  std::to_string(cands.size()) + " (" + cands[i].label + ")");
     });
     set_explained(r);
