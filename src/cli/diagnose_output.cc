@@ -361,13 +361,13 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
     std::vector<std::string> names = in.validation_outputs;
     if (names.size() != static_cast<size_t>(in.val->ny())) {  // held-out rows of --data
       names.clear();
-      for (const std::string& y : res.before_model.columns.y) names.push_back(y + " (held out)");
+      for (const std::string& y : res.before_model.columns.y) names.push_back(y + (in.folds ? " (last fold)" : " (held out)"));
     }
     const std::vector<std::pair<std::string, PlotOutcome>> made = {
         {d + "residual.png", plot_residual(rb, ra, d + "residual.png", names)},
         {d + "autocorrelation.png", plot_residual_autocorrelation(rb, ra, d + "autocorrelation.png", names)},
         {d + "output.png", plot_output_fit(in.val->y, yb, ya, d + "output.png", names)}};
-    std::cout << "\nplots (validation data)\n";
+    std::cout << (in.folds ? "\nplots (the last fold's rows)\n" : "\nplots (validation data)\n");
     for (const auto& [path, o] : made) {
       std::cout << "  " << (o.ok ? path : "not written: " + o.message) << "\n";
       plots.push_back({{"png", o.ok ? ojson(path) : ojson(nullptr)}, {"csv", plot_csv_path(path)}, {"message", o.message}});
