@@ -217,7 +217,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
             << (in.folds ? "  selection   " + std::to_string(r.fold_blocks.size()) +
                                " blocked folds of the estimation record, rows " + fold_rows_text(r, in.file_row_offset) +
                                ": each candidate is fitted " + std::to_string(r.fold_blocks.size()) +
-                               " times on the other folds and scored on the held-out one (x0 from its first " +
+                               " times, each on the longer contiguous stretch beside one block, and scored on that block (x0 from its first " +
                                std::to_string(in.fold_warmup) + " samples, RMS over the rest)\n  rule        " +
                                acceptance_rule_text(r.fold_blocks.size(), r.min_gain) +
                                "; the model kept is the one fitted on all estimation rows\n"

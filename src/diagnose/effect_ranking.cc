@@ -106,15 +106,13 @@ std::vector<EffectCandidate> round_candidates(const LpvModel<double>& current, c
   return c;
 }
 
-/// The fit options of training set t: fold t leaves its block out of the
-/// cost (t < K); t == K is the whole record.
-FitOptions training_options(const FitOptions& base, const std::vector<FoldBlock>& blocks, size_t t) {
-  FitOptions f = base;
-  if (t < blocks.size()) {
-    f.skip_first = blocks[t].first;
-    f.skip_last = blocks[t].last;
-  }
-  return f;
+/// The training rows of set t: for fold t (t < K) the longer of the two
+/// contiguous stretches of the record beside its block (fold_plan.h "fit");
+/// t == K is the whole record.
+FoldBlock training_rows(Eigen::Index n, const std::vector<FoldBlock>& blocks, size_t t) {
+  if (t >= blocks.size()) return {0, n};
+  const FoldBlock& b = blocks[t];
+  return b.first >= n - b.last ? FoldBlock{0, b.first} : FoldBlock{b.last, n};
 }
 
 /// Held-out squared error of `m` on block j (fold_plan.h "score").
@@ -144,7 +142,7 @@ struct FoldedFamily {
 };
 
 /// How a family is fitted on one training set.
-using FamilyFit = std::function<FitResult(const FitOptions& fit)>;
+using FamilyFit = std::function<FitResult(const Experiment<double>& training, const FitOptions& fit)>;
 
 /// Runs every (family, training set) pair as one job (core/parallel_for.h).
 std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, const std::vector<std::string>& labels,
@@ -157,7 +155,8 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
   size_t done = 0;
   parallel_for(jobs, o.threads, [&](size_t job) {
     const size_t i = job / sets, t = job % sets;
-    const FitResult r = families[i](training_options(o.fit, blocks, t));
+    const FoldBlock rows = training_rows(est.n(), blocks, t);
+    const FitResult r = families[i](t == k ? est : select_rows(est, rows.first, rows.last), o.fit);
     if (t == k)
       out[i].whole = r;
     else
@@ -176,11 +175,12 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
 /// A, B move with the effect (the joint re-fit) unless the user fixed them
 /// (--fixed-dynamics): dynamics kept from a model fitted on the same record
 /// would carry the held-out block's information into every fold.
-FamilyFit candidate_family(const EffectCandidate& c, const Experiment<double>& est, const RankingOptions& o) {
+FamilyFit candidate_family(const EffectCandidate& c, const RankingOptions& o) {
   const EffectCandidate* cp = &c;
-  const Experiment<double>* ep = &est;
   const bool joint = o.joint_dynamics;
-  return [cp, ep, joint](const FitOptions& fit) { return best_fit(cp->starts, nullptr, cp->slots, joint, *ep, fit); };
+  return [cp, joint](const Experiment<double>& training, const FitOptions& fit) {
+    return best_fit(cp->starts, nullptr, cp->slots, joint, training, fit);
+  };
 }
 
 ScoredCandidate scored_from_family(const EffectCandidate& c, const FoldedFamily& f, const LpvModel<double>& previous,
@@ -238,10 +238,10 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
     refit.kind = "none";
     refit.starts = {current};
     refit.slots = refit_slots(current);
-    std::vector<FamilyFit> families{candidate_family(refit, est, o)};
+    std::vector<FamilyFit> families{candidate_family(refit, o)};
     std::vector<std::string> labels{"no new effect"};
     for (const EffectCandidate& c : cands) {
-      families.push_back(candidate_family(c, est, o));
+      families.push_back(candidate_family(c, o));
       labels.push_back(c.label);
     }
     const std::vector<FoldedFamily> fitted =

@@ -4,9 +4,9 @@
 ///
 /// FOLDS (the default of `lpvid diagnose`, val empty): K blocked folds of
 /// the estimation record (diagnose/fold_plan.h). Every candidate, and the
-/// no-effect reference, is fitted K times, each time on the record without
-/// one block, and scored on that block; its held-out RMS is the total over
-/// the blocks. A candidate is accepted only by the rule of fold_plan.h (a
+/// no-effect reference, is fitted K times, each time on the longer
+/// contiguous stretch beside one block, and scored on that block; its
+/// held-out RMS is the total over the blocks. A candidate is accepted only by the rule of fold_plan.h (a
 /// clear majority of folds and `min_gain` on the total), so the model after
 /// a round is never worse than before it on the held-out total. Whether A, B
 /// move with the effect (joint re-fit) is chosen by the same folds. The

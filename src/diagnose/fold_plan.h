@@ -6,9 +6,13 @@
 ///
 ///   folds      K contiguous blocks B_1 … B_K of the n estimation samples
 ///              (sizes differ by at most one sample, in record order).
-///   fit        fold j fits on every sample outside B_j: the output-error
-///              cost leaves B_j out, the simulated state runs through it
-///              (FitOptions::skip_first/skip_last, fit/output_error_fit.h).
+///   fit        fold j fits on the longer of the two contiguous stretches
+///              of the record beside B_j (all of it for the first and the
+///              last block, at least half of it otherwise), with its own x0.
+///              Not on both sides at once: an output-error fit across the gap
+///              (FitOptions::skip_first/skip_last) let a near-integrator mode
+///              (spectral radius 0.995–0.999) bridge it on the dryer record
+///              and the held-out error of that fold tripled.
 ///   score      the fold-j model on B_j alone, by the benchmark protocol
 ///              (warmup_score): x0 fitted on B_j's first `warmup` samples,
 ///              squared error summed over the rest of B_j.

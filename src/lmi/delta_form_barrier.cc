@@ -61,7 +61,10 @@ struct Point {
   bool interior = false;
   double value = std::numeric_limits<double>::infinity();
   Dense T;
-  Eigen::LLT<Dense> llt;
+  /// Computed on an empty matrix until evaluate() factors F1: a default-
+  /// constructed LLT leaves its status uninitialised, and moving a Point
+  /// that returned early (t <= 0) read it (UBSan: invalid ComputationInfo).
+  Eigen::LLT<Dense> llt{Dense(0, 0)};
   Vecd d_tail;
   double D = 0;  ///< ‖d‖² (all rows)
 };
