@@ -31,10 +31,14 @@ struct DiagnoseArgs {
   std::vector<std::string> validation_names;    ///< headerless validation file
   std::string validation_rows;
   double holdout = 0.3;
-  /// The test role (issue 9): scored once, after the selection, never fitted
-  /// or used to choose. Same column conventions as the validation options.
-  std::string test_path;
-  std::vector<std::string> test_columns, test_names;
+  /// The test role: scored once, after the selection, never fitted or used to
+  /// choose. Same column conventions as the validation options. Several test
+  /// sets: --test given more than once (files with the same columns) or
+  /// --test-columns given more than once (column sets of one file); each is
+  /// scored and reported separately.
+  std::vector<std::string> test_paths;
+  std::vector<std::vector<std::string>> test_columns;
+  std::vector<std::string> test_names;
   std::string test_rows;
   int max_effects = RankingOptions{}.max_effects;
   double min_gain = RankingOptions{}.min_gain;
@@ -155,12 +159,23 @@ int run_diagnose(DiagnoseArgs& a) {
     val_text = a.common.data_path + " rows " + std::to_string(file_offset + cut) + ":" + std::to_string(file_offset + n) +
                " (held out: the last " + std::to_string(n - cut) + " samples, not used to fit)";
   }
-  Experiment<double> test_d;
-  std::string test_text;
-  std::vector<std::string> test_outputs;
-  const bool has_test = !a.test_path.empty() || !a.test_columns.empty();
-  if (has_test) {
-    test_d = load_other(a.test_path, a.test_names, a.test_columns, a.test_rows, "test", test_text, test_outputs);
+  // the test sets: files x column sets, one of the two given once (or not at all)
+  std::vector<Experiment<double>> tests;
+  std::vector<std::string> test_texts;
+  const size_t n_paths = a.test_paths.size(), n_cols = a.test_columns.size();
+  if (n_paths > 1 && n_cols > 1)
+    throw InputError("--test is given " + std::to_string(n_paths) + " times and --test-columns " +
+                     std::to_string(n_cols) + " times: give several files with one column set, or one file with "
+                     "several column sets");
+  if (!a.test_rows.empty() && n_paths == 0 && n_cols == 0)
+    throw InputError("--test-rows needs a test set (--test or --test-columns)");
+  for (size_t t = 0; t < std::max(n_paths, n_cols); ++t) {
+    std::string text;
+    std::vector<std::string> outputs;
+    tests.push_back(load_other(n_paths == 0 ? std::string() : a.test_paths[std::min(t, n_paths - 1)], a.test_names,
+                               n_cols == 0 ? std::vector<std::string>() : a.test_columns[std::min(t, n_cols - 1)],
+                               a.test_rows, "test", text, outputs));
+    test_texts.push_back(text);
   }
 
   // verified bounds before and after, on the bound windows of the estimation data
@@ -204,7 +219,7 @@ int run_diagnose(DiagnoseArgs& a) {
   auto solver = o.make_solver();
   const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record
   const DiagnoseResult result =
-      diagnose(declared, est_d, est_q, by_folds ? no_selection : val_d, has_test ? &test_d : nullptr, o, *solver);
+      diagnose(declared, est_d, est_q, by_folds ? no_selection : val_d, tests, o, *solver);
 
   DiagnoseReportInputs ri;
   ri.result = &result;
@@ -212,7 +227,7 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.validation = val_text;
   ri.estimation = a.common.data_path + " rows " + std::to_string(file_offset) + ":" + std::to_string(file_offset + est_d.n()) +
                   " (fit: every model and candidate)";
-  ri.test_source = test_text;
+  ri.test_sources = test_texts;
   ri.est = &est_d;
   ri.val = &val_d;
   ri.init_samples = by_folds ? warmup : a.init_samples;
@@ -258,11 +273,13 @@ Runner add_diagnose_command(CLI::App& app) {
   cmd->add_option("--benchmark", a->benchmark,
                   "the benchmark's warm-up (SPEC 6, nonlinear_benchmarks 1.0.1): cascaded-tanks 50, silverbox 50, "
                   "coupled-drives 10");
-  cmd->add_option("--test", a->test_path,
+  cmd->add_option("--test", a->test_paths,
                   "test data file, scored once after the selection and never used to fit or choose (default: --data "
-                  "when --test-columns is given)");
+                  "when --test-columns is given); may be given more than once, each file scored separately")
+      ->take_all();
   cmd->add_option("--test-columns", a->test_columns,
-                  "test column names replacing the model's u then y columns, e.g. uVal,yVal")
+                  "test column names replacing the model's u then y columns, e.g. uVal,yVal; may be given more than "
+                  "once (several column sets of one file, each scored separately)")
       ->delimiter(',');
   cmd->add_option("--test-names", a->test_names, "column names of a headerless test file")->delimiter(',');
   cmd->add_option("--test-rows", a->test_rows, "rows B:E of the test data");

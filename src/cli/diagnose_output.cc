@@ -55,9 +55,10 @@ ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>&
     dmax = std::max(dmax, b.dmax);
     ojson e = {{"estimation_rows", {w.begin, w.end}}, {"file_rows", {w.file_begin, w.file_end}},
                {"delta", b.verified ? ojson(b.delta) : ojson(nullptr)}, {"dmax", b.verified ? ojson(b.dmax) : ojson(nullptr)},
-               {"verified", b.verified}, {"certificate", w.certificate}};
+               {"verified", b.verified}, {"certificate", w.certificate.empty() ? ojson(nullptr) : ojson(w.certificate)}};
     if (!b.verified) e["reason"] = b.reason;
     e["rms_output"] = finite_or_null(w.rms_output);
+    e["rms_output_variation"] = finite_or_null(w.rms_variation);
     e["informative"] = w.informative;
     e["note"] = w.note;
     if (b.scales.applied) e["scaling"] = scaling_json(b);
@@ -72,8 +73,9 @@ ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>&
   j["bounds_meaning"] = "Theorem 2.1 on exactly the rows of each window: the model (numbers rounded to 12 digits, "
                         "initial state = the fitted model's own state at the window's first row) explains them with "
                         "||Delta|| <= delta and noise RMS <= dmax; delta, dmax here are the largest over the windows. "
-                        "A window is informative when verified and dmax < rms_output (the RMS of its measured "
-                        "output): a model with zero output meets dmax = rms_output";
+                        "A window is informative when verified and dmax < rms_output_variation (the RMS of its "
+                        "measured output's deviation from its mean): the constant model y = mean meets dmax = "
+                        "rms_output_variation (rms_output, the RMS of y itself, includes the mean)";
   return j;
 }
 
@@ -95,13 +97,26 @@ ojson identification_json(const WindowIdentification& id) {
   if (!b.verified) j["reason"] = b.reason;
   j["informative"] = id.bounds.informative;
   j["note"] = id.bounds.note + "; Theorem 3.1 is run on the first bound window only";
-  j["certificate"] = id.bounds.certificate;
+  j["certificate"] = id.bounds.certificate.empty() ? ojson(nullptr) : ojson(id.bounds.certificate);
   return j;
+}
+
+/// The header line of the test role: every test set with its size.
+std::string test_roles_text(const DiagnoseReportInputs& in) {
+  const auto& tests = in.result->tests;
+  std::string t;
+  for (size_t i = 0; i < tests.size(); ++i) {
+    if (i) t += "; ";
+    if (tests.size() > 1) t += std::to_string(i + 1) + ": ";
+    t += (i < in.test_sources.size() ? in.test_sources[i] : std::string("?")) + " (" + std::to_string(tests[i].samples) +
+         " samples)";
+  }
+  return t + (tests.size() > 1 ? "; each scored once, separately, at the end" : "; scored once, at the end");
 }
 
 /// The text flag of a verified but vacuous bound (window_bounds.h).
 std::string uninformative_mark(const WindowBounds& w) {
-  return w.informative ? "" : "  UNINFORMATIVE: dmax >= RMS of y there (" + num(w.rms_output) + ")";
+  return w.informative ? "" : "  UNINFORMATIVE: dmax >= RMS of y about its mean there (" + num(w.rms_variation) + ")";
 }
 
 std::string identification_line(const WindowIdentification& id) {
@@ -225,8 +240,8 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                                " samples; selection: ranks the effects; x0 fitted on the first " +
                                std::to_string(in.init_samples) + ", then free-run simulation)\n")
             << "  test        "
-            << (res.test ? in.test_source + " (" + std::to_string(res.test->samples) + " samples; scored once, at the end)"
-                        : std::string("none given (--test / --test-columns): the validation figure chose the model"))
+            << (res.tests.empty() ? std::string("none given (--test / --test-columns): the validation figure chose the model")
+                                  : test_roles_text(in))
             << "\n";
   ojson rounds = ojson::array();
   for (size_t i = 0; i < r.rounds.size(); ++i) {
@@ -269,7 +284,11 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                       {"candidates", cands}});
   }
   ojson effects = ojson::array();
-  for (const ScoredCandidate& c : r.chosen) effects.push_back(candidate_json(c));
+  for (const ScoredCandidate& c : r.chosen) {
+    ojson e = candidate_json(c);  // "parameters": the final model's values
+    e["parameters_when_chosen"] = c.parameters_at_round;
+    effects.push_back(std::move(e));
+  }
   if (effects.empty())
     effects.push_back({{"kind", "none"},
                        {"label", "no effect explains the residual better than refitting (noise level)"},
@@ -303,8 +322,8 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
     for (const WindowBounds& w : *side) uninformative += w.bounds.verified && !w.informative ? 1 : 0;
   if (uninformative > 0)
     std::cout << "  " << uninformative << " of " << 2 * res.before.size()
-              << " verified bounds are uninformative: dmax >= the RMS of the measured output on the "
-                 "window, which a model with zero output already meets\n";
+              << " verified bounds are uninformative: dmax >= the RMS of the measured output's deviation "
+                 "from its mean on the window, which the constant model y = mean already meets\n";
   const SignalScales& sc = res.before.front().bounds.scales;
   if (sc.applied)
     std::cout << "  objective on scaled signals: y / " << sc.y_scale_text() << ", z / " << sc.z_scale_text()
@@ -314,32 +333,51 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
             << " (the first window only; the output map re-identified with x0 free, alternating method):\n"
             << "    before    " << identification_line(res.before_id) << "\n"
             << "    after     " << identification_line(res.after_id) << "\n";
-  std::cout << "  certificates " << res.before.front().certificate << ", " << res.after.front().certificate
-            << (res.before.size() > 1 ? " (and one per further window)" : "") << " (check: lpvid-verify certificate FILE)\n";
+  std::vector<std::string> written;  // only files that exist: an unverified bound has none
+  for (const auto* side : {&res.before, &res.after})
+    for (const WindowBounds& w : *side)
+      if (!w.certificate.empty()) written.push_back(w.certificate);
+  const size_t all_bounds = res.before.size() + res.after.size();
+  if (written.empty()) {
+    std::cout << "  certificates: none written (no bound was verified; the reasons are above)\n";
+  } else {
+    std::cout << "  certificates " << written.front();
+    if (written.size() > 1) std::cout << ", " << written[1];
+    if (written.size() > 2) std::cout << " (and " << written.size() - 2 << " more)";
+    if (written.size() < all_bounds)
+      std::cout << "; " << all_bounds - written.size() << " of " << all_bounds
+                << " bounds were not verified and have no certificate";
+    std::cout << " (check: lpvid-verify certificate FILE)\n";
+  }
 
-  // The test role: scored once, now, for the models chosen above.
-  ojson test = nullptr;
-  if (res.test) {
-    const FreeRunScore &tb = res.test->before, &ta = res.test->after;
+  // The test role: scored once per test set, now, for the models chosen above.
+  ojson tests = ojson::array();
+  for (size_t t = 0; t < res.tests.size(); ++t) {
+    const TestScore& ts = res.tests[t];
+    const std::string source = t < in.test_sources.size() ? in.test_sources[t] : "";
+    const FreeRunScore &tb = ts.before, &ta = ts.after;
     const std::string rule = "free run; x0 from the first " + std::to_string(tb.warmup) +
                              " samples (warm-up), RMS and fit % over the remaining " + std::to_string(tb.scored);
-    std::cout << "\ntest (" << in.test_source << ", " << res.test->samples << " samples): scored once, after the selection;"
+    std::cout << "\ntest" << (res.tests.size() > 1 ? " " + std::to_string(t + 1) + " of " + std::to_string(res.tests.size()) : "")
+              << " (" << source << ", " << ts.samples << " samples): scored once, after the selection;"
               << " no fit and no choice used it\n"
               << "  rule: " << rule << "\n"
               << "  before: RMS " << num(tb.rms) << ", fit " << num(tb.fit_percent, 4) << " %   after: RMS " << num(ta.rms)
               << ", fit " << num(ta.fit_percent, 4) << " %\n";
-    test = {{"source", in.test_source},
-            {"samples", res.test->samples},
-            {"rule", rule},
-            {"warmup_samples", tb.warmup},
-            {"scored_samples", tb.scored},
-            {"rms_before", finite_or_null(tb.rms)},
-            {"rms_after", finite_or_null(ta.rms)},
-            {"fit_percent_before", finite_or_null(tb.fit_percent)},
-            {"fit_percent_after", finite_or_null(ta.fit_percent)},
-            {"note", "scored once, after the effects were selected on the validation (selection) data; the models "
-                     "were fitted on the estimation rows only"}};
+    tests.push_back({{"source", source},
+                     {"samples", ts.samples},
+                     {"rule", rule},
+                     {"warmup_samples", tb.warmup},
+                     {"scored_samples", tb.scored},
+                     {"rms_before", finite_or_null(tb.rms)},
+                     {"rms_after", finite_or_null(ta.rms)},
+                     {"fit_percent_before", finite_or_null(tb.fit_percent)},
+                     {"fit_percent_after", finite_or_null(ta.fit_percent)},
+                     {"note", "scored once, after the effects were selected on the validation (selection) data; the "
+                              "models were fitted on the estimation rows only"}});
   }
+  // "test": the first test set (the field of earlier reports), "tests": all of them
+  const ojson test = tests.empty() ? ojson(nullptr) : tests.front();
 
   // residual analysis and plots on the validation data (free run)
   Mat<double> yb, ya;
@@ -394,6 +432,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                        {"role", "selection: ranks the candidate effects"}};
   }
   j["test"] = test;
+  j["tests"] = tests;
   j["effects"] = effects;
   j["before"] = side_json(r.before_estimation, r.before_validation, res.before);
   j["after"] = side_json(r.after_estimation, r.after_validation, res.after);

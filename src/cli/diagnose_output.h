@@ -13,7 +13,7 @@ namespace lpvid::cli {
 struct DiagnoseReportInputs {
   std::string command_line_data, validation, plots_dir, model_out, solver;
   std::string estimation;  ///< file and rows of the fit role
-  std::string test_source;  ///< the test role's file and rows (when result.test is set)
+  std::vector<std::string> test_sources;  ///< each test set's file, columns and rows (as result.tests)
   const DiagnoseResult* result = nullptr;
   const Experiment<double>*est = nullptr, *val = nullptr;
   int init_samples = static_cast<int>(RankingOptions{}.init_samples);

@@ -28,6 +28,7 @@ const char* to_string(StateFunction f) {
     case StateFunction::kAbs: return "abs";
     case StateFunction::kSqrt: return "sqrt";
     case StateFunction::kHinge: return "hinge";
+    case StateFunction::kSqrtPos: return "sqrtpos";
   }
   return "?";
 }
@@ -36,7 +37,7 @@ StateColumn parse_state_column(const std::string& column) {
   StateColumn out;
   if (column.empty() || column[0] != '@') return out;
   const std::string bad = "scheduling column '" + column +
-                          "': a '@' column must be '@x<i>', '@abs(x<i>-c)', '@sqrt(x<i>-c)' or '@hinge(x<i>-c)' "
+                          "': a '@' column must be '@x<i>', '@abs(x<i>-c)', '@sqrt(x<i>-c)', '@hinge(x<i>-c)' or '@sqrtpos(x<i>-c)' "
                           "(the model's state i, 1-based; c an exact decimal or p/q, '+c' or omitted allowed)";
   const std::string body = column.substr(1);
   if (body.empty() || body[0] == 'x') {  // "@x<i>"
@@ -50,6 +51,7 @@ StateColumn parse_state_column(const std::string& column) {
   if (fn == "abs") out.function = StateFunction::kAbs;
   else if (fn == "sqrt") out.function = StateFunction::kSqrt;
   else if (fn == "hinge") out.function = StateFunction::kHinge;
+  else if (fn == "sqrtpos") out.function = StateFunction::kSqrtPos;
   else throw std::invalid_argument(bad + ": unknown function '" + fn + "'");
   const size_t op = arg.find_first_of("+-");
   out.state = state_text_index(arg.substr(0, op));

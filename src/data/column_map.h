@@ -7,6 +7,7 @@
 ///   "@abs(x<i>-c)"      |x_i − c|
 ///   "@sqrt(x<i>-c)"     √|x_i − c|
 ///   "@hinge(x<i>-c)"    max(x_i − c, 0)   (the excess above the level c)
+///   "@sqrtpos(x<i>-c)"  √max(x_i − c, 0)  (an outflow that stops when the level falls to c)
 ///
 /// i is 1-based without leading zeros; c is an exact decimal or p/q text
 /// ("0.5", "1/3", "2.5e-3"); "x<i>+c" means the shift −c and "x<i>" alone the
@@ -22,7 +23,7 @@ struct ColumnMap {
 };
 
 /// The function of a state-scheduling column (see above).
-enum class StateFunction { kState, kAbs, kSqrt, kHinge };
+enum class StateFunction { kState, kAbs, kSqrt, kHinge, kSqrtPos };
 
 /// "x", "abs", "sqrt", "hinge".
 const char* to_string(StateFunction f);

@@ -30,16 +30,17 @@ std::string theorem31_certificate_path(const std::string& certificate_path, bool
 }
 
 void check_options(const Experiment<double>& est_d, const Experiment<Rational>& est_q,
-                   const Experiment<double>& selection, const Experiment<double>* test, const DiagnoseOptions& o,
-                   const std::vector<RowWindow>& windows) {
+                   const Experiment<double>& selection, const std::vector<Experiment<double>>& tests,
+                   const DiagnoseOptions& o, const std::vector<RowWindow>& windows) {
   if (windows.empty()) throw InputError("diagnose: the estimation record is empty");
   if (est_d.n() != est_q.n()) throw InputError("diagnose: the exact and double estimation records differ in length");
   const Eigen::Index need = o.ranking.init_samples + 5;
   if (selection.n() != 0 && selection.n() < need) throw InputError("the validation data has too few samples");
   if (o.test_warmup < 1) throw InputError("the test warm-up must be at least 1 sample");
-  if (test != nullptr && test->n() < o.test_warmup + 5)
-    throw InputError("the test data has " + std::to_string(test->n()) + " samples: too few for a warm-up of " +
-                     std::to_string(o.test_warmup) + " and a score");
+  for (size_t t = 0; t < tests.size(); ++t)
+    if (tests[t].n() < o.test_warmup + 5)
+      throw InputError("test set " + std::to_string(t + 1) + " has " + std::to_string(tests[t].n()) +
+                       " samples: too few for a warm-up of " + std::to_string(o.test_warmup) + " and a score");
   if (o.threads > 1 && !o.make_solver) throw InputError("diagnose: threads > 1 needs a solver factory");
   for (const auto& [b, e] : windows)
     if (b < 0 || e <= b || e > est_q.n())
@@ -51,10 +52,11 @@ void check_options(const Experiment<double>& est_d, const Experiment<Rational>& 
 
 DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_d,
                         const Experiment<Rational>& est_q, const Experiment<double>& selection,
-                        const Experiment<double>* test, const DiagnoseOptions& options, SdpSolver& solver) {
+                        const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options,
+                        SdpSolver& solver) {
   const std::vector<RowWindow> windows =
       options.windows.empty() ? default_bound_windows(est_q.n()) : options.windows;
-  check_options(est_d, est_q, selection, test, options, windows);
+  check_options(est_d, est_q, selection, tests, options, windows);
 
   // 1. effects: fitted on the estimation data, chosen on the selection data
   DiagnoseResult out;
@@ -76,14 +78,15 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
     CertifyOptions wo = options.certify;
     wo.certificate_path = diagnose_certificate_path(options.certify.certificate_path, i, windows.size(), after);
     auto own = threads > 1 ? options.make_solver() : nullptr;
-    (after ? out.after : out.before)[i] =
-        certify_window(after ? out.after_model : out.before_model, est_d, est_q, windows[i].first, windows[i].second,
+    WindowBounds& w = (after ? out.after : out.before)[i];
+    w = certify_window(after ? out.after_model : out.before_model, est_d, est_q, windows[i].first, windows[i].second,
                        options.file_row_offset, wo, own ? *own : solver);
     if (options.ranking.progress) {
       const std::lock_guard<std::mutex> lock(report);
       options.ranking.progress("bounds (Theorem 2.1), " + std::to_string(++done) + " of " +
                                std::to_string(2 * windows.size()) + ": window " + std::to_string(i + 1) + " " +
-                               (after ? "after" : "before") + " done");
+                               (after ? "after" : "before") + ": " +
+                               (w.bounds.verified ? "verified, " + w.certificate : "NOT verified (" + w.bounds.reason + ")"));
     }
   });
   if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
@@ -95,13 +98,13 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   out.after_id = identify_on_window(out.after_model, est_d, est_q, windows[0].first, windows[0].second,
                                     options.file_row_offset, co, solver);
 
-  // 4. the test role, scored once, after everything above was chosen
-  if (test != nullptr) {
+  // 4. the test role, scored once per test set, after everything above was chosen
+  for (const Experiment<double>& test : tests) {
     TestScore t;
-    t.samples = test->n();
-    t.before = warmup_score(out.before_model, *test, options.test_warmup);
-    t.after = warmup_score(out.after_model, *test, options.test_warmup);
-    out.test = t;
+    t.samples = test.n();
+    t.before = warmup_score(out.before_model, test, options.test_warmup);
+    t.after = warmup_score(out.after_model, test, options.test_warmup);
+    out.tests.push_back(t);
   }
   return out;
 }

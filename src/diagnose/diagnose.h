@@ -66,7 +66,7 @@ struct DiagnoseResult {
   LpvModel<double> before_model, after_model;  ///< as rounded for the certificates
   std::vector<WindowBounds> before, after;     ///< one per bound window, same windows
   WindowIdentification before_id, after_id;    ///< Theorem 3.1 on the first window
-  std::optional<TestScore> test;               ///< set iff a test set was given
+  std::vector<TestScore> tests;                ///< one per test set given, in their order
   /// Every window's bound, before and after, verified exactly.
   bool verified() const;
 };
@@ -75,10 +75,12 @@ struct DiagnoseResult {
 std::string diagnose_certificate_path(const std::string& certificate_path, size_t window, size_t windows, bool after);
 
 /// Runs steps 1–4. `est_q` is the exact copy of `est_d` (the same rows);
-/// `test` may be null. Throws InputError for windows outside the estimation
-/// record or too short a selection/test set.
+/// `tests` may be empty; each test set is scored once, separately (a
+/// benchmark with a multisine and an "arrow" record). Throws InputError for
+/// windows outside the estimation record or too short a selection/test set.
 DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_d,
                         const Experiment<Rational>& est_q, const Experiment<double>& selection,
-                        const Experiment<double>* test, const DiagnoseOptions& options, SdpSolver& solver);
+                        const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options,
+                        SdpSolver& solver);
 
 }  // namespace lpvid

@@ -7,6 +7,7 @@
 
 #include "core/rms.h"
 #include "diagnose/cascade_form.h"
+#include "diagnose/store_cascade.h"
 #include "fit/wiener_starts.h"
 #include "model/simulate.h"
 #include "model/state_scheduling.h"
@@ -35,14 +36,21 @@ bool has_term(const ParamMatrix<double>& pm, const Monomial& f) {
 }
 
 /// All monomials of n variables with total degree 1..max_degree.
-std::vector<Monomial> monomials(size_t n, int max_degree) {
+/// Every monomial of degree 1..max_degree in n variables; a variable marked
+/// in `linear_only` appears with power at most 1, and at most one of them
+/// per monomial (a state-function column √|x − c|, max(x − c, 0) acts through
+/// the state offset; its products with each other are a combinatorial
+/// explosion of candidates without a physical reading).
+std::vector<Monomial> monomials(size_t n, int max_degree, const std::vector<bool>& linear_only = {}) {
   std::vector<Monomial> out;
   std::vector<int> p(n, 0);
   // enumerate exponent vectors in a fixed order (odometer over 0..max_degree)
   while (true) {
-    int deg = 0;
+    int deg = 0, functions = 0;
     for (int e : p) deg += e;
-    if (deg >= 1 && deg <= max_degree) out.push_back(Monomial{p});
+    for (size_t k = 0; k < linear_only.size() && k < n; ++k)
+      if (linear_only[k] && p[k] > 0) functions += p[k];
+    if (deg >= 1 && deg <= max_degree && functions <= 1) out.push_back(Monomial{p});
     size_t k = 0;
     while (k < n && ++p[k] > max_degree) p[k++] = 0;
     if (k == n) break;
@@ -171,6 +179,27 @@ void cascade_state_nonlinearity_candidates(const LpvModel<double>& base, const E
     }
 }
 
+/// The store cascade (diagnose/store_cascade.h) in place of an LTI SISO
+/// linear part: every start of the grid, with A, B, C, D, E, the four levels,
+/// φ and x0 free.
+void store_cascade_candidate(const LpvModel<double>& base, const Experiment<double>& est,
+                             std::vector<EffectCandidate>& out) {
+  std::vector<LpvModel<double>> starts = store_cascade_starts(base, est);
+  if (starts.empty()) return;
+  const int first = base.n_rho();
+  const int added = 4 * 2 + 4;  // E's four 2-vectors and the four levels
+  const std::string count = std::to_string(starts.size());
+  EffectCandidate cand = make("state_nonlinearity",
+                              "store cascade: two stores x1 -> x2 (A = I), outflow e*sqrt(max(x_i - c_i, 0)) and overflow "
+                              "e*max(x_i - o_i, 0) from each, levels fitted; replaces the linear part (" +
+                                  count + " starts)",
+                              added, std::move(starts));
+  for (int j = first; j < first + 4; ++j) cand.slots.push_back(state_shift_slot(cand.starts.front(), j));
+  cand.slots = with_dynamics_slots(cand.slots, cand.starts.front());
+  cand.starts_for = [base](const Experiment<double>& rows) { return store_cascade_starts(base, rows); };
+  out.push_back(std::move(cand));
+}
+
 }  // namespace
 
 std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m) {
@@ -244,7 +273,10 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
   const Mat<double> v = sim.yhat + sim.offset;  // what a static output map would act on
 
   // basis_term: new f(ρ) in S_C (eq. 10), entering C and D
-  for (const Monomial& f : monomials(base.scheduling.size(), o.max_degree)) {
+  std::vector<bool> function_column(base.scheduling.size(), false);
+  for (size_t k = 0; k < base.scheduling.size(); ++k)
+    function_column[k] = parse_state_column(base.columns.rho[k]).function != StateFunction::kState;
+  for (const Monomial& f : monomials(base.scheduling.size(), o.max_degree, function_column)) {
     if (has_term(base.C, f) || has_term(base.D, f)) continue;
     std::string note;
     for (size_t k = 0; k < f.powers.size(); ++k)
@@ -310,6 +342,7 @@ std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, 
   if (o.state_functions) {
     state_nonlinearity_candidates(base, sim, out);
     cascade_state_nonlinearity_candidates(base, est, out);
+    store_cascade_candidate(base, est, out);
   }
 
   // output_offset: Φ = φ_1 (basis 1) when the model has no constant offset

@@ -9,7 +9,9 @@
 ///   basis_term         a new f(ρ) in S_C (eq. 10): terms f(ρ)·C_f x + f(ρ)·D_f u
 ///                      in the output, f a monomial of the model's scheduling
 ///                      variables (with_input_scheduling adds the measured
-///                      inputs as scheduling variables: ρ = u)
+///                      inputs as scheduling variables: ρ = u); a state-function
+///                      column (√, |·|, hinge of a state) enters a monomial at most
+///                      once and linearly
 ///   output_offset      Φ(ρ) (eq. 20): a constant, and Φ(ρ_i) over {1, ρ_i, …,
 ///                      ρ_i^max_degree} for each measured scheduling variable
 ///   input_saturation   static input map (model/static_blocks.h)
@@ -33,9 +35,13 @@
 ///                      state's simulated range), hinge an overflow clip
 ///                      (c started at the 0.9 quantile of x_i, e → −1 clips).
 ///                      e (from 0), c and A, B move in the joint re-fit.
+///                      Also the store cascade (diagnose/store_cascade.h):
+///                      two stores with √ outflow and overflow levels that
+///                      replace an LTI SISO linear part, from a grid of starts.
 /// A candidate never depends on the data set's name: only on the model's
 /// structure and the ranges of the estimation signals (starting guesses).
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -59,6 +65,12 @@ struct EffectCandidate {
   int effect_parameters = 0;            ///< parameters the effect adds
   std::vector<LpvModel<double>> starts; ///< the model with the effect at each starting guess
   std::vector<ParameterSlot> slots;     ///< what the fit moves (same for every start)
+  /// Starting guesses that depend on the data the family is fitted on (the
+  /// store cascade's levels and overflow from the output's range): when set,
+  /// a fit on some rows starts from starts_for(those rows) instead of
+  /// `starts` (computed from the whole estimation record), so no fold's start
+  /// has seen its held-out block. Same structure and slots as `starts`.
+  std::function<std::vector<LpvModel<double>>(const Experiment<double>&)> starts_for;
 };
 
 /// The candidates for the current (explicit) model. Skips an effect that the

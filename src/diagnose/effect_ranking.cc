@@ -27,17 +27,27 @@ ojson matrix_json(const Mat<double>& m) {
   return rows;
 }
 
-/// The C and D terms of `fitted` whose basis `previous` does not have.
-void new_terms_json(const ParamMatrix<double>& fitted, const ParamMatrix<double>& previous, const char* key,
-                    const std::vector<std::string>& names, ojson& out) {
+/// Whether `m` has a term with basis f (monomials of fewer scheduling
+/// variables padded with zero powers: later rounds append variables).
+bool has_basis(const ParamMatrix<double>& m, const Monomial& f) {
+  for (const auto& p : m.terms) {
+    Monomial a = p.basis, b = f;
+    const size_t n = std::max(a.powers.size(), b.powers.size());
+    a.powers.resize(n, 0);
+    b.powers.resize(n, 0);
+    if (a == b) return true;
+  }
+  return false;
+}
+
+/// The terms of `introduced` whose basis `previous` does not have (the
+/// effect's own terms), with their values in `fitted` (the same model, or a
+/// later one in which they were re-fitted).
+void new_terms_json(const ParamMatrix<double>& fitted, const ParamMatrix<double>& introduced,
+                    const ParamMatrix<double>& previous, const char* key, const std::vector<std::string>& names,
+                    ojson& out) {
   for (const auto& t : fitted.terms) {
-    bool old = false;
-    for (const auto& p : previous.terms) {
-      Monomial padded = p.basis;
-      padded.powers.resize(t.basis.powers.size(), 0);
-      old = old || padded == t.basis;
-    }
-    if (old) continue;
+    if (has_basis(previous, t.basis) || !has_basis(introduced, t.basis)) continue;
     out["basis"] = t.basis.text(names);
     out[key] = matrix_json(t.value);
   }
@@ -179,6 +189,10 @@ FamilyFit candidate_family(const EffectCandidate& c, const RankingOptions& o) {
   const EffectCandidate* cp = &c;
   const bool joint = o.joint_dynamics;
   return [cp, joint](const Experiment<double>& training, const FitOptions& fit) {
+    if (cp->starts_for) {
+      const std::vector<LpvModel<double>> own = cp->starts_for(training);
+      if (!own.empty()) return best_fit(own, nullptr, cp->slots, joint, training, fit);
+    }
     return best_fit(cp->starts, nullptr, cp->slots, joint, training, fit);
   };
 }
@@ -214,6 +228,18 @@ void set_explained(RankingRound& r) {
                       : -std::numeric_limits<double>::infinity();
   std::stable_sort(r.ranked.begin(), r.ranked.end(),
                    [](const ScoredCandidate& a, const ScoredCandidate& b) { return a.score < b.score; });
+}
+
+/// Each chosen effect's parameters as they are in the final model (later
+/// rounds re-fit them), the values of its own round kept beside them.
+void final_parameters(RankingResult& res) {
+  size_t k = 0;
+  for (const RankingRound& r : res.rounds) {
+    if (r.chosen < 0 || k >= res.chosen.size()) continue;
+    ScoredCandidate& c = res.chosen[k++];
+    c.parameters_at_round = c.parameters;
+    c.parameters = effect_parameters(c.kind, c.label, res.after, r.current, &c.model);
+  }
 }
 
 /// Fold mode (val empty): see the header.
@@ -282,6 +308,7 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
     if (stop) break;
   }
   res.after = current;
+  final_parameters(res);
   res.after_estimation = current_est;
   res.after_folds = current_folds;
   res.after_validation = current_folds.total_rms();
@@ -353,25 +380,27 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
     if (stop) break;
   }
   res.after = current;
+  final_parameters(res);
   res.after_estimation = current_est;
   res.after_validation = current_val;
   return res;
 }
 
 ojson effect_parameters(const std::string& kind, const std::string& label, const LpvModel<double>& fitted,
-                        const LpvModel<double>& previous) {
+                        const LpvModel<double>& previous, const LpvModel<double>* introduced_by) {
   ojson j = ojson::object();
+  const LpvModel<double>& introduced = introduced_by ? *introduced_by : fitted;
   if (kind == "basis_term") {
-    new_terms_json(fitted.C, previous.C, "C", fitted.scheduling, j);
-    new_terms_json(fitted.D, previous.D, "D", fitted.scheduling, j);
-    new_terms_json(fitted.B, previous.B, "B", fitted.scheduling, j);
-    new_terms_json(fitted.A, previous.A, "A", fitted.scheduling, j);
+    new_terms_json(fitted.C, introduced.C, previous.C, "C", fitted.scheduling, j);
+    new_terms_json(fitted.D, introduced.D, previous.D, "D", fitted.scheduling, j);
+    new_terms_json(fitted.B, introduced.B, previous.B, "B", fitted.scheduling, j);
+    new_terms_json(fitted.A, introduced.A, previous.A, "A", fitted.scheduling, j);
     j["enters"] = j.contains("A")   ? "A (the state equation: x+ = (A + f(rho) A_f) x + B u, rho the model's own state)"
                   : j.contains("B") ? "B (the state equation: x+ = A x + (B + f(rho) B_f) u)"
                                     : "C, D (output correction S_C, eq. 10)";
-    if (fitted.scheduling.size() > previous.scheduling.size()) {
+    if (introduced.scheduling.size() > previous.scheduling.size()) {
       ojson s = ojson::object();
-      for (size_t i = previous.scheduling.size(); i < fitted.scheduling.size(); ++i)
+      for (size_t i = previous.scheduling.size(); i < introduced.scheduling.size() && i < fitted.scheduling.size(); ++i)
         s[fitted.scheduling[i]] = fitted.columns.rho[i];
       j["new_scheduling"] = std::move(s);
     }
@@ -405,15 +434,23 @@ ojson effect_parameters(const std::string& kind, const std::string& label, const
   if (kind == "input_delay") j["delay_samples"] = fitted.statics.input_delay;
   if (kind == "state_nonlinearity") {  // x+ = A x + B u + E(ρ): the function column(s) and e
     ojson cols = ojson::object();
-    for (size_t i = previous.scheduling.size(); i < fitted.scheduling.size(); ++i)
+    for (size_t i = previous.scheduling.size(); i < introduced.scheduling.size() && i < fitted.scheduling.size(); ++i)
       cols[fitted.scheduling[i]] = fitted.columns.rho[i];
     j["new_scheduling"] = std::move(cols);
     ojson terms = ojson::array();
-    for (size_t t = 0; t < fitted.state_offset.basis.size() && t < fitted.state_offset.values.size(); ++t)
+    for (size_t t = 0; t < introduced.state_offset.basis.size() && t < fitted.state_offset.basis.size() &&
+                       t < fitted.state_offset.values.size();
+         ++t)
       terms.push_back({{"basis", fitted.state_offset.basis[t].text(fitted.scheduling)},
                        {"e", matrix_json(fitted.state_offset.values[t].transpose()).front()}});
     j["state_offset"] = std::move(terms);
     j["enters"] = "the state equation: x+ = A x + B u + sum_j h_j(rho) e_j (model field state_offset)";
+    if (label.rfind("store cascade", 0) == 0) {  // the linear part was replaced: its new matrices too
+      for (const auto& [name, pm] : {std::pair<const char*, const ParamMatrix<double>*>{"A", &fitted.A}, {"B", &fitted.B},
+                                     {"C", &fitted.C}, {"D", &fitted.D}})
+        for (const auto& t : pm->terms)
+          if (t.basis.degree() == 0) j[name] = matrix_json(t.value);
+    }
   }
   j["label"] = label;
   return j;

@@ -75,7 +75,11 @@ struct ScoredCandidate {
   int effect_parameters = 0;
   double rms_estimation = 0, rms_validation = 0, explained = 0, score = 0;
   LpvModel<double> model;          ///< fitted on estimation data (x0 of the estimation record)
-  nlohmann::ordered_json parameters;  ///< the effect's own parameters
+  /// The effect's own parameters: for a chosen effect in RankingResult::chosen
+  /// their values in the FINAL model (the written, certified one; later
+  /// rounds re-fit them), for a ranked candidate the values of its own fit.
+  nlohmann::ordered_json parameters;
+  nlohmann::ordered_json parameters_at_round;  ///< chosen effects: the values when it was chosen
   FoldFigures folds;               ///< fold mode: held-out figures (rms_validation is their total)
   int folds_won = 0;               ///< fold mode: folds on which it beats the round's reference
   bool joint = false;              ///< A, B were re-fitted with the effect
@@ -112,8 +116,13 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
                            const Experiment<double>& val, const RankingOptions& options);
 
 /// The effect's own parameters as JSON (kind-specific: basis and matrices,
-/// offset values, limits, coefficients, delay).
+/// offset values, limits, coefficients, delay), read from `fitted`. Which
+/// terms and columns belong to the effect is what `introduced_by` (the model
+/// right after the effect was added; default: `fitted`) has and `previous`
+/// (the model it was added to) has not: with a later model as `fitted`, the
+/// effect's parameters as later rounds re-fitted them.
 nlohmann::ordered_json effect_parameters(const std::string& kind, const std::string& label,
-                                         const LpvModel<double>& fitted, const LpvModel<double>& previous);
+                                         const LpvModel<double>& fitted, const LpvModel<double>& previous,
+                                         const LpvModel<double>* introduced_by = nullptr);
 
 }  // namespace lpvid

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "core/rms.h"
@@ -54,24 +55,31 @@ WindowBounds certify_window(const LpvModel<double>& model, const Experiment<doub
   w.model = exact_model(model, xb);
   options.row_begin = w.file_begin;
   options.row_end = w.file_end;
-  w.certificate = options.certificate_path;
   w.bounds = certify_fixed_model(w.model, select_rows(est_q, begin, end), options, solver);
+  name_certificate(w, options.certificate_path);
   judge_informative(w, est_d.y.middleRows(begin, end - begin));
   return w;
 }
 
+void name_certificate(WindowBounds& w, const std::string& path) {
+  std::error_code ec;
+  w.certificate = w.bounds.verified && !path.empty() && std::filesystem::is_regular_file(path, ec) ? path : "";
+}
+
 void judge_informative(WindowBounds& w, const Mat<double>& y) {
   w.rms_output = rms(y);
+  w.rms_variation = y.size() == 0 ? 0.0 : rms(Mat<double>(y.rowwise() - y.colwise().mean()));
   if (!w.bounds.verified) {
     w.informative = false;
     w.note = "not verified";
     return;
   }
-  w.informative = w.bounds.dmax < w.rms_output;
-  char buf[200];
-  std::snprintf(buf, sizeof buf, "dmax %.4g %s the RMS %.4g of the measured output on these rows%s", w.bounds.dmax,
-                w.informative ? "is below" : ">=", w.rms_output,
-                w.informative ? "" : ": uninformative (a model with zero output meets dmax = that RMS)");
+  w.informative = w.bounds.dmax < w.rms_variation;
+  char buf[260];
+  std::snprintf(buf, sizeof buf,
+                "dmax %.4g %s the RMS %.4g of the measured output's deviation from its mean on these rows%s",
+                w.bounds.dmax, w.informative ? "is below" : ">=", w.rms_variation,
+                w.informative ? "" : ": uninformative (the constant model y = mean meets dmax = that RMS)");
   w.note = buf;
 }
 

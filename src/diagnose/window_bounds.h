@@ -26,17 +26,26 @@ struct WindowBounds {
   long file_begin = 0, file_end = 0;  ///< the same rows of the data file
   CertifiedBounds bounds;
   LpvModel<Rational> model;           ///< the exact model that was certified
-  std::string certificate;            ///< its certificate file
-  /// Issue 9 item 5: a verified bound can still say nothing. RMS of the
-  /// measured output on the window (all n·ny entries, SPEC §4's
-  /// normalisation); the bound is informative when it is verified and
-  /// d_max < that RMS: a model with zero output (ŷ = 0, w = 0) already meets
-  /// d_max = rms(y), so a d_max at or above it does not show that the model
-  /// explains anything. `note` says why not.
+  /// Its certificate file; empty unless the bound was verified AND the file
+  /// exists (a bound stopped by the watchdog or refused by the exact check is
+  /// reported with its reason, never with a file name): name_certificate.
+  std::string certificate;
+  /// A verified bound can still say nothing. The best CONSTANT model
+  /// (ŷ = each output's mean on the window, Δ = 0) already meets
+  /// d_max = rms_variation, the RMS of the measured output's deviation from
+  /// its mean (all n·ny entries, SPEC §4's normalisation); so the bound is
+  /// informative only when it is verified and d_max < rms_variation. (The
+  /// RMS of y itself, rms_output, includes the mean: an output around
+  /// 100 °C would make almost any d_max look informative.) `note` says why not.
   double rms_output = 0;
+  double rms_variation = 0;
   bool informative = false;
   std::string note;
 };
+
+/// Sets w.certificate to `path` if the bound is verified and `path` exists,
+/// else to "" (then the report shows the reason instead of a file).
+void name_certificate(WindowBounds& w, const std::string& path);
 
 /// Sets rms_output, informative and note from the bounds and the window's
 /// measured output `y` (n × ny).

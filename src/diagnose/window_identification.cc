@@ -43,7 +43,6 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   out.bounds.end = end;
   out.bounds.file_begin = file_row_offset + static_cast<long>(begin);
   out.bounds.file_end = file_row_offset + static_cast<long>(end);
-  out.bounds.certificate = options.certificate_path;
   CertifyOptions co = options;
   co.row_begin = out.bounds.file_begin;
   co.row_end = out.bounds.file_end;
@@ -56,6 +55,7 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   }
   out.bounds.model = std::move(id.fixed.model);
   out.bounds.bounds = std::move(id.bounds);
+  name_certificate(out.bounds, options.certificate_path);
   judge_informative(out.bounds, wd.y);
   return out;
 }

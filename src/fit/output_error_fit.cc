@@ -7,6 +7,7 @@
 #include "core/rms.h"
 #include "fit/levenberg_marquardt.h"
 #include "model/simulate.h"
+#include "model/state_scheduling.h"
 #include "toeplitz/signal_toeplitz.h"
 
 namespace lpvid {
@@ -55,14 +56,60 @@ double prediction_rms(const LpvModel<double>& model, const Experiment<double>& e
   return rms(r);
 }
 
+namespace {
+
+/// The state the model settles in when u and ρ stay at their values of the
+/// first sample: `steps` steps from `from`; empty when not finite.
+Vec<double> equilibrium_at_first_sample(const LpvModel<double>& model, const Experiment<double>& exp,
+                                        const Vec<double>& from, Eigen::Index steps = 2000) {
+  Experiment<double> still;
+  still.u = exp.u.topRows(1).replicate(steps, 1);
+  still.rho = exp.rho.cols() > 0 ? Mat<double>(exp.rho.topRows(1).replicate(steps, 1)) : Mat<double>(steps, 0);
+  LpvModel<double> m = model;
+  m.x0 = from;
+  const Simulation<double> sim = simulate(m, still);
+  if (sim.x.rows() == 0 || !sim.x.allFinite()) return {};
+  return sim.x.bottomRows(1).transpose();
+}
+
+}  // namespace
+
+std::vector<Vec<double>> initial_state_starts(const LpvModel<double>& model, const Experiment<double>& exp) {
+  std::vector<Vec<double>> starts{Vec<double>::Zero(model.nx)};
+  const auto add = [&](const Vec<double>& x) {
+    if (x.size() != model.nx || !x.allFinite()) return;
+    for (const Vec<double>& s : starts)  // the same point (to rounding) is tried once
+      if ((s - x).norm() <= 1e-9 * (1.0 + x.norm())) return;
+    starts.push_back(x);
+  };
+  add(model.x0);
+  if (exp.n() > 0) {
+    add(equilibrium_at_first_sample(model, exp, Vec<double>::Zero(model.nx)));
+    if (model.x0.size() == model.nx) add(equilibrium_at_first_sample(model, exp, model.x0));
+  }
+  return starts;
+}
+
+FitResult fit_initial_state(const LpvModel<double>& model, const Experiment<double>& exp, Eigen::Index samples) {
+  FitOptions x0fit;
+  x0fit.last_sample = std::clamp<Eigen::Index>(samples, 1, exp.n());
+  FitResult best;
+  best.finite = false;
+  best.rms = std::numeric_limits<double>::infinity();
+  best.model = model;
+  best.model.x0 = Vec<double>::Zero(model.nx);
+  for (const Vec<double>& start : initial_state_starts(model, exp)) {
+    LpvModel<double> m = model;
+    m.x0 = start;
+    const FitResult f = fit_slots(m, x0_slots(m), exp, x0fit);
+    if (f.finite && f.rms < best.rms) best = f;
+  }
+  return best;
+}
+
 double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
                       Mat<double>* yhat) {
-  LpvModel<double> m = model;
-  m.x0 = Vec<double>::Zero(model.nx);
-  const Eigen::Index k = std::clamp<Eigen::Index>(init_samples, 1, val.n());
-  FitOptions x0fit;
-  x0fit.last_sample = k;
-  const FitResult f = fit_slots(m, x0_slots(m), val, x0fit);
+  const FitResult f = fit_initial_state(model, val, init_samples);
   if (yhat) *yhat = simulate(f.model, val).output;
   return prediction_rms(f.model, val);
 }
@@ -72,11 +119,7 @@ FreeRunScore warmup_score(const LpvModel<double>& model, const Experiment<double
   if (warmup < 1 || warmup >= exp.n())
     throw std::invalid_argument("warm-up of " + std::to_string(warmup) + " samples leaves nothing to score in " +
                                 std::to_string(exp.n()) + " samples");
-  LpvModel<double> m = model;
-  m.x0 = Vec<double>::Zero(model.nx);
-  FitOptions x0fit;
-  x0fit.last_sample = warmup;
-  const FitResult f = fit_slots(m, x0_slots(m), exp, x0fit);
+  const FitResult f = fit_initial_state(model, exp, warmup);
   const Mat<double> out = simulate(f.model, exp).output;
   if (yhat) *yhat = out;
   FreeRunScore s;
@@ -125,8 +168,15 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
     if (moves_a)
       stable = [&](const Vec<double>& q) { return constant_a_radius(with_slot_values(model, slots, q)) < o.max_radius; };
     if (stable && !stable(p0)) {
-      res.rms = std::sqrt(r0.squaredNorm() / static_cast<double>(m));
-      return res;  // an unstable start is not moved (its free run is judged as it is)
+      // a start whose constant A is not stable on its own: a store (A = I)
+      // kept bounded by a state nonlinearity (√ outflow, overflow) is fitted,
+      // judged by whether its simulation stays finite, like ρ-dependent A
+      // terms; any other unstable start is not moved (its free run is judged as it is)
+      if (state_scheduled(model.columns.rho, model.nx).empty() || model.state_offset.empty()) {
+        res.rms = std::sqrt(r0.squaredNorm() / static_cast<double>(m));
+        return res;
+      }
+      stable = nullptr;
     }
     const LmResult fit = levenberg_marquardt(r, p0, lm, stable);
     p = fit.p;

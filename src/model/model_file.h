@@ -25,7 +25,7 @@
 ///                digits or '_' (so that basis texts like rho1^2*rho2 parse).
 ///   columns      required {"u": [nu names], "y": [ny names],
 ///                "rho": [nρ names]}; "rho" defaults to the scheduling names.
-///                A rho name "@x<i>", "@abs(x<i>-c)", "@sqrt(x<i>-c)" or
+///                A rho name "@x<i>", "@abs(x<i>-c)", "@sqrt(x<i>-c)", "@sqrtpos(x<i>-c)" or
 ///                "@hinge(x<i>-c)" is a function of the model's own state
 ///                (data/column_map.h, model/state_scheduling.h); it must
 ///                parse and name a state 1..nx.

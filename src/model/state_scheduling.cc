@@ -90,6 +90,7 @@ T state_function_value_t(StateFunction f, const T& x, const T& shift) {
     case StateFunction::kAbs: return scheduling_grid(d < T(0) ? T(-d) : d);
     case StateFunction::kSqrt: return scheduling_grid_sqrt(d);
     case StateFunction::kHinge: return scheduling_grid(d > T(0) ? d : T(0));
+    case StateFunction::kSqrtPos: return scheduling_grid_sqrt(d > T(0) ? d : T(0));
   }
   throw std::invalid_argument("unknown state function");
 }

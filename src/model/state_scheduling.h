@@ -11,6 +11,7 @@
 ///   "@abs(x<i>-c)"     ρ_k = grid(|x_k(i) − c|)
 ///   "@sqrt(x<i>-c)"    ρ_k = grid(√|x_k(i) − c|)
 ///   "@hinge(x<i>-c)"   ρ_k = grid(max(x_k(i) − c, 0))
+///   "@sqrtpos(x<i>-c)" ρ_k = grid(√max(x_k(i) − c, 0))  (Torricelli: no outflow below c)
 ///
 /// with x_{k+1} = A(ρ_k) x_k + B(ρ_k) u'_k + E(ρ_k), x_0 = model.x0, where
 /// grid(v) is the nearest multiple of 2^-kSchedulingGridBits (ties upward:

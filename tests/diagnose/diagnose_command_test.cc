@@ -3,6 +3,7 @@
 // validation RMS, report verified bounds whose certificates the independent
 // verifier accepts, write the SPEC §8 report fields and the plots; bad input
 // ends with exit code 2 and a message naming the problem, before any work.
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -138,9 +139,48 @@ TEST_F(DiagnoseCommandTest, WindowsCoverTheRecordAndThreadsDoNotChangeTheBounds)
       for (const char* key : {"estimation_rows", "file_rows", "delta", "dmax", "verified", "informative", "rms_output"})
         EXPECT_EQ(a[key], b[key]) << side << " window " << i << " " << key;
       EXPECT_TRUE(b["informative"].is_boolean());
+      // every certificate the report names exists (a verified bound has one)
+      ASSERT_TRUE(b["certificate"].is_string()) << side << " window " << i;
+      EXPECT_TRUE(std::filesystem::is_regular_file(b["certificate"].get<std::string>())) << b["certificate"];
       EXPECT_EQ(run_program(verify_exe, "certificate " + b["certificate"].get<std::string>()), 0) << output();
     }
   }
+}
+
+// Several test sets: each scored once and reported separately ("tests"); the
+// same file twice gives the same figures twice, and "test" is the first.
+TEST_F(DiagnoseCommandTest, SeveralTestSetsAreScoredSeparately) {
+  const std::string scaled = file("scaled.csv");
+  const EffectCase c = make_effect_case("output_offset", 200, 5, 0.02);
+  Mat<double> y10 = nearest_double(c.validation.y) * 10.0;
+  write_csv(scaled, {{"u1", column_text(c.validation.u, 0)}, {"y1", column_text(y10, 0)}, {"rho1", column_text(c.validation.rho, 0)}});
+  ASSERT_EQ(run("diagnose", "--data " + est + " --model " + model + " --validation " + val + " --window 0:80 --max-taps 16" +
+                                " --max-effects 1 --test " + val + " --test " + scaled + " --test " + val + " --report " +
+                                file("t.json")),
+            0)
+      << output();
+  const nlohmann::json r = report("t.json");
+  ASSERT_EQ(r["tests"].size(), 3u);
+  EXPECT_EQ(r["test"], r["tests"][0]);
+  EXPECT_EQ(r["tests"][0]["rms_after"], r["tests"][2]["rms_after"]);
+  EXPECT_GT(r["tests"][1]["rms_after"].get<double>(), 2 * r["tests"][0]["rms_after"].get<double>());
+  EXPECT_NE(r["tests"][1]["source"].get<std::string>().find("scaled.csv"), std::string::npos);
+  EXPECT_NE(output().find("test 3 of 3"), std::string::npos) << output();
+  // one file, two column sets (here the same columns twice): two test sets
+  ASSERT_EQ(run("diagnose", "--data " + est + " --model " + model + " --validation " + val + " --window 0:80 --max-taps 16" +
+                                " --max-effects 1 --test " + val + " --test-columns u1,y1 --test-columns u1,y1 --report " +
+                                file("c.json")),
+            0)
+      << output();
+  const nlohmann::json rc = report("c.json");
+  ASSERT_EQ(rc["tests"].size(), 2u);
+  EXPECT_EQ(rc["tests"][0]["rms_after"], r["tests"][0]["rms_after"]);
+  EXPECT_NE(rc["tests"][1]["source"].get<std::string>().find("columns u1,y1"), std::string::npos) << rc["tests"][1];
+  // several files AND several column sets: refused before any work
+  EXPECT_EQ(run_program(exe, "diagnose --data " + est + " --model " + model + " --test " + val + " --test " + scaled +
+                                 " --test-columns u1,y1 --test-columns u1,y1"),
+            2);
+  EXPECT_NE(output().find("--test-columns"), std::string::npos) << output();
 }
 
 TEST_F(DiagnoseCommandTest, BadInputIsRejectedWithTheReason) {

@@ -72,7 +72,7 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   const OffsetCase c = offset_case(dir);
   auto solver = make_solver("csdp");
 
-  const DiagnoseResult r = diagnose(c.declared, c.est_d, c.est_q, c.selection, &c.test, options(c, dir, "a"), *solver);
+  const DiagnoseResult r = diagnose(c.declared, c.est_d, c.est_q, c.selection, {c.test}, options(c, dir, "a"), *solver);
   ASSERT_EQ(r.rank.chosen.size(), 1u);
   EXPECT_EQ(r.rank.chosen.front().kind, "output_offset");
   ASSERT_EQ(r.before.size(), 1u);
@@ -90,18 +90,20 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   EXPECT_GT(r.before[0].bounds.dmax, 0.2);
 
   // the test role: the chosen models' free-run RMS, computed here again
-  ASSERT_TRUE(r.test.has_value());
-  EXPECT_EQ(r.test->samples, c.test.n());
-  EXPECT_DOUBLE_EQ(r.test->after.rms, warmup_score(r.after_model, c.test, DiagnoseOptions{}.test_warmup).rms);
-  EXPECT_LT(r.test->after.rms, 0.04);
-  EXPECT_GT(r.test->before.rms, 0.2);
+  ASSERT_EQ(r.tests.size(), 1u);
+  EXPECT_EQ(r.tests[0].samples, c.test.n());
+  EXPECT_DOUBLE_EQ(r.tests[0].after.rms, warmup_score(r.after_model, c.test, DiagnoseOptions{}.test_warmup).rms);
+  EXPECT_LT(r.tests[0].after.rms, 0.04);
+  EXPECT_GT(r.tests[0].before.rms, 0.2);
 
-  // a wrong test set (outputs scaled by 10) and no test set at all change no choice and no exact bound
+  // a wrong test set (outputs scaled by 10) beside the right one, and no test
+  // set at all, change no choice and no exact bound; two test sets are scored
+  // separately, each as if it were alone
   Experiment<double> wrong = c.test;
   wrong.y *= 10.0;
-  for (const Experiment<double>* t : std::vector<const Experiment<double>*>{&wrong, nullptr}) {
+  for (const std::vector<Experiment<double>>& t : {std::vector<Experiment<double>>{wrong, c.test}, std::vector<Experiment<double>>{}}) {
     const DiagnoseResult s = diagnose(c.declared, c.est_d, c.est_q, c.selection, t, options(c, dir, "b"), *solver);
-    EXPECT_EQ(s.test.has_value(), t != nullptr);
+    ASSERT_EQ(s.tests.size(), t.size());
     ASSERT_EQ(s.rank.chosen.size(), 1u);
     EXPECT_EQ(s.rank.chosen.front().label, r.rank.chosen.front().label);
     ASSERT_TRUE(s.verified());
@@ -109,8 +111,10 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
     EXPECT_EQ(s.before[0].bounds.dmax2, r.before[0].bounds.dmax2);
     EXPECT_EQ(s.after[0].bounds.delta2, r.after[0].bounds.delta2);
     EXPECT_EQ(s.after[0].bounds.dmax2, r.after[0].bounds.dmax2);
-    if (t != nullptr) {
-      EXPECT_GT(s.test->after.rms, 2 * r.test->after.rms);
+    if (!t.empty()) {
+      EXPECT_GT(s.tests[0].after.rms, 2 * r.tests[0].after.rms);
+      EXPECT_EQ(s.tests[1].after.rms, r.tests[0].after.rms);
+      EXPECT_EQ(s.tests[1].before.rms, r.tests[0].before.rms);
     }
   }
 }
@@ -121,14 +125,14 @@ TEST(Diagnose, BadOptionsAreRefusedBeforeAnyWork) {
   auto solver = make_solver("csdp");
   DiagnoseOptions o = options(c, dir, "x");
   o.windows = {{150, 250}};  // the estimation record has 200 rows
-  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, nullptr, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {}, o, *solver), InputError);
   o = options(c, dir, "x");
   o.threads = 2;  // no solver factory
-  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, nullptr, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {}, o, *solver), InputError);
   o = options(c, dir, "x");
   const Experiment<double> short_sel = select_rows(c.selection, 0, 6);
-  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, short_sel, nullptr, o, *solver), InputError);
-  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, &short_sel, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, short_sel, {}, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {c.test, short_sel}, o, *solver), InputError);
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.before.json")));
 }
 

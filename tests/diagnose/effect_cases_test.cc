@@ -56,6 +56,35 @@ TEST_P(EffectCaseTest, RightKindFirstAndValidationRmsFalls) {
       << kind << ": validation RMS " << r.before_validation << " -> " << r.after_validation;
   // with the effect found, what is left is the noise (std 0.02)
   EXPECT_LT(r.after_validation, 0.03) << kind;
+  // the reported parameters of every chosen effect are those of the final model
+  for (const ScoredCandidate& c : r.chosen) {
+    const auto& p = c.parameters;
+    for (const char* side : {"input_map", "output_map"}) {
+      if (!p.contains(side)) continue;
+      const StaticMap<double>& g = std::string(side) == "input_map" ? r.after.statics.input : r.after.statics.output;
+      if (p[side].contains("coefficients")) {
+        EXPECT_EQ(p[side]["coefficients"].get<std::vector<double>>(), g.coefficients) << c.label;
+      }
+      if (p[side].contains("lower")) {
+        EXPECT_EQ(p[side]["lower"].get<double>(), g.lower) << c.label;
+        EXPECT_EQ(p[side]["upper"].get<double>(), g.upper) << c.label;
+      }
+    }
+    if (p.contains("delay_samples")) {
+      EXPECT_EQ(p["delay_samples"].get<int>(), r.after.statics.input_delay);
+    }
+    for (const auto& [key, pm] : {std::pair<const char*, const ParamMatrix<double>*>{"C", &r.after.C}, {"D", &r.after.D},
+                                  {"B", &r.after.B}, {"A", &r.after.A}}) {
+      if (!p.contains(key)) continue;
+      bool found = false;
+      for (const auto& t : pm->terms)
+        if (t.basis.text(r.after.scheduling) == p["basis"].get<std::string>()) {
+          found = true;
+          EXPECT_EQ(p[key][0][0].get<double>(), t.value(0, 0)) << c.label << " " << key;
+        }
+      EXPECT_TRUE(found) << c.label << ": " << key << " term " << p["basis"] << " not in the final model";
+    }
+  }
 }
 
 // three input/noise realisations per kind (seeds fixed so that a failure is reproducible)

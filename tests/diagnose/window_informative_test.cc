@@ -1,5 +1,6 @@
-// Issue 9 item 5: a verified bound is flagged uninformative when d_max is at
-// least the RMS of the measured output on its window. Known answers by
+// A verified bound is flagged uninformative when d_max is at least the RMS of
+// the measured output's deviation from its mean on the window (what the
+// constant model y = mean meets). Known answers by
 // construction (tests/support/siso_window_case.h):
 //  - the model IS the generating system and the noise is 1 % of the signal:
 //    Δ = 0 gives d_max = RMS(noise), so the optimum of λδ² + (1−λ)d_max² has
@@ -9,6 +10,8 @@
 //    There d = y − φ, so ‖d‖² ≥ 15·(1−1)² + 15·(−1−1)² = 60, d_max² ≥ 60/40
 //    = 1.5 > RMS(y)² = 30/40: the bound must be vacuous, whatever the solver.
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "diagnose/bound_windows.h"
 #include "diagnose/window_bounds.h"
@@ -61,6 +64,61 @@ TEST(WindowInformative, UnrelatedModelIsFlaggedButStaysVerified) {
   EXPECT_DOUBLE_EQ(w.rms_output, std::sqrt(0.75));
   EXPECT_FALSE(w.informative);
   EXPECT_NE(w.note.find("uninformative"), std::string::npos) << w.note;
+}
+
+// An output around 100 and the constant model φ = 100: u = 0 on the first 38
+// of 40 rows, where y = 100 ± 1 (alternating); u ≠ 0 and y = 100 on the last
+// two (z must not vanish). On the 38 rows z = 0, so by causality w = y − 100
+// = ±1 there: d_max² ≥ 38/40, which is exactly the squared RMS of y about its
+// mean (100). So d_max ≥ that RMS although it is far below the RMS of y
+// (≈ 100): the old rule (d_max < RMS of y) called such a bound informative;
+// a constant explains nothing.
+TEST(WindowInformative, OffsetOutputMetByAConstantIsNotInformative) {
+  ScratchDir dir("informative_offset");
+  std::vector<long> u(40, 0), y(40, 100000000);
+  for (size_t k = 0; k < 38; ++k) y[k] = k % 2 == 0 ? 101000000 : 99000000;
+  u[38] = 500000;
+  u[39] = -250000;
+  const WindowBounds w = certify_case(dir, siso_window_model_json("100"), u, y);
+  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  EXPECT_TRUE(check_certificate_file(w.certificate).holds);
+  EXPECT_GE(w.bounds.dmax2, Rational(38, 40));  // the exact lower bound derived above
+  EXPECT_LT(w.bounds.dmax, 0.5 * w.rms_output);  // what the old rule would have accepted
+  EXPECT_DOUBLE_EQ(w.rms_variation, std::sqrt(38.0 / 40.0));
+  EXPECT_FALSE(w.informative) << w.note;
+  EXPECT_NE(w.note.find("mean"), std::string::npos) << w.note;
+}
+
+// judge_informative alone: the variation is taken about each output's mean.
+TEST(WindowInformative, VariationIsAboutTheMeanOfEachOutput) {
+  WindowBounds w;
+  w.bounds.verified = true;
+  Mat<double> y(4, 2);
+  y << 10, -3, 12, -3, 10, -5, 12, -5;  // means 11 and -4, deviations ±1 everywhere
+  w.bounds.dmax = 0.99;
+  judge_informative(w, y);
+  EXPECT_DOUBLE_EQ(w.rms_variation, 1.0);
+  EXPECT_TRUE(w.informative);
+  w.bounds.dmax = 1.0;
+  judge_informative(w, y);
+  EXPECT_FALSE(w.informative);
+}
+
+// A report names a certificate only when the bound is verified AND the file
+// exists: a bound stopped by the watchdog names none (its reason is shown).
+TEST(WindowCertificate, NamedOnlyWhenVerifiedAndWritten) {
+  ScratchDir dir("window_certificate");
+  const std::string written = dir.file("written.json"), missing = dir.file("missing.json");
+  std::ofstream(written) << "{}";
+  WindowBounds w;
+  w.bounds.verified = true;
+  name_certificate(w, written);
+  EXPECT_EQ(w.certificate, written);
+  name_certificate(w, missing);  // verified, but the file was never written
+  EXPECT_EQ(w.certificate, "");
+  w.bounds.verified = false;  // a stale file of an earlier run is no certificate of this bound
+  name_certificate(w, written);
+  EXPECT_EQ(w.certificate, "");
 }
 
 TEST(WindowInformative, UnverifiedIsNeverInformative) {

@@ -54,6 +54,10 @@ TEST(StateFunctions, ColumnTextsParse) {
   EXPECT_EQ(c.state, 1);
   EXPECT_EQ(c.function, StateFunction::kHinge);
   EXPECT_EQ(rational_from_text(c.shift), Rational(0));
+  c = parse_state_column("@sqrtpos(x2-7.5)");
+  EXPECT_EQ(c.state, 1);
+  EXPECT_EQ(c.function, StateFunction::kSqrtPos);
+  EXPECT_EQ(rational_from_text(c.shift), dec("7.5"));
   EXPECT_EQ(parse_state_column("@x3").function, StateFunction::kState);
   EXPECT_EQ(parse_state_column("rho1").state, -1);
   EXPECT_EQ(state_scheduling_index("@sqrt(x2-1e-3)"), 1);
@@ -140,6 +144,9 @@ TEST(StateFunctions, FunctionValues) {
   EXPECT_EQ(state_function_value(StateFunction::kSqrt, c, x), dec("1.5"));  // √|−2.25|
   EXPECT_EQ(state_function_value(StateFunction::kHinge, x, c), dec("2.25"));
   EXPECT_EQ(state_function_value(StateFunction::kHinge, c, x), Rational(0));
+  EXPECT_EQ(state_function_value(StateFunction::kSqrtPos, x, c), dec("1.5"));  // √max(2.25, 0)
+  EXPECT_EQ(state_function_value(StateFunction::kSqrtPos, c, x), Rational(0));  // below the level: no outflow
+  EXPECT_EQ(state_function_value(StateFunction::kSqrtPos, 0.5, 2.75), 0.0);
   EXPECT_EQ(state_function_value(StateFunction::kState, x, Rational(0)), x);
   EXPECT_EQ(state_function_value(StateFunction::kSqrt, 2.75, 0.5), 1.5);
   EXPECT_EQ(state_function_value(StateFunction::kHinge, 0.5, 2.75), 0.0);
