@@ -50,6 +50,8 @@ struct DiagnoseArgs {
   bool joint_dynamics = RankingOptions{}.joint_dynamics;
   std::vector<std::string> windows;
   long window_length = 0;
+  int max_windows = 0;     ///< --max-windows: at most this many bound windows (0: all)
+  bool lower_ends = false;  ///< --lower-ends: also certify each bound's lower end (dual certificates)
   std::string plots_dir;
   std::string model_out;
   int threads = static_cast<int>(default_thread_count());
@@ -206,10 +208,12 @@ int run_diagnose(DiagnoseArgs& a) {
   };
   o.test_warmup = warmup;
   o.windows = windows;
+  o.max_windows = static_cast<size_t>(a.max_windows);
   o.certify = certify_options(a.common, in.objective);  // rows: set per window
   // Many windows: the lower end comes from the K-tap solve's dual lifted to
   // the full horizon, without the extra full-horizon solve (issue 8).
   o.certify.full_horizon_limit = 0;
+  o.certify.lower_end = a.lower_ends;
   o.certify.certificate_path = certificate_path(a.common);
   o.certify.scale_signals = true;  // λ on unit-RMS signals (identify/bound_scaling.h)
   o.file_row_offset = file_offset;
@@ -305,6 +309,12 @@ Runner add_diagnose_command(CLI::App& app) {
                   "certify consecutive windows of this length covering the whole estimation record (a last one "
                   "shorter than min(50, L/4) rows merged)")
       ->check(CLI::Range(10L, 100000L));
+  cmd->add_option("--max-windows", a->max_windows,
+                  "certify at most N bound windows, spread evenly over the estimation record (default: all)")
+      ->check(CLI::Range(1, 1000000));
+  cmd->add_flag("--lower-ends", a->lower_ends,
+                "also certify the lower end of every bound (a dual certificate per window, large: about 60 MB at 200 "
+                "rows); the report states the upper ends, which need none");
   cmd->add_option("--threads", a->threads,
                   "bound windows certified at once (default: the number of hardware threads); results do not depend "
                   "on it")

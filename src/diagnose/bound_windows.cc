@@ -1,6 +1,7 @@
 #include "diagnose/bound_windows.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace lpvid {
@@ -19,6 +20,26 @@ std::vector<RowWindow> tile_windows(Eigen::Index n, Eigen::Index length, Eigen::
 
 std::vector<RowWindow> default_bound_windows(Eigen::Index n) {
   return tile_windows(n, kDefaultWindowLength, kDefaultMinLastWindow);
+}
+
+std::vector<RowWindow> spread_windows(const std::vector<RowWindow>& windows, size_t cap) {
+  if (cap == 0 || cap >= windows.size()) return windows;
+  if (cap == 1) return {windows.front()};
+  std::vector<RowWindow> out;
+  const double step = static_cast<double>(windows.size() - 1) / static_cast<double>(cap - 1);
+  for (size_t i = 0; i < cap; ++i) out.push_back(windows[static_cast<size_t>(std::lround(step * static_cast<double>(i)))]);
+  return out;
+}
+
+BoundCost estimate_bound_cost(const std::vector<RowWindow>& windows, int ny, int nz, bool lower_ends) {
+  BoundCost c;
+  for (const RowWindow& w : windows) {
+    const double size = static_cast<double>(w.second - w.first) * static_cast<double>(ny + nz);
+    const double each = 1.7 * std::pow(size / 400.0, 2.7);
+    c.seconds += 2.0 * each;  // before and after
+    c.megabytes += 2.0 * (0.01 + (lower_ends ? 0.38e-3 * size * size : 0.0));
+  }
+  return c;
 }
 
 }  // namespace lpvid

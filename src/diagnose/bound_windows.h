@@ -27,4 +27,24 @@ std::vector<RowWindow> tile_windows(Eigen::Index n, Eigen::Index length, Eigen::
 /// The default of `lpvid diagnose`: tile_windows(n, 200, 50).
 std::vector<RowWindow> default_bound_windows(Eigen::Index n);
 
+/// At most `cap` of `windows`, spread evenly over them (the first and the
+/// last always kept; index round(i·(W−1)/(cap−1))); all of them when cap is
+/// 0 or not smaller than their number.
+std::vector<RowWindow> spread_windows(const std::vector<RowWindow>& windows, size_t cap);
+
+/// What certifying `windows` is expected to cost, before it starts: an
+/// a-priori figure from the bench table (bench/README.md), not a promise.
+struct BoundCost {
+  double seconds = 0;   ///< wall time, all certifications in sequence
+  double megabytes = 0;  ///< certificate files written
+};
+
+/// The estimate for every window certified twice (before and after): per
+/// certification of L rows with ny outputs and nz uncertainty channels,
+/// seconds ≈ 1.7·(L·(ny+nz)/400)^2.7 (the SISO structured barrier, both
+/// ends: 1.7 s at 200 rows, 10.9 s at 400), a primal certificate ≈ 10 kB,
+/// and with `lower_ends` a dense dual matrix of (L·(ny+nz))² rationals
+/// ≈ 0.38 kB per entry (60 MB at 200 rows SISO).
+BoundCost estimate_bound_cost(const std::vector<RowWindow>& windows, int ny, int nz, bool lower_ends);
+
 }  // namespace lpvid

@@ -1,5 +1,7 @@
 #include "diagnose/diagnose.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <mutex>
 
 #include "core/input_error.h"
@@ -55,8 +57,19 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
                         const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options,
                         SdpSolver& solver) {
   const std::vector<RowWindow> windows =
-      options.windows.empty() ? default_bound_windows(est_q.n()) : options.windows;
+      spread_windows(options.windows.empty() ? default_bound_windows(est_q.n()) : options.windows, options.max_windows);
   check_options(est_d, est_q, selection, tests, options, windows);
+  if (options.ranking.progress) {  // what the certification at the end will cost, said before any work
+    const BoundCost cost = estimate_bound_cost(windows, declared.ny, declared.nz(), options.certify.lower_end);
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "bounds at the end: %zu windows x (before, after), expected roughly %.0f s and %.1f MB of "
+                  "certificates%s (--max-windows N caps the windows%s)",
+                  windows.size(), cost.seconds / std::max(1u, options.threads), cost.megabytes,
+                  options.certify.lower_end ? " with the lower ends' dual certificates" : "",
+                  options.certify.lower_end ? "; without --lower-ends no dual certificates are written" : "");
+    options.ranking.progress(buf);
+  }
 
   // 1. effects: fitted on the estimation data, chosen on the selection data
   DiagnoseResult out;

@@ -39,7 +39,14 @@ struct DiagnoseOptions {
   /// Windows of the estimation record on which the bounds are certified;
   /// empty: default_bound_windows (diagnose/bound_windows.h).
   std::vector<RowWindow> windows;
-  /// Options of every certificate. `certificate_path` is the stem's file:
+  /// At most this many of those windows (spread_windows: evenly over the
+  /// record, first and last kept); 0: all. A 10 000-sample record has 50
+  /// default windows.
+  size_t max_windows = 0;
+  /// Options of every certificate (lower_end: also a dual certificate of the
+  /// lower end per window, ".lower.json", 60 MB at 200 SISO rows; off by
+  /// default in `lpvid diagnose`, whose report states the upper ends).
+  /// `certificate_path` is the stem's file:
   /// "<stem>.json" gives <stem>.before.json, <stem>.after.json (".w<i>"
   /// before the side when there are several windows) and
   /// <stem>.before.thm31.json, <stem>.after.thm31.json.

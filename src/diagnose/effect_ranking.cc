@@ -149,10 +149,12 @@ FoldFigures empty_figures(size_t k) {
 struct FoldedFamily {
   FitResult whole;
   FoldFigures figures;
+  std::vector<FitResult> per_fold;  ///< the fit on each fold's training rows
 };
 
-/// How a family is fitted on one training set.
-using FamilyFit = std::function<FitResult(const Experiment<double>& training, const FitOptions& fit)>;
+/// How a family is fitted on one training set: set t < K is fold t's
+/// training rows, t == K the whole record.
+using FamilyFit = std::function<FitResult(const Experiment<double>& training, size_t t, const FitOptions& fit)>;
 
 /// Runs every (family, training set) pair as one job (core/parallel_for.h).
 std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, const std::vector<std::string>& labels,
@@ -160,17 +162,22 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
                                        const std::vector<FoldBlock>& blocks, const RankingOptions& o) {
   const size_t k = blocks.size(), sets = k + 1, jobs = families.size() * sets;
   std::vector<FoldedFamily> out(families.size());
-  for (FoldedFamily& f : out) f.figures = empty_figures(k);
+  for (FoldedFamily& f : out) {
+    f.figures = empty_figures(k);
+    f.per_fold.resize(k);
+  }
   std::mutex report;
   size_t done = 0;
   parallel_for(jobs, o.threads, [&](size_t job) {
     const size_t i = job / sets, t = job % sets;
     const FoldBlock rows = training_rows(est.n(), blocks, t);
-    const FitResult r = families[i](t == k ? est : select_rows(est, rows.first, rows.last), o.fit);
-    if (t == k)
+    const FitResult r = families[i](t == k ? est : select_rows(est, rows.first, rows.last), t, o.fit);
+    if (t == k) {
       out[i].whole = r;
-    else
+    } else {
       score_block(r, est, blocks, t, o.fold_warmup, out[i].figures);
+      out[i].per_fold[t] = r;
+    }
     if (o.progress) {
       const std::lock_guard<std::mutex> lock(report);
       ++done;
@@ -181,20 +188,66 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
   return out;
 }
 
-/// A candidate's family: the effect fitted from every start. In fold mode
-/// A, B move with the effect (the joint re-fit) unless the user fixed them
-/// (--fixed-dynamics): dynamics kept from a model fitted on the same record
-/// would carry the held-out block's information into every fold.
-FamilyFit candidate_family(const EffectCandidate& c, const RankingOptions& o) {
-  const EffectCandidate* cp = &c;
+/// A candidate fitted on some rows from every start (its starts_for those
+/// rows when it has them).
+FitResult fit_family_member(const EffectCandidate& c, bool joint, const Experiment<double>& training,
+                            const FitOptions& fit) {
+  if (c.starts_for) {
+    const std::vector<LpvModel<double>> own = c.starts_for(training);
+    if (!own.empty()) return best_fit(own, nullptr, c.slots, joint, training, fit);
+  }
+  return best_fit(c.starts, nullptr, c.slots, joint, training, fit);
+}
+
+/// A candidate's family: on the whole record the candidate built on the
+/// current model; on fold t the SAME effect built on the current model as
+/// fitted on fold t's training rows (`per_fold[t]`, null when that fold has
+/// no such candidate: the fold then counts as lost). So no fold's fit starts
+/// from parameters that have seen its held-out block, in any round. In fold
+/// mode A, B move with the effect (the joint re-fit) unless the user fixed
+/// them (--fixed-dynamics).
+FamilyFit candidate_family(const EffectCandidate& whole, const std::vector<const EffectCandidate*>& per_fold,
+                           const RankingOptions& o) {
+  const EffectCandidate* wp = &whole;
   const bool joint = o.joint_dynamics;
-  return [cp, joint](const Experiment<double>& training, const FitOptions& fit) {
-    if (cp->starts_for) {
-      const std::vector<LpvModel<double>> own = cp->starts_for(training);
-      if (!own.empty()) return best_fit(own, nullptr, cp->slots, joint, training, fit);
+  return [wp, per_fold, joint](const Experiment<double>& training, size_t t, const FitOptions& fit) {
+    if (t >= per_fold.size()) return fit_family_member(*wp, joint, training, fit);
+    if (per_fold[t] == nullptr) {
+      FitResult none;
+      none.finite = false;
+      none.rms = std::numeric_limits<double>::infinity();
+      return none;
     }
-    return best_fit(cp->starts, nullptr, cp->slots, joint, training, fit);
+    return fit_family_member(*per_fold[t], joint, training, fit);
   };
+}
+
+/// What identifies "the same effect" across models that differ only in
+/// their parameter values: the kind, the label without its numbers (starting
+/// values are printed in it), and the number of slots.
+std::string candidate_key(const EffectCandidate& c) {
+  std::string stem;
+  for (char ch : c.label)
+    if (!std::isdigit(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-' && ch != '+' && ch != 'e') stem += ch;
+  return c.kind + "|" + stem + "|" + std::to_string(c.slots.size());
+}
+
+/// For each candidate of `whole`, the candidate of `fold` with the same key
+/// (each used once), or null.
+std::vector<const EffectCandidate*> match_candidates(const std::vector<EffectCandidate>& whole,
+                                                     const std::vector<EffectCandidate>& fold) {
+  std::vector<const EffectCandidate*> out(whole.size(), nullptr);
+  std::vector<bool> used(fold.size(), false);
+  for (size_t i = 0; i < whole.size(); ++i) {
+    const std::string key = candidate_key(whole[i]);
+    for (size_t j = 0; j < fold.size(); ++j)
+      if (!used[j] && candidate_key(fold[j]) == key) {
+        out[i] = &fold[j];
+        used[j] = true;
+        break;
+      }
+  }
+  return out;
 }
 
 ScoredCandidate scored_from_family(const EffectCandidate& c, const FoldedFamily& f, const LpvModel<double>& previous,
@@ -255,20 +308,46 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
   LpvModel<double> current = res.before;
   double current_est = res.before_estimation;
   FoldFigures current_folds;  // set in round 1 (the declared structure re-fitted per fold)
+  // the current model of each fold, fitted on that fold's training rows only:
+  // the chain of models a fold would have chosen without its held-out block
+  const size_t k = res.fold_blocks.size();
+  std::vector<Experiment<double>> training(k);
+  std::vector<LpvModel<double>> current_fold(k);
+  for (size_t t = 0; t < k; ++t) {
+    const FoldBlock rows = training_rows(est.n(), res.fold_blocks, t);
+    training[t] = select_rows(est, rows.first, rows.last);
+    const FitResult f = fit_declared(declared, training[t], o.fit);
+    current_fold[t] = f.finite ? f.model : res.before;
+  }
   for (int round = 0; round < o.max_effects; ++round) {
     RankingRound r;
     r.current = current;
     r.current_validation = current_folds.total_rms();
-    std::vector<EffectCandidate> cands = round_candidates(current, est, o);
-    EffectCandidate refit;  // the no-effect reference: the same freedom, no new effect
+    const std::vector<EffectCandidate> cands = round_candidates(current, est, o);
+    std::vector<std::vector<EffectCandidate>> fold_cands(k);
+    parallel_for(k, o.threads, [&](size_t t) { fold_cands[t] = round_candidates(current_fold[t], training[t], o); });
+    std::vector<std::vector<const EffectCandidate*>> matched(k);  // [t][i]
+    for (size_t t = 0; t < k; ++t) matched[t] = match_candidates(cands, fold_cands[t]);
+    // the no-effect reference: the same freedom, no new effect
+    EffectCandidate refit;
     refit.kind = "none";
     refit.starts = {current};
     refit.slots = refit_slots(current);
-    std::vector<FamilyFit> families{candidate_family(refit, o)};
+    std::vector<EffectCandidate> fold_refit(k);
+    std::vector<const EffectCandidate*> refit_per_fold(k);
+    for (size_t t = 0; t < k; ++t) {
+      fold_refit[t].kind = "none";
+      fold_refit[t].starts = {current_fold[t]};
+      fold_refit[t].slots = refit_slots(current_fold[t]);
+      refit_per_fold[t] = &fold_refit[t];
+    }
+    std::vector<FamilyFit> families{candidate_family(refit, refit_per_fold, o)};
     std::vector<std::string> labels{"no new effect"};
-    for (const EffectCandidate& c : cands) {
-      families.push_back(candidate_family(c, o));
-      labels.push_back(c.label);
+    for (size_t i = 0; i < cands.size(); ++i) {
+      std::vector<const EffectCandidate*> per_fold(k);
+      for (size_t t = 0; t < k; ++t) per_fold[t] = matched[t][i];
+      families.push_back(candidate_family(cands[i], per_fold, o));
+      labels.push_back(cands[i].label);
     }
     const std::vector<FoldedFamily> fitted =
         fit_families(families, labels, "round " + std::to_string(round + 1), est, res.fold_blocks, o);
@@ -288,8 +367,11 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
     for (size_t i = 0; i < cands.size(); ++i) {
       r.ranked.push_back(scored_from_family(cands[i], fitted[i + 1], current, o.joint_dynamics));
       r.ranked.back().folds_won = folds_won(r.ranked.back().folds, r.reference_folds);
+      r.ranked.back().family = i + 1;
     }
     set_explained(r);
+    std::vector<size_t> family_of;  // ranked index -> index into `fitted`
+    for (const ScoredCandidate& s : r.ranked) family_of.push_back(s.family);
     // the best-scored candidate that passes the rule of fold_plan.h
     for (size_t i = 0; i < r.ranked.size(); ++i)
       if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain)) {
@@ -301,6 +383,12 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
       current = c.model;
       current_est = c.rms_estimation;
       current_folds = c.folds;
+      // each fold carries its own fit of the chosen effect into the next round
+      // (a fold whose fit failed keeps its model: its next candidates will not
+      // match, and it counts as lost for every one of them)
+      const FoldedFamily& f = fitted[family_of[static_cast<size_t>(r.chosen)]];
+      for (size_t t = 0; t < k; ++t)
+        if (f.per_fold[t].finite) current_fold[t] = f.per_fold[t].model;
       res.chosen.push_back(c);
     }
     const bool stop = r.chosen < 0;

@@ -11,6 +11,14 @@
 /// a round is never worse than before it on the held-out total. Whether A, B
 /// move with the effect (joint re-fit) is chosen by the same folds. The
 /// model kept is the candidate fitted on the whole record.
+/// Each fold keeps its own chain of models: the declared unknowns fitted on
+/// its training rows, then in every round the chosen effect as fitted on
+/// them; a fold's candidates are built on ITS current model (matched to the
+/// whole record's candidates by kind, label and slots; a fold without a match
+/// counts as lost). So no fold's fit, in any round, starts from parameters
+/// that saw its held-out block (starting later rounds from the whole-record
+/// model let a non-convex fit that barely moves keep that information: the
+/// held-out figures fell while the model did not change).
 ///
 /// ONE SPLIT (val given): every candidate is fitted on the ESTIMATION data
 /// (output-error least squares, fit/output_error_fit.h) and scored on
@@ -83,6 +91,7 @@ struct ScoredCandidate {
   FoldFigures folds;               ///< fold mode: held-out figures (rms_validation is their total)
   int folds_won = 0;               ///< fold mode: folds on which it beats the round's reference
   bool joint = false;              ///< A, B were re-fitted with the effect
+  size_t family = 0;               ///< fold mode: its index among the round's fitted families (internal)
 };
 
 struct RankingRound {

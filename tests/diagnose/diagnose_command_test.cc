@@ -183,6 +183,24 @@ TEST_F(DiagnoseCommandTest, SeveralTestSetsAreScoredSeparately) {
   EXPECT_NE(output().find("--test-columns"), std::string::npos) << output();
 }
 
+// --max-windows caps the certified windows; without --lower-ends no dual
+// certificate is written; the cost estimate is said before any work.
+TEST_F(DiagnoseCommandTest, WindowCapAndNoDualCertificatesByDefault) {
+  const EffectCase c = make_effect_case("none", 270, 7, 0.02);
+  write_csv(est, {{"u1", column_text(c.estimation.u, 0)}, {"y1", column_text(c.estimation.y, 0)},
+                  {"rho1", column_text(c.estimation.rho, 0)}});
+  ASSERT_EQ(run("diagnose", "--data " + est + " --model " + model + " --validation " + val +
+                                " --max-effects 1 --max-windows 1 --report " + file("cap.json")),
+            0)
+      << output();
+  const nlohmann::json r = report("cap.json");
+  ASSERT_EQ(r["before"]["windows"].size(), 1u);
+  EXPECT_EQ(r["before"]["windows"][0]["estimation_rows"], nlohmann::json::array({0, 200}));
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(file("cap.json")).parent_path()))
+    EXPECT_EQ(e.path().string().find(".lower.json"), std::string::npos) << e.path();
+  EXPECT_NE(output().find("expected roughly"), std::string::npos) << output();
+}
+
 TEST_F(DiagnoseCommandTest, BadInputIsRejectedWithTheReason) {
   const std::string base = "diagnose --data " + est + " --model " + model + " ";
   EXPECT_EQ(run_program(exe, base + "--validation-columns a,b,c"), 2);

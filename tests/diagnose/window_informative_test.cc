@@ -142,6 +142,30 @@ TEST(BoundWindows, DefaultCoversTheRecordAndMergesAShortTail) {
   EXPECT_EQ(tile_windows(24, 10, 5), (W{{0, 10}, {10, 24}}));
 }
 
+// The cap: first and last kept, the rest spread evenly (known by arithmetic).
+TEST(BoundWindows, SpreadKeepsFirstLastAndEvenSteps) {
+  using W = std::vector<RowWindow>;
+  const W all = tile_windows(1000, 100, 50);  // 10 windows
+  EXPECT_EQ(spread_windows(all, 0), all);
+  EXPECT_EQ(spread_windows(all, 10), all);
+  EXPECT_EQ(spread_windows(all, 1), (W{{0, 100}}));
+  EXPECT_EQ(spread_windows(all, 2), (W{{0, 100}, {900, 1000}}));
+  EXPECT_EQ(spread_windows(all, 4), (W{{0, 100}, {300, 400}, {600, 700}, {900, 1000}}));  // indices 0, 3, 6, 9
+}
+
+// The a-priori cost: linear in the number of windows; the dual certificates
+// dominate the disk use (their size grows with the square of the window).
+TEST(BoundWindows, CostEstimateScalesAsDocumented) {
+  using W = std::vector<RowWindow>;
+  const BoundCost one = estimate_bound_cost(W{{0, 200}}, 1, 1, false);
+  const BoundCost five = estimate_bound_cost(tile_windows(1000, 200, 50), 1, 1, false);
+  EXPECT_NEAR(five.seconds, 5 * one.seconds, 1e-9);
+  EXPECT_NEAR(one.megabytes, 0.02, 1e-12);  // two primal certificates of about 10 kB
+  const BoundCost lower = estimate_bound_cost(W{{0, 200}}, 1, 1, true);
+  EXPECT_NEAR(lower.megabytes - one.megabytes, 2 * 0.38e-3 * 400.0 * 400.0, 1e-9);  // 2 × (L(ny+nz))² entries
+  EXPECT_GT(estimate_bound_cost(W{{0, 400}}, 1, 1, false).seconds, 4 * one.seconds);
+}
+
 TEST(BoundWindows, TilesAreContiguousAndLongEnough) {
   for (Eigen::Index n = 1; n < 700; n += 7)
     for (const Eigen::Index len : {10, 37, 200}) {
