@@ -77,6 +77,7 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   // 2. the numbers the certificates state
   out.before_model = round_fitted_model(out.rank.before);
   out.after_model = round_fitted_model(out.rank.after);
+  restate_parameters(out.rank, out.after_model);  // the report's values are the certified model's
 
   // 3. Theorem 2.1 on every window, before and after: one independent job each
   // (core/parallel_for.h); SDP solves serialise inside (solvers/sdp_solver.cc).

@@ -283,18 +283,6 @@ void set_explained(RankingRound& r) {
                    [](const ScoredCandidate& a, const ScoredCandidate& b) { return a.score < b.score; });
 }
 
-/// Each chosen effect's parameters as they are in the final model (later
-/// rounds re-fit them), the values of its own round kept beside them.
-void final_parameters(RankingResult& res) {
-  size_t k = 0;
-  for (const RankingRound& r : res.rounds) {
-    if (r.chosen < 0 || k >= res.chosen.size()) continue;
-    ScoredCandidate& c = res.chosen[k++];
-    c.parameters_at_round = c.parameters;
-    c.parameters = effect_parameters(c.kind, c.label, res.after, r.current, &c.model);
-  }
-}
-
 /// Fold mode (val empty): see the header.
 RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Experiment<double>& est,
                                     const RankingOptions& o) {
@@ -396,7 +384,7 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
     if (stop) break;
   }
   res.after = current;
-  final_parameters(res);
+  restate_parameters(res, res.after);
   res.after_estimation = current_est;
   res.after_folds = current_folds;
   res.after_validation = current_folds.total_rms();
@@ -404,6 +392,16 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
 }
 
 }  // namespace
+
+void restate_parameters(RankingResult& res, const LpvModel<double>& final_model) {
+  size_t k = 0;
+  for (const RankingRound& r : res.rounds) {
+    if (r.chosen < 0 || k >= res.chosen.size()) continue;
+    ScoredCandidate& c = res.chosen[k++];
+    if (c.parameters_at_round.is_null()) c.parameters_at_round = c.parameters;
+    c.parameters = effect_parameters(c.kind, c.label, final_model, r.current, &c.model);
+  }
+}
 
 FitResult fit_declared(const LpvModel<double>& declared, const Experiment<double>& est, const FitOptions& fit) {
   const LpvModel<double> m = explicit_model(declared);
@@ -468,7 +466,7 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
     if (stop) break;
   }
   res.after = current;
-  final_parameters(res);
+  restate_parameters(res, res.after);
   res.after_estimation = current_est;
   res.after_validation = current_val;
   return res;

@@ -124,6 +124,12 @@ FitResult fit_declared(const LpvModel<double>& declared, const Experiment<double
 RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<double>& est,
                            const Experiment<double>& val, const RankingOptions& options);
 
+/// Each chosen effect's parameters restated from `final_model` (the final
+/// model, or its copy rounded for the certificates): later rounds re-fit
+/// them. The values of the effect's own round are kept in
+/// parameters_at_round. rank_effects calls it with res.after.
+void restate_parameters(RankingResult& res, const LpvModel<double>& final_model);
+
 /// The effect's own parameters as JSON (kind-specific: basis and matrices,
 /// offset values, limits, coefficients, delay), read from `fitted`. Which
 /// terms and columns belong to the effect is what `introduced_by` (the model

@@ -75,6 +75,11 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   const DiagnoseResult r = diagnose(c.declared, c.est_d, c.est_q, c.selection, {c.test}, options(c, dir, "a"), *solver);
   ASSERT_EQ(r.rank.chosen.size(), 1u);
   EXPECT_EQ(r.rank.chosen.front().kind, "output_offset");
+  // the reported parameter is the certified (rounded, written) model's, exactly
+  const auto& phi = r.rank.chosen.front().parameters["phi"];
+  ASSERT_EQ(r.after_model.offset.values.size(), 1u);
+  EXPECT_EQ(phi[0][0].get<double>(), r.after_model.offset.values[0](0));
+  EXPECT_EQ(phi[0][0].get<double>(), nearest_double(r.after[0].model.offset.values[0](0)));  // the file reads its shortest decimal
   ASSERT_EQ(r.before.size(), 1u);
   ASSERT_EQ(r.after.size(), 1u);
   ASSERT_TRUE(r.verified()) << r.before[0].bounds.reason << " / " << r.after[0].bounds.reason;
