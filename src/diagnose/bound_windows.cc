@@ -35,7 +35,7 @@ BoundCost estimate_bound_cost(const std::vector<RowWindow>& windows, int ny, int
   BoundCost c;
   for (const RowWindow& w : windows) {
     const double size = static_cast<double>(w.second - w.first) * static_cast<double>(ny + nz);
-    const double each = 1.7 * std::pow(size / 400.0, 2.7);
+    const double each = 12.0 * std::pow(size / 400.0, 2.7);
     c.seconds += 2.0 * each;  // before and after
     c.megabytes += 2.0 * (0.01 + (lower_ends ? 0.38e-3 * size * size : 0.0));
   }

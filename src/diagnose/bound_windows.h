@@ -41,8 +41,10 @@ struct BoundCost {
 
 /// The estimate for every window certified twice (before and after): per
 /// certification of L rows with ny outputs and nz uncertainty channels,
-/// seconds ≈ 1.7·(L·(ny+nz)/400)^2.7 (the SISO structured barrier, both
-/// ends: 1.7 s at 200 rows, 10.9 s at 400), a primal certificate ≈ 10 kB,
+/// seconds ≈ 12·(L·(ny+nz)/400)^2.7 of wall time (measured: the cascaded
+/// tanks' 200-row windows, weighted objective, about 12 s each on 2 cores;
+/// the exponent from the SISO bench table, 1.7 s at 200 rows and 10.9 s at
+/// 400 for one objective), a primal certificate ≈ 10 kB,
 /// and with `lower_ends` a dense dual matrix of (L·(ny+nz))² rationals
 /// ≈ 0.38 kB per entry (60 MB at 200 rows SISO).
 BoundCost estimate_bound_cost(const std::vector<RowWindow>& windows, int ny, int nz, bool lower_ends);

@@ -65,7 +65,7 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
     std::snprintf(buf, sizeof buf,
                   "bounds at the end: %zu windows x (before, after), expected roughly %.0f s and %.1f MB of "
                   "certificates%s (--max-windows N caps the windows%s)",
-                  windows.size(), cost.seconds / std::max(1u, options.threads), cost.megabytes,
+                  windows.size(), cost.seconds, cost.megabytes,
                   options.certify.lower_end ? " with the lower ends' dual certificates" : "",
                   options.certify.lower_end ? "; without --lower-ends no dual certificates are written" : "");
     options.ranking.progress(buf);
