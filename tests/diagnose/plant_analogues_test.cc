@@ -25,7 +25,7 @@ struct Outcome {
   double test_before = 0, test_after = 0;
 };
 
-Outcome run(const std::string& name, int n, const RankingOptions& base = {}) {
+Outcome run(const std::string& name, int n, const RankingOptions& base = {}, int max_effects = 2) {
   const PlantAnalogue p = make_plant_analogue(name, n, 7);
   const ColumnMap cols{{"u1"}, {"y1"}, {}};
   const Eigen::Index cut = n * 7 / 10;
@@ -33,7 +33,7 @@ Outcome run(const std::string& name, int n, const RankingOptions& base = {}) {
       choose_order(select_rows(p.estimation, 0, cut), select_rows(p.estimation, cut, n), cols, 5, true, 5);
   RankingOptions o = base;
   o.fold_warmup = 10;
-  o.max_effects = 2;
+  o.max_effects = max_effects;
   o.threads = 2;
   Outcome out;
   out.r = rank_effects(oc.fit.model, p.estimation, Experiment<double>{}, o);
@@ -68,6 +68,25 @@ TEST(PlantAnalogues, DuffingGetsAStateScheduledStiffness) {
   EXPECT_EQ(o.r.chosen.front().kind, "basis_term") << chosen_text(o.r);
   EXPECT_NE(o.r.chosen.front().label.find(" in A "), std::string::npos) << chosen_text(o.r);
   EXPECT_LE(o.test_after, 0.6 * o.test_before) << chosen_text(o.r);
+}
+
+// Two tanks with √ outflow and an overflow of the upper tank (n = 1000; at
+// n = 600 the per-fold fits of the store cascade on 300-row stretches stop in
+// poor local minima on 2 folds and an output polynomial after order 2 wins:
+// measured, noted in the issue): the store cascade (√ outflow and overflow in
+// the state equation) is chosen first, and the test RMS falls to <= 0.6 x.
+// Without the state nonlinearities the family cannot be chosen.
+TEST(PlantAnalogues, TanksGetTheStoreCascade) {
+  const Outcome o = run("tanks", 1000, {}, 1);
+  ASSERT_FALSE(o.r.chosen.empty());
+  EXPECT_EQ(o.r.chosen.front().kind, "state_nonlinearity") << chosen_text(o.r);
+  EXPECT_EQ(o.r.chosen.front().label.rfind("store cascade", 0), 0u) << chosen_text(o.r);
+  EXPECT_LE(o.test_after, 0.6 * o.test_before) << chosen_text(o.r);
+  EXPECT_LE(o.r.after_folds.total_rms(), o.r.before_folds.total_rms());
+  RankingOptions off;
+  off.candidates.state_functions = false;
+  const Outcome w = run("tanks", 1000, off, 1);
+  for (const ScoredCandidate& c : w.r.chosen) EXPECT_NE(c.kind, "state_nonlinearity");
 }
 
 TEST(PlantAnalogues, LinearControlGetsNone) {
