@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "cli/report.h"
+#include "core/decimal_rounding.h"
 #include "plot/diagnose_plots.h"
 #include "diagnose/residual_analysis.h"
 #include "model/simulate.h"
@@ -125,7 +126,7 @@ std::string identification_line(const WindowIdentification& id) {
   std::string basis;
   for (const auto& f : id.basis) basis += (basis.empty() ? "" : ", ") + f;
   if (!b.verified) return "not verified (" + b.reason + ")";
-  return "delta <= " + num(b.delta) + ", dmax <= " + num(b.dmax) + " (verified; basis {" + basis + "})" +
+  return "delta <= " + upper_sqrt_text(b.delta2, 4) + ", dmax <= " + upper_sqrt_text(b.dmax2, 4) + " (verified; basis {" + basis + "})" +
          uninformative_mark(id.bounds);
 }
 
@@ -217,7 +218,7 @@ std::string fold_rows_text(const RankingResult& r, long offset) {
 std::string bound_line(const WindowBounds& w) {
   const CertifiedBounds& b = w.bounds;
   if (!b.verified) return "not verified (" + b.reason + ")";
-  return "delta <= " + num(b.delta) + ", dmax <= " + num(b.dmax) + " (verified, file rows " +
+  return "delta <= " + upper_sqrt_text(b.delta2, 4) + ", dmax <= " + upper_sqrt_text(b.dmax2, 4) + " (verified, file rows " +
          std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + ")" + uninformative_mark(w);
 }
 

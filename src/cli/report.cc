@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/decimal_rounding.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
@@ -127,6 +128,7 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
   j["of"] = interval_quantity(objective.kind);
   j["upper"] = b.verified ? nlohmann::ordered_json(nearest_double(b.upper)) : nlohmann::ordered_json(nullptr);
   j["upper_verified"] = b.verified;
+  if (b.verified) j["upper_exact"] = exact_decimal_or_fraction(b.upper);
   j["lower"] = b.lower.verified ? nlohmann::ordered_json(nearest_double(b.lower.value)) : nlohmann::ordered_json(nullptr);
   j["lower_verified"] = b.lower.verified;
   if (b.lower.verified) j["lower_exact"] = exact_decimal_or_fraction(b.lower.value);
@@ -145,12 +147,13 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
 std::string bounds_text(const CertifiedBounds& b, const std::string& certificate) {
   std::ostringstream o;
   if (b.verified) {
-    o << "  delta       <= " << b.delta << "   (delta^2 = " << exact_decimal_or_fraction(b.delta2) << ")\n"
-      << "  dmax        <= " << b.dmax << "   (dmax^2 = " << exact_decimal_or_fraction(b.dmax2) << ", RMS)\n"
+    // printed = certified: upper ends rounded up, lower ends down (core/decimal_rounding.h)
+    o << "  delta       <= " << upper_sqrt_text(b.delta2) << "   (delta^2 = " << exact_decimal_or_fraction(b.delta2) << ")\n"
+      << "  dmax        <= " << upper_sqrt_text(b.dmax2) << "   (dmax^2 = " << exact_decimal_or_fraction(b.dmax2) << ", RMS)\n"
       << "  verified    true: " << certificate << " checked exactly by the verifier\n"
       << "              " << b.verifier_details << "\n";
     if (b.lower.verified) {
-      o << "  interval    [" << nearest_double(b.lower.value) << ", " << nearest_double(b.upper)
+      o << "  interval    [" << lower_text(b.lower.value) << ", " << upper_text(b.upper)
         << "]  relative gap " << relative_gap(b) << "  (objective; both ends verified"
         << (b.full_horizon ? ", full horizon" : ", upper end from " + std::to_string(b.taps) + " taps") << ")\n"
         << "  lower end   " << b.lower.certificate << " (dual certificate, checked exactly)\n";

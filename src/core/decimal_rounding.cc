@@ -85,4 +85,22 @@ double sqrt_up(const Rational& q) {
   return s;
 }
 
+double sqrt_down(const Rational& q) {
+  if (q <= 0) return 0.0;
+  double s = std::sqrt(nearest_double(q));
+  while (s > 0 && Rational(s) * Rational(s) > q) s = std::nextafter(s, 0.0);
+  return s;
+}
+
+std::string upper_text(const Rational& q, int digits) {
+  // a negative q: −(|q| rounded down) is the smallest such decimal ≥ q
+  return exact_decimal_or_fraction(q < 0 ? Rational(-round_down_to_digits(-q, digits)) : round_up_to_digits(q, digits));
+}
+
+std::string lower_text(const Rational& q, int digits) { return exact_decimal_or_fraction(round_down_to_digits(q, digits)); }
+
+std::string upper_sqrt_text(const Rational& q2, int digits) { return upper_text(Rational(sqrt_up(q2)), digits); }
+
+std::string lower_sqrt_text(const Rational& q2, int digits) { return lower_text(Rational(sqrt_down(q2)), digits); }
+
 }  // namespace lpvid

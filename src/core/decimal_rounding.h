@@ -3,6 +3,8 @@
 /// rational numbers a certificate states (SPEC §7) and how exact bounds are
 /// rounded outwards (δ², d_max² up; a lower end down), all in one place.
 
+#include <string>
+
 #include "core/scalar.h"
 
 namespace lpvid {
@@ -17,5 +19,19 @@ Rational round_up_to_digits(const Rational& q, int digits);
 Rational round_down_to_digits(const Rational& q, int digits);
 /// √q rounded up to a double (for display only).
 double sqrt_up(const Rational& q);
+/// √q rounded down to a double (q ≥ 0; for display only).
+double sqrt_down(const Rational& q);
+
+/// Printed = certified: the text of an UPPER end q (q ≥ 0) with `digits`
+/// significant digits, never below q (the smallest such decimal ≥ q), and of
+/// a LOWER end, never above it. A bound printed to the nearest could fall on
+/// the wrong side of what was proved (0.00954801 for a certified
+/// 0.0095480146).
+std::string upper_text(const Rational& q, int digits = 6);
+std::string lower_text(const Rational& q, int digits = 6);
+/// The same for a displayed square root of a certified square (δ from δ²,
+/// d_max from d_max²): upper_text of a double ≥ √q, lower_text of one ≤ √q.
+std::string upper_sqrt_text(const Rational& q2, int digits = 6);
+std::string lower_sqrt_text(const Rational& q2, int digits = 6);
 
 }  // namespace lpvid

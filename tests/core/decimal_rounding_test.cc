@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/decimal_rounding.h"
+#include "core/number_text.h"
 
 namespace lpvid {
 namespace {
@@ -65,6 +66,41 @@ RC_GTEST_PROP(DecimalRoundingProperty, UpAndDownBracketTheValueOnItsDigitGrid, (
   RC_ASSERT(down <= q);
   RC_ASSERT(down + unit > q);
   RC_ASSERT(round_down_to_digits(-q, digits) == -up);
+}
+
+// Printed = certified: the text of an upper end, read back exactly, is never
+// below the certified value, that of a lower end never above, and each has at
+// most the requested significant digits (on the digit grid of round_*).
+RC_GTEST_PROP(DecimalRoundingProperty, PrintedEndsAreOnTheSafeSide, ()) {
+  const int a = *rc::gen::inRange(1, 1000000);
+  const int b = *rc::gen::inRange(1, 1000000);
+  const int s = *rc::gen::inRange(-30, 30);
+  const int digits = *rc::gen::inRange(1, 10);
+  const bool negative = *rc::gen::arbitrary<bool>();
+  const Rational q = (negative ? -1 : 1) * Rational(a) / Rational(b) * naive_power_of_ten(s);
+  const Rational up = rational_from_text(upper_text(q, digits)), down = rational_from_text(lower_text(q, digits));
+  RC_ASSERT(up >= q);
+  RC_ASSERT(down <= q);
+  const Rational unit = last_digit_unit(q < 0 ? Rational(-q) : q, digits);
+  RC_ASSERT(is_integer(up / unit) || is_integer(up / (unit * 10)));  // a carry may add a digit (9.99 -> 10.0)
+  RC_ASSERT(up - down <= unit);
+  if (q >= 0) {
+    // the displayed square roots: (printed δ)² ≥ δ² ≥ (printed lower)²
+    const Rational r_up = rational_from_text(upper_sqrt_text(q, digits));
+    const Rational r_down = rational_from_text(lower_sqrt_text(q, digits));
+    RC_ASSERT(r_up * r_up >= q);
+    RC_ASSERT(r_down >= 0);
+    RC_ASSERT(r_down * r_down <= q);
+  }
+}
+
+// The case of the report: a certified 0.0095480146 printed to the nearest
+// with 6 digits was 0.00954801, below what was proved.
+TEST(DecimalRounding, TheReportedCaseRoundsUp) {
+  const Rational certified = rational_from_text("0.0095480146");
+  EXPECT_EQ(upper_text(certified), "0.00954802");
+  // and a lower end 9.11597968e-05 printed to the nearest was 9.11598e-05, above it
+  EXPECT_EQ(rational_from_text(lower_text(rational_from_text("0.0000911597968"))), Rational(911597) * power_of_ten(-10));
 }
 
 }  // namespace

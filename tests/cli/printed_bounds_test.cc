@@ -1,0 +1,55 @@
+// Printed = certified, through the real binary: every bound `lpvid
+// invalidate` prints is on the safe side of the exact value it certified
+// (upper ends not below, lower ends not above), read from the same output
+// (δ² and d_max² are printed exactly beside δ and d_max) and from the JSON
+// report (the interval's exact ends).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/number_text.h"
+#include "support/cli_runner.h"
+#include "support/fixtures.h"
+
+namespace lpvid {
+namespace {
+
+using gen::CliRunner;
+
+struct PrintedBounds : CliRunner {};
+
+/// The two numbers of "<name> <= X   (<name>^2 = Q" in the output.
+std::pair<Rational, Rational> printed_and_square(const std::string& out, const std::string& name) {
+  const std::regex re(name + R"(\s+<=\s+([0-9.eE+-]+)\s+\()" + name + R"(\^2 = ([0-9./eE+-]+))");
+  std::smatch m;
+  if (!std::regex_search(out, m, re)) throw std::runtime_error(name + " line not found in:\n" + out);
+  return {rational_from_text(m[1].str()), rational_from_text(m[2].str())};
+}
+
+TEST_F(PrintedBounds, UpperEndsUpLowerEndsDown) {
+  const std::string rep = file("r.json");
+  ASSERT_EQ(run("invalidate", "--data " + gen::kExample1Fixtures + "noise_free_n40.csv --model " + gen::kExample1Fixtures +
+                                  "initial_model.json --max-taps 6 --certificate " + file("c.json") + " --report " + rep),
+            0)
+      << output();
+  for (const char* name : {"delta", "dmax"}) {
+    const auto [printed, square] = printed_and_square(output(), name);
+    EXPECT_GE(printed * printed, square) << name << ": " << output();
+  }
+  const nlohmann::json r = nlohmann::json::parse(std::ifstream(rep));
+  const nlohmann::json& iv = r.contains("interval") ? r["interval"] : r;
+  std::smatch m;
+  const std::string out = output();
+  if (iv.value("lower_verified", false)) {
+    ASSERT_TRUE(std::regex_search(out, m, std::regex(R"(interval\s+\[([0-9.eE+-]+), ([0-9.eE+-]+)\])"))) << out;
+    EXPECT_LE(rational_from_text(m[1].str()), rational_from_text(iv["lower_exact"].get<std::string>())) << out;
+    EXPECT_GE(rational_from_text(m[2].str()), rational_from_text(iv["upper_exact"].get<std::string>())) << out;
+  }
+}
+
+}  // namespace
+}  // namespace lpvid
