@@ -93,7 +93,9 @@ int run_identify(IdentifyArgs& a) {
   if (!id.taps_note.empty()) std::cout << "\n  the iterate's own Delta did not certify (" << id.taps_note << "); solved again\n";
 
   std::cout << "\nCertified bounds of the identified model (Theorem 2.1, Delta form, exact check)\n"
-            << bounds_text(b, co.certificate_path);
+            << bounds_text(b, co.certificate_path,
+                           "for this theta: the lower end bounds the model with the identified theta fixed, not the "
+                           "model class (another theta may do better)");
   report = bounds_json(b, a.common.toeplitz, a.common.solver, co.certificate_path);
   report["method"] = a.method;
   report["relaxation"] = res.relaxation;
@@ -106,7 +108,10 @@ int run_identify(IdentifyArgs& a) {
   report["iterates"] = its;
   report["theta"] = theta_json(in.model_d, res.layout, id.fixed.value);
   report["samples"] = in.exp_q.n();
-  if (in.objective.kind != BoundObjective::Kind::kFeasibility) report["interval"] = interval_json(b, in.objective);
+  if (in.objective.kind != BoundObjective::Kind::kFeasibility) {
+    report["interval"] = interval_json(b, in.objective);
+    report["interval"]["scope"] = "the model with the identified theta fixed (not the model class)";
+  }
   write_json(a.common.report_path, report);
   return b.verified ? kExitOk : kExitNotVerified;
 }

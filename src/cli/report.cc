@@ -144,7 +144,7 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
   return j;
 }
 
-std::string bounds_text(const CertifiedBounds& b, const std::string& certificate) {
+std::string bounds_text(const CertifiedBounds& b, const std::string& certificate, const std::string& scope) {
   std::ostringstream o;
   if (b.verified) {
     // printed = certified: upper ends rounded up, lower ends down (core/decimal_rounding.h)
@@ -155,7 +155,8 @@ std::string bounds_text(const CertifiedBounds& b, const std::string& certificate
     if (b.lower.verified) {
       o << "  interval    [" << lower_text(b.lower.value) << ", " << upper_text(b.upper)
         << "]  relative gap " << relative_gap(b) << "  (objective; both ends verified"
-        << (b.full_horizon ? ", full horizon" : ", upper end from " + std::to_string(b.taps) + " taps") << ")\n"
+        << (b.full_horizon ? ", full horizon" : ", upper end from " + std::to_string(b.taps) + " taps") << ")"
+        << (scope.empty() ? "" : "\n              " + scope) << "\n"
         << "  lower end   " << b.lower.certificate << " (dual certificate, checked exactly)\n";
     } else if (!b.lower.reason.empty()) {
       o << "  lower end   not certified: " << b.lower.reason << "\n";

@@ -42,7 +42,9 @@ void write_json(const std::string& path, const nlohmann::ordered_json& j);
 nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObjective& objective);
 
 /// Readable lines for the bounds ("delta <= ... (verified)").
-std::string bounds_text(const CertifiedBounds& b, const std::string& certificate);
+/// `scope`, when not empty, says what the interval's lower end is a bound
+/// FOR (identify: the model with the identified θ fixed, not the class).
+std::string bounds_text(const CertifiedBounds& b, const std::string& certificate, const std::string& scope = "");
 
 /// A table cell of the tradeoff and select-basis tables: x with 6
 /// significant digits, "-" for a negative x (not computed).

@@ -117,7 +117,9 @@ int run_select(SelectArgs& a) {
     namespace fs = std::filesystem;
     if (f.certificate != final_cert) fs::copy_file(f.certificate, final_cert, fs::copy_options::overwrite_existing);
     std::cout << "\nSelected basis: " << f.basis_text << " (step " << f.index << ")\n"
-              << bounds_text(f.bounds, final_cert);
+              << bounds_text(f.bounds, final_cert,
+                             "for this theta: the lower end bounds the model with the selected theta fixed, not the "
+                             "model class");
     report = bounds_json(f.bounds, c.toeplitz, c.solver, final_cert);
     report["relaxation"] = f.relaxation;
   } else {
