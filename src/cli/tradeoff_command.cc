@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
+#include "core/decimal_rounding.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
@@ -77,8 +78,9 @@ int run_tradeoff(TradeoffArgs& a) {
     const bool v = p.bounds.verified;
     char t[32];
     std::snprintf(t, sizeof t, "%.2f", p.seconds);
-    std::cout << std::left << std::setw(9) << p.lambda << std::setw(13) << (v ? cell_text(p.bounds.delta) : "-")
-              << std::setw(13) << (v ? cell_text(p.bounds.dmax) : "-") << std::setw(10) << (v ? "true" : "false")
+    // certified cells rounded up (printed = certified); the solver's own values as they are
+    std::cout << std::left << std::setw(9) << p.lambda << std::setw(13) << (v ? upper_sqrt_text(p.bounds.delta2) : "-")
+              << std::setw(13) << (v ? upper_sqrt_text(p.bounds.dmax2) : "-") << std::setw(10) << (v ? "true" : "false")
               << std::setw(13) << cell_text(p.delta_solver) << std::setw(13) << cell_text(p.dmax_solver) << std::setw(7)
               << p.solves << t << (v ? "" : "   " + p.bounds.reason) << "\n"
               << std::flush;
