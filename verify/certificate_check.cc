@@ -53,9 +53,10 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
     return invalid_verdict("data file '" + data_path.string() + "' has changed: sha256 " + hash +
                    " differs from the certificate's " + c.data_sha256);
 
-  // 2. Exact data.
-  const TextTable table = c.data_names.empty() ? read_table(data_path.string())
-                                               : read_table(data_path.string(), c.data_names);
+  // 2. Exact data, parsed from the same bytes that were hashed (a second read
+  // could see another file: swapping it between the reads passed a false claim)
+  const TextTable table = c.data_names.empty() ? parse_table(bytes, data_path.string())
+                                               : parse_table(bytes, data_path.string(), c.data_names);
   Experiment<Rational> exp = make_experiment<Rational>(table, c.model.columns);
   if (c.row_end >= 0) {
     if (c.row_end > exp.n())
