@@ -53,6 +53,7 @@ CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
 int main(int argc, char** argv) {
   CLI::App app{"lpvid-verify: exact verifier for lpvid (no floating-point answer is trusted)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("lpvid-verify ") + LPVID_VERSION);
   lpvid::add_limit_options(app);
 
   PsdArgs psd_args;

@@ -153,7 +153,8 @@ Runner add_fit_linear_command(CLI::App& app) {
   cmd->add_option("--validation-u", a->val_u, "validation input column(s) (default: --u)")->delimiter(',');
   cmd->add_option("--validation-y", a->val_y, "validation output column (default: --y)")->delimiter(',');
   cmd->add_option("--init-samples", a->init_samples,
-                  "validation x0 fitted on this many first samples (default 5, the benchmark rule; 0: x0 = 0)");
+                  "validation x0 fitted on this many first samples (default 5, the benchmark rule; 0: x0 = 0)")
+      ->check(CLI::Range(0, 100000));
   return [cmd, a] { return cmd->parsed() ? run_fit_linear(*a) : -1; };
 }
 

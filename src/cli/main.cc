@@ -1,5 +1,6 @@
 // lpvid: robust identification and invalidation of LPV systems (SPEC §8).
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "cli/commands.h"
@@ -12,6 +13,7 @@ int main(int argc, char** argv) {
   using namespace lpvid::cli;
   CLI::App app{"lpvid: robust LPV identification/invalidation with exactly verified bounds"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("lpvid ") + LPVID_VERSION);
   lpvid::add_limit_options(app);
   std::vector<Runner> runners = {add_invalidate_command(app), add_identify_command(app), add_simulate_command(app),
                                  add_generate_command(app)};
