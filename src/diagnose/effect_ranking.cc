@@ -358,8 +358,6 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
       r.ranked.back().family = i + 1;
     }
     set_explained(r);
-    std::vector<size_t> family_of;  // ranked index -> index into `fitted`
-    for (const ScoredCandidate& s : r.ranked) family_of.push_back(s.family);
     // the best-scored candidate that passes the rule of fold_plan.h
     for (size_t i = 0; i < r.ranked.size(); ++i)
       if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain)) {
@@ -374,7 +372,7 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
       // each fold carries its own fit of the chosen effect into the next round
       // (a fold whose fit failed keeps its model: its next candidates will not
       // match, and it counts as lost for every one of them)
-      const FoldedFamily& f = fitted[family_of[static_cast<size_t>(r.chosen)]];
+      const FoldedFamily& f = fitted[c.family];
       for (size_t t = 0; t < k; ++t)
         if (f.per_fold[t].finite) current_fold[t] = f.per_fold[t].model;
       res.chosen.push_back(c);

@@ -90,13 +90,12 @@ std::vector<LpvModel<double>> store_cascade_starts(const LpvModel<double>& linea
   for (const auto& p : pairs)
     for (double level1 : {0.5, 1.0, 1.5}) {
       StoreCascadeShape s;
-      s.h2 = y_mean;
-      s.h1 = level1 * y_mean;
+      const double rest2 = y_mean, rest1 = level1 * y_mean;  // the levels at rest
       // linearised outflow k/(2√h) = 1/τ at the resting level; inflow balances outflow
-      s.k1 = 2.0 * std::sqrt(s.h1) / p[0];
-      s.k2 = 2.0 * std::sqrt(s.h2) / p[1];
-      s.b1 = s.k1 * std::sqrt(s.h1) / u_mean;
-      s.k12 = s.k2 * std::sqrt(s.h2) / std::sqrt(s.h1);
+      s.k1 = 2.0 * std::sqrt(rest1) / p[0];
+      s.k2 = 2.0 * std::sqrt(rest2) / p[1];
+      s.b1 = s.k1 * std::sqrt(rest1) / u_mean;
+      s.k12 = s.k2 * std::sqrt(rest2) / std::sqrt(rest1);
       s.o1 = overflow * y_max;
       s.o2 = y_max - 0.01 * (y_max - y_min);
       // x0 = the levels at the first sample: store 2 from the output, store 1 at its resting ratio
