@@ -144,6 +144,26 @@ std::string folds_text(const FoldFigures& f) {
   return t;
 }
 
+/// A grid family's start chosen by the held-out folds (null: no choice).
+ojson start_choice_json(const StartChoice& s) {
+  if (s.chosen < 0) return nullptr;
+  return {{"start", s.chosen + 1},
+          {"starts", s.starts},
+          {"held_out_rms", finite_or_null(s.held_out)},
+          {"start_of_lowest_estimation_rms", s.lowest_estimation + 1},
+          {"its_held_out_rms", finite_or_null(s.held_out_of_lowest_estimation)}};
+}
+
+std::string start_choice_text(const StartChoice& s) {
+  if (s.chosen < 0) return "";
+  std::string t = "; model from start " + std::to_string(s.chosen + 1) + " of " + std::to_string(s.starts) +
+                  ": the lowest estimation MSE + held-out MSE of its fits (held-out RMS " + num(s.held_out, 4) + ")";
+  if (s.lowest_estimation != s.chosen)
+    t += "; the lowest estimation RMS would have taken start " + std::to_string(s.lowest_estimation + 1) + " (held-out RMS " +
+         num(s.held_out_of_lowest_estimation, 4) + ")";
+  return t;
+}
+
 ojson candidate_json(const ScoredCandidate& c) {
   return {{"kind", c.kind},
           {"label", c.label},
@@ -155,6 +175,7 @@ ojson candidate_json(const ScoredCandidate& c) {
           {"joint_refit_of_A_B", c.joint},
           {"held_out_folds", folds_json(c.folds)},
           {"folds_won", c.folds.empty() ? ojson(nullptr) : ojson(c.folds_won)},
+          {"start_chosen_by_folds", start_choice_json(c.start)},
           {"parameters", c.parameters}};
 }
 
@@ -271,7 +292,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
       std::cout << line;
       if (in.folds)
         std::cout << "        folds " << folds_text(c.folds) << "  (wins " << c.folds_won << " of " << c.folds.sse.size()
-                  << (c.joint ? "; A, B re-fitted" : "") << ")\n";
+                  << (c.joint ? "; A, B re-fitted" : "") << start_choice_text(c.start) << ")\n";
       ojson cj = candidate_json(c);
       cj["share_of_estimation_residual"] = shares[k];
       cands.push_back(cj);

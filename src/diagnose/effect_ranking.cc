@@ -53,21 +53,35 @@ void new_terms_json(const ParamMatrix<double>& fitted, const ParamMatrix<double>
   }
 }
 
+/// The fit with the lowest RMS among `fits` (finite false if none is finite).
+FitResult lowest_rms(const std::vector<FitResult>& fits) {
+  FitResult best;
+  best.finite = false;
+  best.rms = std::numeric_limits<double>::infinity();
+  for (const FitResult& f : fits)
+    if (f.finite && f.rms < best.rms) best = f;
+  return best;
+}
+
+/// The estimation fit from each start with the given slots (with `joint`
+/// also A, B: with_dynamics_slots).
+std::vector<FitResult> fit_each_start(const std::vector<LpvModel<double>>& starts, const std::vector<ParameterSlot>& slots,
+                                      bool joint, const Experiment<double>& est, const FitOptions& fit) {
+  std::vector<FitResult> out;
+  out.reserve(starts.size());
+  for (const LpvModel<double>& start : starts)
+    out.push_back(fit_slots(start, joint ? with_dynamics_slots(slots, start) : slots, est, fit));
+  return out;
+}
+
 /// The best estimation fit over the starts with the given slots (`extra`
 /// also tried as a start); FitResult::finite false if none stayed finite.
 FitResult best_fit(const std::vector<LpvModel<double>>& starts, const LpvModel<double>* extra,
                    const std::vector<ParameterSlot>& slots, bool joint, const Experiment<double>& est,
                    const FitOptions& fit) {
-  FitResult best;
-  best.finite = false;
-  best.rms = std::numeric_limits<double>::infinity();
-  const auto consider = [&](const LpvModel<double>& start) {
-    const FitResult f = fit_slots(start, joint ? with_dynamics_slots(slots, start) : slots, est, fit);
-    if (f.finite && f.rms < best.rms) best = f;
-  };
-  for (const LpvModel<double>& start : starts) consider(start);
-  if (extra) consider(*extra);
-  return best;
+  std::vector<FitResult> fits = fit_each_start(starts, slots, joint, est, fit);
+  if (extra) fits.push_back(fit_slots(*extra, joint ? with_dynamics_slots(slots, *extra) : slots, est, fit));
+  return lowest_rms(fits);
 }
 
 /// A candidate at its best fit: the effect with the dynamics kept, and (with
@@ -150,11 +164,29 @@ struct FoldedFamily {
   FitResult whole;
   FoldFigures figures;
   std::vector<FitResult> per_fold;  ///< the fit on each fold's training rows
+  /// A family with a grid of starts (EffectCandidate::starts_for): which
+  /// start the whole-record fit comes from (see choose_start_by_folds).
+  StartChoice start;
+};
+
+/// One family fitted on one training set: the fit with the lowest training
+/// RMS, and for a family with a grid of starts the fit from each start (in
+/// the grid's order, the same on every training set).
+struct FamilyFitOutcome {
+  FitResult best;
+  std::vector<FitResult> by_start;
 };
 
 /// How a family is fitted on one training set: set t < K is fold t's
 /// training rows, t == K the whole record.
-using FamilyFit = std::function<FitResult(const Experiment<double>& training, size_t t, const FitOptions& fit)>;
+using FamilyFit = std::function<FamilyFitOutcome(const Experiment<double>& training, size_t t, const FitOptions& fit)>;
+
+/// The held-out SSE of one fit on block j (+inf when not finite).
+double block_sse(const FitResult& f, const Experiment<double>& block, Eigen::Index warmup, Eigen::Index count) {
+  if (!f.finite) return std::numeric_limits<double>::infinity();
+  const FreeRunScore s = warmup_score(f.model, block, warmup);
+  return std::isfinite(s.rms) ? s.rms * s.rms * static_cast<double>(count) : std::numeric_limits<double>::infinity();
+}
 
 /// Runs every (family, training set) pair as one job (core/parallel_for.h).
 std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, const std::vector<std::string>& labels,
@@ -162,6 +194,8 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
                                        const std::vector<FoldBlock>& blocks, const RankingOptions& o) {
   const size_t k = blocks.size(), sets = k + 1, jobs = families.size() * sets;
   std::vector<FoldedFamily> out(families.size());
+  std::vector<std::vector<std::vector<double>>> start_sse(families.size(), std::vector<std::vector<double>>(k));
+  std::vector<std::vector<FitResult>> whole_by_start(families.size());
   for (FoldedFamily& f : out) {
     f.figures = empty_figures(k);
     f.per_fold.resize(k);
@@ -171,12 +205,16 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
   parallel_for(jobs, o.threads, [&](size_t job) {
     const size_t i = job / sets, t = job % sets;
     const FoldBlock rows = training_rows(est.n(), blocks, t);
-    const FitResult r = families[i](t == k ? est : select_rows(est, rows.first, rows.last), t, o.fit);
+    FamilyFitOutcome r = families[i](t == k ? est : select_rows(est, rows.first, rows.last), t, o.fit);
     if (t == k) {
-      out[i].whole = r;
+      out[i].whole = r.best;
+      whole_by_start[i] = std::move(r.by_start);
     } else {
-      score_block(r, est, blocks, t, o.fold_warmup, out[i].figures);
-      out[i].per_fold[t] = r;
+      score_block(r.best, est, blocks, t, o.fold_warmup, out[i].figures);
+      out[i].per_fold[t] = r.best;
+      const Experiment<double> block = select_rows(est, blocks[t].first, blocks[t].last);
+      for (const FitResult& f : r.by_start)
+        start_sse[i][t].push_back(block_sse(f, block, o.fold_warmup, out[i].figures.count[t]));
     }
     if (o.progress) {
       const std::lock_guard<std::mutex> lock(report);
@@ -185,18 +223,29 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
                  (t == k ? std::string("all rows") : "without fold " + std::to_string(t + 1)) + ")");
     }
   });
+  for (size_t i = 0; i < families.size(); ++i) {
+    if (whole_by_start[i].size() < 2) continue;
+    out[i].start = choose_start_by_folds(start_sse[i], out[i].figures.count, whole_by_start[i]);
+    if (out[i].start.chosen >= 0) out[i].whole = whole_by_start[i][static_cast<size_t>(out[i].start.chosen)];
+  }
   return out;
 }
 
 /// A candidate fitted on some rows from every start (its starts_for those
-/// rows when it has them).
-FitResult fit_family_member(const EffectCandidate& c, bool joint, const Experiment<double>& training,
-                            const FitOptions& fit) {
+/// rows when it has them: then the fit from each start is kept too).
+FamilyFitOutcome fit_family_member(const EffectCandidate& c, bool joint, const Experiment<double>& training,
+                                   const FitOptions& fit) {
+  FamilyFitOutcome out;
   if (c.starts_for) {
     const std::vector<LpvModel<double>> own = c.starts_for(training);
-    if (!own.empty()) return best_fit(own, nullptr, c.slots, joint, training, fit);
+    if (!own.empty()) {
+      out.by_start = fit_each_start(own, c.slots, joint, training, fit);
+      out.best = lowest_rms(out.by_start);
+      return out;
+    }
   }
-  return best_fit(c.starts, nullptr, c.slots, joint, training, fit);
+  out.best = best_fit(c.starts, nullptr, c.slots, joint, training, fit);
+  return out;
 }
 
 /// A candidate's family: on the whole record the candidate built on the
@@ -213,9 +262,9 @@ FamilyFit candidate_family(const EffectCandidate& whole, const std::vector<const
   return [wp, per_fold, joint](const Experiment<double>& training, size_t t, const FitOptions& fit) {
     if (t >= per_fold.size()) return fit_family_member(*wp, joint, training, fit);
     if (per_fold[t] == nullptr) {
-      FitResult none;
-      none.finite = false;
-      none.rms = std::numeric_limits<double>::infinity();
+      FamilyFitOutcome none;
+      none.best.finite = false;
+      none.best.rms = std::numeric_limits<double>::infinity();
       return none;
     }
     return fit_family_member(*per_fold[t], joint, training, fit);
@@ -258,6 +307,7 @@ ScoredCandidate scored_from_family(const EffectCandidate& c, const FoldedFamily&
   s.effect_parameters = c.effect_parameters;
   s.joint = joint;
   s.folds = f.figures;
+  s.start = f.start;
   const FitResult& w = f.whole;
   s.rms_validation = s.folds.total_rms();
   if (!w.finite || !std::isfinite(s.rms_validation)) {
@@ -390,6 +440,39 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
 }
 
 }  // namespace
+
+StartChoice choose_start_by_folds(const std::vector<std::vector<double>>& sse, const std::vector<Eigen::Index>& count,
+                                  const std::vector<FitResult>& whole) {
+  StartChoice c;
+  c.starts = whole.size();
+  for (const auto& row : sse)
+    if (row.size() != whole.size()) return StartChoice{};  // the grids differ: no choice by folds
+  double n = 0;
+  for (Eigen::Index m : count) n += static_cast<double>(m);
+  double lowest_est = std::numeric_limits<double>::infinity();
+  for (size_t s = 0; s < whole.size(); ++s) {
+    if (whole[s].finite && whole[s].rms < lowest_est) {
+      lowest_est = whole[s].rms;
+      c.lowest_estimation = static_cast<int>(s);
+    }
+    if (!whole[s].finite) continue;
+    double total = 0;
+    for (const auto& row : sse) total += row[s];
+    const double rms = n > 0 ? std::sqrt(total / n) : std::numeric_limits<double>::infinity();
+    const double score = whole[s].rms * whole[s].rms + rms * rms;
+    if (std::isfinite(score) && score < c.score) {
+      c.score = score;
+      c.held_out = rms;
+      c.chosen = static_cast<int>(s);
+    }
+  }
+  if (c.lowest_estimation >= 0) {
+    double total = 0;
+    for (const auto& row : sse) total += row[static_cast<size_t>(c.lowest_estimation)];
+    c.held_out_of_lowest_estimation = n > 0 ? std::sqrt(total / n) : std::numeric_limits<double>::infinity();
+  }
+  return c;
+}
 
 void restate_parameters(RankingResult& res, const LpvModel<double>& final_model) {
   size_t k = 0;
