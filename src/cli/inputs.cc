@@ -35,8 +35,8 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   app.add_option("--certificate", o.certificate_path, "where to write the certificate (JSON)");
   app.add_option("--report", o.report_path, "where to write the report (JSON)");
   app.add_option("--max-taps", o.max_taps,
-                 "taps of the FIR Delta in the certificate (0: full horizon; default 64); unused for SISO models except with "
-                 "--dmax alone: they get the full horizon from the structured solver")
+                 "taps of the FIR Delta for --delta-norm kyp and for the SDP backends when the structured full-horizon solver "
+                 "is not used (0: full horizon; default 64)")
       ->check(CLI::Range(0L, 100000L));
   app.add_option("--delta-norm", o.delta_norm,
                  "certificate's Delta solve: toeplitz (the (C1') block, exact for the horizon; default) or kyp "

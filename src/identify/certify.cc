@@ -327,8 +327,8 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   const bool kyp = o.delta_norm == DeltaNorm::kKyp;
   if (kyp && o.max_taps <= 0) throw InputError("certify: the KYP Delta form needs a finite number of taps (--max-taps > 0)");
   const bool feasibility = o.objective.kind == BoundObjective::Kind::kFeasibility;
-  // SISO: the structured full-horizon solver is cheaper than a K-tap SDP and exact for the horizon.
-  const bool structured = o.structured && !kyp && model.ny == 1 && model.nz() == 1 &&
+  // The structured full-horizon solver (SISO and MIMO) is cheaper than a K-tap SDP and exact for the horizon.
+  const bool structured = o.structured && !kyp &&
                           barrier_applies(Mat<double>::Ones(1, 1), Mat<double>::Ones(1, 1), obj);
   const long K = !structured && o.max_taps > 0 && o.max_taps < L ? o.max_taps : 0;  // 0: the full horizon
   const bool dual_here = o.lower_end && !kyp && !feasibility;

@@ -11,7 +11,7 @@
 namespace lpvid {
 
 bool barrier_applies(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective) {
-  return z.cols() == 1 && r.cols() == 1 && objective.kind != BoundObjective::Kind::kMinDelta &&
+  return z.cols() >= 1 && r.cols() >= 1 && !(objective.kind == BoundObjective::Kind::kMinDelta && !(objective.dmax > 0)) &&
          !(objective.kind == BoundObjective::Kind::kWeighted && !(objective.lambda > 0 && objective.lambda < 1)) &&
          !(objective.delta_fixed() && !(objective.delta > 0));
 }
@@ -21,6 +21,7 @@ namespace {
 using Index = Eigen::Index;
 using Vecd = Eigen::VectorXd;
 using Dense = Eigen::MatrixXd;
+using Strided = Eigen::Map<const Dense, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>;
 
 /// L × L lower-triangular Toeplitz matrix with first column c.
 Dense lower_toeplitz(const Vecd& c) {
@@ -39,22 +40,59 @@ Vecd subdiagonal_sums(const Dense& M) {
   return out;
 }
 
-/// The scaled problem. Variables x = (h, t) (t only when δ is free); s is
-/// eliminated (see the header).
-struct Problem {
-  Index n = 0, m = 0, L = 0;
-  double N = 0;
-  Vecd r_head, r_tail;  ///< scaled residual: rows < m (no Δ acts there) and rows ≥ m
-  Dense Z;              ///< L × L lower-triangular Toeplitz of the scaled z (rows ≥ m)
-  Dense G;              ///< ZᵀZ
-  bool t_var = false;
-  double t_fix = 0, s_fix = 0;
-  double ct = 0, cs = 0;  ///< objective weights of t, s (cs > 0)
-  double nu = 0;          ///< 2L + N + 1
+/// The L × L scalar sub-block (i, j) of a matrix of p × q blocks laid out
+/// as rows a·p + i, columns b·q + j (the layout of T_Δ, P, Q, R):
+/// sub(a, b) = M(a·p + i, b·q + j).
+Dense sub_block(const Dense& M, Index p, Index q, Index i, Index j) {
+  const Index L = M.rows() / p;
+  return Strided(M.data() + i + j * M.rows(), L, M.cols() / q, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(q * M.rows(), p));
+}
 
-  Index dim() const { return L + (t_var ? 1 : 0); }
-  double t_of(const Vecd& x) const { return t_var ? x(L) : t_fix; }
+/// The scaled problem. Variables x = (h, t) (t only when δ is free): entry
+/// (i, j) of tap l at x((i·nz + j)·L + l), i.e. the taps matrix (L × ny·nz,
+/// column i·nz + j) stored column by column. s is eliminated (see the
+/// header) unless it is fixed (min δ at d_max).
+struct Problem {
+  Index n = 0, m = 0, L = 0, ny = 1, nz = 1;
+  double N = 0;
+  Dense r_head, r_tail;     ///< scaled residual: rows < m (no Δ acts there) and rows ≥ m (ny columns)
+  std::vector<Dense> Z;     ///< per input j of Δ: L × L lower-triangular Toeplitz of the scaled z_j (rows ≥ m)
+  std::vector<Dense> G;     ///< G[j·nz + j'] = Z_jᵀ Z_j'
+  bool t_var = false;
+  bool s_var = true;      ///< false: s = s_fix and (C2) keeps its own barrier −log(N s − ‖d‖²)
+  double t_fix = 0, s_fix = 0;
+  double ct = 0, cs = 0;  ///< objective weights of t, s
+  double nu = 0;          ///< L·(ny + nz) + N + 1
+
+  Index q() const { return ny * nz; }
+  Index taps() const { return L * q(); }
+  Index dim() const { return taps() + (t_var ? 1 : 0); }
+  double t_of(const Vecd& x) const { return t_var ? x(taps()) : t_fix; }
+  /// The taps of entry (i, j) over l.
+  Eigen::Map<const Vecd> tap_sequence(const Vecd& x, Index i, Index j) const {
+    return Eigen::Map<const Vecd>(x.data() + (i * nz + j) * L, L);
+  }
 };
+
+/// T_Δ (L·ny × L·nz; rows a·ny + i, columns b·nz + j) of the taps in x.
+Dense block_toeplitz(const Problem& p, const Vecd& x) {
+  Dense T = Dense::Zero(p.L * p.ny, p.L * p.nz);
+  for (Index i = 0; i < p.ny; ++i)
+    for (Index j = 0; j < p.nz; ++j) {
+      const auto h = p.tap_sequence(x, i, j);
+      for (Index b = 0; b < p.L; ++b)
+        for (Index a = b; a < p.L; ++a) T(a * p.ny + i, b * p.nz + j) = h(a - b);
+    }
+  return T;
+}
+
+/// d on the rows ≥ m (L × ny): r_i − Σ_j Z_j h_ij.
+Dense residual_tail(const Problem& p, const Vecd& x) {
+  Dense d = p.r_tail;
+  for (Index i = 0; i < p.ny; ++i)
+    for (Index j = 0; j < p.nz; ++j) d.col(i) -= p.Z[static_cast<size_t>(j)] * p.tap_sequence(x, i, j);
+  return d;
+}
 
 /// F_μ at x, or +∞ outside the interior, with what the derivatives reuse.
 struct Point {
@@ -65,34 +103,50 @@ struct Point {
   /// constructed LLT leaves its status uninitialised, and moving a Point
   /// that returned early (t <= 0) read it (UBSan: invalid ComputationInfo).
   Eigen::LLT<Dense> llt{Dense(0, 0)};
-  Vecd d_tail;
-  double D = 0;  ///< ‖d‖² (all rows)
+  Dense d_tail;
+  double D = 0;    ///< ‖d‖² (all rows)
+  double phi = 0;  ///< N·s_fix − ‖d‖² (s fixed only)
 };
 
 Point evaluate(const Problem& p, const Vecd& x, double mu) {
   Point pt;
-  const Vecd h = x.head(p.L);
   const double t = p.t_of(x);
-  pt.d_tail = p.r_tail - p.Z * h;
+  pt.d_tail = residual_tail(p, x);
   pt.D = p.r_head.squaredNorm() + pt.d_tail.squaredNorm();
   if (!(t > 0) || !std::isfinite(pt.D)) return pt;
-  pt.T = lower_toeplitz(h);
+  pt.phi = p.N * p.s_fix - pt.D;
+  if (!p.s_var && !(pt.phi > 0)) return pt;
+  pt.T = block_toeplitz(p, x);
   Dense F1 = -pt.T * pt.T.transpose();
   F1.diagonal().array() += t;
   pt.llt.compute(F1);
   if (pt.llt.info() != Eigen::Success) return pt;
   const Vecd diag = pt.llt.matrixLLT().diagonal();
   if (!(diag.minCoeff() > 0)) return pt;
-  pt.value = (p.t_var ? p.ct * t / mu : 0.0) + p.cs * pt.D / (p.N * mu) - 2.0 * diag.array().log().sum();
+  const double noise = p.s_var ? p.cs * pt.D / (p.N * mu) : -std::log(pt.phi);
+  pt.value = (p.t_var ? p.ct * t / mu : 0.0) + noise - 2.0 * diag.array().log().sum();
   pt.interior = std::isfinite(pt.value);
   return pt;
 }
 
+/// Σ_c M(c + k, c + l) for k, l ∈ [0, L) (sums along the diagonals).
+Dense diagonal_sums(const Dense& M) {
+  const Index L = M.rows();
+  Dense out(L, L);
+  for (Index k = L - 1; k >= 0; --k)
+    for (Index l = L - 1; l >= 0; --l) out(k, l) = M(k, l) + (k + 1 < L && l + 1 < L ? out(k + 1, l + 1) : 0.0);
+  return out;
+}
+
 /// Gradient and Hessian of F_μ at an interior point; P, Q, R as in the header.
+/// Entry-pair blocks of the Hessian, variable (i, j) at shift k against
+/// (i', j') at shift l (sub-blocks X_ab of P, Q, R as in sub_block):
+///   2·sym( [j = j']·Σ_c P_ii'(c+k, c+l) + corr(Q_ij', Q_i'jᵀ)(k, −l) + corr(P_ii', R_jj')(k, l) ).
 void derivatives(const Problem& p, const Point& pt, double mu, const CorrelationGrid& grid, Vecd& g, Dense& H, Dense& P,
                  Dense& Q, Dense& R) {
-  const Index L = p.L;
-  P = pt.llt.solve(Dense::Identity(L, L));
+  const Index L = p.L, ny = p.ny, nz = p.nz, nt = p.taps();
+  const Index Ly = L * ny;
+  P = pt.llt.solve(Dense::Identity(Ly, Ly));
   P = 0.5 * (P + P.transpose());
   Q = P * pt.T;
   R = pt.T.transpose() * Q;
@@ -101,24 +155,53 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
   H = Dense::Zero(p.dim(), p.dim());
 
   // −log det(tI − TTᵀ)
-  g.head(L) = 2.0 * subdiagonal_sums(Q);
-  Dense diag_sums(L, L);  // Σ_c P(c+k, c+l)
-  for (Index k = L - 1; k >= 0; --k)
-    for (Index l = L - 1; l >= 0; --l) diag_sums(k, l) = P(k, l) + (k + 1 < L && l + 1 < L ? diag_sums(k + 1, l + 1) : 0.0);
-  const Eigen::MatrixXcd P_hat = grid.spectrum(P), R_hat = grid.spectrum(R);
-  const Eigen::MatrixXcd Q_hat = grid.spectrum(Q), Qt_hat = grid.spectrum(Q.transpose());
-  const Dense Hh = diag_sums + grid.correlate(Q_hat, Qt_hat, -1) + grid.correlate(P_hat, R_hat, +1);
-  H.topLeftCorner(L, L) = Hh + Hh.transpose();  // 2·(symmetric part)
+  const auto at = [&](Index i, Index j) { return (i * nz + j) * L; };
+  std::vector<Eigen::MatrixXcd> P_hat(static_cast<size_t>(ny * ny)), R_hat(static_cast<size_t>(nz * nz)),
+      Q_hat(static_cast<size_t>(ny * nz)), Qt_hat(static_cast<size_t>(ny * nz));
+  std::vector<Dense> P_diag(static_cast<size_t>(ny * ny));
+  for (Index i = 0; i < ny; ++i)
+    for (Index i2 = 0; i2 < ny; ++i2) {
+      const Dense Pii = sub_block(P, ny, ny, i, i2);
+      P_hat[static_cast<size_t>(i * ny + i2)] = grid.spectrum(Pii);
+      P_diag[static_cast<size_t>(i * ny + i2)] = diagonal_sums(Pii);
+    }
+  for (Index j = 0; j < nz; ++j)
+    for (Index j2 = 0; j2 < nz; ++j2) R_hat[static_cast<size_t>(j * nz + j2)] = grid.spectrum(sub_block(R, nz, nz, j, j2));
+  for (Index i = 0; i < ny; ++i)
+    for (Index j = 0; j < nz; ++j) {
+      const Dense Qij = sub_block(Q, ny, nz, i, j);
+      g.segment(at(i, j), L) = 2.0 * subdiagonal_sums(Qij);
+      Q_hat[static_cast<size_t>(i * nz + j)] = grid.spectrum(Qij);
+      Qt_hat[static_cast<size_t>(i * nz + j)] = grid.spectrum(Qij.transpose());
+    }
+  for (Index i = 0; i < ny; ++i)
+    for (Index j = 0; j < nz; ++j)
+      for (Index i2 = 0; i2 < ny; ++i2)
+        for (Index j2 = 0; j2 < nz; ++j2) {
+          Dense Hh = grid.correlate(Q_hat[static_cast<size_t>(i * nz + j2)], Qt_hat[static_cast<size_t>(i2 * nz + j)], -1) +
+                     grid.correlate(P_hat[static_cast<size_t>(i * ny + i2)], R_hat[static_cast<size_t>(j * nz + j2)], +1);
+          if (j == j2) Hh += P_diag[static_cast<size_t>(i * ny + i2)];
+          H.block(at(i, j), at(i2, j2), L, L) += Hh;
+          H.block(at(i2, j2), at(i, j), L, L) += Hh.transpose();  // 2·(symmetric part)
+        }
   if (p.t_var) {
-    g(L) = p.ct / mu - P.trace();
-    H.block(0, L, L, 1) = -2.0 * subdiagonal_sums(P * Q);
-    H.block(L, 0, 1, L) = H.block(0, L, L, 1).transpose();
-    H(L, L) = P.squaredNorm();
+    g(nt) = p.ct / mu - P.trace();
+    const Dense PQ = P * Q;
+    for (Index i = 0; i < ny; ++i)
+      for (Index j = 0; j < nz; ++j) H.block(at(i, j), nt, L, 1) = -2.0 * subdiagonal_sums(sub_block(PQ, ny, nz, i, j));
+    H.block(nt, 0, 1, nt) = H.block(0, nt, nt, 1).transpose();
+    H(nt, nt) = P.squaredNorm();
   }
-  // c_s·‖d‖²/(N μ), d = r − Z h
-  const double w = p.cs / (p.N * mu);
-  g.head(L) -= 2.0 * w * (p.Z.transpose() * pt.d_tail);
-  H.topLeftCorner(L, L) += 2.0 * w * p.G;
+  // the noise: ∂‖d‖²/∂h_ij = −2 Z_jᵀ d_i, ∂²‖d‖²/∂h_ij ∂h_ij' = 2 Z_jᵀ Z_j'
+  Vecd Zd = Vecd::Zero(nt);
+  for (Index i = 0; i < ny; ++i)
+    for (Index j = 0; j < nz; ++j) Zd.segment(at(i, j), L) = p.Z[static_cast<size_t>(j)].transpose() * pt.d_tail.col(i);
+  const double w = p.s_var ? p.cs / (p.N * mu) : 1.0 / pt.phi;  // c_s·‖d‖²/(N μ), or −log φ with φ = N s − ‖d‖²
+  g.head(nt) -= 2.0 * w * Zd;
+  for (Index i = 0; i < ny; ++i)
+    for (Index j = 0; j < nz; ++j)
+      for (Index j2 = 0; j2 < nz; ++j2) H.block(at(i, j), at(i, j2), L, L) += 2.0 * w * p.G[static_cast<size_t>(j * nz + j2)];
+  if (!p.s_var) H.topLeftCorner(nt, nt) += 4.0 * Zd * Zd.transpose() / (pt.phi * pt.phi);
 }
 
 /// The scaled problem of solve_delta_form_barrier (σ_z, σ_r returned).
@@ -126,21 +209,24 @@ Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObje
                      double& sigma_r) {
   Problem p;
   p.n = z.rows();
+  p.ny = r.cols();
+  p.nz = z.cols();
   p.m = check_uncertainty_excited(z);
   p.L = p.n - p.m;
-  p.N = static_cast<double>(p.n);
-  p.nu = 2.0 * static_cast<double>(p.L) + p.N + 1.0;
+  p.N = static_cast<double>(p.n * p.ny);
+  p.nu = static_cast<double>(p.L * (p.ny + p.nz)) + p.N + 1.0;
   sigma_z = rms(z.bottomRows(p.L));
   sigma_r = rms(r);
   if (!(sigma_r > 0.0)) sigma_r = 1.0;
-  const double kz = sigma_z / sigma_r;
-  const Vecd zs = z.col(0).tail(p.L) / sigma_z;
-  const Vecd rs = r.col(0) / sigma_r;
-  p.r_head = rs.head(p.m);
-  p.r_tail = rs.tail(p.L);
-  p.Z = lower_toeplitz(zs);
-  p.G = p.Z.transpose() * p.Z;
+  const Dense rs = r / sigma_r;
+  p.r_head = rs.topRows(p.m);
+  p.r_tail = rs.bottomRows(p.L);
+  for (Index j = 0; j < p.nz; ++j) p.Z.push_back(lower_toeplitz(z.col(j).tail(p.L) / sigma_z));
+  for (Index j = 0; j < p.nz; ++j)
+    for (Index j2 = 0; j2 < p.nz; ++j2) p.G.push_back(p.Z[static_cast<size_t>(j)].transpose() * p.Z[static_cast<size_t>(j2)]);
   p.t_var = !objective.delta_fixed();
+  p.s_var = objective.kind != BoundObjective::Kind::kMinDelta;  // fixed bounds go through min d_max²
+  const double kz = sigma_z / sigma_r;
   p.t_fix = objective.delta * objective.delta * kz * kz;
   p.s_fix = objective.dmax * objective.dmax / (sigma_r * sigma_r);
   if (objective.kind == BoundObjective::Kind::kWeighted) {
@@ -148,9 +234,57 @@ Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObje
     p.cs = 1.0 - objective.lambda;
   } else {
     p.ct = p.t_var ? 1.0 : 0.0;
-    p.cs = 1.0;
+    p.cs = p.s_var ? 1.0 : 0.0;
   }
   return p;
+}
+
+/// Min δ at a fixed d_max: taps strictly inside (C2). Per output i, the ridge
+/// taps h_i(ρ) = Zcᵀ(K + ρI)⁻¹r_i with Zc = [Z_1 … Z_nz], K = Zc Zcᵀ
+/// (d_i = ρ(K + ρI)⁻¹r_i → 0 as ρ → 0: Zc has full row rank once the
+/// leading zeros are cut), at the largest ρ that puts ‖d‖² at most halfway
+/// between ‖r_head‖² and N·s. Not Zc⁻¹r itself: on a long record its entries
+/// grow geometrically. Empty with the reason when there is no such point.
+std::string ridge_start(const Problem& p, Vecd& x) {
+  const double head = p.r_head.squaredNorm(), cap = p.N * p.s_fix, target = 0.5 * (head + cap);
+  if (!(head < cap)) return "the rows before the first nonzero z already exceed N*dmax^2";
+  if (head + p.r_tail.squaredNorm() <= target) return "";  // h = 0 is inside
+  Dense K = Dense::Zero(p.L, p.L);
+  for (const Dense& Zj : p.Z) K += Zj * Zj.transpose();
+  const Eigen::SelfAdjointEigenSolver<Dense> eig(K);
+  if (eig.info() != Eigen::Success) return "no eigendecomposition for the start";
+  const Dense B = eig.eigenvectors().transpose() * p.r_tail;  // L × ny
+  const Vecd lambda = eig.eigenvalues();
+  const auto misfit = [&](double rho) {
+    return head + ((rho / (lambda.array() + rho)).matrix().asDiagonal() * B).squaredNorm();
+  };
+  const double top = std::max(lambda.maxCoeff(), 1e-300);
+  double lo = std::log(top * 1e-14), hi = std::log(top * 1e8);
+  if (!(misfit(std::exp(lo)) <= target)) return "no ridge start inside N*dmax^2 (the data is too ill-conditioned)";
+  for (int it = 0; it < 50; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (misfit(std::exp(mid)) <= target ? lo : hi) = mid;
+  }
+  const double rho = std::exp(lo);
+  const Dense V = eig.eigenvectors() * ((1.0 / (lambda.array() + rho)).matrix().asDiagonal() * B);  // (K + ρI)⁻¹ r
+  for (Index i = 0; i < p.ny; ++i)
+    for (Index j = 0; j < p.nz; ++j)
+      x.segment((i * p.nz + j) * p.L, p.L) = p.Z[static_cast<size_t>(j)].transpose() * V.col(i);
+  return "";
+}
+
+/// A power-iteration estimate of ‖T_h‖² (a lower estimate; the caller
+/// doubles it and checks interiority).
+double norm2_estimate(const Dense& T) {
+  Vecd v = Vecd::Ones(T.cols()) / std::sqrt(static_cast<double>(T.cols()));
+  double norm2 = 0;
+  for (int it = 0; it < 30; ++it) {
+    const Vecd w = T.transpose() * (T * v);
+    norm2 = w.norm();
+    if (!(norm2 > 0)) break;
+    v = w / norm2;
+  }
+  return norm2;
 }
 
 DeltaFormSolution fail(DeltaFormSolution out, const std::string& why) {
@@ -168,25 +302,39 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
   DeltaFormSolution out;
   out.solve.backend = "barrier";
   if (z.rows() != r.rows() || !barrier_applies(z, r, objective))
-    return fail(out, "applies to SISO signals and the objectives min dmax, weighted (0 < lambda < 1), fixed bounds");
+    return fail(out, "applies to every objective (weighted: 0 < lambda < 1; fixed bounds: delta > 0; min delta: dmax > 0)");
   double sigma_z = 1, sigma_r = 1;
   const Problem p = make_problem(z, r, objective, sigma_z, sigma_r);
   out.leading_zeros = p.m;
   out.horizon = p.L;
   const double kz = sigma_z / sigma_r;  // h' = kz·h, t' = kz²·t, s' = s/σ_r²
   const bool feasibility = objective.kind == BoundObjective::Kind::kFeasibility;
-  const Index L = p.L;
+  const Index L = p.L, nt = p.taps();
+  const double Ly = static_cast<double>(L * p.ny);
 
-  // Start: h = 0 and, for a free δ, t central for μ₀ (c_t/μ = tr P = L/t);
+  // Start: h = 0 and, for a free δ, t central for μ₀ (c_t/μ = tr P = L·ny/t);
   // μ₀ puts the eliminated s at twice the residual's mean square.
   Vecd x = Vecd::Zero(p.dim());
   const double D0 = p.r_head.squaredNorm() + p.r_tail.squaredNorm();
   double mu = p.cs * std::max(D0 / p.N, 1e-12);
-  if (p.t_var) x(L) = mu * static_cast<double>(L) / p.ct;
+  if (p.t_var) x(nt) = mu * Ly / p.ct;
+  if (!p.s_var) {
+    // min δ at a fixed d_max: (C2) strictly inside, then t = twice an
+    // estimate of ‖T_h‖², doubled until interior; μ₀ central for it
+    if (const std::string why = ridge_start(p, x); !why.empty()) return fail(out, why);
+    const double norm2 = norm2_estimate(block_toeplitz(p, x));
+    x(nt) = 2.0 * norm2 + 1e-9 * (1.0 + norm2);
+    mu = p.ct * x(nt) / Ly;
+    for (int it = 0; it < 60 && !evaluate(p, x, mu).interior; ++it) {
+      x(nt) *= 2.0;
+      mu = p.ct * x(nt) / Ly;
+    }
+  }
   Point pt = evaluate(p, x, mu);
   if (!pt.interior) return fail(out, "the start is not interior");
-  const auto s_of = [&](const Point& q) { return q.D / p.N + mu / p.cs; };  // the eliminated s
-  const auto objective_of = [&](const Vecd& y, const Point& q) { return (p.t_var ? p.ct * y(L) : 0.0) + p.cs * s_of(q); };
+  // s: eliminated (its minimiser for the current h) or fixed
+  const auto s_of = [&](const Point& q) { return p.s_var ? q.D / p.N + mu / p.cs : p.s_fix; };
+  const auto objective_of = [&](const Vecd& y, const Point& q) { return (p.t_var ? p.ct * y(nt) : 0.0) + p.cs * s_of(q); };
 
   const CorrelationGrid grid(L);
   int newton = 0;
@@ -197,9 +345,21 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
     for (int inner = 0; inner < max_steps; ++inner) {
       if (++newton > options.max_newton) return "no convergence within " + std::to_string(options.max_newton) + " Newton steps";
       derivatives(p, pt, mu, grid, g, H, P, Q, R);
-      Eigen::LDLT<Dense> ldlt(H);
-      const Vecd dx = ldlt.solve(-g);
-      if (ldlt.info() != Eigen::Success || !dx.allFinite()) return "the Newton system is singular";
+      // MIMO: ZᵀZ-type noise terms are singular along taps that do not change
+      // d, and at small μ they dwarf the log-det curvature there; a zero pivot
+      // in floating point then gets a Levenberg shift τ·I (still a descent
+      // direction; the line search decides the step).
+      Vecd dx;
+      bool solved = false;
+      const double scale_h = std::max(H.diagonal().cwiseAbs().maxCoeff(), 1e-300);
+      for (int shift = 0; shift < 8 && !solved; ++shift) {
+        Dense Hs = H;
+        if (shift > 0) Hs.diagonal().array() += scale_h * std::pow(10.0, -16 + 2 * shift);
+        const Eigen::LDLT<Dense> ldlt(Hs);
+        dx = ldlt.solve(-g);
+        solved = ldlt.info() == Eigen::Success && dx.allFinite() && ldlt.isPositive();
+      }
+      if (!solved) return "the Newton system is singular";
       const double dec2 = -g.dot(dx);
       if (!(dec2 >= 0)) return "not a descent direction (the Hessian lost definiteness)";
       if (dec2 < tol) return "";
@@ -221,7 +381,7 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
 
   bool infeasible = false, found_feasible = false;
   for (;;) {
-    if (const std::string err = center(0.25, 60); !err.empty()) return fail(out, err);
+    if (const std::string err = center(0.25, p.s_var ? 60 : 200); !err.empty()) return fail(out, err);
     const double obj = objective_of(x, pt);
     if (feasibility) {
       if (s_of(pt) <= p.s_fix) {  // a feasible point: the taps certify "consistent" (no polishing: keep it)
@@ -235,7 +395,7 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
     }
     if (p.nu * mu <= std::max((feasibility ? options.feasibility_rel_gap : options.rel_gap) * std::abs(obj), options.abs_gap))
       break;
-    mu /= options.mu_factor;
+    mu /= p.s_var ? options.mu_factor : options.mu_factor_fixed_noise;
     pt = evaluate(p, x, mu);  // same x, new μ (always interior: F_μ's domain does not depend on μ)
   }
   // Y = μ·C⁻¹ is dual feasible only on the central path: centre tightly first
@@ -248,30 +408,34 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
   if (feasibility && !(s <= p.s_fix)) infeasible = true;  // undecided at the smallest gap: the dual certificate decides
 
   // Dual matrices (scaled), then original units as solve_delta_form.
-  out.dual_c1 = Dense::Zero(2 * L, 2 * L);
-  out.dual_c1.topLeftCorner(L, L) = mu * P;
-  out.dual_c1.topRightCorner(L, L) = -mu * Q;
-  out.dual_c1.bottomLeftCorner(L, L) = -mu * Q.transpose();
-  out.dual_c1.bottomRightCorner(L, L) = mu * (Dense::Identity(L, L) + R);
-  Vecd d(p.n);
-  d << p.r_head, pt.d_tail;
-  const double phi = p.N * s - pt.D;  // = N μ / c_s on the path
-  out.dual_c2 = Dense::Zero(p.n + 1, p.n + 1);
+  const Index Y = L * p.ny, Z = L * p.nz, Nn = p.n * p.ny;
+  out.dual_c1 = Dense::Zero(Y + Z, Y + Z);
+  out.dual_c1.topLeftCorner(Y, Y) = mu * P;
+  out.dual_c1.topRightCorner(Y, Z) = -mu * Q;
+  out.dual_c1.bottomLeftCorner(Z, Y) = -mu * Q.transpose();
+  out.dual_c1.bottomRightCorner(Z, Z) = mu * (Dense::Identity(Z, Z) + R);
+  Vecd d(Nn);  // row k·ny + i of (C2)
+  for (Index k = 0; k < p.n; ++k)
+    for (Index i = 0; i < p.ny; ++i) d(k * p.ny + i) = k < p.m ? p.r_head(k, i) : pt.d_tail(k - p.m, i);
+  const double phi = p.N * s - pt.D;  // = N μ / c_s on the path when s is eliminated
+  out.dual_c2 = Dense::Zero(Nn + 1, Nn + 1);
   out.dual_c2(0, 0) = mu / phi;
-  out.dual_c2.block(1, 0, p.n, 1) = -mu * d / phi;
-  out.dual_c2.block(0, 1, 1, p.n) = out.dual_c2.block(1, 0, p.n, 1).transpose();
-  out.dual_c2.bottomRightCorner(p.n, p.n) = mu * (Dense::Identity(p.n, p.n) + d * d.transpose() / phi);
-  out.dual_c1.topRows(L) *= kz;
-  out.dual_c1.leftCols(L) *= kz;
+  out.dual_c2.block(1, 0, Nn, 1) = -mu * d / phi;
+  out.dual_c2.block(0, 1, 1, Nn) = out.dual_c2.block(1, 0, Nn, 1).transpose();
+  out.dual_c2.bottomRightCorner(Nn, Nn) = mu * (Dense::Identity(Nn, Nn) + d * d.transpose() / phi);
+  out.dual_c1.topRows(Y) *= kz;
+  out.dual_c1.leftCols(Y) *= kz;
   out.dual_c2.row(0) /= sigma_r;
   out.dual_c2.col(0) /= sigma_r;
 
-  out.taps = x.head(L) / kz;
-  out.delta2 = p.t_var ? x(L) / (kz * kz) : objective.delta * objective.delta;
+  out.taps = Eigen::Map<const Dense>(x.data(), L, p.q()) / kz;  // column i·nz + j: entry (i, j) over l
+  out.delta2 = p.t_var ? x(nt) / (kz * kz) : objective.delta * objective.delta;
   out.dmax2 = feasibility ? objective.dmax * objective.dmax : s * sigma_r * sigma_r;
   out.solve.status = infeasible ? SolveStatus::kPrimalInfeasible : SolveStatus::kOptimal;
   out.solve.iterations = newton;
-  const double scale = sigma_r * sigma_r;  // objective in original units = σ_r²·(scaled)
+  // objective in original units: σ_r² × the scaled one (c_t was set so that
+  // this holds for the weighted objective's t too); min δ: δ² = t'/kz²
+  const double scale = p.s_var ? sigma_r * sigma_r : 1.0 / (kz * kz);
   out.solve.objective = objective_of(x, pt) * scale;
   out.solve.dual_objective = (objective_of(x, pt) - p.nu * mu) * scale;
   out.solve.message = "structured barrier: " + std::to_string(newton) + " Newton steps, final mu " + std::to_string(mu);

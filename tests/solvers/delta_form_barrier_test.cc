@@ -1,5 +1,5 @@
-// The structured barrier solver of the SISO full-horizon Δ form
-// (lmi/delta_form_barrier.h) against an independent computation: the same
+// The structured barrier solver of the full-horizon Δ form (SISO and MIMO,
+// lmi/delta_form_barrier.h) against an independent computation: the same
 // program solved by CSDP as a general SDP (lmi/delta_form_lmi.h, K = L).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
@@ -19,32 +19,58 @@ struct Signals {
   Mat<double> z, r;
 };
 
-rc::Gen<Signals> signals() {
-  return rc::gen::exec([] {
-    const int n = *rc::gen::inRange(3, 25);
+/// SISO or MIMO (ny, nz ∈ {1, 2, 3}) signals; z has `lead` zero rows and a
+/// nonzero first entry after them in its first column.
+rc::Gen<Signals> signals(bool mimo) {
+  return rc::gen::exec([mimo] {
+    const int ny = mimo ? *rc::gen::inRange(1, 4) : 1, nz = mimo ? *rc::gen::inRange(1, 4) : 1;
+    const int n = *rc::gen::inRange(3, mimo ? 16 : 25);
     const int lead = *rc::gen::inRange(0, 3);
     const double zscale = std::pow(10.0, *rc::gen::inRange(-3, 4));
     const double rscale = std::pow(10.0, *rc::gen::inRange(-3, 3));
     Signals s;
-    s.z = Mat<double>::Zero(n, 1);
-    s.r = Mat<double>::Zero(n, 1);
+    s.z = Mat<double>::Zero(n, nz);
+    s.r = Mat<double>::Zero(n, ny);
     for (int k = 0; k < n; ++k) {
-      if (k >= lead) s.z(k, 0) = zscale * (*rc::gen::inRange(-1000, 1001) / 1000.0);
-      s.r(k, 0) = rscale * (*rc::gen::inRange(-1000, 1001) / 1000.0);
+      for (int j = 0; j < nz; ++j)
+        if (k >= lead) s.z(k, j) = zscale * (*rc::gen::inRange(-1000, 1001) / 1000.0);
+      for (int i = 0; i < ny; ++i) s.r(k, i) = rscale * (*rc::gen::inRange(-1000, 1001) / 1000.0);
     }
     if (lead < n) s.z(lead, 0) = zscale * (0.5 + *rc::gen::inRange(0, 100) / 200.0);
     return s;
   });
 }
 
+rc::Gen<Signals> signals() {
+  return rc::gen::exec([] { return *signals(*rc::gen::arbitrary<bool>()); });
+}
+
+/// T_Δ (L·ny × L·nz, rows a·ny + i, columns b·nz + j) of taps (L × ny·nz).
+Mat<double> block_toeplitz(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz) {
+  const Eigen::Index L = taps.rows();
+  Mat<double> T = Mat<double>::Zero(L * ny, L * nz);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index b = 0; b <= a; ++b)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
+  return T;
+}
+
 RC_GTEST_PROP(DeltaFormBarrier, OptimumEqualsTheGeneralSdpSolvers, ()) {
   const Signals s = *signals();
   const double scale_t = (s.r.norm() / s.z.norm());
-  const int which = *rc::gen::inRange(0, 2);
+  const int which = *rc::gen::inRange(0, 3);
   BoundObjective obj;
   if (which == 0) {
     obj.kind = BoundObjective::Kind::kMinDmax;
     obj.delta = scale_t * (*rc::gen::inRange(5, 200) / 100.0);
+  } else if (which == 2) {
+    // min δ at a d_max between the noise-free and the h = 0 extremes
+    obj.kind = BoundObjective::Kind::kMinDelta;
+    obj.dmax = s.r.norm() / std::sqrt(static_cast<double>(s.r.rows())) * (*rc::gen::inRange(5, 95) / 100.0);
+    // feasible for some Δ: the rows before the first nonzero z fit in N·d_max²
+    const Eigen::Index lead = leading_zero_samples(s.z);
+    RC_PRE(s.r.topRows(lead).squaredNorm() < 0.9 * static_cast<double>(s.r.rows()) * obj.dmax * obj.dmax);
   } else {
     obj.kind = BoundObjective::Kind::kWeighted;
     obj.lambda = *rc::gen::inRange(5, 96) / 100.0;
@@ -52,6 +78,7 @@ RC_GTEST_PROP(DeltaFormBarrier, OptimumEqualsTheGeneralSdpSolvers, ()) {
   BarrierOptions tight;
   tight.rel_gap = 1e-7;
   const DeltaFormSolution fast = solve_delta_form_barrier(s.z, s.r, obj, tight);
+  RC_LOG() << "ny " << s.r.cols() << " nz " << s.z.cols() << " n " << s.z.rows() << ": " << fast.solve.message << "\n";
   RC_ASSERT(fast.solve.status == SolveStatus::kOptimal);
   auto csdp = make_solver("csdp");
   const DeltaFormSolution ref = solve_delta_form(s.z, s.r, obj, *csdp, SolverOptions{}, 0);
@@ -63,14 +90,14 @@ RC_GTEST_PROP(DeltaFormBarrier, OptimumEqualsTheGeneralSdpSolvers, ()) {
   const double floor = 1e-7 * obj.value(std::pow(s.r.norm() / s.z.norm(), 2), s.r.squaredNorm() / static_cast<double>(s.r.rows()));
   RC_ASSERT(std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + floor);
   // The taps are a feasible point: ‖T_h‖² ≤ δ² and ‖r − h∗z‖² ≤ N·d_max² (up to rounding).
-  const Eigen::Index L = fast.horizon;
-  Mat<double> T = Mat<double>::Zero(L, L);
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index b = 0; b <= a; ++b) T(a, b) = fast.taps(a - b, 0);
+  const Eigen::Index ny = s.r.cols(), nz = s.z.cols();
+  const Mat<double> T = block_toeplitz(fast.taps, ny, nz);
   const double norm = Eigen::JacobiSVD<Mat<double>>(T).singularValues()(0);
   RC_ASSERT(norm * norm <= fast.delta2 * (1 + 1e-9));
-  RC_ASSERT(fast.dual_c1.rows() == 2 * fast.horizon);
-  RC_ASSERT(fast.dual_c2.rows() == s.r.rows() + 1);
+  const Mat<double> d = s.r - apply_fir(fast.taps, s.z, ny, fast.horizon);
+  RC_ASSERT(d.squaredNorm() <= static_cast<double>(s.r.size()) * fast.dmax2 * (1 + 1e-9) + 1e-300);
+  RC_ASSERT(fast.dual_c1.rows() == fast.horizon * (ny + nz));
+  RC_ASSERT(fast.dual_c2.rows() == s.r.size() + 1);
 }
 
 RC_GTEST_PROP(DeltaFormBarrier, FixedBoundsAgreeWithTheGeneralSdpSolver, ()) {
@@ -109,16 +136,19 @@ namespace {
 // central finite differences of the barrier value.
 RC_GTEST_PROP(DeltaFormBarrier, DerivativesMatchFiniteDifferences, ()) {
   const Signals s = *signals();
-  const bool weighted = *rc::gen::arbitrary<bool>();
+  const int which = *rc::gen::inRange(0, 3);
+  const bool weighted = which != 0;  // t is a variable
   BoundObjective obj;
-  obj.kind = weighted ? BoundObjective::Kind::kWeighted : BoundObjective::Kind::kMinDmax;
+  obj.kind = which == 0 ? BoundObjective::Kind::kMinDmax : which == 1 ? BoundObjective::Kind::kWeighted : BoundObjective::Kind::kMinDelta;
   obj.delta = s.r.norm() / s.z.norm();
+  // min δ: d_max above the residual's RMS, so that small taps keep (C2) strict
+  obj.dmax = 2.0 * s.r.norm() / std::sqrt(static_cast<double>(s.r.rows()));
   const double mu = std::pow(10.0, *rc::gen::inRange(-3, 1));
-  const Eigen::Index L = s.z.rows() - leading_zero_samples(s.z);
-  const Eigen::Index D = L + (weighted ? 1 : 0);
+  const Eigen::Index L = s.z.rows() - leading_zero_samples(s.z), nt = L * s.r.cols() * s.z.cols();
+  const Eigen::Index D = nt + (weighted ? 1 : 0);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(D);
-  for (Eigen::Index i = 0; i < L; ++i) x(i) = *rc::gen::inRange(-100, 101) / (1000.0 * static_cast<double>(L));
-  if (weighted) x(L) = 1.0 + *rc::gen::inRange(0, 100) / 100.0;
+  for (Eigen::Index i = 0; i < nt; ++i) x(i) = *rc::gen::inRange(-100, 101) / (1000.0 * static_cast<double>(L));
+  if (weighted) x(nt) = 1.0 + *rc::gen::inRange(0, 100) / 100.0;
   const BarrierDerivatives b = barrier_derivatives(s.z, s.r, obj, x, mu);
   RC_PRE(std::isfinite(b.value));
   const double step = 1e-4;
