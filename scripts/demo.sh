@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The main demo: close the loop on measured data (issue 4, SPEC 6).
+# The main demo: close the loop on measured data.
 #   1. fit a linear starting model on the estimation part of the cascaded
 #      tanks benchmark;
 #   2. `lpvid diagnose`: residual -> missing effect -> re-fitted model, ranked
@@ -43,7 +43,7 @@ if [ ! -r "$tanks" ]; then
   echo "Report: $out/gen.report.json   model: $out/gen_after.json (the true effect: y = v + 0.4 v^2)"
   exit 0
 fi
-# The benchmark's protocol (SPEC 6, nonlinear_benchmarks 1.0.1): the test part is never mixed in.
+# The benchmark's protocol (the nonlinear_benchmarks loader since 1.0.1): the test part is never mixed in.
 #   linear start  uEst/yEst rows 0:716 fitted, order chosen on rows 716:1024
 #   effects       uEst/yEst rows 0:1024 in 4 blocked folds: fitted on three, scored on the fourth
 #   test          uVal/yVal, scored once at the end: x0 from the first 50 samples, RMS and fit % over the rest

@@ -6,6 +6,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "core/exit_codes.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
@@ -151,23 +152,23 @@ int run_certificate_command(const std::string& path, std::ostream& out, std::ost
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (v.holds) {
       out << v.claim_text << "\n" << v.details << "\nchecked in exact rational arithmetic in " << secs << " s\n";
-      return 0;
+      return kExitOk;
     }
     out << "invalid: " << v.reason << "\n";
     if (!v.details.empty()) out << v.details << "\n";
-    return 1;
+    return kExitInvalidated;  // the claim does not hold
   } catch (const InputError& e) {
     err << "lpvid-verify: " << e.what() << "\n";
-    return 2;
+    return kExitBadInput;
   } catch (const IoError& e) {
     err << "lpvid-verify: " << e.what() << "\n";
-    return 6;
+    return kExitIo;
   } catch (const std::bad_alloc&) {
     err << "lpvid-verify: out of memory while checking '" << path << "'\n";
-    return 2;
+    return kExitBadInput;
   } catch (const std::exception& e) {
     err << "lpvid-verify: cannot check '" << path << "': " << e.what() << "\n";
-    return 2;
+    return kExitBadInput;
   }
 }
 

@@ -156,7 +156,7 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
     throw_input_error(file, member(root, "claim", file, "").line, "claim",
                       "expected \"consistent\", \"invalidated\" or \"lower_bound\"");
   if (string_member(root, "noise_normalisation", file, "") != "rms")
-    throw_input_error(file, root.line, "noise_normalisation", "expected \"rms\" (||d||^2 <= n*ny*dmax^2, SPEC section 4)");
+    throw_input_error(file, root.line, "noise_normalisation", "expected \"rms\" (||d||^2 <= n*ny*dmax^2)");
 
   Certificate c;
   const JsonNode& data = member(root, "data", file, "");

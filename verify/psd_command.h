@@ -13,6 +13,8 @@
 #include <iosfwd>
 #include <string>
 
+#include "core/exit_codes.h"
+
 namespace lpvid {
 
 struct PsdCommandOptions {
@@ -23,10 +25,10 @@ struct PsdCommandOptions {
 };
 
 /// Exit codes of run_psd_command.
-inline constexpr int kPsdExitPsd = 0;
-inline constexpr int kPsdExitNotPsd = 1;
-inline constexpr int kPsdExitBadInput = 2;
-inline constexpr int kPsdExitIo = 6;  ///< the file exists but could not be read (same code as lpvid's)
+inline constexpr int kPsdExitPsd = kExitOk;
+inline constexpr int kPsdExitNotPsd = kExitInvalidated;
+inline constexpr int kPsdExitBadInput = kExitBadInput;
+inline constexpr int kPsdExitIo = kExitIo;  ///< the file exists but could not be read (core/exit_codes.h)
 
 int run_psd_command(const std::string& path, std::ostream& out, std::ostream& err,
                     const PsdCommandOptions& options = {});

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 
+#include "core/file_io.h"
 #include "cli/commands.h"
 #include "cli/diagnose_output.h"
 #include "cli/inputs.h"
@@ -89,6 +90,8 @@ ColumnMap validation_map(const LpvModel<double>& declared, const LpvModel<double
 }
 
 int run_diagnose(DiagnoseArgs& a) {
+  check_output_file(a.model_out, "model");
+  check_output_directory(a.plots_dir, "plots");
   if (!(a.holdout > 0 && a.holdout < 1)) throw InputError("--holdout must be in (0, 1)");
   if (a.folds == 0 || a.folds < 1) throw InputError("--folds must be 1 (one held-out block) or at least 2");
   const int warmup = a.warmup > 0 ? a.warmup : (!a.benchmark.empty() ? benchmark_warmup(a.benchmark) : a.init_samples);
@@ -253,7 +256,7 @@ int run_diagnose(DiagnoseArgs& a) {
 Runner add_diagnose_command(CLI::App& app) {
   auto a = std::make_shared<DiagnoseArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "diagnose", "Residual -> missing effect -> re-fitted model, with before/after RMS and verified bounds (SPEC 6)");
+      "diagnose", "Residual -> missing effect -> re-fitted model, with before/after RMS and verified bounds");
   add_common_options(*cmd, a->common, true);
   cmd->add_option("--validation", a->validation_path, "validation data file (default: hold out the end of --data)");
   cmd->add_option("--validation-columns", a->validation_columns,
@@ -275,7 +278,7 @@ Runner add_diagnose_command(CLI::App& app) {
                   "of the RMS and fit % (default: --init-samples, 5)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--benchmark", a->benchmark,
-                  "the benchmark's warm-up (SPEC 6, nonlinear_benchmarks 1.0.1): cascaded-tanks 50, silverbox 50, "
+                  "the benchmark's warm-up (the nonlinear_benchmarks loader since 1.0.1): cascaded-tanks 50, silverbox 50, "
                   "coupled-drives 10");
   cmd->add_option("--test", a->test_paths,
                   "test data file, scored once after the selection and never used to fit or choose (default: --data "

@@ -460,7 +460,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   j["after"] = side_json(r.after_estimation, r.after_validation, res.after);
   j["before"]["theorem_3_1"] = identification_json(res.before_id);
   j["after"]["theorem_3_1"] = identification_json(res.after_id);
-  j["noise_normalisation"] = "RMS: ||d||_2 <= dmax*sqrt(n*ny) (SPEC 4)";
+  j["noise_normalisation"] = "RMS: ||d||_2 <= dmax*sqrt(n*ny)";
   j["toeplitz_mode"] = "signal";
   j["solver"] = in.solver;
   j["relaxation"] = "delta, dmax: Theorem 2.1 for the least-squares model (output error on the whole estimation "

@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/file_io.h"
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
@@ -53,6 +54,7 @@ int parse_order(const std::string& text) {
 }
 
 int run_fit_linear(const FitLinearArgs& a) {
+  check_output_file(a.out, "model");
   int order = parse_order(a.order);
   if (order < 0) throw InputError("--order: must be >= 1 (or 'auto'), got '" + a.order + "'");
   const ColumnMap cols{a.u, a.y, {}};

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "core/file_io.h"
 #include "cli/commands.h"
 #include "core/input_error.h"
 #include "data/csv_writer.h"
@@ -67,6 +68,10 @@ int run_generate_example2(const GenerateArgs& a) {
 }
 
 int run_generate(const GenerateArgs& a) {
+  check_output_file(a.out, "data");
+  check_output_file(a.validation_out, "validation data");
+  check_output_file(a.model_out, "model");
+  check_output_file(a.truth_out, "true model");
   if (a.which != "example1" && a.which != "example2" && a.which != "effect-case")
     throw InputError("generate: unknown data set '" + a.which + "' (known: example1, example2, effect-case)");
   if (a.n < 2) throw InputError("generate: --n must be at least 2");
@@ -100,7 +105,7 @@ Runner add_generate_command(CLI::App& app) {
   auto a = std::make_shared<GenerateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "generate", "Write a data set with a known answer (the paper's Example 1, or an Example 2 flavour with an offset)");
-  cmd->add_option("which", a->which, "data set: example1, example2 (eq. 20: output offset Phi(rho)) or effect-case (issue 4: an undeclared effect)");
+  cmd->add_option("which", a->which, "data set: example1, example2 (eq. 20: output offset Phi(rho)) or effect-case (an effect the written model does not declare)");
   cmd->add_option("--n", a->n, "samples (default 60)");
   cmd->add_option("--noise-variance", a->noise_variance, "variance of the white output noise (paper Table II: 0.1)");
   cmd->add_option("--seed", a->seed, "random seed (default 1)");

@@ -40,7 +40,7 @@ int run_identify(IdentifyArgs& a) {
   std::cout << "\n";
   if (in.mode != ToeplitzMode::kSignal)
     throw InputError("--toeplitz paper is supported by 'invalidate' (fixed model) only; identification uses the "
-                     "signal form (SPEC 3)");
+                     "signal form (T_z built from the simulated z)");
   IdentifyOptions opt;
   opt.objective = in.objective;
   opt.iterate = a.iterate;
@@ -63,7 +63,7 @@ int run_identify(IdentifyArgs& a) {
             << "  unknowns    " << res.names.size() << " (" << res.free_directions << " free after pinning)\n";
   if (res.pinned_samples > 0)
     std::cout << "  pinned      z_k = 0 for k < " << res.pinned_samples
-              << ": the relaxation keeps these samples of z at zero (SPEC 9), and w_k = 0 there\n";
+              << ": the relaxation keeps these samples of z at zero, and w_k = 0 there\n";
   for (const auto& it : res.iterates)
     std::cout << "  solve " << it.index << "     " << to_string(it.status) << "  delta = " << std::sqrt(std::max(0.0, it.delta2))
               << "  dmax = " << std::sqrt(std::max(0.0, it.dmax2)) << "  (solver values, " << it.seconds << " s)\n";

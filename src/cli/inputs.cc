@@ -1,5 +1,7 @@
 #include "cli/inputs.h"
 
+#include "core/file_io.h"
+
 #include <algorithm>
 #include <charconv>
 #include <tuple>
@@ -22,7 +24,7 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   app.add_option("--model", o.model_path, "model file (lpvid-model/1 JSON)")->required();
   app.add_option("--names", o.names, "column names for a headerless whitespace data file")->delimiter(',');
   app.add_option("--rows", o.rows_text, "window of data rows B:E (0-based, E exclusive); default all");
-  app.add_option("--toeplitz", o.toeplitz, "T_z mode: signal (default, SPEC 3) or paper (T_G12 T_u)")
+  app.add_option("--toeplitz", o.toeplitz, "T_z mode: signal (default: T_z from the simulated z) or paper (T_G12 T_u)")
       ->check(CLI::IsMember({"signal", "paper"}));
   std::vector<std::string> solvers = available_solvers();
   solvers.push_back("csdp-command");
@@ -96,6 +98,10 @@ std::pair<long, long> parse_row_range(const std::string& text, const std::string
 }
 
 Inputs load_inputs(const CommonOptions& o) {
+  // outputs first: a run that cannot write its report fails now, not at its end
+  check_output_file(o.report_path, "report");
+  check_output_file(o.certificate_path, "certificate");
+  check_output_file(o.write_sdpa, "SDPA program");
   Inputs in;
   in.model_q = read_model_file<Rational>(o.model_path);
   in.model_d = read_model_file<double>(o.model_path);
@@ -122,7 +128,7 @@ void print_options(const CommonOptions& o, const BoundObjective& objective, cons
             << "  objective   " << objective.describe() << "\n"
             << "  toeplitz    " << o.toeplitz << "\n"
             << "  solver      " << o.solver << "\n"
-            << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny) (SPEC 4)\n";
+            << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny)\n";
 }
 
 CertifyOptions certify_options(const CommonOptions& c, const BoundObjective& objective) {

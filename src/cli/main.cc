@@ -11,6 +11,7 @@
 
 int main(int argc, char** argv) {
   using namespace lpvid::cli;
+  lpvid::remove_outputs_on_interrupt("lpvid");  // before any thread: Ctrl-C leaves nothing half-done
   CLI::App app{"lpvid: robust LPV identification/invalidation with exactly verified bounds"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("lpvid ") + LPVID_VERSION);

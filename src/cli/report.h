@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/exit_codes.h"
 #include "identify/affine_residual.h"
 #include "identify/certify.h"
 #include "lmi/bound_objective.h"
@@ -12,16 +13,15 @@
 
 namespace lpvid::cli {
 
-/// Exit codes shared by the lpvid commands.
-enum ExitCode {
-  kExitOk = 0,           ///< bounds found and verified
-  kExitInvalidated = 1,  ///< invalidated at the given bounds: an "invalidated" certificate was checked exactly
-  kExitBadInput = 2,     ///< missing, malformed or too large input (core/limits.h), bad options
-  kExitSolver = 3,       ///< the SDP backend failed (no bound is reported)
-  kExitNotVerified = 4,  ///< bounds were computed but the exact check did not accept them
-  kExitUndecided = 5,    ///< fixed bounds: neither consistency nor invalidation could be certified
-  kExitIo = 6,           ///< an existing input could not be read or an output could not be written (core/file_io.h)
-};
+/// Exit codes: core/exit_codes.h (one table for both programs).
+using lpvid::ExitCode;
+using lpvid::kExitOk;
+using lpvid::kExitInvalidated;
+using lpvid::kExitBadInput;
+using lpvid::kExitSolver;
+using lpvid::kExitNotVerified;
+using lpvid::kExitUndecided;
+using lpvid::kExitIo;
 
 /// The exit code of a certification's outcome (0, 1, 5, 3, 4).
 int exit_code(CertifyOutcome outcome);

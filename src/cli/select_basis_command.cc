@@ -61,7 +61,7 @@ int run_select(SelectArgs& a) {
     throw InputError("select-basis: give both --delta and --dmax (the bounds at which consistency is decided)");
   Inputs in = load_inputs(c);
   if (in.mode != ToeplitzMode::kSignal)
-    throw InputError("select-basis: --toeplitz paper is not supported (identification uses the signal form, SPEC 3)");
+    throw InputError("select-basis: --toeplitz paper is not supported (identification uses the signal form)");
   print_options(c, in.objective, "select-basis");
   const std::vector<Monomial> order = basis_growth_order(in.model_d.n_rho(), a.max_degree);
   std::cout << "  growth      " << basis_text(order, in.model_d.scheduling) << " (max degree " << a.max_degree
@@ -100,7 +100,7 @@ int run_select(SelectArgs& a) {
             << " passed the exact verifier (delta, dmax columns)\n"
             << "  invalidated = the solver found the LMI infeasible (not exactly certified); for a correction basis "
             << (a.iterate ? "the best model of the iterated relaxation is invalidated by Theorem 2.1"
-                          : "the relaxation of Theorem 3.1 at S_I is infeasible (it is conservative, SPEC 9)")
+                          : "the relaxation of Theorem 3.1 at S_I is infeasible (it is conservative: one relaxation step cannot make large corrections)")
             << "\n"
             << "  dmax_relax  = the smallest dmax at the given delta that the (iterated) relaxation reached\n";
   for (const BasisStep& s : r.steps)
@@ -126,7 +126,7 @@ int run_select(SelectArgs& a) {
     std::cout << "\nNo basis up to degree " << a.max_degree << " gives a model consistent with the data at delta = "
               << c.delta_text << ", dmax = " << c.dmax_text << "\n";
     if (!a.iterate)
-      std::cout << "  (the relaxation at S_I cannot make large corrections at tight bounds, SPEC 9: try --iterate)\n";
+      std::cout << "  (the relaxation at S_I cannot make large corrections at tight bounds: try --iterate)\n";
     bool unverified = false;
     for (const BasisStep& s : r.steps) unverified = unverified || s.verdict == BasisVerdict::kUnverified;
     report["status"] = unverified ? "not_verified" : "invalidated";

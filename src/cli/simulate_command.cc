@@ -2,6 +2,7 @@
 #include <iostream>
 #include <memory>
 
+#include "core/file_io.h"
 #include "cli/commands.h"
 #include "core/input_error.h"
 #include "data/csv_reader.h"
@@ -19,6 +20,7 @@ struct SimulateArgs {
 };
 
 int run_simulate(const SimulateArgs& a) {
+  check_output_file(a.out, "output");
   const LpvModel<double> model = read_model_file<double>(a.model);
   const TextTable table = a.names.empty() ? read_table(a.data) : read_table(a.data, a.names);
   // Simulation needs u and rho only; y columns are optional here.

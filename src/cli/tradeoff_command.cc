@@ -38,10 +38,12 @@ struct TradeoffArgs {
 };
 
 int run_tradeoff(TradeoffArgs& a) {
+  check_output_file(a.csv_path, "curve");
+  check_output_file(a.plot_path, "plot");
   CommonOptions& c = a.common;
   Inputs in = load_inputs(c);
   if (in.mode != ToeplitzMode::kSignal)
-    throw InputError("tradeoff: --toeplitz paper is not supported (identification uses the signal form, SPEC 3)");
+    throw InputError("tradeoff: --toeplitz paper is not supported (identification uses the signal form)");
   if (!a.basis.empty()) {
     const std::vector<Monomial> b = parse_basis(a.basis, in.model_q.scheduling);
     in.model_q = with_correction_basis(in.model_q, b);
@@ -59,7 +61,7 @@ int run_tradeoff(TradeoffArgs& a) {
                                               : "Theorem 3.1 relaxation at S_I (paper)")
             << ", then Theorem 2.1 certificate (Delta form, exact check) per lambda\n"
             << "  solver      " << c.solver << "\n"
-            << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny) (SPEC 4)\n\n";
+            << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny)\n\n";
 
   TradeoffOptions o;
   o.lambdas = lambdas;

@@ -38,4 +38,21 @@ int discard_outputs_of_this_run();
 /// succeeded, or a test that runs several commands in one process.
 void keep_outputs_of_this_run();
 
+/// Before any work: throws IoError (exit 6) unless `path` can be written —
+/// its directory exists, is a directory and is writable, and `path` is not
+/// a directory. Empty path: nothing to check. A run that would fail at its
+/// end after minutes fails at once instead.
+void check_output_file(const std::string& path, const std::string& what);
+
+/// The same for an output directory that the run creates if needed: it is a
+/// writable directory, or it does not exist and its parent is one.
+void check_output_directory(const std::string& dir, const std::string& what);
+
+/// On SIGINT, SIGTERM or SIGHUP: remove every output this run wrote (and a
+/// temporary being written), say so on stderr and exit with 130. Call once,
+/// at the start of main() before any thread is created: the signals are
+/// blocked in every thread and taken by a dedicated thread with sigwait(),
+/// so the clean-up runs in ordinary code (not in a signal handler).
+void remove_outputs_on_interrupt(const char* program);
+
 }  // namespace lpvid
