@@ -31,10 +31,14 @@ int run_invalidate(CommonOptions& c) {
   }
   const CertifiedBounds b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
   std::cout << "\nTheorem 2.1 (" << (in.mode == ToeplitzMode::kSignal ? "Delta form" : "w form, paper T_z")
-            << "), the correction basis is ignored: the model is fixed\n"
+            << "), the model as written: "
+            << (in.model_q.correction.basis.empty() ? std::string("no correction")
+                                                    : "the correction basis is ignored (theta = 0)")
+            << ", x0 as in the model file\n"
             << bounds_text(b, co.certificate_path);
   nlohmann::ordered_json report = bounds_json(b, c.toeplitz, c.solver, co.certificate_path);
   report["relaxation"] = "none (fixed model: Theorem 2.1 is an LMI)";
+  report["model_as_written"] = "theta = 0 (any correction basis is ignored), x0 as in the model file";
   report["iterations"] = 1;
   report["samples"] = in.exp_q.n();
   const CertifyOutcome outcome = outcome_of(b, in.objective);

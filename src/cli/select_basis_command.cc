@@ -98,8 +98,8 @@ int run_select(SelectArgs& a) {
 
   std::cout << "\n  consistent  = a certificate at delta = " << c.delta_text << ", dmax = " << c.dmax_text
             << " passed the exact verifier (delta, dmax columns)\n"
-            << "  invalidated = the solver found the LMI infeasible (not exactly certified); for a correction basis "
-            << (a.iterate ? "the best model of the iterated relaxation is invalidated by Theorem 2.1"
+            << "  infeasible  = the solver found the LMI infeasible (uncertified: no exact certificate); for a correction basis "
+            << (a.iterate ? "the best model of the iterated relaxation is infeasible in Theorem 2.1"
                           : "the relaxation of Theorem 3.1 at S_I is infeasible (it is conservative: one relaxation step cannot make large corrections)")
             << "\n"
             << "  dmax_relax  = the smallest dmax at the given delta that the (iterated) relaxation reached\n";
@@ -129,7 +129,8 @@ int run_select(SelectArgs& a) {
       std::cout << "  (the relaxation at S_I cannot make large corrections at tight bounds: try --iterate)\n";
     bool unverified = false;
     for (const BasisStep& s : r.steps) unverified = unverified || s.verdict == BasisVerdict::kUnverified;
-    report["status"] = unverified ? "not_verified" : "invalidated";
+    // no exact certificate backs these verdicts: never "invalidated"
+    report["status"] = unverified ? "not_verified" : "no_consistent_model_found_uncertified";
     report["delta"] = nullptr;
     report["dmax"] = nullptr;
     report["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";

@@ -163,7 +163,7 @@ class Selector {
       s.detail = what + " is consistent at the given bounds: certificate verified exactly";
     } else if (b.solve_status == SolveStatus::kPrimalInfeasible) {
       s.verdict = BasisVerdict::kInvalidated;
-      s.detail = what + " is invalidated at the given bounds: the Theorem 2.1 LMI is infeasible (solver verdict, "
+      s.detail = what + " is infeasible at the given bounds: the Theorem 2.1 LMI is infeasible (solver verdict, "
                         "not exactly certified)";
     } else {
       s.verdict = BasisVerdict::kUnverified;
@@ -288,7 +288,7 @@ std::string basis_text(const std::vector<Monomial>& basis, const std::vector<std
 const char* to_string(BasisVerdict v) {
   switch (v) {
     case BasisVerdict::kConsistent: return "consistent";
-    case BasisVerdict::kInvalidated: return "invalidated";
+    case BasisVerdict::kInvalidated: return "infeasible";  // the solver's verdict, not an exact certificate
     case BasisVerdict::kUnverified: return "unverified";
   }
   return "unverified";
@@ -312,7 +312,7 @@ std::string monotonicity_violation(const std::vector<BasisStep>& steps) {
     for (const BasisStep& b : steps)
       if (a.verdict == BasisVerdict::kConsistent && b.verdict == BasisVerdict::kInvalidated && subset(a.basis, b.basis))
         return "step " + std::to_string(a.index) + " {" + a.basis_text + "} is consistent but its superset step " +
-               std::to_string(b.index) + " {" + b.basis_text + "} is invalidated";
+               std::to_string(b.index) + " {" + b.basis_text + "} is infeasible (solver verdict)";
   return "";
 }
 

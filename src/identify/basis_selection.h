@@ -87,7 +87,7 @@ enum class BasisVerdict {
   kInvalidated,  ///< the solver found the LMI infeasible (not exactly certified; see above)
   kUnverified,   ///< anything else: solver trouble, or a model whose certificate did not pass
 };
-/// "consistent", "invalidated", "unverified".
+/// "consistent", "infeasible" (kInvalidated: a solver verdict, never printed as "invalidated"), "unverified".
 const char* to_string(BasisVerdict v);
 
 struct BasisStep {
