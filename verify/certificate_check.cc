@@ -6,6 +6,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "core/decimal_rounding.h"
 #include "core/exit_codes.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
@@ -123,7 +124,7 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
                                              w, c.delta2);
   if (!c1.holds) return invalid_verdict(c1.text, details.str());
   details << "; " << c1.text;
-  return {true, "", details.str(), ""};
+  return {true, "", details.str(), "", ""};
 }
 }  // namespace
 
@@ -139,8 +140,33 @@ CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
   if (!v.holds) return v;
   std::ostringstream o;
   o << to_string(c.claim);
-  if (c.claim == CertificateClaim::kLowerBound) o << " " << std::setprecision(10) << nearest_double(c.lower_bound);
+  if (c.claim == CertificateClaim::kLowerBound) o << " " << lower_text(c.lower_bound, 10);
   v.claim_text = o.str();
+  std::ostringstream e;
+  e << "claim: toeplitz mode " << (c.mode == ToeplitzMode::kSignal ? "signal" : "paper") << "; ";
+  const auto exact = [](const Rational& q) { return exact_decimal_or_fraction(q); };
+  switch (c.claim) {
+    case CertificateClaim::kConsistent:
+      e << "consistent at delta^2 = " << exact(c.delta2) << ", dmax^2 = " << exact(c.dmax2)
+        << " (noise RMS: ||d||^2 <= n*ny*dmax^2)";
+      break;
+    case CertificateClaim::kInvalidated:
+      e << "no causal LTI Delta with ||Delta||_inf^2 <= " << exact(c.delta2) << " and no noise with RMS^2 <= "
+        << exact(c.dmax2) << " explain the data";
+      break;
+    case CertificateClaim::kLowerBound:
+      switch (c.objective) {
+        case DualClaim::kMinDelta2: e << "delta^2 >= " << lower_text(c.lower_bound, 10) << " at dmax^2 = " << exact(c.dmax2); break;
+        case DualClaim::kMinDmax2: e << "dmax^2 >= " << lower_text(c.lower_bound, 10) << " at delta^2 = " << exact(c.delta2); break;
+        case DualClaim::kWeighted:
+          e << "lambda*delta^2 + (1-lambda)*dmax^2 >= " << lower_text(c.lower_bound, 10) << " with lambda = " << exact(c.lambda);
+          break;
+        case DualClaim::kInvalidated: e << "margin " << lower_text(c.lower_bound, 10); break;
+      }
+      e << " (printed value rounded down)";
+      break;
+  }
+  v.claim_echo = e.str();
   return v;
 }
 }  // namespace
@@ -151,7 +177,8 @@ int run_certificate_command(const std::string& path, std::ostream& out, std::ost
     const CertificateVerdict v = check_certificate_file(path);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (v.holds) {
-      out << v.claim_text << "\n" << v.details << "\nchecked in exact rational arithmetic in " << secs << " s\n";
+      out << v.claim_text << "\n" << v.claim_echo << "\n" << v.details << "\nchecked in exact rational arithmetic in " << secs
+          << " s\n";
       return kExitOk;
     }
     out << "invalid: " << v.reason << "\n";

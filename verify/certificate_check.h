@@ -36,6 +36,11 @@ struct CertificateVerdict {
   /// The first line lpvid-verify prints when the claim holds: "consistent",
   /// "invalidated" or "lower_bound <value>" (the claimed value, ≈).
   std::string claim_text;
+  /// What exactly was claimed, echoed by lpvid-verify under the first line:
+  /// the Toeplitz mode, δ² and d_max² as exact numbers (the fixed ones for a
+  /// dual claim) and, for a lower bound, the objective and its value rounded
+  /// down (never above what was proved).
+  std::string claim_echo;
 };
 
 /// Checks `c`; `certificate_dir` resolves a relative data path. Throws

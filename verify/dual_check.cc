@@ -62,7 +62,7 @@ CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Ratio
     return invalid_verdict("the dual matrix Y1 is not PSD (" + psd.reason + ")", d.str());
   d << "; Y1 (size " << c.dual.Y1.rows() << ") is " << verdict_word(psd.verdict) << " ("
     << (psd.decided_by_filter ? "floating filter with rigorous bound" : "exact elimination") << ")";
-  return {true, "", d.str(), ""};
+  return {true, "", d.str(), "", ""};
 }
 
 }  // namespace lpvid

@@ -28,7 +28,7 @@ inline std::string psd_note(const PsdResult& r) {
 
 /// The verdict "the claim does not hold", with the reason and what was checked.
 inline CertificateVerdict invalid_verdict(std::string reason, std::string details = "") {
-  return {false, std::move(reason), std::move(details), ""};
+  return {false, std::move(reason), std::move(details), "", ""};
 }
 
 }  // namespace lpvid

@@ -92,6 +92,12 @@ ColumnMap validation_map(const LpvModel<double>& declared, const LpvModel<double
 int run_diagnose(DiagnoseArgs& a) {
   check_output_file(a.model_out, "model");
   check_output_directory(a.plots_dir, "plots");
+  const auto started = std::chrono::steady_clock::now();
+  const auto progress = [started](const std::string& status) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    std::fprintf(stderr, "[diagnose %6.1f s] %s\n", s, status.c_str());
+  };
+  progress("reading the data and the model");
   if (!(a.holdout > 0 && a.holdout < 1)) throw InputError("--holdout must be in (0, 1)");
   if (a.folds == 0 || a.folds < 1) throw InputError("--folds must be 1 (one held-out block) or at least 2");
   const int warmup = a.warmup > 0 ? a.warmup : (!a.benchmark.empty() ? benchmark_warmup(a.benchmark) : a.init_samples);
@@ -204,11 +210,7 @@ int run_diagnose(DiagnoseArgs& a) {
   o.ranking.folds = by_folds ? a.folds : 1;
   o.ranking.fold_warmup = warmup;
   o.ranking.threads = static_cast<unsigned>(a.threads);
-  const auto started = std::chrono::steady_clock::now();
-  o.ranking.progress = [started](const std::string& status) {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    std::fprintf(stderr, "[diagnose %6.1f s] %s\n", s, status.c_str());
-  };
+  o.ranking.progress = progress;
   o.test_warmup = warmup;
   o.windows = windows;
   o.max_windows = static_cast<size_t>(a.max_windows);
@@ -225,6 +227,8 @@ int run_diagnose(DiagnoseArgs& a) {
   o.make_solver = [&a] { return make_solver_for_cli(a.common.solver, a.common.write_sdpa); };
   auto solver = o.make_solver();
   const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record
+  progress("data read (" + std::to_string(est_d.n()) + " estimation rows); fitting the declared model" +
+           (by_folds ? " on the whole record and on each fold's training rows" : ""));
   const DiagnoseResult result =
       diagnose(declared, est_d, est_q, by_folds ? no_selection : val_d, tests, o, *solver);
 

@@ -51,5 +51,28 @@ TEST_F(PrintedBounds, UpperEndsUpLowerEndsDown) {
   }
 }
 
+TEST_F(PrintedBounds, TheVerifierEchoesTheExactClaimAndRoundsTheLowerEndDown) {
+  const std::string rep = file("r.json"), cert = file("c.json");
+  ASSERT_EQ(run("invalidate", "--data " + gen::kExample1Fixtures + "noise_free_n40.csv --model " + gen::kExample1Fixtures +
+                                  "initial_model.json --delta 0.5 --certificate " + cert + " --report " + rep),
+            0)
+      << output();
+  const nlohmann::json r = nlohmann::json::parse(std::ifstream(rep));
+  ASSERT_EQ(run_program(verify_exe, "certificate " + cert), 0) << output();
+  const std::string out = output();
+  // the claim as exact numbers, read back from the certificate's own report
+  EXPECT_NE(out.find("claim: toeplitz mode signal; consistent at delta^2 = " + r["delta2_exact"].get<std::string>() +
+                     ", dmax^2 = " + r["dmax2_exact"].get<std::string>()),
+            std::string::npos)
+      << out;
+  const nlohmann::json& iv = r["interval"];
+  if (!iv.value("lower_verified", false)) GTEST_SKIP() << "no lower end certified";
+  ASSERT_EQ(run_program(verify_exe, "certificate " + iv["lower_certificate"].get<std::string>()), 0) << output();
+  std::smatch m;
+  const std::string low = output();
+  ASSERT_TRUE(std::regex_search(low, m, std::regex(R"(dmax\^2 >= ([0-9.eE+-]+) at delta\^2 = )"))) << low;
+  EXPECT_LE(rational_from_text(m[1].str()), rational_from_text(iv["lower_exact"].get<std::string>())) << low;
+}
+
 }  // namespace
 }  // namespace lpvid
