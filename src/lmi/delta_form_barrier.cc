@@ -174,16 +174,21 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
       Q_hat[static_cast<size_t>(i * nz + j)] = grid.spectrum(Qij);
       Qt_hat[static_cast<size_t>(i * nz + j)] = grid.spectrum(Qij.transpose());
     }
-  for (Index i = 0; i < ny; ++i)
-    for (Index j = 0; j < nz; ++j)
-      for (Index i2 = 0; i2 < ny; ++i2)
-        for (Index j2 = 0; j2 < nz; ++j2) {
-          Dense Hh = grid.correlate(Q_hat[static_cast<size_t>(i * nz + j2)], Qt_hat[static_cast<size_t>(i2 * nz + j)], -1) +
-                     grid.correlate(P_hat[static_cast<size_t>(i * ny + i2)], R_hat[static_cast<size_t>(j * nz + j2)], +1);
-          if (j == j2) Hh += P_diag[static_cast<size_t>(i * ny + i2)];
-          H.block(at(i, j), at(i2, j2), L, L) += Hh;
-          H.block(at(i2, j2), at(i, j), L, L) += Hh.transpose();  // 2·(symmetric part)
-        }
+  // The pair block (b, a) is the transpose of (a, b): each unordered pair is
+  // correlated once (the FFTs are the MIMO Newton step's main cost).
+  for (Index a = 0; a < ny * nz; ++a)
+    for (Index b = a; b < ny * nz; ++b) {
+      const Index i = a / nz, j = a % nz, i2 = b / nz, j2 = b % nz;
+      Dense Hh = grid.correlate(Q_hat[static_cast<size_t>(i * nz + j2)], Qt_hat[static_cast<size_t>(i2 * nz + j)], -1) +
+                 grid.correlate(P_hat[static_cast<size_t>(i * ny + i2)], R_hat[static_cast<size_t>(j * nz + j2)], +1);
+      if (j == j2) Hh += P_diag[static_cast<size_t>(i * ny + i2)];
+      if (a == b) {
+        H.block(at(i, j), at(i, j), L, L) += Hh + Hh.transpose();  // 2·(symmetric part)
+      } else {
+        H.block(at(i, j), at(i2, j2), L, L) += 2.0 * Hh;
+        H.block(at(i2, j2), at(i, j), L, L) += 2.0 * Hh.transpose();
+      }
+    }
   if (p.t_var) {
     g(nt) = p.ct / mu - P.trace();
     const Dense PQ = P * Q;
