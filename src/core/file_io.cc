@@ -15,6 +15,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "core/exit_codes.h"
 #include "core/input_error.h"
 #include "core/limits.h"
 
@@ -189,7 +190,7 @@ void remove_outputs_on_interrupt(const char* program) {
     std::cerr << "\n" << program << ": interrupted (signal " << static_cast<int>(sig) << "); removed the " << removed
               << " file(s) this run had written\n"
               << std::flush;
-    std::_Exit(130);
+    std::_Exit(kExitInterrupted);
   }).detach();
 }
 

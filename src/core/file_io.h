@@ -49,10 +49,10 @@ void check_output_file(const std::string& path, const std::string& what);
 void check_output_directory(const std::string& dir, const std::string& what);
 
 /// On SIGINT, SIGTERM or SIGHUP: remove every output this run wrote (and a
-/// temporary being written), say so on stderr and exit with 130. Call once,
-/// at the start of main() before any thread is created: the signals are
-/// blocked in every thread and taken by a dedicated thread with sigwait(),
-/// so the clean-up runs in ordinary code (not in a signal handler).
+/// temporary being written), say so on stderr and exit with 130
+/// (kExitInterrupted). Call once, at the start of main(): the handler only
+/// writes the signal to a pipe; a dedicated thread reads it and does the
+/// clean-up in ordinary code (not in a signal handler).
 void remove_outputs_on_interrupt(const char* program);
 
 }  // namespace lpvid
