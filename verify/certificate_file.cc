@@ -60,8 +60,11 @@ void parse_dual_claim(const JsonNode& root, const std::string& file, const std::
   c.claim = claim == "invalidated" ? CertificateClaim::kInvalidated : CertificateClaim::kLowerBound;
   for (const char* key : {"delta_taps", "delta_horizon", "w"})
     if (const JsonNode* n = root.find(key)) throw_input_error(file, n->line, key, "dual claims do not carry this key");
-  if (string_member(root, "form", file, "") != "dual_delta")
-    throw_input_error(file, member(root, "form", file, "").line, "form", "a dual claim has form \"dual_delta\"");
+  const std::string form = string_member(root, "form", file, "");
+  if (form != "dual_delta" && form != "dual_delta_path")
+    throw_input_error(file, member(root, "form", file, "").line, "form",
+                      "a dual claim has form \"dual_delta\" or \"dual_delta_path\"");
+  c.form = form == "dual_delta" ? CertificateForm::kDualDelta : CertificateForm::kDualDeltaPath;
   const JsonNode& objective_node = member(root, "objective", file, "");
   const std::string objective = string_member(root, "objective", file, "");
   const bool invalidated = c.claim == CertificateClaim::kInvalidated;
@@ -95,15 +98,42 @@ void parse_dual_claim(const JsonNode& root, const std::string& file, const std::
   }
   const JsonNode& dual = member(root, "dual", file, "");
   if (!dual.is_object()) throw_input_error(file, dual.line, "dual", "expected an object");
-  for (const auto& [key, value] : dual.members)
-    if (key != "horizon" && key != "sigma" && key != "g" && key != "Y1")
-      throw_input_error(file, value.line, "dual." + key, "unknown key");
+  const bool path = c.form == CertificateForm::kDualDeltaPath;
+  for (const auto& [key, value] : dual.members) {
+    const bool common = key == "horizon" || key == "sigma" || key == "g";
+    const bool own = path ? (key == "taps" || key == "t" || key == "mu" || key == "u_exponent" || key == "x" || key == "margin")
+                          : key == "Y1";
+    if (!common && !own) throw_input_error(file, value.line, "dual." + key, "unknown key for form \"" + form + "\"");
+  }
   const JsonNode& horizon = member(dual, "horizon", file, "dual");
   c.dual.horizon = integer_member(horizon, file, "dual.horizon");
   if (c.dual.horizon < 1) throw_input_error(file, horizon.line, "dual.horizon", "must be at least 1");
   c.dual.sigma = number_from_json<Rational>(member(dual, "sigma", file, "dual"), file, "dual.sigma");
   const Eigen::Index ny = c.model.ny, nz = c.model.nz();
   c.dual.g = matrix_member(member(dual, "g", file, "dual"), file, "dual.g", ny);
+  if (path) {
+    PathDualRecipe& p = c.dual.path;
+    const JsonNode& taps = member(dual, "taps", file, "dual");
+    p.taps = matrix_member(taps, file, "dual.taps", ny * nz);
+    if (p.taps.rows() != c.dual.horizon)
+      throw_input_error(file, taps.line, "dual.taps", "expected " + std::to_string(c.dual.horizon) + " rows (the horizon)");
+    const auto positive = [&](const char* key, Rational& out, bool strictly) {
+      const JsonNode& n = member(dual, key, file, "dual");
+      out = number_from_json<Rational>(n, file, std::string("dual.") + key);
+      if (strictly ? !(out > 0) : out < 0)
+        throw_input_error(file, n.line, std::string("dual.") + key, strictly ? "must be > 0" : "must be >= 0");
+    };
+    positive("t", p.t, true);
+    positive("mu", p.mu, true);
+    positive("x", p.x, true);
+    positive("margin", p.margin, false);
+    const JsonNode& e = member(dual, "u_exponent", file, "dual");
+    const Rational ev = number_from_json<Rational>(e, file, "dual.u_exponent");
+    if (mpz_cmp_ui(mpq_denref(ev.mpq()), 1) != 0 || ev < Rational(-4000) || ev > Rational(4000))
+      throw_input_error(file, e.line, "dual.u_exponent", "must be an integer in [-4000, 4000]");
+    p.u_exponent = mpz_get_si(mpq_numref(ev.mpq()));
+    return;
+  }
   // Y1: upper-triangle rows, row i holds columns i … P−1.
   const JsonNode& y1 = member(dual, "Y1", file, "dual");
   const long P = c.dual.horizon * static_cast<long>(ny + nz);
@@ -222,11 +252,23 @@ void dual_claim_json(const Certificate& c, nlohmann::ordered_json& j) {
   if (c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDelta2) j["dmax2"] = rational_to_json(c.dmax2);
   if (c.objective == DualClaim::kWeighted) j["lambda"] = rational_to_json(c.lambda);
   if (c.claim == CertificateClaim::kLowerBound) j["lower_bound"] = rational_to_json(c.lower_bound);
-  j["form"] = "dual_delta";
+  const bool path = c.form == CertificateForm::kDualDeltaPath;
+  j["form"] = path ? "dual_delta_path" : "dual_delta";
   nlohmann::ordered_json dual;
   dual["horizon"] = c.dual.horizon;
   dual["sigma"] = rational_to_json(c.dual.sigma);
   dual["g"] = matrix_json(c.dual.g);
+  if (path) {
+    const PathDualRecipe& p = c.dual.path;
+    dual["t"] = rational_to_json(p.t);
+    dual["mu"] = rational_to_json(p.mu);
+    dual["u_exponent"] = p.u_exponent;
+    dual["x"] = rational_to_json(p.x);
+    dual["margin"] = rational_to_json(p.margin);
+    dual["taps"] = matrix_json(p.taps);
+    j["dual"] = dual;
+    return;
+  }
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (Eigen::Index i = 0; i < c.dual.Y1.rows(); ++i) {
     nlohmann::ordered_json row = nlohmann::ordered_json::array();

@@ -34,6 +34,13 @@
 ///            "g": [[g_0 (ny)], …, [g_{n−1}]],
 ///            "Y1": [[row 0, columns 0…P−1], [row 1, columns 1…P−1], …]}  // upper triangle, P = L·(ny+nz)
 ///
+/// or, linear in the record's length, "form": "dual_delta_path" with
+///   "dual": {"horizon", "sigma", "g" as above,
+///            "taps": [[h_0 row-major (ny·nz)], …, [h_{L−1}]],   // dyadic rationals
+///            "t": t > 0, "mu": μ > 0, "u_exponent": e, "x": x > 0, "margin": ε ≥ 0}
+/// (Y1 rebuilt by the verifier from U = round(μ(t·I − T Tᵀ)⁻¹·2^−e)·2^e:
+/// verify/path_dual.h).
+///
 /// Every number is exact text (JSON number or string with a decimal or p/q).
 /// Form "delta" (signal mode only) carries the causal FIR Δ of the Poolla
 /// form: w = Δ ∗ z, and (C1) follows from ‖T_Δ‖ ≤ δ (see certificate_check.h).
@@ -47,12 +54,13 @@
 #include "model/lpv_model.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/uncertainty_toeplitz.h"
+#include "verify/path_dual.h"
 
 namespace lpvid {
 
 inline constexpr const char* kCertificateFormat = "lpvid-certificate/1";
 
-enum class CertificateForm { kDelta, kW, kDualDelta };
+enum class CertificateForm { kDelta, kW, kDualDelta, kDualDeltaPath };
 
 /// What the certificate claims. kConsistent: the model is not invalidated at
 /// (δ², d_max²) (a primal point). kInvalidated / kLowerBound: a dual point of
@@ -65,7 +73,8 @@ const char* to_string(CertificateClaim c);
 /// The dual point Y1 ⪰ 0, Y2 = (1/σ)[σ; g][σ; g]ᵀ (toeplitz/delta_form_dual.h).
 struct DualPoint {
   long horizon = 0;  ///< L
-  Mat<Rational> Y1;  ///< L·(ny+nz) square, symmetric
+  Mat<Rational> Y1;  ///< L·(ny+nz) square, symmetric (form "dual_delta")
+  PathDualRecipe path;  ///< form "dual_delta_path": Y1 is rebuilt from it (verify/path_dual.h)
   Mat<Rational> g;   ///< n × ny
   Rational sigma;    ///< σ > 0
 };

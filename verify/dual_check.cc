@@ -6,9 +6,60 @@
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/fir.h"
 #include "verify/exact_psd.h"
+#include "verify/path_dual.h"
 #include "verify/verdict_text.h"
 
 namespace lpvid {
+namespace {
+
+/// Step 7: the exact bound against the claim; appends to `d`. Empty when it holds.
+std::string bound_problem(const Certificate& c, const Rational& bound, std::ostringstream& d) {
+  if (c.claim == CertificateClaim::kInvalidated) {
+    if (!(bound > 0))
+      return "the dual point does not prove infeasibility: beta - delta2*tr(U) - N*dmax2*sigma = " + approx_text(bound, 8) +
+             " is not > 0";
+    d << "; beta - delta2*tr(U) - N*dmax2*sigma = " << approx_text(bound, 8) << " > 0";
+  } else {
+    if (bound < c.lower_bound)
+      return "the dual point gives the lower bound " + approx_text(bound, 8) + ", below the claimed " + approx_text(c.lower_bound, 8);
+    d << "; certified lower bound " << approx_text(bound, 8) << " >= claimed " << approx_text(c.lower_bound, 8);
+  }
+  return "";
+}
+
+/// Steps 6–8 for the compact form (verify/path_dual.h): the point is rebuilt
+/// from its recipe; the dual equality holds by the construction of E; what is
+/// checked is ‖E‖_F² ≤ x·ε/2, the bound, and U + (ε/2)·I ⪰ 0.
+CertificateVerdict check_path_dual(const Certificate& c, const Simulation<Rational>& sim, const Mat<Rational>& r,
+                                   Eigen::Index L, std::string details) {
+  const Eigen::Index ny = c.model.ny, nz = c.model.nz();
+  const PathDualRecipe& p = c.dual.path;
+  if (p.taps.rows() != L) return invalid_verdict("dual.taps has " + std::to_string(p.taps.rows()) + " rows, not the horizon", details);
+  const PathDualGrid grid = path_dual_grid(p, ny, nz);
+  if (!grid.problem.empty()) return invalid_verdict("the dual recipe gives no point: " + grid.problem, details);
+  const PathDualSums sums = path_dual_sums(p, grid.U, ny, nz);
+  if (!sums.problem.empty()) return invalid_verdict("the dual recipe gives no point: " + sums.problem, details);
+  const PathDualValue v = path_dual_value(p, sums, fir_adjoint(c.dual.g, sim.z, L), c.dual.g, c.dual.sigma, r, ny, nz);
+  std::ostringstream d;
+  d << details << ", compact dual of horizon " << L << " rebuilt from " << L * ny * nz
+    << " taps; dual equality made exact by the correction E";
+  const Rational allowance = p.x * p.margin / Rational(2);
+  if (v.E_norm2 > allowance)
+    return invalid_verdict("the correction E of the dual equality is too large for the margin: ||E||_F^2 = " +
+                               approx_text(v.E_norm2, 8) + " > x*margin/2 = " + approx_text(allowance, 8),
+                           d.str());
+  d << "; ||E||_F^2 = " << approx_text(v.E_norm2, 3) << " <= x*margin/2";
+  const Rational bound = dual_bound(v.terms, c.objective, c.delta2, c.dmax2, c.lambda);
+  if (std::string why = bound_problem(c, bound, d); !why.empty()) return invalid_verdict(why, d.str());
+  const PsdResult psd = path_dual_psd(p, grid.U, true);
+  if (psd.verdict == PsdVerdict::kNotPsd)
+    return invalid_verdict("U + (margin/2)*I is not PSD (" + psd.reason + "), so Y1 is not shown PSD", d.str());
+  d << "; U + (margin/2)*I (size " << grid.U.rows() << ") is " << verdict_word(psd.verdict) << " ("
+    << (psd.decided_by_filter ? "floating filter with rigorous bound" : "exact elimination") << "), so Y1 is PSD";
+  return {true, "", d.str(), "", ""};
+}
+
+}  // namespace
 
 CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Rational>& exp, const Simulation<Rational>& sim,
                                     std::string details) {
@@ -28,6 +79,7 @@ CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Ratio
   // 5. σ > 0.
   if (!(c.dual.sigma > 0)) return invalid_verdict("dual.sigma must be > 0", details);
   const Mat<Rational> r = exp.y - sim.output;
+  if (c.form == CertificateForm::kDualDeltaPath) return check_path_dual(c, sim, r, L, std::move(details));
   // 6. Dual equality, exactly.
   const Mat<Rational> omega = block_diagonal_sums(c.dual.Y1, L, ny, nz);
   const Mat<Rational> adj = fir_adjoint(c.dual.g, sim.z, L);
@@ -43,19 +95,7 @@ CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Ratio
   const Rational bound = dual_bound(terms, c.objective, c.delta2, c.dmax2, c.lambda);
   std::ostringstream d;
   d << details << ", dual horizon " << L << "; dual equality holds exactly for " << L << " taps";
-  if (c.claim == CertificateClaim::kInvalidated) {
-    if (!(bound > 0))
-      return invalid_verdict("the dual point does not prove infeasibility: beta - delta2*tr(U) - N*dmax2*sigma = " + approx_text(bound, 8) +
-                         " is not > 0",
-                     d.str());
-    d << "; beta - delta2*tr(U) - N*dmax2*sigma = " << approx_text(bound, 8) << " > 0";
-  } else {
-    if (bound < c.lower_bound)
-      return invalid_verdict("the dual point gives the lower bound " + approx_text(bound, 8) + ", below the claimed " +
-                         approx_text(c.lower_bound, 8),
-                     d.str());
-    d << "; certified lower bound " << approx_text(bound, 8) << " >= claimed " << approx_text(c.lower_bound, 8);
-  }
+  if (std::string why = bound_problem(c, bound, d); !why.empty()) return invalid_verdict(why, d.str());
   // 8. Y1 ⪰ 0, exactly.
   const PsdResult psd = decide_psd(c.dual.Y1);
   if (psd.verdict == PsdVerdict::kNotPsd)

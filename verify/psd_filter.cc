@@ -154,6 +154,11 @@ std::string floating_environment_problem() {
   return contraction_problem();
 }
 
+/// The theorem applied to A (upper triangle filled): proves PD every real
+/// matrix within the radius of A (rounding of the input when not
+/// `exact_entries`, always the underflow term).
+static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFilterResult out);
+
 PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
   PsdFilterResult out;
   const Eigen::Index N = M.rows();
@@ -171,14 +176,10 @@ PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
     return out;
   }
   const std::size_t n = static_cast<std::size_t>(N);
-
-  // A = fl(M), upper triangle; maxdiag, tr(A) exactly, max |A_ij|.
   UpperMatrix A;
   A.n = n;
   A.a.assign(n * n, 0.0);
-  double maxdiag = 0, maxabs = 0;
-  Rational trace(0);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i; j < n; ++j) {
       const double x = nearest_double(M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
       if (!std::isfinite(x)) {
@@ -186,8 +187,50 @@ PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
         return out;
       }
       A.at(i, j) = x;
-      maxabs = std::max(maxabs, std::fabs(x));
     }
+  return filter_prepared(std::move(A), false, std::move(out));
+}
+
+PsdFilterResult run_psd_filter_on_doubles(const Mat<double>& M) {
+  PsdFilterResult out;
+  const Eigen::Index N = M.rows();
+  if (N != M.cols()) {
+    out.reason = "not square";
+    return out;
+  }
+  if (N == 0) {
+    out.proved_pd = true;
+    out.reason = "empty matrix";
+    return out;
+  }
+  if (std::string p = floating_environment_problem(); !p.empty()) {
+    out.reason = "filter skipped: " + p;
+    return out;
+  }
+  const std::size_t n = static_cast<std::size_t>(N);
+  UpperMatrix A;
+  A.n = n;
+  A.a.assign(n * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i; j < n; ++j) {
+      const double x = M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+      if (!std::isfinite(x)) {
+        out.reason = "an entry is not finite";
+        return out;
+      }
+      A.at(i, j) = x;
+    }
+  return filter_prepared(std::move(A), true, std::move(out));
+}
+
+static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFilterResult out) {
+  const std::size_t n = A.n;
+  const Eigen::Index N = static_cast<Eigen::Index>(n);
+  // maxdiag, tr(A) exactly, max |A_ij|.
+  double maxdiag = 0, maxabs = 0;
+  Rational trace(0);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i; j < n; ++j) maxabs = std::max(maxabs, std::fabs(A.at(i, j)));
     const double d = A.at(i, i);
     if (d < 0) {
       out.reason = "negative diagonal entry at row " + std::to_string(i);
@@ -211,7 +254,8 @@ PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
   }
   const Rational gamma = two_n1 * u / (Rational(1) - two_n1 * u);  // γ_{2(N+1)}
   const Rational c = gamma / Rational(2) * trace + Rational(4) * eta * Nq * (two_n1 + Rational(maxdiag));
-  const Rational r = Rational(2) * u * Rational(maxabs) + Rational(2) * eta;
+  // Rad: the rounding of M to A (none when A is M itself, then only the η term is kept).
+  const Rational r = (exact_entries ? Rational(0) : Rational(2) * u * Rational(maxabs)) + Rational(2) * eta;
   const Rational shift = c + Nq * r;
   out.shift = nearest_double(shift);
 

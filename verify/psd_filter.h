@@ -91,6 +91,10 @@ struct PsdFilterResult {
 /// only the upper triangle is read). Never throws for numeric reasons.
 PsdFilterResult run_psd_filter(const Mat<Rational>& M);
 
+/// The same for a matrix whose entries are exactly the given doubles (no
+/// rounding of the input: the radius keeps only the underflow term).
+PsdFilterResult run_psd_filter_on_doubles(const Mat<double>& M);
+
 /// Why the floating-point environment does not meet the assumptions above,
 /// or an empty string when it does (exposed for tests and diagnostics).
 std::string floating_environment_problem();

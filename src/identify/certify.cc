@@ -353,12 +353,12 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
 
   const auto lower_from = [&](const DeltaFormSolution& s) {
     if (s.dual_c1.size() == 0) return;
-    const DualOutcome d = certify_dual(model, exp, sim, s.dual_c1, s.dual_c2, o, lower_certificate_path(o.certificate_path));
+    const DualOutcome d = certify_dual(model, exp, sim, s, o, lower_certificate_path(o.certificate_path));
     if (d.verified && (!out.lower.verified || d.bound > out.lower.value)) {
       out.lower.verified = true;
       out.lower.value = d.bound;
       out.lower.certificate = d.certificate_path;
-      out.lower.verifier_details = d.verifier_details;
+      out.lower.verifier_details = d.verifier_details + (d.note.empty() ? "" : " (" + d.note + ")");
       out.lower.reason.clear();
     } else if (!out.lower.verified) {
       out.lower.reason = d.reason;
@@ -386,7 +386,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
         full = solve_for_certificate(sim, r, n, obj, o, solver, 0, false, true);
       }
       if (!out.verified && full.solve.status == SolveStatus::kPrimalInfeasible && full.dual_c1.size() > 0) {
-        const DualOutcome d = certify_dual(model, exp, sim, full.dual_c1, full.dual_c2, o, o.certificate_path);
+        const DualOutcome d = certify_dual(model, exp, sim, full, o, o.certificate_path);
         out.invalidated = d.verified;
         out.lower.seconds = d.seconds;
         out.lower.verifier_details = d.verifier_details;

@@ -64,6 +64,9 @@ struct CertifyOptions {
   /// then unused); if the barrier fails numerically, the SDP backend solves
   /// the full horizon.
   bool structured = true;
+  /// Write lower-end / invalidation certificates in the dense form (the full
+  /// dual matrix Y1) even when the compact form (verify/path_dual.h) applies.
+  bool dense_dual = false;
   long full_horizon_limit = 400;
   /// A weighted objective λδ² + (1−λ)d_max² is meant for z and y scaled by
   /// powers of ten to RMS ~1 (identify/bound_scaling.h); the certificate

@@ -9,6 +9,7 @@
 #include "toeplitz/fir.h"
 #include "verify/certificate_check.h"
 #include "verify/certificate_file.h"
+#include "verify/path_dual.h"
 #include "verify/psd_filter.h"
 
 namespace lpvid {
@@ -71,12 +72,60 @@ double best_sigma(double trU, double trV, double gg, double gr, double N, DualCl
   return value(refined) >= best_value ? refined : best;
 }
 
-}  // namespace
 
 
-DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                         const Simulation<Rational>& sim, const Mat<double>& Y1_in, const Mat<double>& Y2_in,
-                         const CertifyOptions& o, const std::string& path) {
+/// The fixed values of the claim, exact (from the CLI text when given).
+struct FixedValues {
+  Rational delta2{0}, dmax2{0}, lambda{0};
+};
+FixedValues fixed_values(const CertifyOptions& o, DualClaim claim) {
+  const auto exact_of = [](const std::string& text, double value) {
+    return rational_from_text(text.empty() ? double_to_text(value) : text);
+  };
+  FixedValues f;
+  if (o.objective.delta_fixed()) f.delta2 = exact_of(o.fixed_delta_text, o.objective.delta) * exact_of(o.fixed_delta_text, o.objective.delta);
+  if (o.objective.dmax_fixed()) f.dmax2 = exact_of(o.fixed_dmax_text, o.objective.dmax) * exact_of(o.fixed_dmax_text, o.objective.dmax);
+  if (claim == DualClaim::kWeighted) f.lambda = rational_from_text(double_to_text(o.objective.lambda));
+  return f;
+}
+
+/// The certificate around a dual point (form and dual filled by the caller).
+Certificate dual_certificate(const LpvModel<Rational>& model, DualClaim claim, const FixedValues& f, const Rational& bound,
+                             int bound_digits) {
+  Certificate c;
+  c.model = model;
+  c.mode = ToeplitzMode::kSignal;
+  c.claim = claim == DualClaim::kInvalidated ? CertificateClaim::kInvalidated : CertificateClaim::kLowerBound;
+  c.objective = claim;
+  c.delta2 = f.delta2;
+  c.dmax2 = f.dmax2;
+  c.lambda = f.lambda;
+  c.lower_bound = claim == DualClaim::kInvalidated ? Rational(0) : round_down_to_digits(bound, bound_digits);
+  return c;
+}
+
+/// Writes c, re-checks it from the file, fills `out` (removes a file that fails).
+void write_and_check(Certificate& c, const CertifyOptions& o, const std::string& path, const Rational& bound, DualOutcome& out) {
+  set_data_reference(c, o, path);
+  c.info["tool"] = "lpvid";
+  c.info["objective"] = o.objective.describe();
+  write_certificate(path, c);
+  const CertificateVerdict v = check_certificate_file(path);
+  out.verified = v.holds;
+  out.verifier_details = v.details;
+  out.bound = c.claim == CertificateClaim::kInvalidated ? bound : c.lower_bound;
+  if (!v.holds) {
+    std::remove(path.c_str());
+    out.reason = "the written dual certificate failed the exact check: " + v.reason;
+    return;
+  }
+  out.certificate_path = path;
+}
+
+
+DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                               const Simulation<Rational>& sim, const Mat<double>& Y1_in, const Mat<double>& Y2_in,
+                               const CertifyOptions& o, const std::string& path) {
   const auto t0 = std::chrono::steady_clock::now();
   DualOutcome out;
   const auto done = [&](std::string reason) {
@@ -94,14 +143,8 @@ DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Ratio
   const Mat<Rational> r = exp.y - sim.output;
   const DualClaim claim = claim_of(o.objective);
 
-  // Fixed values (exact, from the CLI text when given).
-  const auto exact_of = [](const std::string& text, double value) {
-    return rational_from_text(text.empty() ? double_to_text(value) : text);
-  };
-  Rational delta2(0), dmax2(0), lambda(0);
-  if (o.objective.delta_fixed()) delta2 = exact_of(o.fixed_delta_text, o.objective.delta) * exact_of(o.fixed_delta_text, o.objective.delta);
-  if (o.objective.dmax_fixed()) dmax2 = exact_of(o.fixed_dmax_text, o.objective.dmax) * exact_of(o.fixed_dmax_text, o.objective.dmax);
-  if (claim == DualClaim::kWeighted) lambda = rational_from_text(double_to_text(o.objective.lambda));
+  const FixedValues fixed = fixed_values(o, claim);
+  const Rational &delta2 = fixed.delta2, &dmax2 = fixed.dmax2, &lambda = fixed.lambda;
 
   // 2. Normalise (the dual is homogeneous) and round to a decimal grid.
   const double scale = std::max(Y1_in.cwiseAbs().maxCoeff(), Y2_in.col(0).cwiseAbs().maxCoeff());
@@ -180,36 +223,151 @@ DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Ratio
   if (claim == DualClaim::kInvalidated && !(bound > 0))
     return done("after rounding and the PSD margin (" + double_to_text(nearest_double(eps_q)) +
                 ") the dual point no longer proves infeasibility (margin " + double_to_text(nearest_double(bound)) + ")");
-  Certificate c;
-  c.model = model;
-  c.mode = ToeplitzMode::kSignal;
+  Certificate c = dual_certificate(model, claim, fixed, bound, 12);
   c.form = CertificateForm::kDualDelta;
-  c.claim = claim == DualClaim::kInvalidated ? CertificateClaim::kInvalidated : CertificateClaim::kLowerBound;
-  c.objective = claim;
-  c.delta2 = delta2;
-  c.dmax2 = dmax2;
-  c.lambda = lambda;
-  c.lower_bound = claim == DualClaim::kInvalidated ? Rational(0) : round_down_to_digits(bound, 12);
   c.dual.horizon = L;
   c.dual.Y1 = std::move(Y1m);
   c.dual.g = std::move(g);
   c.dual.sigma = sigma;
-  set_data_reference(c, o, path);
-  c.info["tool"] = "lpvid";
-  c.info["objective"] = o.objective.describe();
   c.info["psd_margin"] = nearest_double(eps_q);
   c.info["dual_scale"] = scale;
-  write_certificate(path, c);
-  const CertificateVerdict v = check_certificate_file(path);
-  out.verified = v.holds;
-  out.verifier_details = v.details;
-  out.bound = claim == DualClaim::kInvalidated ? bound : c.lower_bound;
-  if (!v.holds) {
-    std::remove(path.c_str());
-    return done("the written dual certificate failed the exact check: " + v.reason);
+  write_and_check(c, o, path, bound, out);
+  return done(out.reason);
+}
+
+/// The compact form (verify/path_dual.h) from a barrier's central-path point:
+/// the recipe is the point itself (taps, t, μ) with x = μ; g from Y2's first
+/// column on a decimal grid; the margin ε grows until ‖E‖_F² ≤ x·ε/4 and the
+/// rigorous filter proves U + (ε/2)·I ≻ 0 (twice what the verifier needs: a
+/// verifier built elsewhere rounds U_d differently in the last bits).
+DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                              const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
+                              const std::string& path) {
+  const auto t0 = std::chrono::steady_clock::now();
+  DualOutcome out;
+  const auto done = [&](std::string reason) {
+    out.reason = std::move(reason);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+  const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
+  const Eigen::Index L = n - leading_zero_samples(sim.z), N = n * ny;
+  if (L == 0 || nz == 0) return done("z is identically zero: no Delta form");
+  if (s.taps.rows() != L || s.taps.cols() != ny * nz || s.dual_c2.rows() != N + 1 || !(s.path_mu > 0))
+    return done("the barrier returned no central-path point of the expected size");
+  const DualClaim claim = claim_of(o.objective);
+  const FixedValues fixed = fixed_values(o, claim);
+  const Mat<Rational> r = exp.y - sim.output;
+
+  // g on a 10⁻¹⁴ grid relative to its largest entry; μ scaled alike (homogeneous).
+  const Vec<double> g_col = s.dual_c2.col(0).tail(N);
+  const double scale = std::max(g_col.cwiseAbs().maxCoeff(), 1e-300);
+  const double unit_d = 1e-14;
+  const Rational unit = power_of_ten(-14);
+  Mat<Rational> g(n, ny);
+  Mat<double> g_d(n, ny);
+  for (Eigen::Index k = 0; k < n; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i) {
+      g(k, i) = on_grid(g_col(k * ny + i) / scale, unit_d, unit);
+      g_d(k, i) = nearest_double(g(k, i));
+    }
+  PathDualRecipe recipe;
+  const double hmax = s.taps.cwiseAbs().maxCoeff();
+  recipe.taps = Mat<Rational>(L, ny * nz);
+  for (Eigen::Index l = 0; l < L; ++l)
+    for (Eigen::Index c = 0; c < ny * nz; ++c) {
+      const double h = s.taps(l, c);
+      recipe.taps(l, c) = std::fabs(h) <= 0x1.0p-80 * hmax ? Rational(0) : exact_rational_of_double(h);
+    }
+  recipe.t = exact_rational_of_double(s.delta2);
+  recipe.mu = exact_rational_of_double(s.path_mu / scale);
+  recipe.x = recipe.mu;
+  recipe.margin = Rational(0);
+  std::string problem;
+  const Mat<double> U_d = path_dual_floating_u(recipe, ny, nz, problem);
+  if (!problem.empty()) return done(problem);
+  recipe.u_exponent = path_dual_exponent(U_d);
+  const PathDualGrid grid = path_dual_round(U_d, recipe.u_exponent);
+  if (!grid.problem.empty()) return done(grid.problem);
+  const PathDualSums sums = path_dual_sums(recipe, grid.U, ny, nz);
+  if (!sums.problem.empty()) return done(sums.problem);
+  const Mat<Rational> C = fir_adjoint(g, sim.z, L);
+
+  // The margin: ‖E(ε)‖_F² ≤ x·ε/4 and the filter proves U + (ε/2)·I ≻ 0.
+  const Rational one(1);
+  PathDualValue v = path_dual_value(recipe, sums, C, g, one, r, ny, nz);
+  Rational eps = round_up_to_digits(Rational(4) * v.E_norm2 / recipe.x, 2);
+  bool ok = false;
+  for (int attempt = 0; attempt < 12 && !ok; ++attempt) {
+    recipe.margin = eps;
+    v = path_dual_value(recipe, sums, C, g, one, r, ny, nz);
+    if (v.E_norm2 * Rational(4) > recipe.x * eps) {
+      eps = round_up_to_digits(std::max(eps * Rational(2), Rational(4) * v.E_norm2 / recipe.x), 2);
+      continue;
+    }
+    // Twice the half-margin for the filter: the verifier's own rounding may differ.
+    PathDualRecipe tighter = recipe;
+    tighter.margin = eps / Rational(2);
+    const PsdResult psd = path_dual_psd(tighter, grid.U, false);
+    if (psd.verdict != PsdVerdict::kNotPsd) {
+      ok = true;
+      break;
+    }
+    const Rational floor_eps = exact_rational_of_double(std::ldexp(1.0, static_cast<int>(recipe.u_exponent)) * 64.0);
+    eps = round_up_to_digits(std::max(eps * Rational(8), floor_eps), 2);
   }
-  out.certificate_path = path;
-  return done("");
+  if (!ok) return done("no PSD margin found for the compact dual point (last tried " + double_to_text(nearest_double(eps)) + ")");
+
+  // σ, then the bound exactly.
+  double gg = 0, gr = 0;
+  const Mat<double> r_d = nearest_double(r);
+  for (Eigen::Index k = 0; k < n; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i) {
+      gg += g_d(k, i) * g_d(k, i);
+      gr += g_d(k, i) * r_d(k, i);
+    }
+  // β(σ = 1) = −(tr V + ‖g‖² + 2gᵀr) gives tr V.
+  const double trV = nearest_double(-v.terms.beta) - gg - 2 * gr;
+  const double sigma0 = s.dual_c2(0, 0) / scale;
+  const double sigma_d = best_sigma(nearest_double(v.terms.trace_U), trV, gg, gr, static_cast<double>(N), claim,
+                                    nearest_double(fixed.delta2), nearest_double(fixed.dmax2), nearest_double(fixed.lambda),
+                                    sigma0 > 0 ? sigma0 : std::sqrt(gg + 1e-300));
+  const Rational sigma = round_to_digits(sigma_d, 15);
+  if (!(sigma > 0)) return done("no positive sigma");
+  v = path_dual_value(recipe, sums, C, g, sigma, r, ny, nz);
+  const Rational bound = dual_bound(v.terms, claim, fixed.delta2, fixed.dmax2, fixed.lambda);
+  if (claim == DualClaim::kInvalidated && !(bound > 0))
+    return done("after the PSD margin the compact dual point no longer proves infeasibility (margin " +
+                double_to_text(nearest_double(bound)) + ")");
+  // The claimed lower end 10⁻⁹ (relative) below the bound: a verifier built
+  // elsewhere rebuilds U with other last bits.
+  const Rational slack = bound > 0 ? bound * power_of_ten(-9) : Rational(0);
+  Certificate c = dual_certificate(model, claim, fixed, bound - slack, 12);
+  c.form = CertificateForm::kDualDeltaPath;
+  c.dual.horizon = L;
+  c.dual.g = std::move(g);
+  c.dual.sigma = sigma;
+  c.dual.path = std::move(recipe);
+  c.info["dual_scale"] = scale;
+  write_and_check(c, o, path, bound, out);
+  return done(out.reason);
+}
+
+}  // namespace
+
+DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                         const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
+                         const std::string& path) {
+  if (s.path_mu > 0 && !o.dense_dual) {
+    DualOutcome compact = certify_dual_path(model, exp, sim, s, o, path);
+    if (compact.verified) return compact;
+    DualOutcome dense = certify_dual_dense(model, exp, sim, s.dual_c1, s.dual_c2, o, path);
+    dense.note = "compact dual form not used: " + compact.reason;
+    if (!dense.verified) dense.reason = "compact form: " + compact.reason + "; dense form: " + dense.reason;
+    dense.seconds += compact.seconds;
+    return dense;
+  }
+  return certify_dual_dense(model, exp, sim, s.dual_c1, s.dual_c2, o, path);
 }
 
 }  // namespace lpvid

@@ -23,6 +23,7 @@
 #include "core/scalar.h"
 #include "data/experiment.h"
 #include "identify/certify.h"
+#include "lmi/delta_form_lmi.h"
 #include "model/lpv_model.h"
 #include "model/simulate.h"
 
@@ -36,16 +37,21 @@ struct DualOutcome {
   double seconds = 0;            ///< building + checking
   std::string verifier_details;
   std::string certificate_path;  ///< written only when verified
+  std::string note;              ///< why the compact form was not used (when it was tried)
 };
 
-/// Steps 2–6 for the dual matrices Y1 (L·(ny+nz) square) and Y2 ((n·ny+1)
-/// square) in original units. `objective` says which claim: kFeasibility →
-/// "invalidated" (the fixed δ, d_max are the exact texts of `o`), the others
-/// → "lower_bound" on the objective (δ², d_max² or λδ² + (1−λ)d_max²).
-/// `path` is where the certificate goes. Never throws for a failed
-/// construction (verified = false with the reason).
+/// Steps 2–6 for the dual matrices of a Δ-form solve (s.dual_c1: L·(ny+nz)
+/// square, s.dual_c2: (n·ny+1) square, original units). When they come from
+/// the structured barrier's central path (s.path_mu > 0) the compact form
+/// "dual_delta_path" (verify/path_dual.h: size linear in n) is tried first,
+/// the dense form "dual_delta" when it fails or `o.dense_dual`.
+/// `objective` says which claim: kFeasibility → "invalidated" (the fixed δ,
+/// d_max are the exact texts of `o`), the others → "lower_bound" on the
+/// objective (δ², d_max² or λδ² + (1−λ)d_max²). `path` is where the
+/// certificate goes. Never throws for a failed construction (verified =
+/// false with the reason).
 DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                         const Simulation<Rational>& sim, const Mat<double>& Y1, const Mat<double>& Y2,
-                         const CertifyOptions& o, const std::string& path);
+                         const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
+                         const std::string& path);
 
 }  // namespace lpvid

@@ -438,6 +438,7 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
   out.taps = Eigen::Map<const Dense>(x.data(), L, p.q()) / kz;  // column i·nz + j: entry (i, j) over l
   out.delta2 = p.t_var ? x(nt) / (kz * kz) : objective.delta * objective.delta;
   out.dmax2 = feasibility ? objective.dmax * objective.dmax : s * sigma_r * sigma_r;
+  out.path_mu = found_feasible ? 0.0 : mu;  // a point found on the way is not centred
   out.solve.status = infeasible ? SolveStatus::kPrimalInfeasible : SolveStatus::kOptimal;
   out.solve.iterations = newton;
   // objective in original units: σ_r² × the scaled one (c_t was set so that

@@ -18,6 +18,7 @@
 #include "support/gen_identify.h"
 #include "support/scratch_dir.h"
 #include "verify/certificate_check.h"
+#include "core/input_error.h"
 #include "verify/certificate_file.h"
 
 namespace lpvid {
@@ -29,7 +30,14 @@ using namespace gen;
 CertificateVerdict check_tampered(const ScratchDir& dir, const std::string& name, const Certificate& c) {
   const std::string path = dir.file(name);
   write_certificate(path, c);
-  return check_certificate_file(path);
+  try {
+    return check_certificate_file(path);
+  } catch (const InputError& e) {  // refused when read: the claim is not accepted either
+    CertificateVerdict refused;
+    refused.holds = false;
+    refused.reason = e.what();
+    return refused;
+  }
 }
 
 RC_GTEST_PROP(DualCertificateProperty, InvalidatedAndConsistentByConstructionNeverBoth, ()) {
@@ -54,7 +62,9 @@ RC_GTEST_PROP(DualCertificateProperty, InvalidatedAndConsistentByConstructionNev
   RC_PRE(nr > 1e-6 && nz > 1e-9);
   const double delta = nr / (4 * nz), dmax = nr / (2 * std::sqrt(static_cast<double>(s.r.size())));
   const std::string path = dir.file("no.json");
-  const CertifiedBounds no = certify_fixed_model(ic.model, ic.exp, certify_options(feasibility_objective(delta, dmax), data, path), *solver);
+  CertifyOptions no_options = certify_options(feasibility_objective(delta, dmax), data, path);
+  no_options.dense_dual = *rc::gen::arbitrary<bool>();  // both forms of the dual certificate
+  const CertifiedBounds no = certify_fixed_model(ic.model, ic.exp, no_options, *solver);
   RC_ASSERT(!no.verified);
   RC_ASSERT(no.invalidated);
   const CertificateVerdict v = check_certificate_file(path);
@@ -69,19 +79,34 @@ RC_GTEST_PROP(DualCertificateProperty, InvalidatedAndConsistentByConstructionNev
     t.dmax2 = rational_from_text(double_to_text(ic.dmax)) * rational_from_text(double_to_text(ic.dmax));
     RC_ASSERT(!check_tampered(dir, "t1.json", t).holds);
   }
-  {  // one entry of W changed: the dual equality fails
-    Certificate t = c;
-    const Eigen::Index off = t.dual.horizon * ic.model.ny;
-    t.dual.Y1(0, off) += Rational(1, 1000000000);
-    t.dual.Y1(off, 0) = t.dual.Y1(0, off);
-    const CertificateVerdict tv = check_tampered(dir, "t2.json", t);
-    RC_ASSERT(!tv.holds);
-    RC_ASSERT(tv.reason.find("dual equality") != std::string::npos);
-  }
-  {  // a negative diagonal: Y1 is not PSD
-    Certificate t = c;
-    t.dual.Y1(0, 0) = Rational(-1);
-    RC_ASSERT(!check_tampered(dir, "t3.json", t).holds);
+  if (c.form == CertificateForm::kDualDelta) {
+    {  // one entry of W changed: the dual equality fails
+      Certificate t = c;
+      const Eigen::Index off = t.dual.horizon * ic.model.ny;
+      t.dual.Y1(0, off) += Rational(1, 1000000000);
+      t.dual.Y1(off, 0) = t.dual.Y1(0, off);
+      const CertificateVerdict tv = check_tampered(dir, "t2.json", t);
+      RC_ASSERT(!tv.holds);
+      RC_ASSERT(tv.reason.find("dual equality") != std::string::npos);
+    }
+    {  // a negative diagonal: Y1 is not PSD
+      Certificate t = c;
+      t.dual.Y1(0, 0) = Rational(-1);
+      RC_ASSERT(!check_tampered(dir, "t3.json", t).holds);
+    }
+  } else {
+    RC_ASSERT(c.form == CertificateForm::kDualDeltaPath);
+    RC_ASSERT(no_options.dense_dual == false);
+    {  // x ≤ 0: the rebuilt point is not PSD; the file is refused
+      Certificate t = c;
+      t.dual.path.x = Rational(0);
+      RC_ASSERT(!check_tampered(dir, "t2.json", t).holds);
+    }
+    {  // one tap fewer than the horizon
+      Certificate t = c;
+      t.dual.path.taps = t.dual.path.taps.topRows(t.dual.path.taps.rows() - 1).eval();
+      RC_ASSERT(!check_tampered(dir, "t3.json", t).holds);
+    }
   }
   {  // g changed: the dual equality (or the margin) fails
     Certificate t = c;

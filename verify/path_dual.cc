@@ -1,0 +1,265 @@
+#include "verify/path_dual.h"
+
+#include <gmp.h>
+
+#include <cmath>
+
+#include <Eigen/Cholesky>
+
+#include "core/number_text.h"
+#include "verify/gmp_raii.h"
+#include "verify/power_of_two.h"
+#include "verify/psd_filter.h"
+
+namespace lpvid {
+namespace {
+
+using psd_detail::Mpz;
+using psd_detail::MpzArray;
+using psd_detail::mpz_to_rational;
+
+/// z·2^k as a rational.
+Rational scaled(mpz_srcptr z, long k) { return mpz_to_rational(z) * power_of_two(k); }
+
+/// The dense block lower-triangular Toeplitz T (L·ny × L·nz) of the taps.
+template <typename S>
+Mat<S> tap_toeplitz(const Mat<S>& taps, Eigen::Index ny, Eigen::Index nz) {
+  const Eigen::Index L = taps.rows();
+  Mat<S> T = Mat<S>::Zero(L * ny, L * nz);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index b = 0; b <= a; ++b)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
+  return T;
+}
+
+}  // namespace
+
+Mat<double> path_dual_floating_u(const PathDualRecipe& recipe, Eigen::Index ny, Eigen::Index nz, std::string& problem) {
+  const Eigen::Index L = recipe.taps.rows(), P = L * ny;
+  if (recipe.taps.cols() != ny * nz || L == 0) {
+    problem = "the taps have the wrong shape";
+    return {};
+  }
+  const Mat<double> h = nearest_double(recipe.taps);
+  const double t = nearest_double(recipe.t), mu = nearest_double(recipe.mu);
+  if (!h.allFinite() || !std::isfinite(t) || !(mu > 0) || !std::isfinite(mu)) {
+    problem = "the recipe's taps, t or mu are not finite positive doubles";
+    return {};
+  }
+  // G = T Tᵀ by G(a, a') = G(a−1, a'−1) + h_a h_a'ᵀ (blocks), then S = t·I − G.
+  Mat<double> S(P, P);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index a2 = 0; a2 < L; ++a2)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index i2 = 0; i2 < ny; ++i2) {
+          double v = a > 0 && a2 > 0 ? S((a - 1) * ny + i, (a2 - 1) * ny + i2) : 0.0;
+          for (Eigen::Index j = 0; j < nz; ++j) v += h(a, i * nz + j) * h(a2, i2 * nz + j);
+          S(a * ny + i, a2 * ny + i2) = v;
+        }
+  S = -S;
+  S.diagonal().array() += t;
+  Eigen::LLT<Mat<double>> llt(S);
+  if (llt.info() != Eigen::Success) {
+    problem = "t*I - T*T^T is not positive definite in floating point (the recipe gives no U)";
+    return {};
+  }
+  Mat<double> U = llt.solve(Mat<double>::Identity(P, P));
+  U *= mu;
+  return U;
+}
+
+long path_dual_exponent(const Mat<double>& U_d) {
+  const double m = U_d.size() ? U_d.cwiseAbs().maxCoeff() : 0.0;
+  if (!(m > 0) || !std::isfinite(m)) return 0;
+  return static_cast<long>(std::ilogb(m)) - 51;
+}
+
+PathDualGrid path_dual_round(const Mat<double>& U_d, long u_exponent) {
+  PathDualGrid out;
+  const Eigen::Index P = U_d.rows();
+  out.U.resize(P, P);
+  const double limit = 0x1.0p53;
+  for (Eigen::Index i = 0; i < P; ++i)
+    for (Eigen::Index j = i; j < P; ++j) {
+      const double v = std::nearbyint(std::ldexp(U_d(i, j), static_cast<int>(-u_exponent)));
+      if (!std::isfinite(v) || std::fabs(v) >= limit) {
+        out.problem = "U = mu*(t*I - T*T^T)^-1 does not fit the grid 2^" + std::to_string(u_exponent) +
+                      " (an entry reaches 2^53 grid units)";
+        out.U.resize(0, 0);
+        return out;
+      }
+      out.U(i, j) = v;
+      out.U(j, i) = v;
+    }
+  return out;
+}
+
+PathDualGrid path_dual_grid(const PathDualRecipe& recipe, Eigen::Index ny, Eigen::Index nz) {
+  PathDualGrid out;
+  const Mat<double> U_d = path_dual_floating_u(recipe, ny, nz, out.problem);
+  if (!out.problem.empty()) return out;
+  return path_dual_round(U_d, recipe.u_exponent);
+}
+
+PathDualSums path_dual_sums(const PathDualRecipe& recipe, const Mat<double>& U_grid, Eigen::Index ny, Eigen::Index nz) {
+  PathDualSums out;
+  const Eigen::Index L = recipe.taps.rows(), P = L * ny, q = ny * nz;
+  const std::size_t Pu = static_cast<std::size_t>(P), Nz = static_cast<std::size_t>(nz);
+  // Taps as H·2^f with H integer: f = −(largest binary exponent of a denominator).
+  long max_den_bits = 0;
+  for (Eigen::Index l = 0; l < L; ++l)
+    for (Eigen::Index c = 0; c < q; ++c) {
+      mpz_srcptr den = mpq_denref(recipe.taps(l, c).mpq());
+      if (mpz_popcount(den) != 1) {
+        out.problem = "tap " + std::to_string(l) + " entry " + std::to_string(c) + " is not a dyadic rational";
+        return out;
+      }
+      max_den_bits = std::max(max_den_bits, static_cast<long>(mpz_sizeinbase(den, 2)) - 1);
+    }
+  const long f = -max_den_bits;
+  // Hcol[j][k·ny + i'] = H(k, i'·nz + j).
+  MpzArray H(Pu * Nz);
+  for (Eigen::Index k = 0; k < L; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i)
+      for (Eigen::Index j = 0; j < nz; ++j) {
+        mpq_srcptr h = recipe.taps(k, i * nz + j).mpq();
+        const long bits = static_cast<long>(mpz_sizeinbase(mpq_denref(h), 2)) - 1;
+        mpz_mul_2exp(H[static_cast<std::size_t>(j) * Pu + static_cast<std::size_t>(k * ny + i)], mpq_numref(h),
+                     static_cast<mp_bitcnt_t>(max_den_bits - bits));
+      }
+  // D(p, p2) = Ũ(p, p2) + D(p + ny, p2 + ny): partial block-diagonal sums.
+  MpzArray D(Pu * Pu);
+  for (std::size_t p = Pu; p-- > 0;)
+    for (std::size_t p2 = Pu; p2-- > 0;) {
+      mpz_ptr d = D[p * Pu + p2];
+      mpz_set_d(d, U_grid(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p2)));
+      const std::size_t s = static_cast<std::size_t>(ny);
+      if (p + s < Pu && p2 + s < Pu) mpz_add(d, d, D[(p + s) * Pu + p2 + s]);
+    }
+  // M(p, j) = Σ_p2 D(p, p2)·Hcol_j(p2): Ω_l(UT)(i, j) = M(l·ny + i, j)·2^(e+f),
+  // tr(TᵀUT) = Σ_{p, j} Hcol_j(p)·M(p, j)·2^(e+2f).
+  out.omega_UT = Mat<Rational>(L, q);
+  Mpz acc, tr;
+  for (std::size_t p = 0; p < Pu; ++p)
+    for (std::size_t j = 0; j < Nz; ++j) {
+      mpz_set_ui(acc.z, 0);
+      for (std::size_t p2 = 0; p2 < Pu; ++p2) mpz_addmul(acc.z, D[p * Pu + p2], H[j * Pu + p2]);
+      const Eigen::Index l = static_cast<Eigen::Index>(p) / ny, i = static_cast<Eigen::Index>(p) % ny;
+      out.omega_UT(l, i * nz + static_cast<Eigen::Index>(j)) = scaled(acc.z, recipe.u_exponent + f);
+      mpz_addmul(tr.z, H[j * Pu + p], acc.z);
+    }
+  out.tr_TUT = scaled(tr.z, recipe.u_exponent + 2 * f);
+  Mpz diag;
+  for (std::size_t p = 0; p < Pu; ++p) {
+    Mpz v;
+    mpz_set_d(v.z, U_grid(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p)));
+    mpz_add(diag.z, diag.z, v.z);
+  }
+  out.tr_U = scaled(diag.z, recipe.u_exponent);
+  out.tr_TT = Rational(0);
+  for (Eigen::Index l = 0; l < L; ++l) {
+    Rational s(0);
+    for (Eigen::Index c = 0; c < q; ++c) s += recipe.taps(l, c) * recipe.taps(l, c);
+    out.tr_TT += Rational(static_cast<long>(L - l)) * s;
+  }
+  return out;
+}
+
+PathDualValue path_dual_value(const PathDualRecipe& recipe, const PathDualSums& sums, const Mat<Rational>& C,
+                              const Mat<Rational>& g, const Rational& sigma, const Mat<Rational>& r, Eigen::Index ny,
+                              Eigen::Index nz) {
+  PathDualValue out;
+  const Eigen::Index L = recipe.taps.rows(), q = ny * nz, n = g.rows();
+  const Rational& eps = recipe.margin;
+  out.R = Mat<Rational>(L, q);
+  out.E_norm2 = Rational(0);
+  Rational h_dot_R(0);
+  for (Eigen::Index l = 0; l < L; ++l) {
+    const Rational len(static_cast<long>(L - l));
+    Rational row(0);
+    for (Eigen::Index c = 0; c < q; ++c) {
+      // Ω_l(U'T) = Ω_l(UT) + ε·(L − l)·h_l.
+      const Rational R = C(l, c) + sums.omega_UT(l, c) + eps * len * recipe.taps(l, c);
+      row += R * R;
+      h_dot_R += recipe.taps(l, c) * R;
+      out.R(l, c) = R;
+    }
+    out.E_norm2 += row / len;
+  }
+  const Rational P(static_cast<long>(L * ny)), Q(static_cast<long>(L * nz));
+  out.terms.trace_U = sums.tr_U + eps * P;
+  const Rational trV = sums.tr_TUT + eps * sums.tr_TT - Rational(2) * h_dot_R + recipe.x * Q;
+  Rational gg(0), gr(0);
+  for (Eigen::Index k = 0; k < n; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i) {
+      gg += g(k, i) * g(k, i);
+      gr += g(k, i) * r(k, i);
+    }
+  out.terms.N_sigma = Rational(static_cast<long>(n * ny)) * sigma;
+  out.terms.beta = -(trV + gg / sigma + Rational(2) * gr);
+  return out;
+}
+
+PsdResult path_dual_psd(const PathDualRecipe& recipe, const Mat<double>& U_grid, bool exact_fallback) {
+  const Eigen::Index P = U_grid.rows();
+  // A = Ũ + (ε/2)·2^−e·I with the diagonal rounded down: A ⪰ 0 implies the exact matrix is.
+  const Rational half_margin_units = recipe.margin / Rational(2) * power_of_two(-recipe.u_exponent);
+  Mat<double> A = U_grid;
+  for (Eigen::Index i = 0; i < P; ++i) {
+    const Rational exact = Rational(U_grid(i, i)) + half_margin_units;
+    double d = nearest_double(exact);
+    if (Rational(d) > exact) d = std::nextafter(d, -INFINITY);
+    A(i, i) = d;
+  }
+  PsdResult out;
+  const PsdFilterResult f = run_psd_filter_on_doubles(A);
+  if (f.proved_pd) {
+    out.verdict = PsdVerdict::kPositiveDefinite;
+    out.reason = f.reason;
+    out.decided_by_filter = true;
+    out.method = PsdMethod::kFloatingFilter;
+    return out;
+  }
+  if (!exact_fallback) {
+    out.verdict = PsdVerdict::kNotPsd;
+    out.reason = "not proved by the floating filter (" + f.reason + "); exact elimination not run";
+    return out;
+  }
+  const Rational unit = power_of_two(recipe.u_exponent);
+  Mat<Rational> M(P, P);
+  for (Eigen::Index i = 0; i < P; ++i)
+    for (Eigen::Index j = i; j < P; ++j) {
+      M(i, j) = Rational(U_grid(i, j)) * unit;
+      if (i == j) M(i, i) += recipe.margin / Rational(2);
+      M(j, i) = M(i, j);
+    }
+  return decide_psd(M);
+}
+
+Mat<Rational> path_dual_expand(const PathDualRecipe& recipe, const Mat<double>& U_grid, const Mat<Rational>& R,
+                               Eigen::Index ny, Eigen::Index nz) {
+  const Eigen::Index L = recipe.taps.rows(), P = L * ny, Q = L * nz;
+  const Rational unit = power_of_two(recipe.u_exponent);
+  Mat<Rational> U(P, P);
+  for (Eigen::Index i = 0; i < P; ++i)
+    for (Eigen::Index j = 0; j < P; ++j) U(i, j) = Rational(U_grid(i, j)) * unit + (i == j ? recipe.margin : Rational(0));
+  Mat<Rational> E = Mat<Rational>::Zero(P, Q);
+  for (Eigen::Index l = 0; l < L; ++l)
+    for (Eigen::Index b = 0; b + l < L; ++b)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index j = 0; j < nz; ++j)
+          E((b + l) * ny + i, b * nz + j) = R(l, i * nz + j) / Rational(static_cast<long>(L - l));
+  const Mat<Rational> T = tap_toeplitz(recipe.taps, ny, nz);
+  const Mat<Rational> UT = U * T;
+  Mat<Rational> Y1(P + Q, P + Q);
+  Y1.topLeftCorner(P, P) = U;
+  Y1.topRightCorner(P, Q) = E - UT;
+  Y1.bottomLeftCorner(Q, P) = (E - UT).transpose();
+  Mat<Rational> V = T.transpose() * UT - T.transpose() * E - E.transpose() * T;
+  for (Eigen::Index i = 0; i < Q; ++i) V(i, i) += recipe.x;
+  Y1.bottomRightCorner(Q, Q) = V;
+  return Y1;
+}
+
+}  // namespace lpvid
