@@ -101,7 +101,7 @@ void parse_dual_claim(const JsonNode& root, const std::string& file, const std::
   const bool path = c.form == CertificateForm::kDualDeltaPath;
   for (const auto& [key, value] : dual.members) {
     const bool common = key == "horizon" || key == "sigma" || key == "g";
-    const bool own = path ? (key == "taps" || key == "t" || key == "mu" || key == "u_exponent" || key == "x" || key == "margin")
+    const bool own = path ? (key == "taps" || key == "t" || key == "mu" || key == "u_exponent" || key == "x" || key == "u_floor")
                           : key == "Y1";
     if (!common && !own) throw_input_error(file, value.line, "dual." + key, "unknown key for form \"" + form + "\"");
   }
@@ -126,7 +126,7 @@ void parse_dual_claim(const JsonNode& root, const std::string& file, const std::
     positive("t", p.t, true);
     positive("mu", p.mu, true);
     positive("x", p.x, true);
-    positive("margin", p.margin, false);
+    positive("u_floor", p.floor, false);
     const JsonNode& e = member(dual, "u_exponent", file, "dual");
     const Rational ev = number_from_json<Rational>(e, file, "dual.u_exponent");
     if (mpz_cmp_ui(mpq_denref(ev.mpq()), 1) != 0 || ev < Rational(-4000) || ev > Rational(4000))
@@ -264,7 +264,7 @@ void dual_claim_json(const Certificate& c, nlohmann::ordered_json& j) {
     dual["mu"] = rational_to_json(p.mu);
     dual["u_exponent"] = p.u_exponent;
     dual["x"] = rational_to_json(p.x);
-    dual["margin"] = rational_to_json(p.margin);
+    dual["u_floor"] = rational_to_json(p.floor);
     dual["taps"] = matrix_json(p.taps);
     j["dual"] = dual;
     return;

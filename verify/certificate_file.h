@@ -37,7 +37,7 @@
 /// or, linear in the record's length, "form": "dual_delta_path" with
 ///   "dual": {"horizon", "sigma", "g" as above,
 ///            "taps": [[h_0 row-major (ny·nz)], …, [h_{L−1}]],   // dyadic rationals
-///            "t": t > 0, "mu": μ > 0, "u_exponent": e, "x": x > 0, "margin": ε ≥ 0}
+///            "t": t > 0, "mu": μ > 0, "u_exponent": e, "x": x > 0, "u_floor": γ ≥ 0}
 /// (Y1 rebuilt by the verifier from U = round(μ(t·I − T Tᵀ)⁻¹·2^−e)·2^e:
 /// verify/path_dual.h).
 ///

@@ -29,7 +29,7 @@ std::string bound_problem(const Certificate& c, const Rational& bound, std::ostr
 
 /// Steps 6–8 for the compact form (verify/path_dual.h): the point is rebuilt
 /// from its recipe; the dual equality holds by the construction of E; what is
-/// checked is ‖E‖_F² ≤ x·ε/2, the bound, and U + (ε/2)·I ⪰ 0.
+/// checked is ‖E‖_F² ≤ x·γ, the bound, and U − γ·I ⪰ 0.
 CertificateVerdict check_path_dual(const Certificate& c, const Simulation<Rational>& sim, const Mat<Rational>& r,
                                    Eigen::Index L, std::string details) {
   const Eigen::Index ny = c.model.ny, nz = c.model.nz();
@@ -43,18 +43,18 @@ CertificateVerdict check_path_dual(const Certificate& c, const Simulation<Ration
   std::ostringstream d;
   d << details << ", compact dual of horizon " << L << " rebuilt from " << L * ny * nz
     << " taps; dual equality made exact by the correction E";
-  const Rational allowance = p.x * p.margin / Rational(2);
+  const Rational allowance = p.x * p.floor;
   if (v.E_norm2 > allowance)
-    return invalid_verdict("the correction E of the dual equality is too large for the margin: ||E||_F^2 = " +
-                               approx_text(v.E_norm2, 8) + " > x*margin/2 = " + approx_text(allowance, 8),
+    return invalid_verdict("the correction E of the dual equality is too large for the floor: ||E||_F^2 = " +
+                               approx_text(v.E_norm2, 8) + " > x*u_floor = " + approx_text(allowance, 8),
                            d.str());
-  d << "; ||E||_F^2 = " << approx_text(v.E_norm2, 3) << " <= x*margin/2";
+  d << "; ||E||_F^2 = " << approx_text(v.E_norm2, 3) << " <= x*u_floor";
   const Rational bound = dual_bound(v.terms, c.objective, c.delta2, c.dmax2, c.lambda);
   if (std::string why = bound_problem(c, bound, d); !why.empty()) return invalid_verdict(why, d.str());
   const PsdResult psd = path_dual_psd(p, grid.U, true);
   if (psd.verdict == PsdVerdict::kNotPsd)
-    return invalid_verdict("U + (margin/2)*I is not PSD (" + psd.reason + "), so Y1 is not shown PSD", d.str());
-  d << "; U + (margin/2)*I (size " << grid.U.rows() << ") is " << verdict_word(psd.verdict) << " ("
+    return invalid_verdict("U - u_floor*I is not PSD (" + psd.reason + "), so Y1 is not shown PSD", d.str());
+  d << "; U - u_floor*I (size " << grid.U.rows() << ") is " << verdict_word(psd.verdict) << " ("
     << (psd.decided_by_filter ? "floating filter with rigorous bound" : "exact elimination") << "), so Y1 is PSD";
   return {true, "", d.str(), "", ""};
 }

@@ -157,12 +157,6 @@ PathDualSums path_dual_sums(const PathDualRecipe& recipe, const Mat<double>& U_g
     mpz_add(diag.z, diag.z, v.z);
   }
   out.tr_U = scaled(diag.z, recipe.u_exponent);
-  out.tr_TT = Rational(0);
-  for (Eigen::Index l = 0; l < L; ++l) {
-    Rational s(0);
-    for (Eigen::Index c = 0; c < q; ++c) s += recipe.taps(l, c) * recipe.taps(l, c);
-    out.tr_TT += Rational(static_cast<long>(L - l)) * s;
-  }
   return out;
 }
 
@@ -171,7 +165,6 @@ PathDualValue path_dual_value(const PathDualRecipe& recipe, const PathDualSums& 
                               Eigen::Index nz) {
   PathDualValue out;
   const Eigen::Index L = recipe.taps.rows(), q = ny * nz, n = g.rows();
-  const Rational& eps = recipe.margin;
   out.R = Mat<Rational>(L, q);
   out.E_norm2 = Rational(0);
   Rational h_dot_R(0);
@@ -179,17 +172,16 @@ PathDualValue path_dual_value(const PathDualRecipe& recipe, const PathDualSums& 
     const Rational len(static_cast<long>(L - l));
     Rational row(0);
     for (Eigen::Index c = 0; c < q; ++c) {
-      // Ω_l(U'T) = Ω_l(UT) + ε·(L − l)·h_l.
-      const Rational R = C(l, c) + sums.omega_UT(l, c) + eps * len * recipe.taps(l, c);
+      const Rational R = C(l, c) + sums.omega_UT(l, c);
       row += R * R;
       h_dot_R += recipe.taps(l, c) * R;
       out.R(l, c) = R;
     }
     out.E_norm2 += row / len;
   }
-  const Rational P(static_cast<long>(L * ny)), Q(static_cast<long>(L * nz));
-  out.terms.trace_U = sums.tr_U + eps * P;
-  const Rational trV = sums.tr_TUT + eps * sums.tr_TT - Rational(2) * h_dot_R + recipe.x * Q;
+  const Rational Q(static_cast<long>(L * nz));
+  out.terms.trace_U = sums.tr_U;
+  const Rational trV = sums.tr_TUT - Rational(2) * h_dot_R + recipe.x * Q;
   Rational gg(0), gr(0);
   for (Eigen::Index k = 0; k < n; ++k)
     for (Eigen::Index i = 0; i < ny; ++i) {
@@ -203,11 +195,11 @@ PathDualValue path_dual_value(const PathDualRecipe& recipe, const PathDualSums& 
 
 PsdResult path_dual_psd(const PathDualRecipe& recipe, const Mat<double>& U_grid, bool exact_fallback) {
   const Eigen::Index P = U_grid.rows();
-  // A = Ũ + (ε/2)·2^−e·I with the diagonal rounded down: A ⪰ 0 implies the exact matrix is.
-  const Rational half_margin_units = recipe.margin / Rational(2) * power_of_two(-recipe.u_exponent);
+  // A = Ũ − γ·2^−e·I with the diagonal rounded down: A ⪰ 0 implies the exact matrix is.
+  const Rational floor_units = recipe.floor * power_of_two(-recipe.u_exponent);
   Mat<double> A = U_grid;
   for (Eigen::Index i = 0; i < P; ++i) {
-    const Rational exact = Rational(U_grid(i, i)) + half_margin_units;
+    const Rational exact = Rational(U_grid(i, i)) - floor_units;
     double d = nearest_double(exact);
     if (Rational(d) > exact) d = std::nextafter(d, -INFINITY);
     A(i, i) = d;
@@ -231,7 +223,7 @@ PsdResult path_dual_psd(const PathDualRecipe& recipe, const Mat<double>& U_grid,
   for (Eigen::Index i = 0; i < P; ++i)
     for (Eigen::Index j = i; j < P; ++j) {
       M(i, j) = Rational(U_grid(i, j)) * unit;
-      if (i == j) M(i, i) += recipe.margin / Rational(2);
+      if (i == j) M(i, i) -= recipe.floor;
       M(j, i) = M(i, j);
     }
   return decide_psd(M);
@@ -243,7 +235,7 @@ Mat<Rational> path_dual_expand(const PathDualRecipe& recipe, const Mat<double>& 
   const Rational unit = power_of_two(recipe.u_exponent);
   Mat<Rational> U(P, P);
   for (Eigen::Index i = 0; i < P; ++i)
-    for (Eigen::Index j = 0; j < P; ++j) U(i, j) = Rational(U_grid(i, j)) * unit + (i == j ? recipe.margin : Rational(0));
+    for (Eigen::Index j = 0; j < P; ++j) U(i, j) = Rational(U_grid(i, j)) * unit;
   Mat<Rational> E = Mat<Rational>::Zero(P, Q);
   for (Eigen::Index l = 0; l < L; ++l)
     for (Eigen::Index b = 0; b + l < L; ++b)

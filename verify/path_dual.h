@@ -10,20 +10,22 @@
 /// builds the point itself:
 ///  1. U_d = μ (t·I − T Tᵀ)⁻¹ in floating point (any value would do: nothing
 ///     below trusts it), rounded to the integer grid Ũ = round(U_d·2^−e), so
-///     U = Ũ·2^e exactly, and U' = U + ε·I (the margin ε ≥ 0);
-///  2. the residual of the dual equality for W0 = −U'T,
-///       R_l = C_l(g) + Ω_l(U'T)          (l = 0 … L−1),
+///     U = Ũ·2^e exactly;
+///  2. the residual of the dual equality for W0 = −UT,
+///       R_l = C_l(g) + Ω_l(UT)          (l = 0 … L−1),
 ///     is removed by E with blocks E_{(b+l), b} = R_l/(L − l) (exactly as the
-///     dense builder spreads it), so that W = E − U'T satisfies Ω_l(W) = C_l(g);
+///     dense builder spreads it), so that W = E − UT satisfies Ω_l(W) = C_l(g);
 ///  3. the dual point is
-///       Y1 = J [U', E; Eᵀ, x·I] Jᵀ,   J = [I, 0; −Tᵀ, I]   (x > 0),
-///     with blocks U', W = E − U'T and V = TᵀU'T − TᵀE − EᵀT + x·I.
-///     J is invertible, so Y1 ⪰ 0 ⇔ [U', E; Eᵀ, x·I] ⪰ 0 ⇔ U' − EEᵀ/x ⪰ 0,
-///     which holds when U + (ε/2)·I ⪰ 0 and ‖E‖_F² ≤ x·ε/2 (since
-///     ‖EEᵀ‖ ≤ ‖E‖_F²): the first is decided exactly (the rigorous filter
-///     on the exact integer matrix, then exact elimination), the second is a
-///     rational inequality;
-///  4. tr U' = 2^e·tr Ũ + ε·L·ny, tr V = tr(TᵀU'T) − 2 Σ_l ⟨h_l, R_l⟩ + x·L·nz
+///       Y1 = J [U, E; Eᵀ, x·I] Jᵀ,   J = [I, 0; −Tᵀ, I]   (x > 0),
+///     with blocks U, W = E − UT and V = TᵀUT − TᵀE − EᵀT + x·I.
+///     J is invertible, so Y1 ⪰ 0 ⇔ [U, E; Eᵀ, x·I] ⪰ 0 ⇔ U − EEᵀ/x ⪰ 0,
+///     which holds when U − γ·I ⪰ 0 and ‖E‖_F² ≤ x·γ for the stored floor
+///     γ ≥ 0 (since ‖EEᵀ‖ ≤ ‖E‖_F²): the first is decided exactly (the
+///     rigorous filter on the exact integer matrix, then exact elimination),
+///     the second is a rational inequality. (U is positive definite on the
+///     central path, λ_min(U) ≈ μ/t, so a small floor is available; a margin
+///     added to U instead would move W and the residual with it.)
+///  4. tr U = 2^e·tr Ũ, tr V = tr(TᵀUT) − 2 Σ_l ⟨h_l, R_l⟩ + x·L·nz
 ///     (⟨Tᵀ, E⟩ = Σ_l ⟨h_l, R_l⟩), and the bound follows as for the dense
 ///     form (toeplitz/delta_form_dual.h).
 /// The sums Ω_l(UT) = Σ_k D(l,k)·h_k and tr(TᵀUT) = Σ_{k,k'} h_kᵀ D(k,k') h_k'
@@ -45,7 +47,7 @@ struct PathDualRecipe {
   Rational t, mu;       ///< U_d = μ (t·I − T Tᵀ)⁻¹ (used in floating point only)
   long u_exponent = 0;  ///< e: U = Ũ·2^e, Ũ integer
   Rational x;           ///< the multiplier of the lower-right identity (> 0)
-  Rational margin;      ///< ε ≥ 0, added to U
+  Rational floor;       ///< γ ≥ 0: U − γ·I ⪰ 0 and ‖E‖_F² ≤ x·γ are required
 };
 
 /// Step 1: Ũ (integers held exactly in doubles, |Ũ| < 2^53), symmetric.
@@ -65,18 +67,18 @@ PathDualGrid path_dual_round(const Mat<double>& U_d, long u_exponent);
 /// The e that puts max |U_d| just below 2^52 grid units.
 long path_dual_exponent(const Mat<double>& U_d);
 
-/// The exact sums that depend on neither g, σ nor the margin (U = Ũ·2^e):
-/// Ω_l(U T) (L × ny·nz), tr(Tᵀ U T), tr U, Σ_l (L−l)‖h_l‖² (= tr TᵀT).
+/// The exact sums that do not depend on g or σ (U = Ũ·2^e):
+/// Ω_l(U T) (L × ny·nz), tr(Tᵀ U T), tr U.
 struct PathDualSums {
   Mat<Rational> omega_UT;
-  Rational tr_TUT, tr_U, tr_TT;
+  Rational tr_TUT, tr_U;
   std::string problem;  ///< non-empty when a tap is not dyadic
 };
 PathDualSums path_dual_sums(const PathDualRecipe& recipe, const Mat<double>& U_grid, Eigen::Index ny, Eigen::Index nz);
 
 /// Steps 2 and 4 for g (n × ny), σ > 0, the residual r and C = fir_adjoint(g, z, L).
 struct PathDualValue {
-  Mat<Rational> R;         ///< L × (ny·nz): R_l = C_l(g) + Ω_l(U'T)
+  Mat<Rational> R;         ///< L × (ny·nz): R_l = C_l(g) + Ω_l(UT)
   Rational E_norm2;        ///< ‖E‖_F² = Σ_l ‖R_l‖²/(L − l)
   DualTerms<Rational> terms;
 };
@@ -84,8 +86,8 @@ PathDualValue path_dual_value(const PathDualRecipe& recipe, const PathDualSums& 
                               const Mat<Rational>& g, const Rational& sigma, const Mat<Rational>& r, Eigen::Index ny,
                               Eigen::Index nz);
 
-/// Step 3's PSD half: U + (ε/2)·I ⪰ 0 (filter on the exact integer matrix
-/// with the diagonal rounded down; then, when `exact_fallback`, exact
+/// Step 3's PSD half: U − γ·I ⪰ 0 (filter on the exact integer matrix with
+/// the diagonal rounded down; then, when `exact_fallback`, exact
 /// elimination). Returns kNotPsd with the filter's reason when the filter
 /// cannot prove it and the exact path is not asked for.
 PsdResult path_dual_psd(const PathDualRecipe& recipe, const Mat<double>& U_grid, bool exact_fallback);

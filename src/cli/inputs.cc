@@ -44,6 +44,9 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
                  "certificate's Delta solve: toeplitz (the (C1') block, exact for the horizon; default) or kyp "
                  "(||Delta||_inf by the KYP lemma: blocks independent of n, fast for long records; needs --max-taps > 0)")
       ->check(CLI::IsMember({"toeplitz", "kyp"}));
+  app.add_flag("--dense-dual", o.dense_dual,
+               "write lower-end and invalidation certificates with the full dual matrix Y1 (form dual_delta, quadratic "
+               "in n) instead of the compact form the verifier rebuilds (dual_delta_path, linear in n)");
   app.add_flag("--verbose", o.verbose, "let the SDP backend print its iterations");
   if (needs_bounds) {
     auto* d = app.add_option("--delta", o.delta_text, "fix delta (exact decimal); minimise dmax");
@@ -136,6 +139,7 @@ CertifyOptions certify_options(const CommonOptions& c, const BoundObjective& obj
   co.objective = objective;
   co.solver.verbose = c.verbose;
   co.max_taps = c.max_taps;
+  co.dense_dual = c.dense_dual;
   co.delta_norm = delta_norm_of(c);
   co.certificate_path = certificate_path(c);
   co.data_path = c.data_path;

@@ -31,6 +31,7 @@ struct CommonOptions {
   std::string delta_text, dmax_text;     ///< --delta / --dmax as typed (exact)
   std::optional<double> lambda;          ///< --lambda
   long max_taps = CertifyOptions{}.max_taps;                    ///< --max-taps (Δ form; 0 = full horizon)
+  bool dense_dual = false;                                      ///< --dense-dual
   std::string delta_norm = "toeplitz";   ///< --delta-norm toeplitz|kyp (how the certificate's Δ is solved for)
   std::string write_sdpa;                ///< --write-sdpa F.dat-s
   bool verbose = false;

@@ -237,9 +237,7 @@ DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment
 
 /// The compact form (verify/path_dual.h) from a barrier's central-path point:
 /// the recipe is the point itself (taps, t, μ) with x = μ; g from Y2's first
-/// column on a decimal grid; the margin ε grows until ‖E‖_F² ≤ x·ε/4 and the
-/// rigorous filter proves U + (ε/2)·I ≻ 0 (twice what the verifier needs: a
-/// verifier built elsewhere rounds U_d differently in the last bits).
+/// column on a decimal grid; the floor γ and x as commented below.
 DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                               const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
                               const std::string& path) {
@@ -282,7 +280,6 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   recipe.t = exact_rational_of_double(s.delta2);
   recipe.mu = exact_rational_of_double(s.path_mu / scale);
   recipe.x = recipe.mu;
-  recipe.margin = Rational(0);
   std::string problem;
   const Mat<double> U_d = path_dual_floating_u(recipe, ny, nz, problem);
   if (!problem.empty()) return done(problem);
@@ -293,30 +290,27 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   if (!sums.problem.empty()) return done(sums.problem);
   const Mat<Rational> C = fir_adjoint(g, sim.z, L);
 
-  // The margin: ‖E(ε)‖_F² ≤ x·ε/4 and the filter proves U + (ε/2)·I ≻ 0.
+  // The floor γ = ‖E‖_F²/x (rounded up), with the filter proving U − 2γ·I ≻ 0
+  // (twice what the verifier needs: a verifier compiled elsewhere rounds U_d
+  // in other last bits). When it cannot, x grows ×16 (γ shrinks; x costs
+  // x·L·nz in tr V). E depends on neither x nor σ.
   const Rational one(1);
   PathDualValue v = path_dual_value(recipe, sums, C, g, one, r, ny, nz);
-  Rational eps = round_up_to_digits(Rational(4) * v.E_norm2 / recipe.x, 2);
   bool ok = false;
-  for (int attempt = 0; attempt < 12 && !ok; ++attempt) {
-    recipe.margin = eps;
-    v = path_dual_value(recipe, sums, C, g, one, r, ny, nz);
-    if (v.E_norm2 * Rational(4) > recipe.x * eps) {
-      eps = round_up_to_digits(std::max(eps * Rational(2), Rational(4) * v.E_norm2 / recipe.x), 2);
-      continue;
+  std::string why;
+  for (int attempt = 0; attempt < 8 && !ok; ++attempt) {
+    recipe.floor = round_up_to_digits(v.E_norm2 / recipe.x, 2);
+    PathDualRecipe doubled = recipe;
+    doubled.floor = recipe.floor * Rational(2);
+    const PsdResult psd = path_dual_psd(doubled, grid.U, false);
+    ok = psd.verdict != PsdVerdict::kNotPsd;
+    if (!ok) {
+      why = psd.reason;
+      recipe.x = recipe.x * Rational(16);
     }
-    // Twice the half-margin for the filter: the verifier's own rounding may differ.
-    PathDualRecipe tighter = recipe;
-    tighter.margin = eps / Rational(2);
-    const PsdResult psd = path_dual_psd(tighter, grid.U, false);
-    if (psd.verdict != PsdVerdict::kNotPsd) {
-      ok = true;
-      break;
-    }
-    const Rational floor_eps = exact_rational_of_double(std::ldexp(1.0, static_cast<int>(recipe.u_exponent)) * 64.0);
-    eps = round_up_to_digits(std::max(eps * Rational(8), floor_eps), 2);
   }
-  if (!ok) return done("no PSD margin found for the compact dual point (last tried " + double_to_text(nearest_double(eps)) + ")");
+  if (!ok) return done("U - 2*u_floor*I is not proved positive definite even with x = " + double_to_text(nearest_double(recipe.x)) + " (" + why + ")");
+  v = path_dual_value(recipe, sums, C, g, one, r, ny, nz);
 
   // σ, then the bound exactly.
   double gg = 0, gr = 0;
@@ -337,7 +331,7 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   v = path_dual_value(recipe, sums, C, g, sigma, r, ny, nz);
   const Rational bound = dual_bound(v.terms, claim, fixed.delta2, fixed.dmax2, fixed.lambda);
   if (claim == DualClaim::kInvalidated && !(bound > 0))
-    return done("after the PSD margin the compact dual point no longer proves infeasibility (margin " +
+    return done("the compact dual point does not prove infeasibility (margin " +
                 double_to_text(nearest_double(bound)) + ")");
   // The claimed lower end 10⁻⁹ (relative) below the bound: a verifier built
   // elsewhere rebuilds U with other last bits.

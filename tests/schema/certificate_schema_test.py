@@ -62,6 +62,8 @@ certificates = [
     lpvid_run("paper", "true_model.json", "invalidate", "--toeplitz", "paper"),
     lpvid_run("invalidated", "initial_model.json", "invalidate", "--delta", "0.001", "--dmax", "0.001",
               exit_codes=(1,)),  # 1: invalidated, certified
+    lpvid_run("invalidated_dense", "initial_model.json", "invalidate", "--delta", "0.001", "--dmax", "0.001",
+              "--dense-dual", exit_codes=(1,)),
 ]
 lower = os.path.join(work, "identify.cert.lower.json")
 if os.path.exists(lower):
@@ -89,11 +91,16 @@ for path in certificates:
     broken("format lpvid-certificate/2", lambda d: d.update(format="lpvid-certificate/2"))
     broken("an unknown key", lambda d: d.update(comment="x"))
     broken("a number as text 'abc'", lambda d: d.update(delta2="abc") if "delta2" in d else d.update(lower_bound="abc"))
-    required = {"delta": "delta_taps", "w": "w", "dual_delta": "dual"}[cert["form"]]
+    required = {"delta": "delta_taps", "w": "w", "dual_delta": "dual", "dual_delta_path": "dual"}[cert["form"]]
     broken(f"no '{required}'", lambda d: d.pop(required))
+    if cert["form"] == "dual_delta_path":
+        broken("no 'dual.u_floor'", lambda d: d["dual"].pop("u_floor"))
+        broken("a 'dual.Y1' beside the recipe", lambda d: d["dual"].update(Y1=[[1]]))
+    if cert["form"] == "dual_delta":
+        broken("a 'dual.taps' beside Y1", lambda d: d["dual"].update(taps=[[0]]))
 
-for kind in [("consistent", "delta"), ("consistent", "w"), ("lower_bound", "dual_delta"),
-             ("invalidated", "dual_delta")]:
+for kind in [("consistent", "delta"), ("consistent", "w"), ("lower_bound", "dual_delta_path"),
+             ("invalidated", "dual_delta_path"), ("invalidated", "dual_delta")]:
     check(kind in seen, f"a certificate with claim {kind[0]}, form {kind[1]} was validated")
 print(f"{len(failures)} failed" if failures else "all schema checks passed")
 sys.exit(1 if failures else 0)

@@ -2,7 +2,7 @@
 // for random recipes, the O(L²) exact sums must equal what the dense dual
 // point Y1 = J [U', E; Eᵀ, x·I] Jᵀ gives through the dense formulas of
 // toeplitz/delta_form_dual.h (dual equality, tr U, β), and whenever the
-// compact checks accept (‖E‖_F² ≤ x·ε/2, U + (ε/2)·I ⪰ 0) the dense Y1 must
+// compact checks accept (‖E‖_F² ≤ x·γ, U − γ·I ⪰ 0) the dense Y1 must
 // be PSD, decided by exact elimination. The known answers are the dense
 // formulas themselves, computed independently of the compact sums.
 #include <gtest/gtest.h>
@@ -90,12 +90,12 @@ RC_GTEST_PROP(PathDual, CompactSumsEqualTheDenseFormulasOfTheExpandedPoint, ()) 
   const PathDualSums sums = path_dual_sums(c.recipe, grid.U, c.ny, c.nz);
   RC_ASSERT(sums.problem.empty());
   const Mat<Rational> C = fir_adjoint(c.g, c.z, c.L);
-  // The margin ε: 0 or a random one; then x: random, or exactly / 1.5× what
+  // The floor γ: 0 or a random one; then x: random, or exactly / 1.5× what
   // the E-check needs (x does not enter R or E).
   const int which = *rc::gen::inRange(0, 4);
-  c.recipe.margin = which == 0 ? Rational(0) : Rational(*rc::gen::inRange(1, 1000)) / Rational(100);
+  c.recipe.floor = which == 0 ? Rational(0) : Rational(*rc::gen::inRange(1, 100000)) / Rational(100000);
   const Rational E_at = path_dual_value(c.recipe, sums, C, c.g, c.sigma, c.r, c.ny, c.nz).E_norm2;
-  if (which >= 2 && E_at > 0) c.recipe.x = Rational(2) * E_at / c.recipe.margin * (which == 2 ? Rational(1) : Rational(3, 2));
+  if (which >= 2 && E_at > 0) c.recipe.x = E_at / c.recipe.floor * (which == 2 ? Rational(1) : Rational(3, 2));
   const PathDualValue v = path_dual_value(c.recipe, sums, C, c.g, c.sigma, c.r, c.ny, c.nz);
 
   const Mat<Rational> Y1 = path_dual_expand(c.recipe, grid.U, v.R, c.ny, c.nz);
@@ -106,7 +106,7 @@ RC_GTEST_PROP(PathDual, CompactSumsEqualTheDenseFormulasOfTheExpandedPoint, ()) 
   RC_ASSERT(dense.trace_U == v.terms.trace_U);
   RC_ASSERT(dense.N_sigma == v.terms.N_sigma);
   RC_ASSERT(dense.beta == v.terms.beta);
-  // ‖E‖_F² from the expanded W: E = W + U'T.
+  // ‖E‖_F² from the expanded W: E = W + UT.
   const Eigen::Index P = c.L * c.ny, Q = c.L * c.nz;
   const Mat<Rational> E = Y1.topRightCorner(P, Q) + Y1.topLeftCorner(P, P) * dense_toeplitz(c.recipe.taps, c.ny, c.nz);
   Rational e2(0);
@@ -114,14 +114,14 @@ RC_GTEST_PROP(PathDual, CompactSumsEqualTheDenseFormulasOfTheExpandedPoint, ()) 
     for (Eigen::Index j = 0; j < Q; ++j) e2 += E(i, j) * E(i, j);
   RC_ASSERT(e2 == v.E_norm2);
   // Soundness of the PSD argument: compact accepts ⇒ the dense Y1 is PSD (exact).
-  const bool e_ok = v.E_norm2 <= c.recipe.x * c.recipe.margin / Rational(2);
+  const bool e_ok = v.E_norm2 <= c.recipe.x * c.recipe.floor;
   const PsdResult psd = path_dual_psd(c.recipe, grid.U, true);
   if (e_ok && psd.verdict != PsdVerdict::kNotPsd) {
     PsdOptions exact_only;
     exact_only.use_filter = false;
     RC_ASSERT(decide_psd(Y1, exact_only).verdict != PsdVerdict::kNotPsd);
   }
-  RC_TAG(e_ok ? "E absorbed" : "E too large");
+  RC_TAG(e_ok ? "E absorbed" : "E too large", psd.verdict != PsdVerdict::kNotPsd ? "U - floor PSD" : "U - floor not PSD");
 }
 
 // A recipe whose t·I − TTᵀ is indefinite gives no point: the verifier refuses.
