@@ -262,13 +262,15 @@ Runner add_diagnose_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "diagnose", "Residual -> missing effect -> re-fitted model, with before/after RMS and verified bounds");
   add_common_options(*cmd, a->common, true);
-  cmd->add_option("--validation", a->validation_path, "validation data file (default: hold out the end of --data)");
+  auto* validation =
+      cmd->add_option("--validation", a->validation_path, "validation data file (default: hold out the end of --data)");
   cmd->add_option("--validation-columns", a->validation_columns,
                   "validation column names replacing the model's u then y columns, e.g. uVal,yVal (same file if "
                   "--validation is not given)")
       ->delimiter(',');
   cmd->add_option("--validation-names", a->validation_names, "column names of a headerless validation file")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->needs(validation);
   cmd->add_option("--validation-rows", a->validation_rows, "rows B:E of the validation data");
   cmd->add_option("--folds", a->folds,
                   "blocked folds of the estimation record that rank and accept the effects when no --validation is "
@@ -276,7 +278,8 @@ Runner add_diagnose_command(CLI::App& app) {
                   "the last --holdout share once instead")
       ->check(CLI::Range(1, 20));
   cmd->add_option("--holdout", a->holdout,
-                  "with --folds 1: fraction of --data held out for validation when none is given (0.3)");
+                  "with --folds 1: fraction of --data held out for validation when none is given (0.3)")
+      ->excludes(validation);
   cmd->add_option("--warmup", a->warmup,
                   "samples at the start of the test part (and of each fold) used for the initial state and left out "
                   "of the RMS and fit % (default: --init-samples, 5)")
@@ -284,16 +287,16 @@ Runner add_diagnose_command(CLI::App& app) {
   cmd->add_option("--benchmark", a->benchmark,
                   "the benchmark's warm-up (the nonlinear_benchmarks loader since 1.0.1): cascaded-tanks 50, silverbox 50, "
                   "coupled-drives 10");
-  cmd->add_option("--test", a->test_paths,
+  auto* test = cmd->add_option("--test", a->test_paths,
                   "test data file, scored once after the selection and never used to fit or choose (default: --data "
                   "when --test-columns is given); may be given more than once, each file scored separately")
       ->take_all();
-  cmd->add_option("--test-columns", a->test_columns,
+  auto* test_columns = cmd->add_option("--test-columns", a->test_columns,
                   "test column names replacing the model's u then y columns, e.g. uVal,yVal; may be given more than "
                   "once (several column sets of one file, each scored separately)")
       ->delimiter(',');
-  cmd->add_option("--test-names", a->test_names, "column names of a headerless test file")->delimiter(',');
-  cmd->add_option("--test-rows", a->test_rows, "rows B:E of the test data");
+  cmd->add_option("--test-names", a->test_names, "column names of a headerless test file")->delimiter(',')->needs(test);
+  auto* test_rows = cmd->add_option("--test-rows", a->test_rows, "rows B:E of the test data");
   cmd->add_option("--max-effects", a->max_effects, "effects to add at most (default 3)")->check(CLI::Range(0, 20));
   cmd->add_option("--min-gain", a->min_gain, "relative validation-RMS reduction an effect must reach (default 0.05)");
   cmd->add_option("--degree", a->degree, "largest degree of basis-term monomials (default 2)")->check(CLI::Range(1, 6));
@@ -320,14 +323,23 @@ Runner add_diagnose_command(CLI::App& app) {
                   "certify at most N bound windows, spread evenly over the estimation record (default: all)")
       ->check(CLI::Range(1, 1000000));
   cmd->add_flag("--lower-ends", a->lower_ends,
-                "also certify the lower end of every bound (a dual certificate per window, large: about 60 MB at 200 "
-                "rows); the report states the upper ends, which need none");
+                "also certify the lower end of every bound (a dual certificate per window); the report states the "
+                "upper ends, which need none");
   cmd->add_option("--threads", a->threads,
                   "bound windows certified at once (default: the number of hardware threads); results do not depend "
                   "on it")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--plots", a->plots_dir, "directory for the PNG plots and their CSV data");
   cmd->add_option("--model-out", a->model_out, "write the model after diagnosis (exact, as certified)");
+  // Options that would be ignored are refused instead.
+  cmd->callback([cmd, a, test, test_columns, test_rows] {
+    if (test_rows->count() > 0 && test->count() == 0 && test_columns->count() == 0)
+      throw CLI::ValidationError("--test-rows", "needs a test set (--test or --test-columns)");
+    if (cmd->count("--holdout") > 0 && a->folds != 1)
+      throw CLI::ValidationError("--holdout", "is used with --folds 1 only (the default folds score every block in turn)");
+    if (cmd->count("--validation-rows") > 0 && a->validation_path.empty() && a->validation_columns.empty())
+      throw CLI::ValidationError("--validation-rows", "needs --validation or --validation-columns");
+  });
   return [cmd, a] { return cmd->parsed() ? run_diagnose(*a) : -1; };
 }
 

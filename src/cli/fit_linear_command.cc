@@ -146,9 +146,9 @@ Runner add_fit_linear_command(CLI::App& app) {
   cmd->add_option("--order", a->order, "model order N >= 1, or auto (default)");
   cmd->add_option("--max-order", a->max_order, "largest order tried by --order auto (default 5)");
   cmd->add_flag("--offset", a->offset, "fit a constant output offset (model \"offset\" with basis 1)");
-  cmd->add_option("--out", a->out, "model file to write (lpvid-model/1)");
+  cmd->add_option("--out,--model-out", a->out, "model file to write (lpvid-model/1)");
   cmd->add_option("--report", a->report, "JSON report");
-  cmd->add_option("--validation-data", a->val_data, "validation data file (default: the estimation file)");
+  cmd->add_option("--validation-data,--validation", a->val_data, "validation data file (default: the estimation file)");
   cmd->add_option("--validation-names", a->val_names, "column names for a headerless validation file")
       ->delimiter(',');
   cmd->add_option("--validation-rows", a->val_rows, "window of validation rows B:E");

@@ -112,9 +112,20 @@ Runner add_generate_command(CLI::App& app) {
   cmd->add_option("--out", a->out, "data CSV to write (effect-case: the estimation record)")->required();
   std::string kinds;
   for (const auto& k : effect_case_kinds()) kinds += (kinds.empty() ? "" : ", ") + k;
-  cmd->add_option("--effect", a->effect, "effect-case: the undeclared effect (" + kinds + ")");
-  cmd->add_option("--validation-out", a->validation_out, "effect-case: the validation record to write");
-  cmd->add_option("--noise-std", a->noise_std, "effect-case: standard deviation of the white output noise (0.02)");
+  auto* effect = cmd->add_option("--effect", a->effect, "effect-case: the undeclared effect (" + kinds + ")");
+  auto* validation = cmd->add_option("--validation-out", a->validation_out, "effect-case: the validation record to write");
+  auto* noise_std = cmd->add_option("--noise-std", a->noise_std, "effect-case: standard deviation of the white output noise (0.02)");
+  // Options of one data set are refused for the others (never silently ignored).
+  cmd->callback([cmd, a, effect, validation, noise_std] {
+    if (a->which == "effect-case") {
+      if (cmd->count("--noise-variance") > 0)
+        throw CLI::ValidationError("--noise-variance", "is for example1/example2; effect-case takes --noise-std");
+      return;
+    }
+    for (const CLI::Option* o : {effect, validation, noise_std})
+      if (o->count() > 0)
+        throw CLI::ValidationError(o->get_name(), "is only for effect-case (the data set here is " + a->which + ")");
+  });
   cmd->add_option("--model-out", a->model_out, "also write the initial model (JSON)");
   cmd->add_option("--truth-out", a->truth_out, "also write the true model (JSON)");
   return [cmd, a] { return cmd->parsed() ? run_generate(*a) : -1; };

@@ -167,8 +167,8 @@ Runner add_tradeoff_command(CLI::App& app) {
   cmd->add_flag("--no-offset", a->no_offset, "do not identify the offset phi even if the model declares one");
   cmd->add_option("--basis", a->basis, "correction basis, e.g. 1,rho1,rho1*rho2 (replaces the model's)")->delimiter(',');
   cmd->add_option("--csv", a->csv_path, "where to write the curve (default tradeoff.csv)");
-  cmd->add_option("--plot", a->plot_path, "where to write the PNG plot (default: the CSV path with .png)");
-  cmd->add_flag("--no-plot", a->no_plot, "do not run gnuplot");
+  auto* plot = cmd->add_option("--plot", a->plot_path, "where to write the PNG plot (default: the CSV path with .png)");
+  cmd->add_flag("--no-plot", a->no_plot, "do not run gnuplot")->excludes(plot);
   return [cmd, a] { return cmd->parsed() ? run_tradeoff(*a) : -1; };
 }
 
