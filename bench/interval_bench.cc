@@ -90,6 +90,8 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   row.certify = seconds_since(t0);
   row.horizon = b.horizon;
   row.gap = relative_gap(b);
+  std::fprintf(stderr, "  (n = %ld: solve %.1f s, upper end built and checked %.1f s, lower end %.1f s, total %.1f s)\n",
+               static_cast<long>(exp.n()), b.solve_seconds, b.verify_seconds, b.lower.seconds, row.certify);
   if (!b.verified) std::fprintf(stderr, "  (n = %ld: no upper end: %s)\n", static_cast<long>(exp.n()), b.reason.c_str());
   if (!b.lower.verified) std::fprintf(stderr, "  (n = %ld: no lower end: %s)\n", static_cast<long>(exp.n()), b.lower.reason.c_str());
   t0 = std::chrono::steady_clock::now();

@@ -7,7 +7,7 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update
 $SUDO apt-get install -y --no-install-recommends \
   build-essential cmake ninja-build pkg-config ca-certificates \
-  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev \
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libfftw3-dev \
   libgtest-dev librapidcheck-dev nlohmann-json3-dev libcli11-dev \
   libsdp-dev coinor-csdp libsdpa-dev sdpa libmumps-seq-dev libopenblas-dev liblapack-dev gfortran \
   python3 python3-jsonschema \

@@ -156,7 +156,7 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
 
   // −log det(tI − TTᵀ)
   const auto at = [&](Index i, Index j) { return (i * nz + j) * L; };
-  std::vector<Eigen::MatrixXcd> P_hat(static_cast<size_t>(ny * ny)), R_hat(static_cast<size_t>(nz * nz)),
+  std::vector<Spectrum> P_hat(static_cast<size_t>(ny * ny)), R_hat(static_cast<size_t>(nz * nz)),
       Q_hat(static_cast<size_t>(ny * nz)), Qt_hat(static_cast<size_t>(ny * nz));
   std::vector<Dense> P_diag(static_cast<size_t>(ny * ny));
   for (Index i = 0; i < ny; ++i)
@@ -179,8 +179,8 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
   for (Index a = 0; a < ny * nz; ++a)
     for (Index b = a; b < ny * nz; ++b) {
       const Index i = a / nz, j = a % nz, i2 = b / nz, j2 = b % nz;
-      Dense Hh = grid.correlate(Q_hat[static_cast<size_t>(i * nz + j2)], Qt_hat[static_cast<size_t>(i2 * nz + j)], -1) +
-                 grid.correlate(P_hat[static_cast<size_t>(i * ny + i2)], R_hat[static_cast<size_t>(j * nz + j2)], +1);
+      Dense Hh = grid.correlate_sum(Q_hat[static_cast<size_t>(i * nz + j2)], Qt_hat[static_cast<size_t>(i2 * nz + j)],
+                                    P_hat[static_cast<size_t>(i * ny + i2)], R_hat[static_cast<size_t>(j * nz + j2)]);
       if (j == j2) Hh += P_diag[static_cast<size_t>(i * ny + i2)];
       if (a == b) {
         H.block(at(i, j), at(i, j), L, L) += Hh + Hh.transpose();  // 2·(symmetric part)

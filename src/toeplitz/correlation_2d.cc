@@ -1,10 +1,21 @@
 #include "toeplitz/correlation_2d.h"
 
-#include <unsupported/Eigen/FFT>
+#include <fftw3.h>
+
+#include <cstring>
+#include <mutex>
+#include <new>
 
 namespace lpvid {
 
 namespace {
+
+/// FFTW's planner is not thread-safe (execution is): plans are made and
+/// destroyed under this lock.
+std::mutex& planner_mutex() {
+  static std::mutex m;
+  return m;
+}
 
 /// The smallest M ≥ n whose prime factors are 2, 3 and 5 (fast radices).
 Eigen::Index smooth_size(Eigen::Index n) {
@@ -16,44 +27,82 @@ Eigen::Index smooth_size(Eigen::Index n) {
   }
 }
 
-/// In-place 2-D DFT (forward or inverse, unnormalised) of an M × M array.
-void fft_2d(Eigen::MatrixXcd& a, bool inverse) {
-  Eigen::FFT<double> fft;
-  const Eigen::Index M = a.rows();
-  Eigen::VectorXcd in(M), out(M);
-  for (int pass = 0; pass < 2; ++pass) {
-    for (Eigen::Index c = 0; c < M; ++c) {
-      in = a.col(c);
-      if (inverse)
-        fft.inv(out, in);
-      else
-        fft.fwd(out, in);
-      a.col(c) = out;
-    }
-    a.transposeInPlace();
-  }
+template <typename T>
+std::shared_ptr<T> fftw_array(std::size_t count) {
+  void* p = fftw_malloc(sizeof(T) * std::max<std::size_t>(count, 1));
+  if (!p) throw std::bad_alloc();
+  return std::shared_ptr<T>(static_cast<T*>(p), [](T* q) { fftw_free(q); });
 }
+
+fftw_complex* as_fftw(std::complex<double>* p) { return reinterpret_cast<fftw_complex*>(p); }
 
 }  // namespace
 
-CorrelationGrid::CorrelationGrid(Eigen::Index L) : L_(L), M_(smooth_size(2 * L)) {}
-
-Eigen::MatrixXcd CorrelationGrid::spectrum(const Mat<double>& X) const {
-  Eigen::MatrixXcd a = Eigen::MatrixXcd::Zero(M_, M_);
-  a.topLeftCorner(X.rows(), X.cols()) = X.cast<std::complex<double>>();
-  fft_2d(a, false);
-  return a;
+CorrelationGrid::CorrelationGrid(Eigen::Index L) : L_(L), M_(smooth_size(2 * L)), H_(M_ / 2 + 1) {
+  const int m = static_cast<int>(M_);
+  const std::size_t real_size = static_cast<std::size_t>(M_ * M_), half_size = static_cast<std::size_t>(M_ * H_);
+  auto real = fftw_array<double>(real_size);
+  auto half = fftw_array<std::complex<double>>(half_size);
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  // FFTW_ESTIMATE does not touch the arrays while planning.
+  forward_ = fftw_plan_dft_r2c_2d(m, m, real.get(), as_fftw(half.get()), FFTW_ESTIMATE);
+  backward_ = fftw_plan_dft_c2r_2d(m, m, as_fftw(half.get()), real.get(), FFTW_ESTIMATE);
+  if (!forward_ || !backward_) throw std::runtime_error("FFTW could not plan a " + std::to_string(m) + "^2 transform");
 }
 
-Mat<double> CorrelationGrid::correlate(const Eigen::MatrixXcd& X_hat, const Eigen::MatrixXcd& Y_hat, int sign) const {
-  // Σ X(i+p, j+q) Y(i, j) = IDFT(X̂ · conj(Ŷ))(p, q) on the padded grid
-  // (no wrap-around: M ≥ 2L). Eigen's inverse FFT is normalised per pass.
-  Eigen::MatrixXcd a = X_hat.cwiseProduct(Y_hat.conjugate());
-  fft_2d(a, true);
+CorrelationGrid::~CorrelationGrid() {
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  if (forward_) fftw_destroy_plan(static_cast<fftw_plan>(forward_));
+  if (backward_) fftw_destroy_plan(static_cast<fftw_plan>(backward_));
+}
+
+Spectrum CorrelationGrid::spectrum(const Mat<double>& X) const {
+  auto real = fftw_array<double>(static_cast<std::size_t>(M_ * M_));
+  std::memset(real.get(), 0, sizeof(double) * static_cast<std::size_t>(M_ * M_));
+  for (Eigen::Index i = 0; i < X.rows(); ++i)
+    for (Eigen::Index j = 0; j < X.cols(); ++j) real.get()[i * M_ + j] = X(i, j);
+  Spectrum s;
+  s.data = fftw_array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real.get(), as_fftw(s.data.get()));
+  return s;
+}
+
+Mat<double> CorrelationGrid::inverse(std::complex<double>* product) const {
+  auto real = fftw_array<double>(static_cast<std::size_t>(M_ * M_));
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), as_fftw(product), real.get());  // unnormalised
+  const double scale = 1.0 / (static_cast<double>(M_) * static_cast<double>(M_));
   Mat<double> out(L_, L_);
   for (Eigen::Index p = 0; p < L_; ++p)
-    for (Eigen::Index q = 0; q < L_; ++q) out(p, q) = a(p, sign > 0 ? q : (M_ - q) % M_).real();
+    for (Eigen::Index q = 0; q < L_; ++q) out(p, q) = real.get()[p * M_ + q] * scale;
   return out;
+}
+
+Mat<double> CorrelationGrid::correlate(const Spectrum& X_hat, const Spectrum& Y_hat, int sign) const {
+  auto product = fftw_array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
+  const std::complex<double>*x = X_hat.data.get(), *y = Y_hat.data.get();
+  std::complex<double>* o = product.get();
+  for (Eigen::Index u = 0; u < M_; ++u) {
+    // sign −1: the spectrum of a(p, −q) is conj(â(−u, v)).
+    const Eigen::Index uu = sign > 0 ? u : (M_ - u) % M_;
+    for (Eigen::Index v = 0; v < H_; ++v) {
+      const std::complex<double> c = x[uu * H_ + v] * std::conj(y[uu * H_ + v]);
+      o[u * H_ + v] = sign > 0 ? c : std::conj(c);
+    }
+  }
+  return inverse(o);
+}
+
+Mat<double> CorrelationGrid::correlate_sum(const Spectrum& A_hat, const Spectrum& B_hat, const Spectrum& C_hat,
+                                           const Spectrum& D_hat) const {
+  auto product = fftw_array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
+  const std::complex<double>*a = A_hat.data.get(), *b = B_hat.data.get(), *c = C_hat.data.get(), *d = D_hat.data.get();
+  std::complex<double>* o = product.get();
+  for (Eigen::Index u = 0; u < M_; ++u) {
+    const Eigen::Index uu = (M_ - u) % M_;
+    for (Eigen::Index v = 0; v < H_; ++v)
+      o[u * H_ + v] = std::conj(a[uu * H_ + v] * std::conj(b[uu * H_ + v])) + c[u * H_ + v] * std::conj(d[u * H_ + v]);
+  }
+  return inverse(o);
 }
 
 Mat<double> correlate_direct(const Mat<double>& X, const Mat<double>& Y, int sign) {

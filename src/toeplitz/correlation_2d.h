@@ -6,25 +6,52 @@
 ///
 /// (entries outside X are zero). For L × L inputs and shifts p ∈ [0, L),
 /// q ∈ (−L, L) this costs O(L² log L) instead of the O(L⁴) of the sum.
+///
+/// The inputs are real, so their spectra are kept as real-to-complex half
+/// spectra (FFTW, M × (M/2 + 1) of the zero-padded M × M grid, M ≥ 2L):
+/// corr(X, Y) = IDFT(X̂ · conj(Ŷ)) without wrap-around. A sum of two
+/// correlations is formed in the frequency domain and inverted once; the
+/// shift q → −q of one of them is, for a real signal a with a'(p, q) =
+/// a(p, −q), â'(u, v) = â(u, −v) = conj(â(−u, v)) (Hermitian symmetry), which
+/// the half spectrum holds.
+
+#include <complex>
+#include <memory>
 
 #include "core/scalar.h"
 
 namespace lpvid {
 
+/// The half spectrum of an L × L real matrix on a CorrelationGrid.
+struct Spectrum {
+  std::shared_ptr<std::complex<double>> data;  ///< M × (M/2 + 1), row-major; FFTW-aligned
+};
+
 /// The spectra of L × L real matrices zero-padded to an M × M grid
-/// (M ≥ 2L), reused across several correlations.
+/// (M ≥ 2L), reused across several correlations. Its methods may be called
+/// from several threads at once (FFTW's new-array execute functions).
 class CorrelationGrid {
  public:
   explicit CorrelationGrid(Eigen::Index L);
+  ~CorrelationGrid();
+  CorrelationGrid(const CorrelationGrid&) = delete;
+  CorrelationGrid& operator=(const CorrelationGrid&) = delete;
   Eigen::Index size() const { return M_; }
-  /// The 2-D DFT of X (L × L), zero-padded to M × M.
-  Eigen::MatrixXcd spectrum(const Mat<double>& X) const;
+  /// The 2-D DFT of X (L × L), zero-padded to M × M (half spectrum).
+  Spectrum spectrum(const Mat<double>& X) const;
   /// corr(X, Y)(p, sign·q) for p, q ∈ [0, L) from the spectra of X and Y:
   /// sign = +1 gives shifts q ≥ 0, sign = −1 gives q ≤ 0.
-  Mat<double> correlate(const Eigen::MatrixXcd& X_hat, const Eigen::MatrixXcd& Y_hat, int sign) const;
+  Mat<double> correlate(const Spectrum& X_hat, const Spectrum& Y_hat, int sign) const;
+  /// corr(A, B)(p, −q) + corr(C, D)(p, q) for p, q ∈ [0, L), with one
+  /// inverse transform.
+  Mat<double> correlate_sum(const Spectrum& A_hat, const Spectrum& B_hat, const Spectrum& C_hat,
+                            const Spectrum& D_hat) const;
 
  private:
-  Eigen::Index L_, M_;
+  Mat<double> inverse(std::complex<double>* product) const;
+  Eigen::Index L_, M_, H_;  ///< H = M/2 + 1
+  void* forward_ = nullptr;  ///< fftw_plan (r2c)
+  void* backward_ = nullptr;  ///< fftw_plan (c2r)
 };
 
 /// The same sum evaluated directly, O(L⁴): the reference for tests.

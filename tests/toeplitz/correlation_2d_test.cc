@@ -24,6 +24,21 @@ RC_GTEST_PROP(Correlation2d, FftEqualsDirectSum, ()) {
   RC_ASSERT((fast - slow).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + slow.cwiseAbs().maxCoeff()));
 }
 
+RC_GTEST_PROP(Correlation2d, SumOfTwoEqualsTheDirectSums, ()) {
+  const int L = *rc::gen::inRange(1, 11);
+  const auto random = [L] {
+    Mat<double> X(L, L);
+    for (int i = 0; i < L; ++i)
+      for (int j = 0; j < L; ++j) X(i, j) = *rc::gen::inRange(-1000, 1001) / 100.0;
+    return X;
+  };
+  const Mat<double> A = random(), B = random(), C = random(), D = random();
+  const CorrelationGrid grid(L);
+  const Mat<double> fast = grid.correlate_sum(grid.spectrum(A), grid.spectrum(B), grid.spectrum(C), grid.spectrum(D));
+  const Mat<double> slow = correlate_direct(A, B, -1) + correlate_direct(C, D, +1);
+  RC_ASSERT((fast - slow).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + slow.cwiseAbs().maxCoeff()));
+}
+
 TEST(Correlation2d, KnownValue) {
   // X = Y = [[1, 2], [3, 4]]: shift (0, 0) is Σ x² = 30; (1, 0): X(1,·)·Y(0,·) = 3 + 8;
   // (0, −1): Σ X(i, j−1) Y(i, j) = X(0,0)Y(0,1) + X(1,0)Y(1,1) = 2 + 12.
