@@ -7,6 +7,7 @@
 #include <Eigen/Cholesky>
 
 #include "core/number_text.h"
+#include "toeplitz/tap_toeplitz.h"
 #include "verify/gmp_raii.h"
 #include "verify/power_of_two.h"
 #include "verify/psd_filter.h"
@@ -47,16 +48,8 @@ Mat<double> path_dual_floating_u(const PathDualRecipe& recipe, Eigen::Index ny, 
     problem = "the recipe's taps, t or mu are not finite positive doubles";
     return {};
   }
-  // G = T Tᵀ by G(a, a') = G(a−1, a'−1) + h_a h_a'ᵀ (blocks), then S = t·I − G.
-  Mat<double> S(P, P);
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index a2 = 0; a2 < L; ++a2)
-      for (Eigen::Index i = 0; i < ny; ++i)
-        for (Eigen::Index i2 = 0; i2 < ny; ++i2) {
-          double v = a > 0 && a2 > 0 ? S((a - 1) * ny + i, (a2 - 1) * ny + i2) : 0.0;
-          for (Eigen::Index j = 0; j < nz; ++j) v += h(a, i * nz + j) * h(a2, i2 * nz + j);
-          S(a * ny + i, a2 * ny + i2) = v;
-        }
+  // S = t·I − T Tᵀ, T Tᵀ by the block recursion of toeplitz/tap_toeplitz.h.
+  Mat<double> S = tap_gram(h, ny, nz);
   S = -S;
   S.diagonal().array() += t;
   Eigen::LLT<Mat<double>> llt(S);

@@ -7,6 +7,7 @@
 #include "core/rms.h"
 #include "toeplitz/correlation_2d.h"
 #include "toeplitz/fir.h"
+#include "toeplitz/tap_toeplitz.h"
 
 namespace lpvid {
 
@@ -98,7 +99,7 @@ Dense residual_tail(const Problem& p, const Vecd& x) {
 struct Point {
   bool interior = false;
   double value = std::numeric_limits<double>::infinity();
-  Dense T;
+  Dense taps;  ///< L × (ny·nz), column i·nz + j = h_ij
   /// Computed on an empty matrix until evaluate() factors F1: a default-
   /// constructed LLT leaves its status uninitialised, and moving a Point
   /// that returned early (t <= 0) read it (UBSan: invalid ComputationInfo).
@@ -116,8 +117,8 @@ Point evaluate(const Problem& p, const Vecd& x, double mu) {
   if (!(t > 0) || !std::isfinite(pt.D)) return pt;
   pt.phi = p.N * p.s_fix - pt.D;
   if (!p.s_var && !(pt.phi > 0)) return pt;
-  pt.T = block_toeplitz(p, x);
-  Dense F1 = -pt.T * pt.T.transpose();
+  pt.taps = Eigen::Map<const Dense>(x.data(), p.L, p.q());
+  Dense F1 = -tap_gram(pt.taps, p.ny, p.nz);  // T Tᵀ in O(L²)
   F1.diagonal().array() += t;
   pt.llt.compute(F1);
   if (pt.llt.info() != Eigen::Success) return pt;
@@ -148,8 +149,9 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
   const Index Ly = L * ny;
   P = pt.llt.solve(Dense::Identity(Ly, Ly));
   P = 0.5 * (P + P.transpose());
-  Q = P * pt.T;
-  R = pt.T.transpose() * Q;
+  const ToeplitzProduct times_T(pt.taps, ny, p.nz);  // Q = P·T and R = Tᵀ·Q by FFT
+  Q = times_T.right(P);
+  R = times_T.right(Q.transpose()).transpose();
   R = 0.5 * (R + R.transpose());
   g = Vecd::Zero(p.dim());
   H = Dense::Zero(p.dim(), p.dim());

@@ -1,6 +1,6 @@
 #include "toeplitz/correlation_2d.h"
 
-#include <fftw3.h>
+#include "toeplitz/fftw_support.h"
 
 #include <cstring>
 #include <mutex>
@@ -8,41 +8,16 @@
 
 namespace lpvid {
 
-namespace {
-
-/// FFTW's planner is not thread-safe (execution is): plans are made and
-/// destroyed under this lock.
-std::mutex& planner_mutex() {
-  static std::mutex m;
-  return m;
-}
-
-/// The smallest M ≥ n whose prime factors are 2, 3 and 5 (fast radices).
-Eigen::Index smooth_size(Eigen::Index n) {
-  for (Eigen::Index m = std::max<Eigen::Index>(n, 1);; ++m) {
-    Eigen::Index k = m;
-    for (const Eigen::Index f : {2, 3, 5})
-      while (k % f == 0) k /= f;
-    if (k == 1) return m;
-  }
-}
-
-template <typename T>
-std::shared_ptr<T> fftw_array(std::size_t count) {
-  void* p = fftw_malloc(sizeof(T) * std::max<std::size_t>(count, 1));
-  if (!p) throw std::bad_alloc();
-  return std::shared_ptr<T>(static_cast<T*>(p), [](T* q) { fftw_free(q); });
-}
-
-fftw_complex* as_fftw(std::complex<double>* p) { return reinterpret_cast<fftw_complex*>(p); }
-
-}  // namespace
+using fftw::array;
+using fftw::as_fftw;
+using fftw::planner_mutex;
+using fftw::smooth_size;
 
 CorrelationGrid::CorrelationGrid(Eigen::Index L) : L_(L), M_(smooth_size(2 * L)), H_(M_ / 2 + 1) {
   const int m = static_cast<int>(M_);
   const std::size_t real_size = static_cast<std::size_t>(M_ * M_), half_size = static_cast<std::size_t>(M_ * H_);
-  auto real = fftw_array<double>(real_size);
-  auto half = fftw_array<std::complex<double>>(half_size);
+  auto real = array<double>(real_size);
+  auto half = array<std::complex<double>>(half_size);
   std::lock_guard<std::mutex> lock(planner_mutex());
   // FFTW_ESTIMATE does not touch the arrays while planning.
   forward_ = fftw_plan_dft_r2c_2d(m, m, real.get(), as_fftw(half.get()), FFTW_ESTIMATE);
@@ -57,18 +32,18 @@ CorrelationGrid::~CorrelationGrid() {
 }
 
 Spectrum CorrelationGrid::spectrum(const Mat<double>& X) const {
-  auto real = fftw_array<double>(static_cast<std::size_t>(M_ * M_));
+  auto real = array<double>(static_cast<std::size_t>(M_ * M_));
   std::memset(real.get(), 0, sizeof(double) * static_cast<std::size_t>(M_ * M_));
   for (Eigen::Index i = 0; i < X.rows(); ++i)
     for (Eigen::Index j = 0; j < X.cols(); ++j) real.get()[i * M_ + j] = X(i, j);
   Spectrum s;
-  s.data = fftw_array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
+  s.data = array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
   fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real.get(), as_fftw(s.data.get()));
   return s;
 }
 
 Mat<double> CorrelationGrid::inverse(std::complex<double>* product) const {
-  auto real = fftw_array<double>(static_cast<std::size_t>(M_ * M_));
+  auto real = array<double>(static_cast<std::size_t>(M_ * M_));
   fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), as_fftw(product), real.get());  // unnormalised
   const double scale = 1.0 / (static_cast<double>(M_) * static_cast<double>(M_));
   Mat<double> out(L_, L_);
@@ -78,7 +53,7 @@ Mat<double> CorrelationGrid::inverse(std::complex<double>* product) const {
 }
 
 Mat<double> CorrelationGrid::correlate(const Spectrum& X_hat, const Spectrum& Y_hat, int sign) const {
-  auto product = fftw_array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
+  auto product = array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
   const std::complex<double>*x = X_hat.data.get(), *y = Y_hat.data.get();
   std::complex<double>* o = product.get();
   for (Eigen::Index u = 0; u < M_; ++u) {
@@ -94,7 +69,7 @@ Mat<double> CorrelationGrid::correlate(const Spectrum& X_hat, const Spectrum& Y_
 
 Mat<double> CorrelationGrid::correlate_sum(const Spectrum& A_hat, const Spectrum& B_hat, const Spectrum& C_hat,
                                            const Spectrum& D_hat) const {
-  auto product = fftw_array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
+  auto product = array<std::complex<double>>(static_cast<std::size_t>(M_ * H_));
   const std::complex<double>*a = A_hat.data.get(), *b = B_hat.data.get(), *c = C_hat.data.get(), *d = D_hat.data.get();
   std::complex<double>* o = product.get();
   for (Eigen::Index u = 0; u < M_; ++u) {

@@ -1,0 +1,87 @@
+#include "toeplitz/tap_toeplitz.h"
+
+#include "toeplitz/fftw_support.h"
+
+#include <complex>
+#include <cstring>
+#include <mutex>
+#include <new>
+#include <vector>
+
+namespace lpvid {
+
+using fftw::array;
+using fftw::as_fftw;
+using fftw::planner_mutex;
+using fftw::smooth_size;
+
+Mat<double> tap_gram(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz) {
+  const Eigen::Index L = taps.rows(), P = L * ny;
+  Mat<double> G(P, P);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index a2 = 0; a2 < L; ++a2)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index i2 = 0; i2 < ny; ++i2) {
+          double v = a > 0 && a2 > 0 ? G((a - 1) * ny + i, (a2 - 1) * ny + i2) : 0.0;
+          for (Eigen::Index j = 0; j < nz; ++j) v += taps(a, i * nz + j) * taps(a2, i2 * nz + j);
+          G(a * ny + i, a2 * ny + i2) = v;
+        }
+  return G;
+}
+
+ToeplitzProduct::ToeplitzProduct(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz)
+    : L_(taps.rows()), ny_(ny), nz_(nz), M_(smooth_size(2 * taps.rows())), H_(M_ / 2 + 1) {
+  auto real = array<double>(static_cast<std::size_t>(M_));
+  auto half = array<std::complex<double>>(static_cast<std::size_t>(H_));
+  {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(M_), real.get(), as_fftw(half.get()), FFTW_ESTIMATE);
+    backward_ = fftw_plan_dft_c2r_1d(static_cast<int>(M_), as_fftw(half.get()), real.get(), FFTW_ESTIMATE);
+  }
+  if (!forward_ || !backward_) throw std::runtime_error("FFTW could not plan a length-" + std::to_string(M_) + " transform");
+  h_hat_ = array<std::complex<double>>(static_cast<std::size_t>(ny * nz * H_));
+  for (Eigen::Index c = 0; c < ny * nz; ++c) {
+    std::memset(real.get(), 0, sizeof(double) * static_cast<std::size_t>(M_));
+    for (Eigen::Index l = 0; l < L_; ++l) real.get()[l] = taps(l, c);
+    fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real.get(), as_fftw(h_hat_.get() + c * H_));
+  }
+}
+
+ToeplitzProduct::~ToeplitzProduct() {
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  if (forward_) fftw_destroy_plan(static_cast<fftw_plan>(forward_));
+  if (backward_) fftw_destroy_plan(static_cast<fftw_plan>(backward_));
+}
+
+Mat<double> ToeplitzProduct::right(const Mat<double>& X) const {
+  const Eigen::Index rows = X.rows();
+  if (X.cols() != L_ * ny_) throw std::invalid_argument("ToeplitzProduct: X has " + std::to_string(X.cols()) + " columns");
+  Mat<double> out(rows, L_ * nz_);
+  auto real = array<double>(static_cast<std::size_t>(M_));
+  auto x_hat = array<std::complex<double>>(static_cast<std::size_t>(ny_ * H_));
+  auto acc = array<std::complex<double>>(static_cast<std::size_t>(H_));
+  const double scale = 1.0 / static_cast<double>(M_);
+  const std::complex<double>* h = h_hat_.get();
+  for (Eigen::Index row = 0; row < rows; ++row) {
+    for (Eigen::Index i = 0; i < ny_; ++i) {
+      std::memset(real.get(), 0, sizeof(double) * static_cast<std::size_t>(M_));
+      for (Eigen::Index c = 0; c < L_; ++c) real.get()[c] = X(row, c * ny_ + i);
+      fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real.get(), as_fftw(x_hat.get() + i * H_));
+    }
+    for (Eigen::Index j = 0; j < nz_; ++j) {
+      // Σ_{i'} corr(x_{i'}, h_{i'j}) = IDFT(Σ_{i'} x̂_{i'}·conj(ĥ_{i'j})); no wrap-around (M ≥ 2L).
+      std::complex<double>* a = acc.get();
+      for (Eigen::Index v = 0; v < H_; ++v) a[v] = 0.0;
+      for (Eigen::Index i = 0; i < ny_; ++i) {
+        const std::complex<double>* xs = x_hat.get() + i * H_;
+        const std::complex<double>* hs = h + (i * nz_ + j) * H_;
+        for (Eigen::Index v = 0; v < H_; ++v) a[v] += xs[v] * std::conj(hs[v]);
+      }
+      fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), as_fftw(a), real.get());
+      for (Eigen::Index b = 0; b < L_; ++b) out(row, b * nz_ + j) = real.get()[b] * scale;
+    }
+  }
+  return out;
+}
+
+}  // namespace lpvid

@@ -1,0 +1,40 @@
+#pragma once
+/// Products with the block lower-triangular Toeplitz matrix T_Δ of FIR taps
+/// (L·ny × L·nz; rows a·ny + i, columns b·nz + j; T(a, b) = h_{a−b}, a ≥ b),
+/// without forming dense products: the kernels of the structured barrier
+/// (lmi/delta_form_barrier.h) and of the compact dual certificate
+/// (verify/path_dual.h).
+///
+/// Taps are given as an L × (ny·nz) matrix: column i·nz + j holds h_ij(0 … L−1).
+
+#include <memory>
+
+#include "core/scalar.h"
+
+namespace lpvid {
+
+/// T Tᵀ (L·ny square) by (T Tᵀ)(a, a') = (T Tᵀ)(a−1, a'−1) + h_a h_a'ᵀ
+/// (blocks; the first block row and column are h_a h_0ᵀ, h_0 h_a'ᵀ):
+/// O(L²·ny²·nz) instead of O(L³). Fixed loop order (deterministic).
+Mat<double> tap_gram(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz);
+
+/// X·T for dense X (rows × L·ny) by FFT correlations along each row:
+///   (X·T)(row, b·nz + j) = Σ_{i'} Σ_{c ≥ b} X(row, c·ny + i') h_{i'j}(c − b),
+/// O(rows·L·log L·(ny + nz)) instead of O(rows·L²·ny·nz). Tᵀ·Y = (Yᵀ·T)ᵀ.
+/// Thread-safe after construction.
+class ToeplitzProduct {
+ public:
+  ToeplitzProduct(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz);
+  ~ToeplitzProduct();
+  ToeplitzProduct(const ToeplitzProduct&) = delete;
+  ToeplitzProduct& operator=(const ToeplitzProduct&) = delete;
+  Mat<double> right(const Mat<double>& X) const;
+
+ private:
+  Eigen::Index L_, ny_, nz_, M_, H_;
+  std::shared_ptr<std::complex<double>> h_hat_;  ///< (ny·nz) spectra of length H (column i·nz + j)
+  void* forward_ = nullptr;
+  void* backward_ = nullptr;
+};
+
+}  // namespace lpvid

@@ -1,0 +1,42 @@
+// toeplitz/tap_toeplitz.h against the dense block Toeplitz matrix built
+// entry by entry from its definition T(a·ny + i, b·nz + j) = h_ij(a − b).
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include "toeplitz/tap_toeplitz.h"
+
+namespace lpvid {
+namespace {
+
+Mat<double> dense_t(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz) {
+  const Eigen::Index L = taps.rows();
+  Mat<double> T = Mat<double>::Zero(L * ny, L * nz);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index b = 0; b <= a; ++b)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
+  return T;
+}
+
+Mat<double> random(Eigen::Index r, Eigen::Index c) {
+  Mat<double> m(r, c);
+  for (Eigen::Index i = 0; i < r; ++i)
+    for (Eigen::Index j = 0; j < c; ++j) m(i, j) = *rc::gen::inRange(-1000, 1001) / 100.0;
+  return m;
+}
+
+RC_GTEST_PROP(TapToeplitz, GramAndProductEqualTheDenseOnes, ()) {
+  const Eigen::Index L = *rc::gen::inRange(1, 12), ny = *rc::gen::inRange(1, 4), nz = *rc::gen::inRange(1, 4);
+  const Mat<double> taps = random(L, ny * nz);
+  const Mat<double> T = dense_t(taps, ny, nz);
+  const Mat<double> G = T * T.transpose();
+  RC_ASSERT((tap_gram(taps, ny, nz) - G).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + G.cwiseAbs().maxCoeff()));
+  const Mat<double> X = random(*rc::gen::inRange(1, 6), L * ny);
+  const Mat<double> XT = X * T;
+  const ToeplitzProduct times_T(taps, ny, nz);
+  RC_ASSERT((times_T.right(X) - XT).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + XT.cwiseAbs().maxCoeff()));
+}
+
+}  // namespace
+}  // namespace lpvid
