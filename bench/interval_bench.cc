@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -71,12 +72,28 @@ void siso_case(int n, LpvModel<Rational>* model, Experiment<Rational>* exp) {
 
 struct Row {
   double certify = 0, verify_upper = 0, verify_lower = 0, gap = NAN, invalidate = 0, verify_invalid = 0;
+  double kb_upper = 0, kb_lower = 0, kb_invalid = 0;
   std::string upper_ok = "-", lower_ok = "-", verdict = "-";
   long horizon = 0;
 };
 
+double kilobytes(const std::string& path) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  return ec ? 0.0 : static_cast<double>(size) / 1024.0;
+}
+
+/// Peak resident memory of this process so far (VmHWM), MB.
+double peak_mb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
+  return 0.0;
+}
+
 Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const std::string& data, double delta,
-        const std::filesystem::path& dir) {
+        const std::filesystem::path& dir, const std::string& tag) {
   Row row;
   auto solver = make_solver("csdp");
   CertifyOptions co;
@@ -84,7 +101,7 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   co.objective.delta = delta;
   co.fixed_delta_text = double_to_text(delta);
   co.data_path = data;
-  co.certificate_path = (dir / "interval.json").string();
+  co.certificate_path = (dir / (tag + ".interval.json")).string();
   auto t0 = std::chrono::steady_clock::now();
   const CertifiedBounds b = certify_fixed_model(model, exp, co, *solver);
   row.certify = seconds_since(t0);
@@ -103,7 +120,9 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
     t0 = std::chrono::steady_clock::now();
     row.lower_ok = check_certificate_file(b.lower.certificate).holds ? "yes" : "NO";
     row.verify_lower = seconds_since(t0);
+    row.kb_lower = kilobytes(b.lower.certificate);
   }
+  if (b.verified) row.kb_upper = kilobytes(co.certificate_path);
   if (!b.lower.verified) return row;
   // Invalidation below the certified lower end.
   const double dmax = 0.9 * std::sqrt(nearest_double(b.lower.value));
@@ -111,7 +130,7 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   io.objective.kind = BoundObjective::Kind::kFeasibility;
   io.objective.dmax = dmax;
   io.fixed_dmax_text = double_to_text(dmax);
-  io.certificate_path = (dir / "invalid.json").string();
+  io.certificate_path = (dir / (tag + ".invalid.json")).string();
   t0 = std::chrono::steady_clock::now();
   const CertifiedBounds v = certify_fixed_model(model, exp, io, *solver);
   row.invalidate = seconds_since(t0);
@@ -121,14 +140,15 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
     t0 = std::chrono::steady_clock::now();
     if (!check_certificate_file(io.certificate_path).holds) row.verdict = "NOT CHECKED";
     row.verify_invalid = seconds_since(t0);
+    row.kb_invalid = kilobytes(io.certificate_path);
   }
   return row;
 }
 
 void print(const char* sys, int n, const Row& r) {
-  std::printf("%-4s %4d %4ld | %9.2f %7.3f %-3s %7.3f %-3s %10.2e | %9.2f %-11s %7.3f\n", sys, n, r.horizon, r.certify,
-              r.verify_upper, r.upper_ok.c_str(), r.verify_lower, r.lower_ok.c_str(), r.gap, r.invalidate,
-              r.verdict.c_str(), r.verify_invalid);
+  std::printf("%-4s %4d %4ld | %9.2f %7.3f %-3s %7.3f %-3s %10.2e | %9.2f %-11s %7.3f | %7.0f %7.0f %7.0f | %7.0f\n", sys, n,
+              r.horizon, r.certify, r.verify_upper, r.upper_ok.c_str(), r.verify_lower, r.lower_ok.c_str(), r.gap,
+              r.invalidate, r.verdict.c_str(), r.verify_invalid, r.kb_upper, r.kb_lower, r.kb_invalid, peak_mb());
   std::fflush(stdout);
 }
 
@@ -143,15 +163,16 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(dir);
   std::printf("Certified interval of min dmax^2 at fixed delta (SISO delta = %g, 2x2 delta = %g), default options\n",
               delta_siso, delta_2x2);
-  std::printf("%-4s %4s %4s | %9s %7s %-3s %7s %-3s %10s | %9s %-11s %7s\n", "sys", "n", "L", "interval", "ver.up",
-              "ok", "ver.lo", "ok", "rel.gap", "invalid.", "verdict", "ver.inv");
+  std::printf("%-4s %4s %4s | %9s %7s %-3s %7s %-3s %10s | %9s %-11s %7s | %7s %7s %7s | %7s\n", "sys", "n", "L", "interval",
+              "ver.up", "ok", "ver.lo", "ok", "rel.gap", "invalid.", "verdict", "ver.inv", "kB.up", "kB.lo", "kB.inv",
+              "peak.MB");
   for (int n : siso) {
     LpvModel<Rational> m;
     Experiment<Rational> e;
     siso_case(n, &m, &e);
     const std::string data = (dir / ("siso_" + std::to_string(n) + ".csv")).string();
     write_data(data, m, e);
-    print("SISO", n, run(m, e, data, delta_siso, dir));
+    print("SISO", n, run(m, e, data, delta_siso, dir, "siso_" + std::to_string(n)));
   }
   for (int n : mimo) {
     Example1Options eo;
@@ -161,9 +182,10 @@ int main(int argc, char** argv) {
     const Experiment<Rational> e = example1_experiment(eo);
     const std::string data = (dir / ("ex1_" + std::to_string(n) + ".csv")).string();
     write_data(data, m, e);
-    print("2x2", n, run(m, e, data, delta_2x2, dir));
+    print("2x2", n, run(m, e, data, delta_2x2, dir, "ex1_" + std::to_string(n)));
   }
   std::printf("(seconds, wall clock: interval = certify_fixed_model with both ends; ver.up / ver.lo = lpvid-verify on the\n"
-              " primal and the dual certificate; invalid. = certify at dmax = 0.9*sqrt(lower), ver.inv = its check)\n");
+              " primal and the dual certificate; invalid. = certify at dmax = 0.9*sqrt(lower), ver.inv = its check;\n"
+              " kB = certificate file sizes; peak.MB = this process's peak resident memory so far)\n");
   return 0;
 }

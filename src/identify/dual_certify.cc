@@ -292,13 +292,19 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
 
   // The floor γ = ‖E‖_F²/x (rounded up), with the filter proving U − 2γ·I ≻ 0
   // (twice what the verifier needs: a verifier compiled elsewhere rounds U_d
-  // in other last bits). When it cannot, x grows ×16 (γ shrinks; x costs
-  // x·L·nz in tr V). E depends on neither x nor σ.
+  // in other last bits). x costs x·L·nz in tr V, so it starts at the
+  // smallest value the spectrum allows: λ_min(U) ≥ μ/t (t·I − TTᵀ ⪯ t·I), so
+  // x = max(μ, 4·‖E‖²·t/μ) keeps 2γ ≤ λ_min(U)/2; it doubles while the filter
+  // cannot prove it. E depends on neither x nor σ.
   const Rational one(1);
   PathDualValue v = path_dual_value(recipe, sums, C, g, one, r, ny, nz);
+  {
+    const Rational from_spectrum = Rational(4) * v.E_norm2 * recipe.t / recipe.mu;
+    if (from_spectrum > recipe.x) recipe.x = exact_rational_of_double(nearest_double(from_spectrum) * (1 + 1e-12));
+  }
   bool ok = false;
   std::string why;
-  for (int attempt = 0; attempt < 8 && !ok; ++attempt) {
+  for (int attempt = 0; attempt < 24 && !ok; ++attempt) {
     recipe.floor = round_up_to_digits(v.E_norm2 / recipe.x, 2);
     PathDualRecipe doubled = recipe;
     doubled.floor = recipe.floor * Rational(2);
@@ -306,7 +312,7 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
     ok = psd.verdict != PsdVerdict::kNotPsd;
     if (!ok) {
       why = psd.reason;
-      recipe.x = recipe.x * Rational(16);
+      recipe.x = recipe.x * Rational(2);
     }
   }
   if (!ok) return done("U - 2*u_floor*I is not proved positive definite even with x = " + double_to_text(nearest_double(recipe.x)) + " (" + why + ")");
@@ -341,8 +347,10 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   c.dual.horizon = L;
   c.dual.g = std::move(g);
   c.dual.sigma = sigma;
-  c.dual.path = std::move(recipe);
   c.info["dual_scale"] = scale;
+  c.info["x_over_mu"] = nearest_double(recipe.x / recipe.mu);
+  c.info["u_floor_over_mu"] = nearest_double(recipe.floor / recipe.mu);
+  c.dual.path = std::move(recipe);
   write_and_check(c, o, path, bound, out);
   return done(out.reason);
 }

@@ -162,7 +162,8 @@ TEST(BoundWindows, CostEstimateScalesAsDocumented) {
   EXPECT_NEAR(five.seconds, 5 * one.seconds, 1e-9);
   EXPECT_NEAR(one.megabytes, 0.02, 1e-12);  // two primal certificates of about 10 kB
   const BoundCost lower = estimate_bound_cost(W{{0, 200}}, 1, 1, true);
-  EXPECT_NEAR(lower.megabytes - one.megabytes, 2 * 0.38e-3 * 400.0 * 400.0, 1e-9);  // 2 × (L(ny+nz))² entries
+  // 2 compact dual certificates of n·ny + L·ny·nz = 400 numbers at 40 bytes
+  EXPECT_NEAR(lower.megabytes - one.megabytes, 2 * 40e-6 * 400.0, 1e-9);
   EXPECT_GT(estimate_bound_cost(W{{0, 400}}, 1, 1, false).seconds, 4 * one.seconds);
 }
 
