@@ -215,6 +215,7 @@ int run_diagnose(DiagnoseArgs& a) {
   o.windows = windows;
   o.max_windows = static_cast<size_t>(a.max_windows);
   o.certify = certify_options(a.common, in.objective);  // rows: set per window
+  o.certify.progress = nullptr;  // windows run in parallel: diagnose prints its own progress
   // Many windows: the lower end comes from the K-tap solve's dual lifted to
   // the full horizon, without the extra full-horizon solve (issue 8).
   o.certify.full_horizon_limit = 0;

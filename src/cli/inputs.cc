@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
+#include <cstdio>
 #include <tuple>
 #include <iostream>
 
@@ -48,6 +50,8 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
                "write lower-end and invalidation certificates with the full dual matrix Y1 (form dual_delta, quadratic "
                "in n) instead of the compact form the verifier rebuilds (dual_delta_path, linear in n)");
   app.add_flag("--verbose", o.verbose, "let the SDP backend print its iterations");
+  app.add_flag("--quiet", o.quiet, "no progress lines on stderr (errors are still printed)");
+  o.command = app.get_name();
   if (needs_bounds) {
     auto* d = app.add_option("--delta", o.delta_text, "fix delta (exact decimal); minimise dmax");
     auto* m = app.add_option("--dmax", o.dmax_text, "fix dmax (RMS noise bound, exact decimal); minimise delta");
@@ -140,6 +144,13 @@ CertifyOptions certify_options(const CommonOptions& c, const BoundObjective& obj
   co.solver.verbose = c.verbose;
   co.max_taps = c.max_taps;
   co.dense_dual = c.dense_dual;
+  if (!c.quiet) {
+    const auto started = std::chrono::steady_clock::now();
+    co.progress = [started, name = c.command](const std::string& stage) {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      std::fprintf(stderr, "[%s %6.1f s] %s\n", name.c_str(), s, stage.c_str());
+    };
+  }
   co.delta_norm = delta_norm_of(c);
   co.certificate_path = certificate_path(c);
   co.data_path = c.data_path;

@@ -35,6 +35,8 @@ struct CommonOptions {
   std::string delta_norm = "toeplitz";   ///< --delta-norm toeplitz|kyp (how the certificate's Δ is solved for)
   std::string write_sdpa;                ///< --write-sdpa F.dat-s
   bool verbose = false;
+  bool quiet = false;       ///< --quiet: no progress lines on stderr
+  std::string command;      ///< the subcommand's name (progress lines)
 };
 
 /// --delta-norm as the enum of certify.h.

@@ -222,16 +222,24 @@ DeltaFormSolution solve_for_certificate(const Simulation<Rational>& sim, const M
                                         long taps, bool kyp, bool want_dual) {
   SolverOptions so = o.solver;
   so.want_dual = want_dual;
+  const auto tell = [&](const std::string& s) {
+    if (o.progress) o.progress(s);
+  };
+  const Eigen::Index L = n - leading_zero_samples(sim.z);
   if (!kyp && taps == 0 && o.structured && barrier_applies(nearest_double(sim.z), nearest_double(r), obj)) {
-    // SISO full horizon: the structured barrier (lmi/delta_form_barrier.h);
+    // Full horizon: the structured barrier (lmi/delta_form_barrier.h);
     // on a numerical failure the general SDP backend takes over.
+    tell("solving Theorem 2.1 on the full horizon (" + std::to_string(L) + " taps) with the structured barrier");
     DeltaFormSolution fast = solve_delta_form_barrier(nearest_double(sim.z), nearest_double(r), obj);
     if (fast.solve.status != SolveStatus::kBackendError) return fast;
+    tell(fast.solve.message + "; solving again with " + solver.name());
     DeltaFormSolution slow = solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
     slow.solve.message += (slow.solve.message.empty() ? "" : "; ") + fast.solve.message + " (fell back to " + solver.name() + ")";
     slow.solve.seconds += fast.solve.seconds;
     return slow;
   }
+  tell("solving Theorem 2.1 with " + solver.name() + " (" + (taps == 0 ? std::to_string(L) : std::to_string(taps)) +
+       " taps" + (kyp ? ", KYP" : "") + ")");
   if (!kyp) return solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
   // (KYP) bounds ‖Δ‖_∞ ≥ ‖T_Δ‖ on any horizon: small program, same certificate.
   const DeltaKypSolution k = solve_delta_kyp(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
@@ -344,6 +352,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
       return;
     }
     b.delta2_solver = sol.delta2;
+    if (o.progress) o.progress("solved in " + double_to_text(std::round(sol.solve.seconds * 10) / 10) + " s; checking the upper end exactly");
     certify_taps(model, sim, r, sol.taps, sol.horizon, o, solver.name(), b);
     if (b.verified) b.upper = objective_at(o.objective, b.delta2, b.dmax2);
   };
@@ -353,6 +362,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
 
   const auto lower_from = [&](const DeltaFormSolution& s) {
     if (s.dual_c1.size() == 0) return;
+    if (o.progress) o.progress("building and checking the lower end's dual certificate");
     const DualOutcome d = certify_dual(model, exp, sim, s, o, lower_certificate_path(o.certificate_path));
     if (d.verified && (!out.lower.verified || d.bound > out.lower.value)) {
       out.lower.verified = true;
@@ -386,6 +396,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
         full = solve_for_certificate(sim, r, n, obj, o, solver, 0, false, true);
       }
       if (!out.verified && full.solve.status == SolveStatus::kPrimalInfeasible && full.dual_c1.size() > 0) {
+        if (o.progress) o.progress("infeasible: building and checking the dual certificate of invalidation");
         const DualOutcome d = certify_dual(model, exp, sim, full, o, o.certificate_path);
         out.invalidated = d.verified;
         out.lower.seconds = d.seconds;

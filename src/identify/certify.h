@@ -15,6 +15,7 @@
 ///  6. the certificate is written and checked again from the file by the
 ///     verifier (verify/certificate_check.h). `verified` is that verdict.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,6 +68,9 @@ struct CertifyOptions {
   /// Write lower-end / invalidation certificates in the dense form (the full
   /// dual matrix Y1) even when the compact form (verify/path_dual.h) applies.
   bool dense_dual = false;
+  /// Called with a short line at each stage (solve, fallback, upper end,
+  /// lower end); the CLI prints them on stderr. Unset: silent.
+  std::function<void(const std::string&)> progress;
   long full_horizon_limit = 400;
   /// A weighted objective λδ² + (1−λ)d_max² is meant for z and y scaled by
   /// powers of ten to RMS ~1 (identify/bound_scaling.h); the certificate
