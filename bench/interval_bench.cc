@@ -9,7 +9,8 @@
 // y = ŷ + 0.48·z(k − d) + noise U(−0.002, 0.002), d = min(70, n/2): the true Δ
 // is a delay of 0.48, which no 64-tap FIR can represent when d ≥ 64.
 // 2×2 data: the paper's Example 1 (noise variance 0.01) with its initial model.
-// Usage: interval_bench [sizes=100,200,400] [example1_sizes=60,100] [delta_siso=0.45] [delta_2x2=1]
+// 3×3 data: mimo3_case below (until the paper's Example 2 exists at its own scale), δ = 0.2.
+// Usage: interval_bench [sizes=100,200,400] [example1_sizes=60,100] [delta_siso=0.45] [delta_2x2=1] [3x3_sizes=none]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -52,6 +53,39 @@ void write_data(const std::string& path, const LpvModel<Rational>& m, const Expe
   for (Eigen::Index i = 0; i < e.ny(); ++i) cols.push_back({m.columns.y[static_cast<size_t>(i)], column_text(e.y, i)});
   for (Eigen::Index i = 0; i < e.n_rho(); ++i) cols.push_back({m.columns.rho[static_cast<size_t>(i)], column_text(e.rho, i)});
   write_csv(path, cols);
+}
+
+/// A 3×3 case (ny = nz = 3, for the issue's 3×3 rows until Example 2 exists):
+/// a stable LTI model with additive uncertainty, u ~ N(0, I), y = ŷ + a
+/// delayed, mixed part of z (a Δ of norm ≈ 0.4) + noise U(−0.002, 0.002).
+void mimo3_case(int n, const std::filesystem::path& dir, LpvModel<Rational>* model, Experiment<Rational>* exp) {
+  const std::string path = (dir / "mimo3_model.json").string();
+  {
+    std::ofstream f(path);
+    f << R"({"format": "lpvid-model/1", "states": 3, "inputs": 3, "outputs": 3, "scheduling": [],
+  "columns": {"u": ["u1", "u2", "u3"], "y": ["y1", "y2", "y3"]},
+  "initial": {"A": [{"basis": "1", "value": [[0.5, 0.1, 0], [0, 0.4, 0.1], [0.1, 0, 0.3]]}],
+              "B": [{"basis": "1", "value": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}],
+              "C": [{"basis": "1", "value": [[0.5, 0, 0], [0, 0.5, 0], [0, 0, 0.5]]}]},
+  "correction": {"basis": ["1"]},
+  "uncertainty": {"structure": "additive", "weight": "1/10"}})";
+  }
+  *model = read_model_file<Rational>(path);
+  RandomStream rng(3000 + static_cast<uint64_t>(n));
+  exp->u = Mat<Rational>(n, 3);
+  exp->rho = Mat<Rational>(n, 0);
+  exp->y = Mat<Rational>::Zero(n, 3);
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < 3; ++i) exp->u(k, i) = round_to_digits(rng.normal(), 6);
+  const Simulation<Rational> s = simulate(*model, *exp);
+  const int d = std::min(20, n / 4);
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < 3; ++i) {
+      double w = 0;
+      if (k >= d)
+        for (int j = 0; j < 3; ++j) w += (i == j ? 0.3 : 0.05) * nearest_double(s.z(k - d, j));
+      exp->y(k, i) = round_to_digits(nearest_double(s.output(k, i)) + w + 0.002 * (2 * rng.uniform() - 1), 10);
+    }
 }
 
 /// The SISO delayed-Δ case.
@@ -102,6 +136,7 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   co.fixed_delta_text = double_to_text(delta);
   co.data_path = data;
   co.certificate_path = (dir / (tag + ".interval.json")).string();
+  co.progress = [tag](const std::string& stage) { std::fprintf(stderr, "  [%s] %s\n", tag.c_str(), stage.c_str()); };
   auto t0 = std::chrono::steady_clock::now();
   const CertifiedBounds b = certify_fixed_model(model, exp, co, *solver);
   row.certify = seconds_since(t0);
@@ -159,6 +194,8 @@ int main(int argc, char** argv) {
   const std::vector<int> mimo = sizes(argc > 2 ? argv[2] : "60,100");
   const double delta_siso = argc > 3 ? std::atof(argv[3]) : 0.45;
   const double delta_2x2 = argc > 4 ? std::atof(argv[4]) : 1.0;
+  // 3×3 at δ = 0.2, below the part of the data the delayed Δ (norm ≈ 0.4) explains.
+  const std::vector<int> mimo3 = sizes(argc > 5 ? argv[5] : "");
   const auto dir = std::filesystem::temp_directory_path() / "lpvid_interval_bench";
   std::filesystem::create_directories(dir);
   std::printf("Certified interval of min dmax^2 at fixed delta (SISO delta = %g, 2x2 delta = %g), default options\n",
@@ -183,6 +220,14 @@ int main(int argc, char** argv) {
     const std::string data = (dir / ("ex1_" + std::to_string(n) + ".csv")).string();
     write_data(data, m, e);
     print("2x2", n, run(m, e, data, delta_2x2, dir, "ex1_" + std::to_string(n)));
+  }
+  for (int n : mimo3) {
+    LpvModel<Rational> m;
+    Experiment<Rational> e;
+    mimo3_case(n, dir, &m, &e);
+    const std::string data = (dir / ("mimo3_" + std::to_string(n) + ".csv")).string();
+    write_data(data, m, e);
+    print("3x3", n, run(m, e, data, 0.2, dir, "mimo3_" + std::to_string(n)));
   }
   std::printf("(seconds, wall clock: interval = certify_fixed_model with both ends; ver.up / ver.lo = lpvid-verify on the\n"
               " primal and the dual certificate; invalid. = certify at dmax = 0.9*sqrt(lower), ver.inv = its check;\n"
