@@ -22,17 +22,6 @@ using psd_detail::mpz_to_rational;
 /// z·2^k as a rational.
 Rational scaled(mpz_srcptr z, long k) { return mpz_to_rational(z) * power_of_two(k); }
 
-/// The dense block lower-triangular Toeplitz T (L·ny × L·nz) of the taps.
-template <typename S>
-Mat<S> tap_toeplitz(const Mat<S>& taps, Eigen::Index ny, Eigen::Index nz) {
-  const Eigen::Index L = taps.rows();
-  Mat<S> T = Mat<S>::Zero(L * ny, L * nz);
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index b = 0; b <= a; ++b)
-      for (Eigen::Index i = 0; i < ny; ++i)
-        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
-  return T;
-}
 
 }  // namespace
 
@@ -235,7 +224,7 @@ Mat<Rational> path_dual_expand(const PathDualRecipe& recipe, const Mat<double>& 
       for (Eigen::Index i = 0; i < ny; ++i)
         for (Eigen::Index j = 0; j < nz; ++j)
           E((b + l) * ny + i, b * nz + j) = R(l, i * nz + j) / Rational(static_cast<long>(L - l));
-  const Mat<Rational> T = tap_toeplitz(recipe.taps, ny, nz);
+  const Mat<Rational> T = tap_toeplitz_dense(recipe.taps, ny, nz);
   const Mat<Rational> UT = U * T;
   Mat<Rational> Y1(P + Q, P + Q);
   Y1.topLeftCorner(P, P) = U;

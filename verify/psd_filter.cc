@@ -159,7 +159,10 @@ std::string floating_environment_problem() {
 /// `exact_entries`, always the underflow term).
 static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFilterResult out);
 
-PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
+/// The checks both entry points share, then A = the upper triangle of
+/// `entry(i, j)` (doubles; a non-finite one stops with `not_finite`).
+template <typename Matrix, typename Entry>
+static PsdFilterResult filter_matrix(const Matrix& M, Entry entry, bool exact_entries, const char* not_finite) {
   PsdFilterResult out;
   const Eigen::Index N = M.rows();
   if (N != M.cols()) {
@@ -181,46 +184,22 @@ PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
   A.a.assign(n * n, 0.0);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i; j < n; ++j) {
-      const double x = nearest_double(M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
+      const double x = entry(M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)));
       if (!std::isfinite(x)) {
-        out.reason = "an entry is outside the double range";
+        out.reason = not_finite;
         return out;
       }
       A.at(i, j) = x;
     }
-  return filter_prepared(std::move(A), false, std::move(out));
+  return filter_prepared(std::move(A), exact_entries, std::move(out));
+}
+
+PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
+  return filter_matrix(M, [](const Rational& q) { return nearest_double(q); }, false, "an entry is outside the double range");
 }
 
 PsdFilterResult run_psd_filter_on_doubles(const Mat<double>& M) {
-  PsdFilterResult out;
-  const Eigen::Index N = M.rows();
-  if (N != M.cols()) {
-    out.reason = "not square";
-    return out;
-  }
-  if (N == 0) {
-    out.proved_pd = true;
-    out.reason = "empty matrix";
-    return out;
-  }
-  if (std::string p = floating_environment_problem(); !p.empty()) {
-    out.reason = "filter skipped: " + p;
-    return out;
-  }
-  const std::size_t n = static_cast<std::size_t>(N);
-  UpperMatrix A;
-  A.n = n;
-  A.a.assign(n * n, 0.0);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i; j < n; ++j) {
-      const double x = M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
-      if (!std::isfinite(x)) {
-        out.reason = "an entry is not finite";
-        return out;
-      }
-      A.at(i, j) = x;
-    }
-  return filter_prepared(std::move(A), true, std::move(out));
+  return filter_matrix(M, [](double x) { return x; }, true, "an entry is not finite");
 }
 
 static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFilterResult out) {

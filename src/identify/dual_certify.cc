@@ -74,6 +74,16 @@ double best_sigma(double trU, double trV, double gg, double gr, double N, DualCl
 
 
 
+/// `done(reason)`: sets the outcome's reason and the seconds since this call, returns it.
+auto outcome_closer(DualOutcome& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  return [&out, t0](std::string reason) {
+    out.reason = std::move(reason);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+}
+
 /// The fixed values of the claim, exact (from the CLI text when given).
 struct FixedValues {
   Rational delta2{0}, dmax2{0}, lambda{0};
@@ -126,13 +136,8 @@ void write_and_check(Certificate& c, const CertifyOptions& o, const std::string&
 DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                const Simulation<Rational>& sim, const Mat<double>& Y1_in, const Mat<double>& Y2_in,
                                const CertifyOptions& o, const std::string& path) {
-  const auto t0 = std::chrono::steady_clock::now();
   DualOutcome out;
-  const auto done = [&](std::string reason) {
-    out.reason = std::move(reason);
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return out;
-  };
+  const auto done = outcome_closer(out);
   const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
   const Eigen::Index L = n - leading_zero_samples(sim.z);
   const Eigen::Index P = L * (ny + nz), N = n * ny;
@@ -241,13 +246,8 @@ DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment
 DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                               const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
                               const std::string& path) {
-  const auto t0 = std::chrono::steady_clock::now();
   DualOutcome out;
-  const auto done = [&](std::string reason) {
-    out.reason = std::move(reason);
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return out;
-  };
+  const auto done = outcome_closer(out);
   const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
   const Eigen::Index L = n - leading_zero_samples(sim.z), N = n * ny;
   if (L == 0 || nz == 0) return done("z is identically zero: no Delta form");

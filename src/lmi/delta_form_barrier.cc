@@ -77,14 +77,7 @@ struct Problem {
 
 /// T_Δ (L·ny × L·nz; rows a·ny + i, columns b·nz + j) of the taps in x.
 Dense block_toeplitz(const Problem& p, const Vecd& x) {
-  Dense T = Dense::Zero(p.L * p.ny, p.L * p.nz);
-  for (Index i = 0; i < p.ny; ++i)
-    for (Index j = 0; j < p.nz; ++j) {
-      const auto h = p.tap_sequence(x, i, j);
-      for (Index b = 0; b < p.L; ++b)
-        for (Index a = b; a < p.L; ++a) T(a * p.ny + i, b * p.nz + j) = h(a - b);
-    }
-  return T;
+  return tap_toeplitz_dense<double>(Eigen::Map<const Dense>(x.data(), p.L, p.q()), p.ny, p.nz);
 }
 
 /// d on the rows ≥ m (L × ny): r_i − Σ_j Z_j h_ij.

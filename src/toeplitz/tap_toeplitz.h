@@ -13,6 +13,19 @@
 
 namespace lpvid {
 
+/// T itself, dense (L·ny × L·nz), over any scalar: the definition the fast
+/// products are checked against, and the exact T of verify/path_dual.h.
+template <typename S>
+Mat<S> tap_toeplitz_dense(const Mat<S>& taps, Eigen::Index ny, Eigen::Index nz) {
+  const Eigen::Index L = taps.rows();
+  Mat<S> T = Mat<S>::Zero(L * ny, L * nz);
+  for (Eigen::Index a = 0; a < L; ++a)
+    for (Eigen::Index b = 0; b <= a; ++b)
+      for (Eigen::Index i = 0; i < ny; ++i)
+        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
+  return T;
+}
+
 /// T Tᵀ (L·ny square) by (T Tᵀ)(a, a') = (T Tᵀ)(a−1, a'−1) + h_a h_a'ᵀ
 /// (blocks; the first block row and column are h_a h_0ᵀ, h_0 h_a'ᵀ):
 /// O(L²·ny²·nz) instead of O(L³). Fixed loop order (deterministic).

@@ -11,6 +11,7 @@
 #include "lmi/delta_form_lmi.h"
 #include "toeplitz/fir.h"
 #include "solvers/sdp_solver.h"
+#include "toeplitz/tap_toeplitz.h"
 
 namespace lpvid {
 namespace {
@@ -45,16 +46,6 @@ rc::Gen<Signals> signals() {
   return rc::gen::exec([] { return *signals(*rc::gen::arbitrary<bool>()); });
 }
 
-/// T_Δ (L·ny × L·nz, rows a·ny + i, columns b·nz + j) of taps (L × ny·nz).
-Mat<double> block_toeplitz(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz) {
-  const Eigen::Index L = taps.rows();
-  Mat<double> T = Mat<double>::Zero(L * ny, L * nz);
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index b = 0; b <= a; ++b)
-      for (Eigen::Index i = 0; i < ny; ++i)
-        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
-  return T;
-}
 
 RC_GTEST_PROP(DeltaFormBarrier, OptimumEqualsTheGeneralSdpSolvers, ()) {
   const Signals s = *signals();
@@ -91,7 +82,7 @@ RC_GTEST_PROP(DeltaFormBarrier, OptimumEqualsTheGeneralSdpSolvers, ()) {
   RC_ASSERT(std::abs(a - b) <= 1e-5 * std::max(std::abs(a), std::abs(b)) + floor);
   // The taps are a feasible point: ‖T_h‖² ≤ δ² and ‖r − h∗z‖² ≤ N·d_max² (up to rounding).
   const Eigen::Index ny = s.r.cols(), nz = s.z.cols();
-  const Mat<double> T = block_toeplitz(fast.taps, ny, nz);
+  const Mat<double> T = tap_toeplitz_dense(fast.taps, ny, nz);
   const double norm = Eigen::JacobiSVD<Mat<double>>(T).singularValues()(0);
   RC_ASSERT(norm * norm <= fast.delta2 * (1 + 1e-9));
   const Mat<double> d = s.r - apply_fir(fast.taps, s.z, ny, fast.horizon);

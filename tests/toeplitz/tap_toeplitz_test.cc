@@ -1,5 +1,6 @@
-// toeplitz/tap_toeplitz.h against the dense block Toeplitz matrix built
-// entry by entry from its definition T(a·ny + i, b·nz + j) = h_ij(a − b).
+// toeplitz/tap_toeplitz.h: the fast products against the dense block Toeplitz
+// matrix built entry by entry from its definition T(a·ny + i, b·nz + j) =
+// h_ij(a − b) (tap_toeplitz_dense) and Eigen's plain products.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
@@ -9,15 +10,6 @@
 namespace lpvid {
 namespace {
 
-Mat<double> dense_t(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz) {
-  const Eigen::Index L = taps.rows();
-  Mat<double> T = Mat<double>::Zero(L * ny, L * nz);
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index b = 0; b <= a; ++b)
-      for (Eigen::Index i = 0; i < ny; ++i)
-        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
-  return T;
-}
 
 Mat<double> random(Eigen::Index r, Eigen::Index c) {
   Mat<double> m(r, c);
@@ -29,7 +21,7 @@ Mat<double> random(Eigen::Index r, Eigen::Index c) {
 RC_GTEST_PROP(TapToeplitz, GramAndProductEqualTheDenseOnes, ()) {
   const Eigen::Index L = *rc::gen::inRange(1, 12), ny = *rc::gen::inRange(1, 4), nz = *rc::gen::inRange(1, 4);
   const Mat<double> taps = random(L, ny * nz);
-  const Mat<double> T = dense_t(taps, ny, nz);
+  const Mat<double> T = tap_toeplitz_dense(taps, ny, nz);
   const Mat<double> G = T * T.transpose();
   RC_ASSERT((tap_gram(taps, ny, nz) - G).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + G.cwiseAbs().maxCoeff()));
   const Mat<double> X = random(*rc::gen::inRange(1, 6), L * ny);

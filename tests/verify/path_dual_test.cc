@@ -13,6 +13,7 @@
 
 #include "core/number_text.h"
 #include "toeplitz/delta_form_dual.h"
+#include "toeplitz/tap_toeplitz.h"
 #include "verify/exact_psd.h"
 #include "verify/path_dual.h"
 #include "verify/power_of_two.h"
@@ -61,16 +62,6 @@ Case random_case() {
   return c;
 }
 
-/// The dense T (L·ny × L·nz) of the taps.
-Mat<Rational> dense_toeplitz(const Mat<Rational>& taps, Eigen::Index ny, Eigen::Index nz) {
-  const Eigen::Index L = taps.rows();
-  Mat<Rational> T = Mat<Rational>::Zero(L * ny, L * nz);
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index b = 0; b <= a; ++b)
-      for (Eigen::Index i = 0; i < ny; ++i)
-        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
-  return T;
-}
 
 RC_GTEST_PROP(PathDual, CompactSumsEqualTheDenseFormulasOfTheExpandedPoint, ()) {
   Case c = random_case();
@@ -81,7 +72,7 @@ RC_GTEST_PROP(PathDual, CompactSumsEqualTheDenseFormulasOfTheExpandedPoint, ()) 
   const PathDualGrid grid = path_dual_round(U_d, c.recipe.u_exponent);
   RC_ASSERT(grid.problem.empty());
   // The floating recipe against a direct dense computation of μ(t·I − TTᵀ)⁻¹.
-  const Mat<double> Td = nearest_double(dense_toeplitz(c.recipe.taps, c.ny, c.nz));
+  const Mat<double> Td = nearest_double(tap_toeplitz_dense(c.recipe.taps, c.ny, c.nz));
   Mat<double> S = -Td * Td.transpose();
   S.diagonal().array() += nearest_double(c.recipe.t);
   const Mat<double> U_direct = nearest_double(c.recipe.mu) * S.llt().solve(Mat<double>::Identity(S.rows(), S.rows()));
@@ -108,7 +99,7 @@ RC_GTEST_PROP(PathDual, CompactSumsEqualTheDenseFormulasOfTheExpandedPoint, ()) 
   RC_ASSERT(dense.beta == v.terms.beta);
   // ‖E‖_F² from the expanded W: E = W + UT.
   const Eigen::Index P = c.L * c.ny, Q = c.L * c.nz;
-  const Mat<Rational> E = Y1.topRightCorner(P, Q) + Y1.topLeftCorner(P, P) * dense_toeplitz(c.recipe.taps, c.ny, c.nz);
+  const Mat<Rational> E = Y1.topRightCorner(P, Q) + Y1.topLeftCorner(P, P) * tap_toeplitz_dense(c.recipe.taps, c.ny, c.nz);
   Rational e2(0);
   for (Eigen::Index i = 0; i < P; ++i)
     for (Eigen::Index j = 0; j < Q; ++j) e2 += E(i, j) * E(i, j);
