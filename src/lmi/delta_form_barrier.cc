@@ -204,6 +204,26 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
   if (!p.s_var) H.topLeftCorner(nt, nt) += 4.0 * Zd * Zd.transpose() / (pt.phi * pt.phi);
 }
 
+/// The tangent of the central path from μ to μ/factor at a centred x:
+/// with F_μ = f₀/μ + φ (f₀ = c_t t + c_s‖d‖²/N when s is eliminated, c_t t
+/// when it is fixed), ∇f₀/μ + ∇φ = 0 differentiated in μ gives H ẋ = ∇f₀/μ²,
+/// so Δx = (μ/factor − μ)·ẋ = −(1 − 1/factor)·H⁻¹(∇f₀/μ). Empty when H
+/// cannot be factored.
+Vecd predictor_step(const Problem& p, const Point& pt, const Dense& H, double mu, double factor) {
+  Vecd v = Vecd::Zero(p.dim());
+  if (p.t_var) v(p.taps()) = p.ct / mu;
+  if (p.s_var) {
+    const double w = p.cs / (p.N * mu);
+    for (Index i = 0; i < p.ny; ++i)
+      for (Index j = 0; j < p.nz; ++j)
+        v.segment((i * p.nz + j) * p.L, p.L) = -2.0 * w * (p.Z[static_cast<size_t>(j)].transpose() * pt.d_tail.col(i));
+  }
+  const Eigen::LDLT<Dense> ldlt(H);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return {};
+  Vecd step = -(1.0 - 1.0 / factor) * ldlt.solve(v);
+  return step.allFinite() ? step : Vecd();
+}
+
 /// The scaled problem of solve_delta_form_barrier (σ_z, σ_r returned).
 Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective, double& sigma_z,
                      double& sigma_r) {
@@ -365,7 +385,13 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
       if (dec2 < tol) return "";
       // Backtracking (Armijo) from the full step; F_μ changes are O(1)
       // numbers (the objective enters divided by μ but as a difference).
-      double alpha = 1.0;
+      // nz > 1: the noise term is flat along taps with Σ_j Z_j h_ij = 0 and
+      // only the log-det barrier rules them; full steps with λ > 1 (outside
+      // the Dikin ellipsoid) there ran to within 1e-8 of tI − TTᵀ's boundary
+      // and Newton then crawled out at λ² ≈ 3 for ~100 steps (3×3, n = 200).
+      // From λ·α ≤ damping the step stays within a few Dikin radii.
+      const double lambda = std::sqrt(dec2);
+      double alpha = p.nz > 1 ? std::min(1.0, options.damping / (1.0 + lambda)) : 1.0;
       Point trial;
       for (int ls = 0; ls < 60; ++ls, alpha *= 0.5) {
         trial = evaluate(p, x + alpha * dx, mu);
@@ -397,8 +423,20 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
     }
     if (p.nu * mu <= std::max((feasibility ? options.feasibility_rel_gap : options.rel_gap) * std::abs(obj), options.abs_gap))
       break;
-    mu /= p.s_var ? options.mu_factor : options.mu_factor_fixed_noise;
+    const double factor = p.s_var ? options.mu_factor : options.mu_factor_fixed_noise;
+    const Vecd step = options.predictor ? predictor_step(p, pt, H, mu, factor) : Vecd();
+    mu /= factor;
     pt = evaluate(p, x, mu);  // same x, new μ (always interior: F_μ's domain does not depend on μ)
+    // the tangent step, halved until it is interior and lowers F_μ
+    double beta = 1.0;
+    for (int k = 0; k < 12 && step.size() == p.dim(); ++k, beta *= 0.5) {
+      Point trial = evaluate(p, x + beta * step, mu);
+      if (trial.interior && trial.value < pt.value) {
+        x += beta * step;
+        pt = std::move(trial);
+        break;
+      }
+    }
   }
   // Y = μ·C⁻¹ is dual feasible only on the central path: centre tightly first
   // (the residual is what identify/dual_certify.h must project away and
