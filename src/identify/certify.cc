@@ -23,6 +23,13 @@
 #include "verify/certificate_check.h"
 
 namespace lpvid {
+
+std::string lower_certificate_path(const std::string& certificate_path) {
+  namespace fs = std::filesystem;
+  fs::path p(certificate_path);
+  return (p.parent_path() / (p.stem().string() + ".lower.json")).string();
+}
+
 namespace {
 
 /// Largest singular value² of the block Toeplitz T_Δ (L blocks, K taps).
@@ -208,12 +215,6 @@ Rational objective_at(const BoundObjective& obj, const Rational& delta2, const R
   return Rational(0);
 }
 
-/// "<stem>.lower.json" beside the certificate.
-std::string lower_certificate_path(const std::string& certificate_path) {
-  namespace fs = std::filesystem;
-  fs::path p(certificate_path);
-  return (p.parent_path() / (p.stem().string() + ".lower.json")).string();
-}
 
 /// One Δ-form (or KYP) solve with K taps (0: full horizon), dual matrices
 /// requested when the caller wants a dual certificate.

@@ -78,6 +78,10 @@ struct CertifyOptions {
   bool scale_signals = false;
 };
 
+/// Where the lower end's (dual) certificate is written: "<stem>.lower.json"
+/// beside `certificate_path` (a.cert.json → a.cert.lower.json).
+std::string lower_certificate_path(const std::string& certificate_path);
+
 struct CertifiedBounds {
   bool verified = false;
   std::string reason;           ///< why not verified

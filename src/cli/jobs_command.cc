@@ -1,0 +1,365 @@
+// lpvid jobs plan / lpvid jobs merge: the windows of a long record as
+// separate processes (cli/jobs_plan.h says what a window's bound claims).
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/inputs.h"
+#include "cli/jobs_plan.h"
+#include "cli/report.h"
+#include "core/decimal_rounding.h"
+#include "core/file_io.h"
+#include "core/input_error.h"
+#include "core/number_text.h"
+#include "core/sha256.h"
+#include "diagnose/bound_windows.h"
+#include "model/model_file.h"
+#include "model/simulate.h"
+#include "verify/certificate_check.h"
+
+namespace lpvid::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct PlanArgs {
+  long window = kDefaultWindowLength, min_last = kDefaultMinLastWindow;
+  std::string dir, lpvid;
+};
+
+std::string objective_kind(const BoundObjective& o) {
+  switch (o.kind) {
+    case BoundObjective::Kind::kMinDmax: return "min_dmax";
+    case BoundObjective::Kind::kMinDelta: return "min_delta";
+    case BoundObjective::Kind::kFeasibility: return "feasibility";
+    case BoundObjective::Kind::kWeighted: break;
+  }
+  return "weighted";
+}
+
+std::string window_name(int k, const char* suffix) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "w%05d", k);
+  return buf + std::string(suffix);
+}
+
+/// The options every job passes on to `lpvid invalidate`.
+std::string forwarded_options(const CommonOptions& c) {
+  std::string s;
+  if (!c.names.empty()) {
+    s += " --names";
+    for (const auto& n : c.names) s += " " + shell_quote(n);
+  }
+  s += " --toeplitz " + c.toeplitz + " --solver " + c.solver + " --max-taps " + std::to_string(c.max_taps) +
+       " --delta-norm " + c.delta_norm;
+  if (c.dense_dual) s += " --dense-dual";
+  if (!c.delta_text.empty()) s += " --delta " + shell_quote(c.delta_text);
+  if (!c.dmax_text.empty()) s += " --dmax " + shell_quote(c.dmax_text);
+  if (c.lambda) s += " --lambda " + double_to_text(*c.lambda);
+  return s;
+}
+
+int run_plan(CommonOptions& c, const PlanArgs& a) {
+  if (!c.certificate_path.empty() || !c.report_path.empty() || !c.write_sdpa.empty())
+    throw InputError("jobs plan: --certificate, --report and --write-sdpa belong to the jobs (one per window); "
+                     "'lpvid jobs merge' writes the report");
+  if (a.window < 2) throw InputError("jobs plan: --window must be at least 2 rows");
+  if (a.min_last < 1) throw InputError("jobs plan: --min-last must be at least 1 row");
+  Inputs in = load_inputs(c);
+  if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
+    throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" (the jobs run 'lpvid invalidate')");
+  const long first_row = c.rows_text.empty() ? 0 : c.row_begin;
+  const std::vector<RowWindow> windows = tile_windows(in.exp_q.n(), a.window, a.min_last);
+
+  JobPlan plan;
+  plan.data_path = fs::absolute(c.data_path).lexically_normal().string();
+  plan.data_sha256 = sha256_hex(read_text_file(c.data_path));
+  plan.data_names = c.names;
+  plan.model_path = fs::absolute(c.model_path).lexically_normal().string();
+  plan.objective = objective_kind(in.objective);
+  plan.delta_text = c.delta_text;
+  plan.dmax_text = c.dmax_text;
+  plan.lambda_text = c.lambda ? double_to_text(*c.lambda) : "";
+  plan.window = a.window;
+  plan.min_last = a.min_last;
+
+  std::error_code ec;
+  fs::create_directories(a.dir, ec);
+  if (!fs::is_directory(a.dir)) throw IoError("jobs plan: cannot create the folder " + a.dir);
+  const fs::path dir = fs::absolute(a.dir).lexically_normal();
+  const std::string program = a.lpvid.empty() ? fs::read_symlink("/proc/self/exe", ec).string() : a.lpvid;
+  if (program.empty()) throw InputError("jobs plan: cannot find this program's path; give --lpvid");
+  const std::string options = forwarded_options(c);
+
+  // each window starts from the model's own state there (x0 of the model at
+  // the first selected row, simulated in floating point, 12 digits declared)
+  const Simulation<double> sim = simulate(in.model_d, in.exp_d);
+  std::string job_lines;
+  for (size_t k = 0; k < windows.size(); ++k) {
+    const auto [b, e] = windows[k];
+    JobWindow w;
+    w.index = static_cast<int>(k);
+    w.file_begin = first_row + static_cast<long>(b);
+    w.file_end = first_row + static_cast<long>(e);
+    w.model = window_name(w.index, ".model.json");
+    w.certificate = window_name(w.index, ".cert.json");
+    w.report = window_name(w.index, ".report.json");
+    LpvModel<Rational> m = in.model_q;
+    for (Eigen::Index i = 0; i < m.x0.size(); ++i) m.x0(i) = round_to_digits(sim.x(b, i), 12);
+    write_model_file((dir / w.model).string(), m);
+    w.command = shell_quote(program) + " invalidate --quiet --data " + shell_quote(plan.data_path) + " --rows " +
+                std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + " --model " +
+                shell_quote((dir / w.model).string()) + " --certificate " + shell_quote((dir / w.certificate).string()) +
+                " --report " + shell_quote((dir / w.report).string()) + options;
+    job_lines += w.command + "\n";
+    plan.windows.push_back(w);
+  }
+  write_text_file((dir / "jobs.txt").string(), job_lines, "job list");
+  write_text_file((dir / "plan.json").string(), plan_json(plan).dump(1) + "\n", "job plan");
+
+  const std::string jobs = shell_quote((dir / "jobs.txt").string());
+  std::cout << "planned " << windows.size() << " window(s) of " << a.window << " rows over " << in.exp_q.n()
+            << " samples of " << c.data_path << " (" << in.objective.describe() << ")\n"
+            << "  " << (dir / "jobs.txt").string() << ": one 'lpvid invalidate' per line; each window starts from the\n"
+            << "  model's own simulated state (declared as x0 in its model file " << window_name(0, ".model.json")
+            << ", ...)\n"
+            << "time one window first:   sed -n 1p " << jobs << " | (time bash)\n"
+            << "then run them with any batch engine, e.g.\n"
+            << "  GNU parallel:  parallel -j 2 < " << jobs << "\n"
+            << "  xargs:         xargs -P 2 -d '\\n' -n 1 sh -c < " << jobs << "\n"
+            << "  Slurm array:   sbatch --array=1-" << windows.size() << " --wrap \"sed -n \\${SLURM_ARRAY_TASK_ID}p "
+            << jobs << " | bash\"\n"
+            << "and assemble:    lpvid jobs merge --dir " << shell_quote(dir.string())
+            << "   (re-checks every certificate exactly)\n";
+  return kExitOk;
+}
+
+/// What merge found for one window.
+struct Merged {
+  JobWindow w;
+  std::string status = "missing";  ///< verified, invalidated, missing, refused
+  std::string reason;
+  Rational delta2, dmax2, upper, lower;
+  bool has_lower = false;
+  std::string x0;
+};
+
+/// The model without x0 as JSON (a window's model must be the planned one
+/// apart from its declared initial state).
+std::string without_x0(LpvModel<Rational> m) {
+  m.x0.setZero();
+  return write_model_json(m);
+}
+
+/// Reads, matches against the plan and checks one certificate; "" when it
+/// holds, the reason otherwise.
+std::string check_window_certificate(const JobPlan& plan, const JobWindow& w, const std::string& path,
+                                     const std::string& planned_model, Certificate& c) {
+  try {
+    c = read_certificate(path);
+  } catch (const InputError& e) {
+    return std::string("unreadable: ") + e.what();
+  }
+  if (c.data_sha256 != plan.data_sha256) return "made from other data (sha256 " + c.data_sha256 + ")";
+  if (c.row_begin != w.file_begin || c.row_end != w.file_end)
+    return "certifies rows " + std::to_string(c.row_begin) + ":" + std::to_string(c.row_end) + ", not the window's";
+  if (without_x0(c.model) != planned_model) return "certifies another model than the planned one";
+  const CertificateVerdict v = check_certificate(c, fs::path(path).parent_path().string());
+  return v.holds ? "" : "the exact check refused it: " + v.reason;
+}
+
+Rational objective_value(const std::string& kind, const Rational& lambda, const Rational& d2, const Rational& m2) {
+  if (kind == "min_dmax") return m2;
+  if (kind == "min_delta") return d2;
+  return lambda * d2 + (Rational(1) - lambda) * m2;
+}
+
+int run_merge(const std::string& dir_text, std::string report_path, bool quiet) {
+  const JobPlan plan = read_plan(dir_text);
+  const fs::path dir(dir_text);
+  if (sha256_hex(read_text_file(plan.data_path)) != plan.data_sha256)
+    throw InputError(plan.data_path + ": the data changed since the plan was made (sha256 differs)");
+  const std::string planned_model = without_x0(read_model_file<Rational>(plan.model_path));
+  const Rational lambda = plan.lambda_text.empty() ? Rational(1, 2) : rational_from_text(plan.lambda_text);
+  const auto started = std::chrono::steady_clock::now();
+  auto last = started;
+  std::vector<Merged> rows;
+  for (const JobWindow& w : plan.windows) {
+    Merged m;
+    m.w = w;
+    const std::string cert = (dir / w.certificate).string();
+    if (fs::is_regular_file(cert)) {
+      Certificate c;
+      m.reason = check_window_certificate(plan, w, cert, planned_model, c);
+      if (m.reason.empty()) {
+        m.status = c.claim == CertificateClaim::kInvalidated ? "invalidated" : "verified";
+        m.delta2 = c.delta2;
+        m.dmax2 = c.dmax2;
+        m.upper = objective_value(plan.objective, lambda, c.delta2, c.dmax2);
+        for (Eigen::Index i = 0; i < c.model.x0.size(); ++i) m.x0 += (i ? " " : "") + rational_to_text(c.model.x0(i));
+        if (c.claim == CertificateClaim::kLowerBound) m.status = "refused", m.reason = "a lower-bound certificate in place of the upper end";
+      } else {
+        m.status = "refused";
+      }
+      const std::string low = lower_certificate_path(cert);
+      if (m.status == "verified" && plan.objective != "feasibility" && fs::is_regular_file(low)) {
+        Certificate cl;
+        const std::string why = check_window_certificate(plan, w, low, planned_model, cl);
+        if (why.empty() && cl.claim == CertificateClaim::kLowerBound) {
+          m.has_lower = true;
+          m.lower = cl.lower_bound;
+        } else {
+          m.reason = "lower end not counted: " + (why.empty() ? std::string("not a lower-bound claim") : why);
+        }
+      }
+    } else {
+      m.reason = "no certificate (the job did not run, failed, or found no verified bound; see " + w.report + ")";
+    }
+    rows.push_back(m);
+    const auto now = std::chrono::steady_clock::now();
+    if (!quiet && (std::chrono::duration<double>(now - last).count() > 2.0 || rows.size() == plan.windows.size())) {
+      std::fprintf(stderr, "[jobs merge %6.1f s] checked %zu of %zu windows\n",
+                   std::chrono::duration<double>(now - started).count(), rows.size(), plan.windows.size());
+      last = now;
+    }
+  }
+
+  size_t verified = 0, invalidated = 0, missing = 0, refused = 0;
+  Rational worst_upper, worst_dmax2, worst_delta2, weighted_dmax2, best_lower;
+  long samples = 0;
+  bool any_lower = false;
+  nlohmann::ordered_json windows = nlohmann::ordered_json::array();
+  for (const Merged& m : rows) {
+    nlohmann::ordered_json j = {{"index", m.w.index}, {"rows", {m.w.file_begin, m.w.file_end}}, {"status", m.status}};
+    if (m.status == "verified") {
+      ++verified;
+      const long n = m.w.file_end - m.w.file_begin;
+      samples += n;
+      weighted_dmax2 += Rational(n) * m.dmax2;
+      if (m.upper > worst_upper) worst_upper = m.upper;
+      if (m.dmax2 > worst_dmax2) worst_dmax2 = m.dmax2;
+      if (m.delta2 > worst_delta2) worst_delta2 = m.delta2;
+      j["delta2_exact"] = rational_to_text(m.delta2);
+      j["dmax2_exact"] = rational_to_text(m.dmax2);
+      j["delta"] = upper_sqrt_text(m.delta2);
+      j["dmax"] = upper_sqrt_text(m.dmax2);
+      if (plan.objective != "feasibility") j["upper_exact"] = rational_to_text(m.upper);
+      if (m.has_lower) {
+        j["lower_exact"] = rational_to_text(m.lower);
+        if (!any_lower || m.lower > best_lower) best_lower = m.lower;
+        any_lower = true;
+      }
+      j["x0"] = m.x0;
+    } else if (m.status == "invalidated") {
+      ++invalidated;
+    } else if (m.status == "missing") {
+      ++missing;
+    } else {
+      ++refused;
+    }
+    if (!m.reason.empty()) j["reason"] = m.reason;
+    j["certificate"] = m.w.certificate;
+    windows.push_back(j);
+  }
+
+  // the table: every window up to 40, else the first 10 verified ones and
+  // the first 30 that are not
+  std::cout << "lpvid jobs merge: " << plan.windows.size() << " window(s) of " << plan.data_path << ", objective "
+            << plan.objective << "; every certificate re-checked exactly\n";
+  std::printf("%6s %15s  %-11s %12s %12s  %s\n", "window", "rows", "status", "delta <=", "dmax <=", "note");
+  size_t shown = 0, shown_ok = 0, shown_other = 0;
+  for (const Merged& m : rows) {
+    const bool good = m.status == "verified";
+    const bool show = rows.size() <= 40 || (good ? shown_ok < 10 : shown_other < 30);
+    if (!show) continue;
+    ++shown;
+    ++(good ? shown_ok : shown_other);
+    const std::string span = std::to_string(m.w.file_begin) + ":" + std::to_string(m.w.file_end);
+    const bool ok = m.status == "verified";
+    std::printf("%6d %15s  %-11s %12s %12s  %s\n", m.w.index, span.c_str(), m.status.c_str(),
+                ok ? upper_sqrt_text(m.delta2).c_str() : "-", ok ? upper_sqrt_text(m.dmax2).c_str() : "-",
+                m.reason.c_str());
+  }
+  if (shown < rows.size()) std::printf("   ... %zu more window(s) in the report\n", rows.size() - shown);
+  std::printf("verified %zu, invalidated %zu, missing %zu, refused %zu (of %zu)\n", verified, invalidated, missing,
+              refused, rows.size());
+
+  nlohmann::ordered_json report;
+  report["format"] = "lpvid-jobs-report/1";
+  report["data"] = {{"path", plan.data_path}, {"sha256", plan.data_sha256}};
+  report["model"] = plan.model_path;
+  report["objective"] = plan.objective;
+  report["counts"] = {{"windows", rows.size()}, {"verified", verified}, {"invalidated", invalidated},
+                      {"missing", missing},      {"refused", refused}};
+  if (verified > 0) {
+    const Rational record_dmax2 = weighted_dmax2 / Rational(samples);
+    nlohmann::ordered_json s;
+    s["largest_delta"] = upper_sqrt_text(worst_delta2);
+    s["largest_dmax"] = upper_sqrt_text(worst_dmax2);
+    // Σ_k ‖d_k‖² ≤ Σ_k n_k·ny·d_k²: the noise over the verified windows has RMS ≤ this
+    s["dmax_over_verified_windows"] = upper_sqrt_text(record_dmax2);
+    s["dmax2_over_verified_windows_exact"] = rational_to_text(record_dmax2);
+    s["samples_in_verified_windows"] = samples;
+    if (plan.objective != "feasibility") s["largest_upper_end_exact"] = rational_to_text(worst_upper);
+    if (any_lower) s["largest_lower_end_exact"] = rational_to_text(best_lower);
+    s["meaning"] = "each window: this model with the x0 declared for it explains the window's rows with ||Delta|| <= delta "
+                   "and noise RMS <= dmax (Theorem 2.1); the windows' Delta are separate";
+    report["summary"] = s;
+    std::cout << "over the " << verified << " verified window(s) (" << samples << " samples): delta <= "
+              << upper_sqrt_text(worst_delta2) << " on every window, dmax <= " << upper_sqrt_text(worst_dmax2)
+              << " on every window, noise RMS over them <= " << upper_sqrt_text(record_dmax2) << "\n";
+    if (any_lower && plan.objective != "feasibility")
+      std::cout << "largest certified lower end of the objective ("
+                << (plan.objective == "min_dmax" ? "dmax^2" : plan.objective == "min_delta" ? "delta^2" : "weighted")
+                << ") on a window: " << lower_text(best_lower) << " (no Delta within the bound does better there)\n";
+  }
+  report["windows"] = windows;
+  if (report_path.empty()) report_path = (dir / "merged.json").string();
+  write_json(report_path, report);
+  std::cout << "report " << report_path << "\n";
+  if (invalidated > 0) {
+    std::cout << "-> INVALIDATED on " << invalidated << " window(s): the model (with the state declared there) cannot "
+              << "explain those rows within the given bounds\n";
+    return kExitInvalidated;
+  }
+  if (missing + refused > 0) {
+    std::cout << "-> INCOMPLETE: " << missing + refused << " window(s) without a certificate that passed\n";
+    return kExitNotVerified;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner add_jobs_command(CLI::App& app) {
+  CLI::App* jobs = app.add_subcommand("jobs", "A long record past one machine: one job per window, then merge")
+                       ->require_subcommand(1);
+  auto common = std::make_shared<CommonOptions>();
+  auto plan = std::make_shared<PlanArgs>();
+  CLI::App* p = jobs->add_subcommand("plan", "Write one 'lpvid invalidate' command per window (jobs.txt) and plan.json");
+  add_common_options(*p, *common, true);
+  common->command = "jobs plan";
+  p->add_option("--dir", plan->dir, "folder for the plan, the window models, jobs.txt and (later) the certificates")
+      ->required();
+  p->add_option("--window", plan->window, "rows per window (default 200)");
+  p->add_option("--min-last", plan->min_last, "a last window shorter than this joins the one before (default 50)");
+  p->add_option("--lpvid", plan->lpvid, "the lpvid program the jobs run (default: this one, by absolute path)");
+  auto merge_dir = std::make_shared<std::string>();
+  auto merge_report = std::make_shared<std::string>();
+  auto merge_quiet = std::make_shared<bool>(false);
+  CLI::App* m = jobs->add_subcommand("merge", "Re-check every window's certificate exactly and assemble the report");
+  m->add_option("--dir", *merge_dir, "the folder of 'lpvid jobs plan'")->required();
+  m->add_option("--report", *merge_report, "where to write the merged report (default <dir>/merged.json)");
+  m->add_flag("--quiet", *merge_quiet, "no progress lines on stderr");
+  return [p, m, common, plan, merge_dir, merge_report, merge_quiet] {
+    if (p->parsed()) return run_plan(*common, *plan);
+    if (m->parsed()) return run_merge(*merge_dir, *merge_report, *merge_quiet);
+    return -1;
+  };
+}
+
+}  // namespace lpvid::cli

@@ -1,0 +1,90 @@
+#include "cli/jobs_plan.h"
+
+#include <filesystem>
+
+#include "core/file_io.h"
+#include "core/input_error.h"
+
+namespace lpvid::cli {
+
+nlohmann::ordered_json plan_json(const JobPlan& p) {
+  nlohmann::ordered_json j;
+  j["format"] = kJobsFormat;
+  j["data"] = {{"path", p.data_path}, {"sha256", p.data_sha256}, {"names", p.data_names}};
+  j["model"] = {{"path", p.model_path}};
+  j["objective"] = {{"kind", p.objective}, {"delta", p.delta_text}, {"dmax", p.dmax_text}, {"lambda", p.lambda_text}};
+  j["window"] = p.window;
+  j["min_last"] = p.min_last;
+  j["windows"] = nlohmann::ordered_json::array();
+  for (const JobWindow& w : p.windows)
+    j["windows"].push_back({{"index", w.index},
+                            {"rows", {w.file_begin, w.file_end}},
+                            {"model", w.model},
+                            {"certificate", w.certificate},
+                            {"report", w.report},
+                            {"command", w.command}});
+  return j;
+}
+
+JobPlan read_plan(const std::string& dir) {
+  const std::string path = (std::filesystem::path(dir) / "plan.json").string();
+  const std::string text = read_text_file(path);
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path + ": not JSON: " + e.what());
+  }
+  const auto field = [&](const nlohmann::json& obj, const char* key, const std::string& where) -> const nlohmann::json& {
+    if (!obj.is_object() || !obj.contains(key)) throw InputError(path + ": " + where + key + ": missing");
+    return obj.at(key);
+  };
+  const auto text_of = [&](const nlohmann::json& obj, const char* key, const std::string& where) {
+    const nlohmann::json& v = field(obj, key, where);
+    if (!v.is_string()) throw InputError(path + ": " + where + key + ": expected a string");
+    return v.get<std::string>();
+  };
+  if (text_of(j, "format", "") != kJobsFormat)
+    throw InputError(path + ": format: expected \"" + std::string(kJobsFormat) + "\"");
+  JobPlan p;
+  const nlohmann::json& data = field(j, "data", "");
+  p.data_path = text_of(data, "path", "data.");
+  p.data_sha256 = text_of(data, "sha256", "data.");
+  for (const auto& name : field(data, "names", "data.")) p.data_names.push_back(name.get<std::string>());
+  p.model_path = text_of(field(j, "model", ""), "path", "model.");
+  const nlohmann::json& obj = field(j, "objective", "");
+  p.objective = text_of(obj, "kind", "objective.");
+  p.delta_text = text_of(obj, "delta", "objective.");
+  p.dmax_text = text_of(obj, "dmax", "objective.");
+  p.lambda_text = text_of(obj, "lambda", "objective.");
+  p.window = field(j, "window", "").get<long>();
+  p.min_last = field(j, "min_last", "").get<long>();
+  const nlohmann::json& windows = field(j, "windows", "");
+  if (!windows.is_array() || windows.empty()) throw InputError(path + ": windows: expected a non-empty array");
+  for (size_t k = 0; k < windows.size(); ++k) {
+    const std::string where = "windows[" + std::to_string(k) + "].";
+    const nlohmann::json& w = windows[k];
+    JobWindow jw;
+    jw.index = field(w, "index", where).get<int>();
+    const nlohmann::json& rows = field(w, "rows", where);
+    if (!rows.is_array() || rows.size() != 2 || !rows[0].is_number_integer() || !rows[1].is_number_integer())
+      throw InputError(path + ": " + where + "rows: expected [begin, end]");
+    jw.file_begin = rows[0].get<long>();
+    jw.file_end = rows[1].get<long>();
+    if (jw.file_begin < 0 || jw.file_end <= jw.file_begin) throw InputError(path + ": " + where + "rows: empty window");
+    jw.model = text_of(w, "model", where);
+    jw.certificate = text_of(w, "certificate", where);
+    jw.report = text_of(w, "report", where);
+    jw.command = text_of(w, "command", where);
+    p.windows.push_back(jw);
+  }
+  return p;
+}
+
+std::string shell_quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace lpvid::cli
