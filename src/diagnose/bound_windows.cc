@@ -35,7 +35,7 @@ BoundCost estimate_bound_cost(const std::vector<RowWindow>& windows, int ny, int
   BoundCost c;
   for (const RowWindow& w : windows) {
     const double size = static_cast<double>(w.second - w.first) * static_cast<double>(ny + nz);
-    const double each = 12.0 * std::pow(size / 400.0, 2.7);
+    const double each = 3.0 * std::pow(size / 800.0, 2.4) * std::pow(static_cast<double>(ny * nz), 0.8);
     c.seconds += 2.0 * each;  // before and after
     // A compact dual certificate holds n·ny + L·ny·nz numbers of about 40 bytes
     // (measured: 31 kB at SISO n = 400, 103 kB at 2×2 n = 400).

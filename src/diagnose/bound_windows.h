@@ -41,12 +41,11 @@ struct BoundCost {
 
 /// The estimate for every window certified twice (before and after): per
 /// certification of L rows with ny outputs and nz uncertainty channels,
-/// seconds ≈ 12·(L·(ny+nz)/400)^2.7 of wall time (measured: the cascaded
-/// tanks' 200-row windows, weighted objective, about 12 s each on 2 cores;
-/// the exponent from the SISO bench table, 1.7 s at 200 rows and 10.9 s at
-/// 400 for one objective), a primal certificate ≈ 10 kB,
-/// and with `lower_ends` a dense dual matrix of (L·(ny+nz))² rationals
-/// ≈ 0.38 kB per entry (60 MB at 200 rows SISO).
+/// seconds ≈ 3·(L·(ny+nz)/800)^2.4·(ny·nz)^0.8 of wall time, both ends of
+/// the interval (the structured barrier, bench/README.md `interval_bench`
+/// 2026-11-26: SISO 2.9 s at 400 rows and 15 s at 800, 2×2 42 s at 400, 3×3
+/// 33 s at 200), a primal certificate ≈ 10 kB, and with `lower_ends` a compact
+/// dual certificate of n·ny + L·ny·nz numbers at about 40 bytes each.
 BoundCost estimate_bound_cost(const std::vector<RowWindow>& windows, int ny, int nz, bool lower_ends);
 
 }  // namespace lpvid
