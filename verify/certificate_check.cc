@@ -35,20 +35,31 @@ Mat<Rational> paper_gram(const LpvModel<Rational>& model, const Experiment<Ratio
 
 namespace {
 CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c);
-CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir);
+CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir, const std::string& data_file);
 }  // namespace
 
-CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir) {
-  return with_claim(check_claim(c, certificate_dir), c);
+std::string certificate_data_path(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+  namespace fs = std::filesystem;
+  if (!data_file.empty()) return data_file;
+  fs::path recorded(c.data_file);
+  if (recorded.is_relative()) recorded = fs::path(certificate_dir) / recorded;
+  std::error_code ec;
+  if (fs::exists(recorded, ec)) return recorded.string();
+  // moved together with its data: the file of the same name beside the certificate
+  const fs::path beside = fs::path(certificate_dir) / fs::path(c.data_file).filename();
+  return fs::exists(beside, ec) ? beside.string() : recorded.string();
+}
+
+CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+  return with_claim(check_claim(c, certificate_dir, data_file), c);
 }
 
 namespace {
-CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir) {
+CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
   namespace fs = std::filesystem;
   std::ostringstream details;
-  // 1. The data file and its hash.
-  fs::path data_path(c.data_file);
-  if (data_path.is_relative()) data_path = fs::path(certificate_dir) / data_path;
+  // 1. The data file and its hash (whichever file is read, the hash decides).
+  const fs::path data_path(certificate_data_path(c, certificate_dir, data_file));
   const std::string bytes = read_text_file(data_path.string());
   const std::string hash = sha256_hex(bytes);
   if (hash != c.data_sha256)
@@ -81,7 +92,7 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   // 3. Exact simulation.
   const Simulation<Rational> sim = simulate(c.model, exp);
   const Eigen::Index n = exp.n(), ny = c.model.ny, nz = c.model.nz();
-  details << "n = " << n << ", ny = " << ny << ", nz = " << nz << ", toeplitz mode " << to_string(c.mode);
+  details << "data " << data_path.string() << " (sha256 matches); n = " << n << ", ny = " << ny << ", nz = " << nz << ", toeplitz mode " << to_string(c.mode);
 
   if (c.claim != CertificateClaim::kConsistent) return check_dual_claim(c, exp, sim, details.str());
 
@@ -128,10 +139,10 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
 }
 }  // namespace
 
-CertificateVerdict check_certificate_file(const std::string& path) {
+CertificateVerdict check_certificate_file(const std::string& path, const std::string& data_file) {
   const Certificate c = read_certificate(path);
   const std::string dir = std::filesystem::path(path).parent_path().string();
-  return check_certificate(c, dir.empty() ? "." : dir);
+  return check_certificate(c, dir.empty() ? "." : dir, data_file);
 }
 
 namespace {
@@ -171,10 +182,10 @@ CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
 }
 }  // namespace
 
-int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err) {
+int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err, const std::string& data_file) {
   try {
     const auto start = std::chrono::steady_clock::now();
-    const CertificateVerdict v = check_certificate_file(path);
+    const CertificateVerdict v = check_certificate_file(path, data_file);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (v.holds) {
       out << v.claim_text << "\n" << v.claim_echo << "\n" << v.details << "\nchecked in exact rational arithmetic in " << secs

@@ -43,17 +43,24 @@ struct CertificateVerdict {
   std::string claim_echo;
 };
 
-/// Checks `c`; `certificate_dir` resolves a relative data path. Throws
-/// InputError for unreadable data (missing file, bad numbers): that is not a
-/// verdict.
-CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir);
+/// The data file a check reads: `data_file` when given; else the recorded
+/// path (relative to `certificate_dir`) when it exists; else the file of the
+/// same name beside the certificate when that exists (a certificate moved
+/// together with its data). Any file may be named: only the certificate's
+/// sha256 decides whether it is the data.
+std::string certificate_data_path(const Certificate& c, const std::string& certificate_dir, const std::string& data_file = "");
+
+/// Checks `c`; `certificate_dir` resolves a relative data path, `data_file`
+/// overrides it (certificate_data_path). Throws InputError for unreadable
+/// data (missing file, bad numbers): that is not a verdict.
+CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file = "");
 
 /// Reads the file and checks it.
-CertificateVerdict check_certificate_file(const std::string& path);
+CertificateVerdict check_certificate_file(const std::string& path, const std::string& data_file = "");
 
 /// `lpvid-verify certificate C.json`: prints the claim that was checked,
 /// "consistent", "invalidated" or "lower_bound <value>" (exit 0), or
 /// "invalid: <reason>" (exit 1); exit 2 on unreadable input.
-int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err);
+int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err, const std::string& data_file = "");
 
 }  // namespace lpvid

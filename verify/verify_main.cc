@@ -38,12 +38,15 @@ CLI::App* add_psd_subcommand(CLI::App& app, PsdArgs& args) {
 }
 
 struct CertificateArgs {
-  std::string file;
+  std::string file, data;
 };
 
 CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
   CLI::App* c = app.add_subcommand("certificate", "Check an lpvid certificate exactly, from the data text to the PSD decision");
   c->add_option("file", args.file, "certificate (lpvid-certificate/1 JSON)")->required();
+  c->add_option("--data", args.data,
+                "the data file to read instead of the recorded path (its sha256 must still match); without it a "
+                "missing recorded path falls back to the file of the same name beside the certificate");
   c->footer("Exit status: 0 consistent, 1 invalid (with the reason), 2 missing/malformed/too large input, 6 read failure.");
   return c;
 }
@@ -70,7 +73,7 @@ int main(int argc, char** argv) {
 
   // Dispatch: one branch per subcommand.
   if (psd->parsed()) return lpvid::run_psd_command(psd_args.file, std::cout, std::cerr, psd_args.options);
-  if (certificate->parsed()) return lpvid::run_certificate_command(certificate_args.file, std::cout, std::cerr);
+  if (certificate->parsed()) return lpvid::run_certificate_command(certificate_args.file, std::cout, std::cerr, certificate_args.data);
 
   std::cerr << "lpvid-verify: no subcommand\n";
   return lpvid::kPsdExitBadInput;
