@@ -7,9 +7,11 @@
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "identify/certify.h"
 #include "identify/fix_and_certify.h"
+#include "model/model_file.h"
 #include "solvers/external_solvers.h"
 
 namespace lpvid::cli {
@@ -25,9 +27,11 @@ struct IdentifyArgs {
   std::string method = "relaxation";
   long alt_taps = 16;
   std::vector<std::string> basis;  ///< --basis: replaces the model's correction basis
+  std::string model_out;           ///< --model-out: the identified exact model
 };
 
 int run_identify(IdentifyArgs& a) {
+  if (!a.model_out.empty()) check_output_file(a.model_out, "--model-out");
   Inputs in = load_inputs(a.common);
   if (!a.basis.empty()) {
     const std::vector<Monomial> basis = parse_basis(a.basis, in.model_q.scheduling);
@@ -112,6 +116,20 @@ int run_identify(IdentifyArgs& a) {
     report["interval"] = interval_json(b, in.objective);
     report["interval"]["scope"] = "the model with the identified theta fixed (not the model class)";
   }
+  if (!a.model_out.empty()) {
+    // the exact model the bounds are about: θ folded in, x0 (and φ) as identified
+    LpvModel<Rational> m = id.fixed.model;
+    // θ is folded into C and D: a correction basis with no fixed part left
+    // would only make 'invalidate' say that it ignores it
+    const auto zero = [](const std::vector<Mat<Rational>>& v) {
+      return std::all_of(v.begin(), v.end(), [](const Mat<Rational>& x) { return x.isZero(); });
+    };
+    if (zero(m.correction.A) && zero(m.correction.B)) m.correction = {};
+    write_model_file(a.model_out, m);
+    report["model_out"] = a.model_out;
+    std::cout << "  model       " << a.model_out << " (the identified model, exact; 'lpvid invalidate --model "
+              << a.model_out << "' re-certifies it)\n";
+  }
   write_json(a.common.report_path, report);
   return b.verified ? kExitOk : kExitNotVerified;
 }
@@ -135,6 +153,8 @@ Runner add_identify_command(CLI::App& app) {
   cmd->add_option("--basis", args->basis, "correction basis, e.g. 1,rho1,rho1*rho2 (replaces the model's)")
       ->delimiter(',');
   cmd->add_flag("--no-offset", args->no_offset, "do not identify the offset phi even if the model declares one");
+  cmd->add_option("--model-out", args->model_out,
+                  "write the identified model (exact, the one the bounds are about) as an lpvid-model/1 file");
   return [cmd, args] { return cmd->parsed() ? run_identify(*args) : -1; };
 }
 
