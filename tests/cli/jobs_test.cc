@@ -23,17 +23,7 @@ namespace {
 
 using gen::CliRunner;
 
-struct Jobs : CliRunner {
-  nlohmann::json read_json(const std::string& path) {
-    std::ifstream in(path);
-    return nlohmann::json::parse(in);
-  }
-  std::string read_text(const std::string& path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-  void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
-};
+struct Jobs : CliRunner {};
 
 TEST_F(Jobs, PlanRunMergeBoundsEachWindowByItsTrueResidualAndCatchesTampering) {
   ASSERT_EQ(run("generate", "example1 --n 300 --noise-variance 0.01 --out " + file("d.csv") + " --truth-out " +

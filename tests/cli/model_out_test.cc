@@ -15,12 +15,7 @@ namespace {
 
 using gen::CliRunner;
 
-struct ModelOut : CliRunner {
-  nlohmann::json read_json(const std::string& path) {
-    std::ifstream in(path);
-    return nlohmann::json::parse(in);
-  }
-};
+struct ModelOut : CliRunner {};
 
 TEST_F(ModelOut, InvalidateOnTheWrittenModelReproducesIdentifysInterval) {
   ASSERT_EQ(run("generate", "example1 --n 50 --noise-variance 0.01 --out " + file("d.csv") + " --model-out " +

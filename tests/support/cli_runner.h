@@ -13,6 +13,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 namespace lpvid::gen {
 
 struct CliRunner : ::testing::Test {
@@ -43,6 +45,13 @@ struct CliRunner : ::testing::Test {
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
   std::string file(const std::string& name) const { return (dir / name).string(); }
+  /// Whole files, by path.
+  static std::string read_text(const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  static void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+  static nlohmann::json read_json(const std::string& path) { return nlohmann::json::parse(read_text(path)); }
 };
 
 }  // namespace lpvid::gen
