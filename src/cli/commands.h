@@ -20,5 +20,6 @@ Runner add_diagnose_command(CLI::App& app);
 Runner add_fit_linear_command(CLI::App& app);
 Runner add_certify_command(CLI::App& app);
 Runner add_jobs_command(CLI::App& app);
+Runner add_compare_command(CLI::App& app);
 
 }  // namespace lpvid::cli

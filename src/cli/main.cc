@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   runners.push_back(add_fit_linear_command(app));
   runners.push_back(add_certify_command(app));
   runners.push_back(add_jobs_command(app));
+  runners.push_back(add_compare_command(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

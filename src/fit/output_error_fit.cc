@@ -1,4 +1,5 @@
 #include "fit/output_error_fit.h"
+#include "fit/output_score.h"
 
 #include <cmath>
 #include <algorithm>
@@ -125,17 +126,9 @@ FreeRunScore warmup_score(const LpvModel<double>& model, const Experiment<double
   FreeRunScore s;
   s.warmup = warmup;
   s.scored = exp.n() - warmup;
-  const Mat<double> y = exp.y.bottomRows(s.scored);
-  const Mat<double> e = y - out.bottomRows(s.scored);
-  if (!e.allFinite()) {
-    s.rms = std::numeric_limits<double>::infinity();
-    s.fit_percent = -std::numeric_limits<double>::infinity();
-    return s;
-  }
-  s.rms = std::sqrt(e.squaredNorm() / static_cast<double>(e.size()));
-  const Mat<double> centred = y.rowwise() - y.colwise().mean();
-  const double spread = centred.norm();
-  s.fit_percent = spread > 0 ? 100.0 * (1.0 - e.norm() / spread) : -std::numeric_limits<double>::infinity();
+  const OutputScores scores = score_outputs(exp.y.bottomRows(s.scored), out.bottomRows(s.scored));
+  s.rms = scores.rms_all;
+  s.fit_percent = scores.fit_percent_all;
   return s;
 }
 
