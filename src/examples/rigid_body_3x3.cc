@@ -159,7 +159,7 @@ RigidBodyParts rigid_body_experiment(const RigidBodyOptions& o) {
   // Part 3's u*: slowly varying (Figure 4's last section), three sinusoids.
   const long n3 = o.n;
   Mat<double> slow(n3, 3);
-  const double period[3] = {240, 200, 280}, phase[3] = {-1.5707963267948966, 0, 1.5707963267948966};
+  const double period[3] = {720, 600, 840}, phase[3] = {-1.5707963267948966, 0, 1.5707963267948966};
   for (long k = 0; k < n3; ++k)
     for (int i = 0; i < 3; ++i)
       slow(k, i) = 0.9 * kRigidBodyRange * std::sin(6.283185307179586 * static_cast<double>(k) / period[i] + phase[i]);
