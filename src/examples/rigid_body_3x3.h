@@ -67,7 +67,7 @@ struct RigidBodyOptions {
   double pulse_amplitude = 0.1;  ///< part 1: û = ±this (radians)
   int ramp = 300;                ///< part 2: samples per slow ramp of u* (û = 0)
   int hold = 30;                 ///< part 2: samples held at each ramp's end
-  int ramps = 12;                ///< part 2: number of ramps
+  int ramps = 40;                ///< part 2: number of ramps (fewer leave the cube poorly covered)
   int n = 200;                   ///< part 3: samples (the identification/invalidation record)
   double random_amplitude = 0.05;  ///< part 3: û = ±this
   /// Output noise variance (rad²; σ ≈ 0.0032 rad ≈ 0.18°). The paper's 0.5
