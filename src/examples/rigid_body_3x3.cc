@@ -11,6 +11,14 @@ namespace {
 constexpr double kH = kRigidBodyStep;
 constexpr double kDamping = 0.4;
 const double kG[3] = {6.0, 4.0, 3.0};
+/// The couplings N(θ, ω) = (kN1 θ2θ3, kN2 ω1ω3, kN3 θ1θ2).
+constexpr double kN1 = 5.0, kN2 = 0.8, kN3 = 4.0;
+
+Mat<double> gravity() {
+  Mat<double> g = Mat<double>::Zero(3, 3);
+  for (int i = 0; i < 3; ++i) g(i, i) = kG[i];
+  return g;
+}
 
 Mat<double> mixing() {
   Mat<double> m(3, 3);
@@ -52,11 +60,7 @@ Mat<double> compute_lqr_gain() {
 
 /// τ = −K_θ (θ − r) − K_ω ω − M⁻¹ diag(g) r.
 Vec<double> control(const Vec<double>& theta, const Vec<double>& omega, const Vec<double>& r) {
-  static const Mat<double> feed_forward = [] {
-    Mat<double> g = Mat<double>::Zero(3, 3);
-    for (int i = 0; i < 3; ++i) g(i, i) = kG[i];
-    return Mat<double>(mixing().inverse() * g);
-  }();
+  static const Mat<double> feed_forward = mixing().inverse() * gravity();
   const Mat<double>& k = rigid_body_lqr_gain();
   return -k.leftCols(3) * (theta - r) - k.rightCols(3) * omega - feed_forward * r;
 }
@@ -67,9 +71,9 @@ Vec<double> acceleration(const Vec<double>& theta, const Vec<double>& omega, con
   const Vec<double> torque = m * control(theta, omega, r);
   Vec<double> acc(3);
   for (int i = 0; i < 3; ++i) acc(i) = kG[i] * std::sin(theta(i)) - kDamping * omega(i) + std::cos(theta(i)) * torque(i);
-  acc(0) += 5.0 * theta(1) * theta(2);
-  acc(1) += 0.8 * omega(0) * omega(2);
-  acc(2) += 4.0 * theta(0) * theta(1);
+  acc(0) += kN1 * theta(1) * theta(2);
+  acc(1) += kN2 * omega(0) * omega(2);
+  acc(2) += kN3 * theta(0) * theta(1);
   return acc;
 }
 
@@ -121,14 +125,12 @@ RigidBodyJacobians rigid_body_linearisation(const Vec<double>& theta, const Vec<
   RigidBodyJacobians j;
   j.theta = -cos_theta * m * k.leftCols(3);
   for (int i = 0; i < 3; ++i) j.theta(i, i) += kG[i] * std::cos(theta(i)) - std::sin(theta(i)) * torque(i);
-  j.theta(0, 1) += 5.0 * theta(2);
-  j.theta(0, 2) += 5.0 * theta(1);
-  j.theta(2, 0) += 4.0 * theta(1);
-  j.theta(2, 1) += 4.0 * theta(0);
+  j.theta(0, 1) += kN1 * theta(2);
+  j.theta(0, 2) += kN1 * theta(1);
+  j.theta(2, 0) += kN3 * theta(1);
+  j.theta(2, 1) += kN3 * theta(0);
   j.omega = -kDamping * Mat<double>::Identity(3, 3) - cos_theta * m * k.rightCols(3);  // ∂N/∂ω = 0 at ω = 0
-  Mat<double> g = Mat<double>::Zero(3, 3);
-  for (int i = 0; i < 3; ++i) g(i, i) = kG[i];
-  j.ref = cos_theta * (m * k.leftCols(3) - g);
+  j.ref = cos_theta * (m * k.leftCols(3) - gravity());
   return j;
 }
 

@@ -13,7 +13,7 @@
 ///
 /// and the FIXED controller τ_k = −K_θ (θ_k − r_k) − K_ω ω_k − M⁻¹ diag(g) r_k:
 /// K = [K_θ K_ω] is the discrete LQR gain of the plant linearised at the
-/// origin (Q = diag(1000,1000,1000,10,10,10), R = I), computed once by iterating the
+/// origin (Q = diag(10⁴,10⁴,10⁴,100,100,100), R = I), computed once by iterating the
 /// Riccati difference equation in double; the feed-forward makes the
 /// linearised DC gain at the origin the identity. The closed loop from the
 /// reference angles r (the paper's u) to y = θ is stable over the operating
