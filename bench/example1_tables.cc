@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "certified_cell.h"
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "data/csv_writer.h"
@@ -85,18 +86,10 @@ int main(int argc, char** argv) {
         out[iterate][0] = b.delta;
         out[iterate][1] = b.dmax;
       }
-      auto cell = [](bool v, double x) {
-        static char buf[4][32];
-        static int k = 0;
-        k = (k + 1) % 4;
-        if (v)
-          std::snprintf(buf[k], sizeof buf[k], "%10.3g", x);
-        else
-          std::snprintf(buf[k], sizeof buf[k], "%10s", "unverified");
-        return buf[k];
-      };
-      std::printf("%-22s | %s %s | %s %s | %7.3f %7.3f\n", row.name, cell(ok[0], out[0][0]), cell(ok[0], out[0][1]),
-                  cell(ok[1], out[1][0]), cell(ok[1], out[1][1]), row.paper_delta[noisy], row.paper_dmax[noisy]);
+      using bench::certified_cell;
+      std::printf("%-22s | %s %s | %s %s | %7.3f %7.3f\n", row.name, certified_cell(ok[0], out[0][0]),
+                  certified_cell(ok[0], out[0][1]), certified_cell(ok[1], out[1][0]), certified_cell(ok[1], out[1][1]),
+                  row.paper_delta[noisy], row.paper_dmax[noisy]);
       std::fflush(stdout);
     }
   }

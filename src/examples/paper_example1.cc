@@ -65,14 +65,8 @@ Experiment<Rational> example1_experiment(const Example1Options& o) {
   e.source = "example1";
   e.u = Mat<Rational>::Zero(n, 2);
   e.rho = Mat<Rational>::Zero(n, 2);
-  for (int ch = 0; ch < 2; ++ch) {
-    int k = 0;
-    while (k < n) {
-      int hold = rng.uniform_int(1, 5);
-      Rational level = rng.uniform() < 0.5 ? Rational(-1) : Rational(1);
-      for (int j = 0; j < hold && k < n; ++j, ++k) e.u(k, ch) = level;
-    }
-  }
+  for (int ch = 0; ch < 2; ++ch)
+    random_pulse_train(rng, 0, n, [&](long k, bool high) { e.u(k, ch) = high ? Rational(1) : Rational(-1); });
   for (int k = 0; k < n; ++k) {
     double t = n > 1 ? static_cast<double>(k) / (n - 1) : 0.0;
     e.rho(k, 0) = round_decimal(1.0 - t, 4);

@@ -49,12 +49,7 @@ Experiment<Rational> example2_experiment(const Example2Options& o) {
   e.source = "example2";
   e.u = Mat<Rational>::Zero(n, 1);
   e.rho = Mat<Rational>::Zero(n, 1);
-  int k = 0;
-  while (k < n) {
-    const int hold = rng.uniform_int(1, 5);
-    const Rational level = rng.uniform() < 0.5 ? dec("-0.5") : dec("0.5");
-    for (int j = 0; j < hold && k < n; ++j, ++k) e.u(k, 0) = level;
-  }
+  random_pulse_train(rng, 0, n, [&](long k, bool high) { e.u(k, 0) = high ? dec("0.5") : dec("-0.5"); });
   for (int i = 0; i < n; ++i) {
     const double t = n > 1 ? static_cast<double>(i) / (n - 1) : 0.0;
     e.rho(i, 0) = round_decimal(0.5 - 0.45 * std::cos(6.283185307179586 * t), 4);

@@ -32,4 +32,17 @@ class RandomStream {
   uint64_t state_;
 };
 
+/// The random pulse signal of the examples: for k = begin … end−1, runs of
+/// 1–5 samples (uniform) at one level each, high with probability 1/2;
+/// `set(k, high)` writes sample k. Draws hold then level, per run.
+template <typename Set>
+void random_pulse_train(RandomStream& rng, long begin, long end, Set set) {
+  long k = begin;
+  while (k < end) {
+    const int hold = rng.uniform_int(1, 5);
+    const bool high = !(rng.uniform() < 0.5);
+    for (int j = 0; j < hold && k < end; ++j, ++k) set(k, high);
+  }
+}
+
 }  // namespace lpvid
