@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(dir);
   std::printf("Example 1 (eq. 17), n = %d samples, seed %llu, objective 0.5*delta^2 + 0.5*dmax^2, W = 0.01, %s\n", n,
               static_cast<unsigned long long>(seed), solver_name.c_str());
-  std::printf("dmax is the RMS bound ||d|| <= dmax*sqrt(n*ny) (SPEC 4). Every lpvid bound below is certified.\n");
+  std::printf("dmax is the RMS bound ||d|| <= dmax*sqrt(n*ny) (n samples, ny outputs). Every lpvid bound below is certified.\n");
   for (int noisy = 0; noisy < 2; ++noisy) {
     Example1Options eo;
     eo.n = n;
