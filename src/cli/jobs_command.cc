@@ -172,10 +172,15 @@ std::string check_window_certificate(const JobPlan& plan, const JobWindow& w, co
   return v.holds ? "" : "the exact check refused it: " + v.reason;
 }
 
-Rational objective_value(const std::string& kind, const Rational& lambda, const Rational& d2, const Rational& m2) {
-  if (kind == "min_dmax") return m2;
-  if (kind == "min_delta") return d2;
-  return lambda * d2 + (Rational(1) - lambda) * m2;
+/// The plan's objective (the kind as objective_kind writes it).
+BoundObjective objective_of(const JobPlan& plan) {
+  BoundObjective o;
+  o.kind = plan.objective == "min_dmax"      ? BoundObjective::Kind::kMinDmax
+           : plan.objective == "min_delta"   ? BoundObjective::Kind::kMinDelta
+           : plan.objective == "feasibility" ? BoundObjective::Kind::kFeasibility
+                                             : BoundObjective::Kind::kWeighted;
+  if (!plan.lambda_text.empty()) o.lambda = double_from_text(plan.lambda_text);
+  return o;
 }
 
 int run_merge(const std::string& dir_text, std::string report_path, bool quiet) {
@@ -184,7 +189,7 @@ int run_merge(const std::string& dir_text, std::string report_path, bool quiet) 
   if (sha256_hex(read_text_file(plan.data_path)) != plan.data_sha256)
     throw InputError(plan.data_path + ": the data changed since the plan was made (sha256 differs)");
   const std::string planned_model = without_x0(read_model_file<Rational>(plan.model_path));
-  const Rational lambda = plan.lambda_text.empty() ? Rational(1, 2) : rational_from_text(plan.lambda_text);
+  const BoundObjective objective = objective_of(plan);
   const auto started = std::chrono::steady_clock::now();
   auto last = started;
   std::vector<Merged> rows;
@@ -199,7 +204,7 @@ int run_merge(const std::string& dir_text, std::string report_path, bool quiet) 
         m.status = c.claim == CertificateClaim::kInvalidated ? "invalidated" : "verified";
         m.delta2 = c.delta2;
         m.dmax2 = c.dmax2;
-        m.upper = objective_value(plan.objective, lambda, c.delta2, c.dmax2);
+        m.upper = objective_at(objective, c.delta2, c.dmax2);
         for (Eigen::Index i = 0; i < c.model.x0.size(); ++i) m.x0 += (i ? " " : "") + rational_to_text(c.model.x0(i));
         if (c.claim == CertificateClaim::kLowerBound) m.status = "refused", m.reason = "a lower-bound certificate in place of the upper end";
       } else {

@@ -196,9 +196,6 @@ std::string set_data_reference(Certificate& c, const CertifyOptions& o, const st
   return cert_dir.string();
 }
 
-namespace {
-
-/// The objective at the primal certificate's (δ², d_max²).
 Rational objective_at(const BoundObjective& obj, const Rational& delta2, const Rational& dmax2) {
   switch (obj.kind) {
     case BoundObjective::Kind::kMinDelta:
@@ -215,6 +212,7 @@ Rational objective_at(const BoundObjective& obj, const Rational& delta2, const R
   return Rational(0);
 }
 
+namespace {
 
 /// One Δ-form (or KYP) solve with K taps (0: full horizon), dual matrices
 /// requested when the caller wants a dual certificate.

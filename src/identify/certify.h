@@ -82,6 +82,10 @@ struct CertifyOptions {
 /// beside `certificate_path` (a.cert.json → a.cert.lower.json).
 std::string lower_certificate_path(const std::string& certificate_path);
 
+/// The objective at (δ², d_max²), exactly: δ², d_max², λδ² + (1−λ)d_max² (λ
+/// read as the exact decimal of its shortest text), 0 for fixed bounds.
+Rational objective_at(const BoundObjective& objective, const Rational& delta2, const Rational& dmax2);
+
 struct CertifiedBounds {
   bool verified = false;
   std::string reason;           ///< why not verified
