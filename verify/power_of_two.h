@@ -7,6 +7,7 @@
 /// brings the entries into the range where the floating filter can decide.
 
 #include <optional>
+#include <vector>
 
 #include "core/scalar.h"
 
@@ -21,5 +22,15 @@ std::optional<long> binary_magnitude(const Rational& q);
 
 /// A power of two s with s² within a factor 4 of q > 0 (1 for q ≤ 0).
 Rational sqrt_scale(const Rational& q);
+
+/// Exponents k_i of a diagonal congruence D = diag(2^k_i) that brings every
+/// positive diagonal entry of the symmetric M to within a factor 4 of 1
+/// (k_i = 0 where M_ii ≤ 0). Empty when the positive diagonal already spans
+/// fewer than `min_range_bits` binary orders: then balancing buys nothing.
+std::vector<long> diagonal_balance_exponents(const Mat<Rational>& M, long min_range_bits = 40);
+
+/// D·M·D for D = diag(2^k_i): exact, and D is nonsingular, so D·M·D has the
+/// inertia of M (PD, PSD or not PSD alike); v'(DMD)v = (Dv)'M(Dv).
+Mat<Rational> diagonal_congruence(const Mat<Rational>& M, const std::vector<long>& k);
 
 }  // namespace lpvid

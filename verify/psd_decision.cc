@@ -4,6 +4,7 @@
 
 #include <gmp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "core/number_text.h"
+#include "verify/power_of_two.h"
 #include "verify/psd_filter.h"
 #include "verify/psd_internal.h"
 
@@ -123,7 +125,15 @@ PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options) {
                     std::to_string(first_zero) + ")"
               : std::string();
 
-    PsdFilterResult f = run_psd_filter(R);
+    // Power-of-two balancing (verify/power_of_two.h): when the diagonal spans
+    // many binary orders (a dual matrix in original units, say), the filter's
+    // absolute error terms would swamp the small rows; the exact congruence
+    // D·R·D with D = diag(2^k) keeps the inertia and puts the diagonal near 1.
+    const std::vector<long> k = diagonal_balance_exponents(R);
+    const Mat<Rational> balanced = k.empty() ? Mat<Rational>() : diagonal_congruence(R, k);
+    const std::string balance_note = k.empty() ? std::string() : " (after an exact power-of-two diagonal balancing)";
+    PsdFilterResult f = run_psd_filter(k.empty() ? R : balanced);
+    f.reason += balance_note;
     if (f.proved_pd) {
       PsdResult r;
       r.verdict = m < n ? PsdVerdict::kPositiveSemidefinite : PsdVerdict::kPositiveDefinite;
@@ -145,6 +155,12 @@ PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options) {
             bits == 0 ? integer_vector_of_doubles(f.negative_direction)
                       : integer_vector_of_doubles(
                             (f.negative_direction * (std::ldexp(1.0, bits) / vmax)).array().round().matrix().eval());
+        // back to R's coordinates: v_R = D·v_B, an exact shift per entry (kmin keeps the shifts ≥ 0)
+        if (!k.empty()) {
+          const long kmin = *std::min_element(k.begin(), k.end());
+          for (std::size_t a = 0; a < w_reduced.size(); ++a)
+            mpz_mul_2exp(w_reduced[a].z, w_reduced[a].z, static_cast<mp_bitcnt_t>(k[a] - kmin));
+        }
         w = std::vector<Mpz>(static_cast<std::size_t>(n));
         for (std::size_t a = 0; a < keep.size(); ++a) mpz_swap(w[static_cast<std::size_t>(keep[a])].z, w_reduced[a].z);
         if (psd_detail::quadratic_form_sign(M, w) < 0) {
@@ -159,7 +175,7 @@ PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options) {
         r.method = PsdMethod::kWitnessCheck;
         r.pivot_index = keep[static_cast<std::size_t>(f.failed_row)];
         r.witness = psd_detail::reduced_witness(w);
-        r.reason = f.candidate_reason + " at row " + std::to_string(r.pivot_index) +
+        r.reason = f.candidate_reason + balance_note + " at row " + std::to_string(r.pivot_index) +
                    "; its direction v satisfies v'Mv < 0, checked in exact integer arithmetic";
         return r;
       }

@@ -2,6 +2,7 @@
 
 #include <cfenv>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -103,6 +104,50 @@ TEST(PsdFilterTest, ZeroRowsDoNotStopTheFilter) {
   EXPECT_TRUE(r.decided_by_filter);
   EXPECT_EQ(r.rank, 4);
   EXPECT_EQ(r.pivot_index, 2);
+}
+
+/// S·A·S with S = diag(10^e_i): the inertia of A, a diagonal spanning
+/// 10^(2·min e) .. 10^(2·max e).
+Mat<Rational> spread(const Mat<Rational>& A, const std::vector<int>& e) {
+  Mat<Rational> M = A;
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    for (Eigen::Index j = 0; j < A.cols(); ++j)
+      M(i, j) = A(i, j) * rational_from_text("1e" + std::to_string(e[static_cast<std::size_t>(i)] + e[static_cast<std::size_t>(j)]));
+  return M;
+}
+
+TEST(PsdFilterTest, BalancingLetsTheFilterDecideWideDiagonals) {
+  // A = tridiag(-1, 2, -1) is PD (eigenvalues 2 − 2cos(kπ/7) > 0.19).
+  Mat<Rational> A = Mat<Rational>::Zero(6, 6);
+  for (int i = 0; i < 6; ++i) {
+    A(i, i) = Rational(2);
+    if (i > 0) A(i, i - 1) = A(i - 1, i) = Rational(-1);
+  }
+  const Mat<Rational> M = spread(A, {-150, -90, -30, 30, 90, 150});
+  EXPECT_FALSE(run_psd_filter(M).proved_pd);  // unbalanced, the small rows drown in the error terms
+  const PsdResult r = decide_psd(M);
+  EXPECT_EQ(r.verdict, PsdVerdict::kPositiveDefinite);
+  EXPECT_EQ(r.method, PsdMethod::kFloatingFilter) << r.reason;
+  // Not PSD: the 2×2 block [[1, 2], [2, 1]] (eigenvalue −1) spread far apart.
+  Mat<Rational> B = A;
+  B(2, 2) = B(3, 3) = Rational(1);
+  B(2, 3) = B(3, 2) = Rational(2);
+  const Mat<Rational> N = spread(B, {-150, -90, -30, 30, 90, 150});
+  const PsdResult q = decide_psd(N);
+  EXPECT_EQ(q.verdict, PsdVerdict::kNotPsd);
+  EXPECT_EQ(q.method, PsdMethod::kWitnessCheck) << q.reason;
+  EXPECT_LT(quadratic_form(N, q.witness), Rational(0));
+}
+
+RC_GTEST_PROP(PsdFilterProperty, BalancedDecisionAgreesWithTheExactOne, ()) {
+  const auto k = *rc::gen::oneOf(gen::psd_gram(true), gen::pd_gram_plus(), gen::singular_minus(), gen::with_negative());
+  std::vector<int> e;
+  for (Eigen::Index i = 0; i < k.M.rows(); ++i) e.push_back(*rc::gen::inRange(-80, 81));
+  const Mat<Rational> M = spread(k.M, e);
+  const PsdResult fast = decide_psd(M), exact = decide_psd_exact(M);
+  RC_ASSERT(fast.verdict == exact.verdict);
+  if (fast.verdict == PsdVerdict::kNotPsd) RC_ASSERT(quadratic_form(M, fast.witness) < Rational(0));
+  RC_TAG(fast.decided_by_filter ? "filter" : "exact");
 }
 
 RC_GTEST_PROP(PsdFilterProperty, FilterPdImpliesExactPd, ()) {
