@@ -10,7 +10,7 @@ import dataclasses
 import os
 import tempfile
 from fractions import Fraction
-from typing import Any, Optional
+from typing import Optional
 
 from ._errors import EXIT_CODES, LpvidError
 from ._files import number_text, read_json, write_data, write_model
@@ -110,42 +110,63 @@ def _certificates_in(report, base):
     return found
 
 
-def _prepare(command, u, y, rho, model, data, out_dir):
-    """The run's folder and input files: (out_dir, data path, model path,
-    model dict)."""
+def _folder(command, out_dir):
+    """The run's folder, created if needed (None: a new temporary folder,
+    kept after the call: the certificates in it must outlive it)."""
     if out_dir is None:
-        # kept after the call: the certificates in it must outlive it
-        out_dir = tempfile.mkdtemp(prefix=f"lpvid-{command}-")
-    else:
-        os.makedirs(out_dir, exist_ok=True)
-    out_dir = os.path.abspath(out_dir)
+        return tempfile.mkdtemp(prefix=f"lpvid-{command}-")
+    os.makedirs(out_dir, exist_ok=True)
+    return os.path.abspath(out_dir)
+
+
+def _prepare(out_dir, u, y, rho, model, data):
+    """The run's input files in out_dir: (data path, model path)."""
+    if data is not None and (u is not None or y is not None or rho is not None):
+        raise LpvidError(2, "give the signals either as arrays (u, y, rho) or as a data file (data=), not both")
     if isinstance(model, dict):
         model_path = os.path.join(out_dir, "model.json")
         write_model(model, model_path)
-        model_dict = model
     else:
         model_path = os.path.abspath(os.fspath(model))
+    if data is not None:
+        return os.path.abspath(os.fspath(data)), model_path
+    if isinstance(model, dict):
+        model_dict = model
+    else:
+        # only for the column names; lpvid itself reads and checks the file
         try:
             model_dict = read_json(model_path)
         except (OSError, ValueError) as e:
-            raise LpvidError(2 if isinstance(e, ValueError) else 6, f"{model_path}: {e}") from None
-    if data is not None:
-        if u is not None or y is not None or rho is not None:
-            raise LpvidError(2, "give the signals either as arrays (u, y, rho) or as a data file (data=), not both")
-        data_path = os.path.abspath(os.fspath(data))
-    else:
-        data_path = os.path.join(out_dir, "data.csv")
-        write_data(data_path, model_dict, u, y, rho)
-    return out_dir, data_path, model_path
+            raise LpvidError(6 if isinstance(e, OSError) else 2, f"{model_path}: {e}") from None
+    data_path = os.path.join(out_dir, "data.csv")
+    write_data(data_path, model_dict, u, y, rho)
+    return data_path, model_path
+
+
+def _remove_earlier_outputs(report_path, model_out_path):
+    """Removes what an earlier run of the same command wrote into this
+    folder (its report, the certificates the report names, its model): a
+    run that fails must not leave them looking like its own results."""
+    if os.path.isfile(report_path):
+        try:
+            earlier = read_json(report_path)
+        except ValueError:
+            earlier = {}
+        for path in _certificates_in(earlier, os.getcwd()):
+            os.remove(path)
+        os.remove(report_path)
+    if model_out_path and os.path.isfile(model_out_path):
+        os.remove(model_out_path)
 
 
 def _run_bounds_command(command, u, y, rho, model, *, data, out_dir, quiet, bounds, extra, model_out=False):
-    out_dir, data_path, model_path = _prepare(command, u, y, rho, model, data, out_dir)
+    out_dir = _folder(command, out_dir)
     report_path = os.path.join(out_dir, f"{command}.json")
+    model_out_path = os.path.join(out_dir, f"{command}.model.json") if model_out else None
+    _remove_earlier_outputs(report_path, model_out_path)
+    data_path, model_path = _prepare(out_dir, u, y, rho, model, data)
     args = [command, "--data", data_path, "--model", model_path, "--report", report_path]
-    model_out_path = None
-    if model_out:
-        model_out_path = os.path.join(out_dir, f"{command}.model.json")
+    if model_out_path:
         args += ["--model-out", model_out_path]
     for name, value in bounds.items():
         if value is not None:

@@ -74,11 +74,18 @@ def _captured(echo):
             os.close(copy)
 
 
+# The descriptors are the process's: two runs from two threads would
+# capture each other's text, so one run at a time (the extension runs one
+# at a time anyway).
+_one_run = threading.Lock()
+
+
 def run_captured(program, args, echo):
     """Runs `program` ('lpvid' or 'lpvid-verify') with `args` in-process;
-    returns (exit code, stdout text, stderr text)."""
+    returns (exit code, stdout text, stderr text). Ctrl-C takes effect when
+    the run returns (the C++ code does not look at Python's signals)."""
     run = _lpvid.run_lpvid if program == "lpvid" else _lpvid.run_lpvid_verify
-    with _captured(echo) as out:
+    with _one_run, _captured(echo) as out:
         code = run([str(a) for a in args])
     return code, out["stdout"], out["stderr"]
 
@@ -94,6 +101,8 @@ def option_words(options):
         flag = "--" + key.rstrip("_").replace("_", "-")
         if value is None or value is False:
             continue
+        if isinstance(value, os.PathLike):
+            value = os.fspath(value)
         if value is True:
             words.append(flag)
         elif isinstance(value, (list, tuple)):

@@ -209,6 +209,10 @@ class Bindings(unittest.TestCase):
         y = self.y.copy()
         y[7] = np.nan
         out = self.out("nan")
+        # a finished run first: the failing run in the same folder must not
+        # leave its certificate behind looking like its own
+        good = lpvid.invalidate(self.u, self.y, self.rho, true_model(), delta=0, dmax=1.01 * NOISE_RMS, out_dir=out)
+        self.assertTrue(os.path.isfile(good.certificate))
         with self.assertRaises(lpvid.LpvidError) as e:
             lpvid.invalidate(self.u, y, self.rho, true_model(), delta=0, out_dir=out)
         self.assertEqual(e.exception.code, 2)
