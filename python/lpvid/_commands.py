@@ -143,17 +143,19 @@ def _prepare(out_dir, u, y, rho, model, data):
     return data_path, model_path
 
 
-def _remove_earlier_outputs(report_path, model_out_path):
+def _remove_earlier_outputs(out_dir, report_path, model_out_path):
     """Removes what an earlier run of the same command wrote into this
-    folder (its report, the certificates the report names, its model): a
-    run that fails must not leave them looking like its own results."""
+    folder (its report, the certificates in the folder the report names,
+    its model): a run that fails must not leave them looking like its own
+    results. Files elsewhere (a certificate= given then) are left alone."""
     if os.path.isfile(report_path):
         try:
             earlier = read_json(report_path)
         except ValueError:
             earlier = {}
         for path in _certificates_in(earlier, os.getcwd()):
-            os.remove(path)
+            if os.path.dirname(os.path.abspath(path)) == out_dir:
+                os.remove(path)
         os.remove(report_path)
     if model_out_path and os.path.isfile(model_out_path):
         os.remove(model_out_path)
@@ -163,7 +165,7 @@ def _run_bounds_command(command, u, y, rho, model, *, data, out_dir, quiet, boun
     out_dir = _folder(command, out_dir)
     report_path = os.path.join(out_dir, f"{command}.json")
     model_out_path = os.path.join(out_dir, f"{command}.model.json") if model_out else None
-    _remove_earlier_outputs(report_path, model_out_path)
+    _remove_earlier_outputs(out_dir, report_path, model_out_path)
     data_path, model_path = _prepare(out_dir, u, y, rho, model, data)
     args = [command, "--data", data_path, "--model", model_path, "--report", report_path]
     if model_out_path:
