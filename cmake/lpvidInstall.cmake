@@ -81,7 +81,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${LPVID_INSTALL_INCLUDE
   FILES_MATCHING PATTERN "*.h"
   PATTERN "cli" EXCLUDE)  # the command line's own headers (they need CLI11)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/verify/ DESTINATION ${LPVID_INSTALL_INCLUDEDIR}/verify
-  FILES_MATCHING PATTERN "*.h")
+  FILES_MATCHING PATTERN "*.h"
+  PATTERN "verify_command_line.h" EXCLUDE)  # the program's command line (in no installed library)
 install(FILES ${PROJECT_SOURCE_DIR}/docs/certificate.schema.json ${PROJECT_SOURCE_DIR}/docs/certificate_format.md
   DESTINATION ${CMAKE_INSTALL_DATADIR}/lpvid)
 

@@ -10,5 +10,5 @@ $SUDO apt-get install -y --no-install-recommends \
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev libfftw3-dev \
   libgtest-dev librapidcheck-dev nlohmann-json3-dev libcli11-dev \
   libsdp-dev coinor-csdp libsdpa-dev sdpa libmumps-seq-dev libopenblas-dev liblapack-dev gfortran \
-  python3 python3-jsonschema \
+  python3 python3-jsonschema python3-dev pybind11-dev python3-numpy \
   gnuplot-nox

@@ -1,80 +1,11 @@
-// lpvid-verify: the exact verifier's command line (SPEC §7, §8).
-//
-//   lpvid-verify psd M.txt [--exact-only] [--threads N]
-//       PD / PSD (exit 0), NOT_PSD (exit 1), bad input (exit 2), read failure (exit 6).
-//   lpvid-verify certificate C.json
-//       consistent (exit 0), invalid: <reason> (exit 1), malformed (exit 2), read failure (exit 6).
-//   Limits on inputs (core/limits.h): --max-file-mb, --max-digits, --max-degree, --max-samples.
-//
-// Each subcommand is registered by one add_*_subcommand function below and
-// run by the dispatch in main(). Usage errors exit with 2 (like bad input).
-
-#include <iostream>
+// lpvid-verify: the exact verifier's program. Its command line is
+// verify/verify_command_line.h (the Python module runs it in-process).
 #include <string>
+#include <vector>
 
-#include <CLI/CLI.hpp>
-
-#include "core/limit_options.h"
-#include "verify/certificate_check.h"
-#include "verify/psd_command.h"
-
-namespace {
-
-struct PsdArgs {
-  std::string file;
-  lpvid::PsdCommandOptions options;
-};
-
-CLI::App* add_psd_subcommand(CLI::App& app, PsdArgs& args) {
-  CLI::App* psd = app.add_subcommand("psd", "Decide exactly whether a rational symmetric matrix is PD, PSD or not PSD");
-  psd->add_option("file", args.file, "matrix file: one row per line, exact decimals or p/q, '#' comments")
-      ->required();
-  psd->add_flag("--exact-only", args.options.exact_only,
-                "skip the floating-point filter; decide by exact LDL^T only");
-  psd->add_option("--threads", args.options.threads, "threads for the exact elimination (0: all cores, max 8)")
-      ->check(CLI::Range(0, 64));
-  psd->footer("Exit status: 0 PD or PSD, 1 NOT_PSD, 2 missing/invalid/non-symmetric/too large input, 6 read failure.");
-  return psd;
-}
-
-struct CertificateArgs {
-  std::string file, data;
-};
-
-CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
-  CLI::App* c = app.add_subcommand("certificate", "Check an lpvid certificate exactly, from the data text to the PSD decision");
-  c->add_option("file", args.file, "certificate (lpvid-certificate/1 JSON)")->required();
-  c->add_option("--data", args.data,
-                "the data file to read instead of the recorded path (its sha256 must still match); without it a "
-                "missing recorded path falls back to the file of the same name beside the certificate");
-  c->footer("Exit status: 0 consistent, 1 invalid (with the reason), 2 missing/malformed/too large input, 6 read failure.");
-  return c;
-}
-
-}  // namespace
+#include "verify/verify_command_line.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"lpvid-verify: exact verifier for lpvid (no floating-point answer is trusted)"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("lpvid-verify ") + LPVID_VERSION);
-  lpvid::add_limit_options(app);
-
-  PsdArgs psd_args;
-  CLI::App* psd = add_psd_subcommand(app, psd_args);
-  CertificateArgs certificate_args;
-  CLI::App* certificate = add_certificate_subcommand(app, certificate_args);
-
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);  // prints help or the usage error
-    return code == 0 ? 0 : lpvid::kPsdExitBadInput;
-  }
-
-  // Dispatch: one branch per subcommand.
-  if (psd->parsed()) return lpvid::run_psd_command(psd_args.file, std::cout, std::cerr, psd_args.options);
-  if (certificate->parsed()) return lpvid::run_certificate_command(certificate_args.file, std::cout, std::cerr, certificate_args.data);
-
-  std::cerr << "lpvid-verify: no subcommand\n";
-  return lpvid::kPsdExitBadInput;
+  if (argc < 1) return lpvid::run_lpvid_verify({});
+  return lpvid::run_lpvid_verify(std::vector<std::string>(argv + 1, argv + argc), argv[0]);
 }

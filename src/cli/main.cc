@@ -1,60 +1,14 @@
 // lpvid: robust identification and invalidation of LPV systems (SPEC §8).
-#include <iostream>
+// The command line itself is cli/command_line.h (the Python module runs it
+// in-process); only the interrupt handler belongs to the program.
 #include <string>
 #include <vector>
 
-#include "cli/commands.h"
-#include "cli/report.h"
+#include "cli/command_line.h"
 #include "core/file_io.h"
-#include "core/input_error.h"
-#include "core/limit_options.h"
 
 int main(int argc, char** argv) {
-  using namespace lpvid::cli;
   lpvid::remove_outputs_on_interrupt("lpvid");  // before any thread: Ctrl-C leaves nothing half-done
-  CLI::App app{"lpvid: robust LPV identification/invalidation with exactly verified bounds"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("lpvid ") + LPVID_VERSION);
-  lpvid::add_limit_options(app);
-  std::vector<Runner> runners = {add_invalidate_command(app), add_identify_command(app), add_simulate_command(app),
-                                 add_generate_command(app)};
-  runners.push_back(add_select_basis_command(app));
-  runners.push_back(add_tradeoff_command(app));
-  runners.push_back(add_diagnose_command(app));
-  runners.push_back(add_fit_linear_command(app));
-  runners.push_back(add_certify_command(app));
-  runners.push_back(add_jobs_command(app));
-  runners.push_back(add_compare_command(app));
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
-  }
-  // A command that fails with an exception leaves none of its outputs behind
-  // (a certificate without its report would look like a finished run).
-  const auto fail = [](const std::string& message, int code) {
-    std::cerr << "lpvid: " << message << "\n";
-    if (const int n = lpvid::discard_outputs_of_this_run(); n > 0)
-      std::cerr << "lpvid: removed the " << n << " file(s) this run had written\n";
-    return code;
-  };
-  try {
-    for (auto& run : runners) {
-      const int code = run();
-      if (code >= 0) return code;
-    }
-  } catch (const lpvid::InputError& e) {
-    return fail(e.what(), kExitBadInput);
-  } catch (const lpvid::IoError& e) {
-    return fail(e.what(), kExitIo);
-  } catch (const std::invalid_argument& e) {
-    return fail(e.what(), kExitBadInput);
-  } catch (const std::bad_alloc&) {
-    return fail("out of memory", kExitSolver);
-  } catch (const std::exception& e) {
-    return fail(e.what(), kExitSolver);
-  }
-  std::cerr << "lpvid: no command\n";
-  return kExitBadInput;
+  if (argc < 1) return lpvid::cli::run_lpvid({});
+  return lpvid::cli::run_lpvid(std::vector<std::string>(argv + 1, argv + argc), argv[0]);
 }

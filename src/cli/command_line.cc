@@ -1,0 +1,72 @@
+#include "cli/command_line.h"
+
+#include <iostream>
+#include <new>
+#include <stdexcept>
+
+#include "cli/commands.h"
+#include "cli/report.h"
+#include "core/argv_words.h"
+#include "core/file_io.h"
+#include "core/input_error.h"
+#include "core/limit_options.h"
+
+namespace lpvid::cli {
+
+int run_lpvid(const std::vector<std::string>& args, const std::string& program) {
+  // A previous call in the same process may have changed the limits or left
+  // its outputs recorded; this call must neither inherit the one nor delete
+  // the other when it fails.
+  lpvid::input_limits() = lpvid::InputLimits{};
+  lpvid::keep_outputs_of_this_run();
+
+  CLI::App app{"lpvid: robust LPV identification/invalidation with exactly verified bounds"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("lpvid ") + LPVID_VERSION);
+  lpvid::add_limit_options(app);
+  std::vector<Runner> runners = {add_invalidate_command(app), add_identify_command(app), add_simulate_command(app),
+                                 add_generate_command(app)};
+  runners.push_back(add_select_basis_command(app));
+  runners.push_back(add_tradeoff_command(app));
+  runners.push_back(add_diagnose_command(app));
+  runners.push_back(add_fit_linear_command(app));
+  runners.push_back(add_certify_command(app));
+  runners.push_back(add_jobs_command(app));
+  runners.push_back(add_compare_command(app));
+
+  ArgvWords argv(program, args);  // parsed as main()'s argv is
+  try {
+    app.parse(argv.argc(), argv.argv());
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  // A command that fails with an exception leaves none of its outputs behind
+  // (a certificate without its report would look like a finished run).
+  const auto fail = [](const std::string& message, int code) {
+    std::cerr << "lpvid: " << message << "\n";
+    if (const int n = lpvid::discard_outputs_of_this_run(); n > 0)
+      std::cerr << "lpvid: removed the " << n << " file(s) this run had written\n";
+    return code;
+  };
+  try {
+    for (auto& run : runners) {
+      const int code = run();
+      if (code >= 0) return code;
+    }
+  } catch (const lpvid::InputError& e) {
+    return fail(e.what(), kExitBadInput);
+  } catch (const lpvid::IoError& e) {
+    return fail(e.what(), kExitIo);
+  } catch (const std::invalid_argument& e) {
+    return fail(e.what(), kExitBadInput);
+  } catch (const std::bad_alloc&) {
+    return fail("out of memory", kExitSolver);
+  } catch (const std::exception& e) {
+    return fail(e.what(), kExitSolver);
+  }
+  std::cerr << "lpvid: no command\n";
+  return kExitBadInput;
+}
+
+}  // namespace lpvid::cli

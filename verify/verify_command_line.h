@@ -1,0 +1,17 @@
+#pragma once
+/// The whole `lpvid-verify` command line as a function, so that it runs in
+/// another process's code too (the Python module runs it in-process).
+
+#include <string>
+#include <vector>
+
+namespace lpvid {
+
+/// Runs `program args...` as the `lpvid-verify` executable would and
+/// returns its exit code (README "Exit codes"). `args` excludes the program
+/// name; `program` is the name shown in usage and help text. Every call
+/// starts from the default input limits. Not reentrant: the limits are per
+/// process.
+int run_lpvid_verify(const std::vector<std::string>& args, const std::string& program = "lpvid-verify");
+
+}  // namespace lpvid
