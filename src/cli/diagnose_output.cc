@@ -8,6 +8,7 @@
 
 #include "cli/report.h"
 #include "core/decimal_rounding.h"
+#include "fit/output_error_fit.h"
 #include "plot/diagnose_plots.h"
 #include "diagnose/residual_analysis.h"
 #include "model/simulate.h"
@@ -428,9 +429,40 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
         {d + "autocorrelation.png", plot_residual_autocorrelation(rb, ra, d + "autocorrelation.png", names)},
         {d + "output.png", plot_output_fit(in.val->y, yb, ya, d + "output.png", names)}};
     std::cout << (in.folds ? "\nplots (the last fold's rows)\n" : "\nplots (validation data)\n");
-    for (const auto& [path, o] : made) {
-      std::cout << "  " << (o.ok ? path : "not written: " + o.message) << "\n";
-      plots.push_back({{"png", o.ok ? ojson(path) : ojson(nullptr)}, {"csv", plot_csv_path(path)}, {"message", o.message}});
+    const auto list = [&](const std::string& path, const PlotOutcome& o) {
+      std::cout << "  " << (o.ok ? path + (o.svg.empty() ? "" : " (+ .svg)") : "not written: " + o.message) << "\n";
+      plots.push_back({{"png", o.ok ? ojson(path) : ojson(nullptr)},
+                       {"svg", o.svg.empty() ? ojson(nullptr) : ojson(o.svg)},
+                       {"csv", plot_csv_path(path)},
+                       {"message", o.message}});
+    };
+    for (const auto& [path, o] : made) list(path, o);
+    // each test record: input, output, the models' free runs and the certified d_max as a band
+    if (in.tests && !res.tests.empty()) {
+      std::cout << "plots (test records, scored once at the end)\n";
+      double dmax_after = 0;  // the largest certified d_max over the windows: it holds on each of them
+      bool all_verified = !res.after.empty();
+      for (const WindowBounds& w : res.after) {
+        all_verified = all_verified && w.bounds.verified;
+        dmax_after = std::max(dmax_after, w.bounds.dmax);
+      }
+      for (size_t t = 0; t < res.tests.size() && t < in.tests->size(); ++t) {
+        const Experiment<double>& e = (*in.tests)[t];
+        TestRecordPlot tp;
+        tp.u = e.u;
+        tp.y = e.y;
+        tp.warmup = res.tests[t].before.warmup;
+        warmup_score(res.before_model, e, tp.warmup, &tp.yhat_before);
+        warmup_score(res.after_model, e, tp.warmup, &tp.yhat_after);
+        if (!tp.yhat_before.allFinite() || !tp.yhat_after.allFinite()) continue;
+        tp.dmax_after = all_verified ? dmax_after : 0.0;
+        tp.input_columns = res.before_model.columns.u;
+        tp.output_columns = res.before_model.columns.y;
+        tp.info = res.after_model.signal_info;
+        tp.source = t < in.test_sources.size() ? in.test_sources[t] : e.source;
+        const std::string path = d + (res.tests.size() > 1 ? "test" + std::to_string(t + 1) + ".png" : std::string("test.png"));
+        list(path, plot_test_record(tp, path));
+      }
     }
   }
 

@@ -16,6 +16,7 @@ struct DiagnoseReportInputs {
   std::vector<std::string> test_sources;  ///< each test set's file, columns and rows (as result.tests)
   const DiagnoseResult* result = nullptr;
   const Experiment<double>*est = nullptr, *val = nullptr;
+  const std::vector<Experiment<double>>* tests = nullptr;  ///< the test records (as result.tests), for their plots
   int init_samples = static_cast<int>(RankingOptions{}.init_samples);
   /// Fold mode: `val` is the estimation record's last fold block, shown for
   /// the residual analysis and plots (the final models saw those rows).

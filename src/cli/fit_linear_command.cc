@@ -9,6 +9,7 @@
 
 #include "core/file_io.h"
 #include "cli/commands.h"
+#include "cli/signal_info_options.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
 #include "core/input_error.h"
@@ -29,6 +30,7 @@ struct FitLinearArgs {
   int max_order = 5;       ///< --max-order for --order auto
   int init_samples = static_cast<int>(kValidationInitSamples);  ///< --init-samples: x0 of validation data from its first samples (benchmark rule)
   bool offset = false;     ///< --offset: fit a constant output offset
+  SignalInfoArgs signal_info;  ///< --sample-time, --unit
 };
 
 /// Reads a data file (optionally headerless with `names`) and a row window.
@@ -58,6 +60,7 @@ int run_fit_linear(const FitLinearArgs& a) {
   int order = parse_order(a.order);
   if (order < 0) throw InputError("--order: must be >= 1 (or 'auto'), got '" + a.order + "'");
   const ColumnMap cols{a.u, a.y, {}};
+  const SignalInfo signal_info = signal_info_of(a.signal_info, cols);  // checked before any work
   const Experiment<double> est = load(a.data, a.names, a.rows, cols);
   std::optional<Experiment<double>> val;
   if (!a.val_data.empty() || !a.val_rows.empty() || !a.val_u.empty() || !a.val_y.empty()) {
@@ -125,7 +128,9 @@ int run_fit_linear(const FitLinearArgs& a) {
     report["init_samples"] = a.init_samples;
   }
   if (!a.out.empty()) {
-    write_model_file(a.out, fit.model);
+    LpvModel<double> model = fit.model;
+    model.signal_info = signal_info;
+    write_model_file(a.out, model);
     std::cout << "model " << a.out << "\n";
     report["model"] = a.out;
   }
@@ -148,6 +153,7 @@ Runner add_fit_linear_command(CLI::App& app) {
   cmd->add_flag("--offset", a->offset, "fit a constant output offset (model \"offset\" with basis 1)");
   cmd->add_option("--out,--model-out", a->out, "model file to write (lpvid-model/1)");
   cmd->add_option("--report", a->report, "JSON report");
+  add_signal_info_options(*cmd, a->signal_info);
   cmd->add_option("--validation-data,--validation", a->val_data, "validation data file (default: the estimation file)");
   cmd->add_option("--validation-names", a->val_names, "column names for a headerless validation file")
       ->delimiter(',');

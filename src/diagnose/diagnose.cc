@@ -78,6 +78,7 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   out.before_model = round_fitted_model(out.rank.before);
   out.after_model = round_fitted_model(out.rank.after);
   restate_parameters(out.rank, out.after_model);  // the report's values are the certified model's
+  out.before_model.signal_info = out.after_model.signal_info = declared.signal_info;  // fits build new models
 
   // 3. Theorem 2.1 on every window, before and after: one independent job each
   // (core/parallel_for.h); SDP solves serialise inside (solvers/sdp_solver.cc).

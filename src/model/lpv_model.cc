@@ -110,6 +110,7 @@ LpvModel<To> convert_model(const LpvModel<From>& m) {
   out.ny = m.ny;
   out.scheduling = m.scheduling;
   out.columns = m.columns;
+  out.signal_info = m.signal_info;
   out.A = conv<To>(m.A);
   out.B = conv<To>(m.B);
   out.C = conv<To>(m.C);

@@ -15,6 +15,7 @@
 
 #include "core/scalar.h"
 #include "data/column_map.h"
+#include "data/signal_info.h"
 #include "model/monomial.h"
 #include "model/param_matrix.h"
 #include "model/static_blocks.h"
@@ -90,6 +91,7 @@ struct LpvModel {
   StateOffset<T> state_offset;  ///< E(ρ) in the state equation; none by default
   Vec<T> x0;  ///< length nx; zero unless given
   StaticBlocks<T> statics;  ///< input delay, static input/output maps (model/static_blocks.h); none by default
+  SignalInfo signal_info;   ///< sample time and units (plots and reports only)
 
   int n_rho() const { return static_cast<int>(scheduling.size()); }
   /// Size of the uncertainty channel z (ny for multiplicative, nu for additive,

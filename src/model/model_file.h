@@ -52,6 +52,10 @@
 ///                ρ·e is the outflow e·√|x1 − c|). Absent: no term. Toeplitz
 ///                mode "paper" refuses a model with it.
 ///   x0           optional list of nx numbers (default zero).
+///   sample_time  optional positive number: seconds between samples.
+///   units        optional object {column name: unit text}; each key one of
+///                the columns above. Both are descriptive (data/signal_info.h):
+///                plots and reports use them, no bound depends on them.
 ///
 /// Errors: InputError "file:line: json.path: reason", e.g.
 /// `model.json:9: initial.A[1].value: expected 2x2 matrix, got 2x3`.

@@ -1,6 +1,7 @@
 #include "model/model_file.h"
 /// Reading lpvid-model/1 files (the writer is model_file_writer.cc).
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <gmp.h>
@@ -234,7 +235,7 @@ class ModelReader {
            "expected \"" + std::string(kModelFormat) + "\", got \"" + format + "\"");
     check_keys(root, path,
                {"format", "description", "states", "inputs", "outputs", "scheduling", "columns", "initial",
-                "correction", "uncertainty", "offset", "state_offset", "x0", "static"});
+                "correction", "uncertainty", "offset", "state_offset", "x0", "static", "sample_time", "units"});
     if (const JsonNode* d = root.find("description")) string_at(*d, member_path(path, "description"));
 
     LpvModel<T> m;
@@ -294,6 +295,27 @@ class ModelReader {
         } catch (const std::invalid_argument& e) {
           fail(at, rp, e.what());
         }
+      }
+    }
+
+    // sample time and units (data/signal_info.h): descriptive only
+    if (const JsonNode* t = root.find("sample_time")) {
+      const std::string tp = member_path(path, "sample_time");
+      const double ts = nearest_double(number<Rational>(*t, tp));
+      if (!(ts > 0.0) || !std::isfinite(ts)) fail(*t, tp, "the sample time must be a positive number of seconds, got " + t->text);
+      m.signal_info.sample_time = ts;
+    }
+    if (const JsonNode* un = root.find("units")) {
+      const std::string up = member_path(path, "units");
+      expect(*un, Kind::kObject, up);
+      std::vector<std::string> known = m.columns.u;
+      known.insert(known.end(), m.columns.y.begin(), m.columns.y.end());
+      known.insert(known.end(), m.columns.rho.begin(), m.columns.rho.end());
+      for (const auto& [name, node] : un->members) {
+        const std::string np = member_path(up, name);
+        if (std::find(known.begin(), known.end(), name) == known.end())
+          fail(node, np, "\"" + name + "\" is not one of the model's columns (columns.u, columns.y, columns.rho)");
+        m.signal_info.units.emplace_back(name, string_at(node, np));
       }
     }
 

@@ -120,6 +120,12 @@ ojson to_json(const LpvModel<T>& m) {
   columns["y"] = m.columns.y;
   columns["rho"] = m.columns.rho;
   j["columns"] = std::move(columns);
+  if (m.signal_info.sample_time > 0.0) j["sample_time"] = m.signal_info.sample_time;
+  if (!m.signal_info.units.empty()) {
+    ojson units = ojson::object();
+    for (const auto& [name, unit] : m.signal_info.units) units[name] = unit;
+    j["units"] = std::move(units);
+  }
 
   ojson initial = ojson::object();
   initial["A"] = terms_json(m.A, nx, nx, names, "initial.A");

@@ -1,6 +1,7 @@
 #include "plot/diagnose_plots.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -99,14 +100,27 @@ std::string plot_csv_path(const std::string& png_path) {
 
 std::vector<TextColumn> plot_table(const PlotSpec& spec, const std::string& x_name) {
   std::vector<TextColumn> cols;
-  if (spec.series.empty()) return cols;
-  const std::vector<double>& x = spec.series.front().x;
-  cols.push_back({x_name, text(x)});
-  for (const PlotSeries& s : spec.series) {
-    if (s.x != x) throw std::invalid_argument("plot_table: series '" + s.title + "' has other x values");
-    cols.push_back({sanitise(s.title), text(s.y)});
+  std::vector<const PlotSpec*> parts;  // a figure of panels: every panel's series, top to bottom
+  if (spec.panels.empty()) parts.push_back(&spec);
+  for (const PlotSpec& p : spec.panels) parts.push_back(&p);
+  const std::vector<double>* x = nullptr;
+  for (const PlotSpec* p : parts) {
+    for (const PlotSeries& s : p->series) {
+      if (!x) {
+        x = &s.x;
+        cols.push_back({x_name, text(s.x)});
+      }
+      if (s.x != *x) throw std::invalid_argument("plot_table: series '" + s.title + "' has other x values");
+      if (s.y_high.empty()) {
+        cols.push_back({sanitise(s.title), text(s.y)});
+      } else {  // a band: its two edges
+        cols.push_back({sanitise(s.title) + "_lower", text(s.y)});
+        cols.push_back({sanitise(s.title) + "_upper", text(s.y_high)});
+      }
+    }
+    if (x)
+      for (const PlotHLine& h : p->hlines) cols.push_back({sanitise(h.title), text(std::vector<double>(x->size(), h.y))});
   }
-  for (const PlotHLine& h : spec.hlines) cols.push_back({sanitise(h.title), text(std::vector<double>(x.size(), h.y))});
   return cols;
 }
 
@@ -176,6 +190,81 @@ PlotSpec output_fit_plot_spec(const Mat<double>& y, const Mat<double>& yhat_befo
   add_columns(spec, yhat_before, output_names, "model before");
   add_columns(spec, yhat_after, output_names, "model after");
   return spec;
+}
+
+PlotSpec test_record_plot_spec(const TestRecordPlot& t) {
+  require_signal(t.u, "test plot: input");
+  require_signal(t.y, "test plot: measured output");
+  check_before_after(t.yhat_before, t.yhat_after, "test plot: model output");
+  const Eigen::Index n = t.y.rows();
+  if (t.u.rows() != n || t.yhat_before.rows() != n || t.yhat_before.cols() != t.y.cols())
+    throw InputError("test plot: the input, output and model output differ in length or width");
+  if (!(t.dmax_after >= 0) || !std::isfinite(t.dmax_after)) throw InputError("test plot: d_max must be finite and >= 0");
+  if (t.warmup < 0 || t.warmup >= n) throw InputError("test plot: the warm-up must leave samples to score");
+  std::vector<double> x(static_cast<size_t>(n));
+  for (Eigen::Index k = 0; k < n; ++k) x[static_cast<size_t>(k)] = t.info.time_of(static_cast<double>(k));
+  const auto name = [](const char* role, Eigen::Index i, Eigen::Index count) {
+    return std::string(role) + (count > 1 ? std::to_string(i + 1) : "");
+  };
+  const auto unit_of = [&](const std::vector<std::string>& cols, Eigen::Index i) {
+    return static_cast<size_t>(i) < cols.size() ? t.info.unit_of(cols[static_cast<size_t>(i)]) : std::string();
+  };
+  const auto axis = [&](const char* what, const std::vector<std::string>& cols, Eigen::Index count) {
+    std::string u = count > 0 ? unit_of(cols, 0) : "";
+    for (Eigen::Index i = 1; i < count; ++i)
+      if (unit_of(cols, i) != u) u.clear();
+    return std::string(what) + (u.empty() ? "" : " [" + u + "]");
+  };
+  PlotSpec fig;
+  fig.width = 1200;
+  fig.height = 800;
+  const double scored = residual_rms(t.y.bottomRows(n - t.warmup) - t.yhat_before.bottomRows(n - t.warmup)).overall;
+  fig.title = "Test record " + t.source + ": scored once; x0 from the first " + std::to_string(t.warmup) +
+              " samples, RMS over the rest " + short_number(scored) + " before";
+  if (t.yhat_after.cols() > 0)
+    fig.title += ", " + short_number(residual_rms(t.y.bottomRows(n - t.warmup) - t.yhat_after.bottomRows(n - t.warmup)).overall) +
+                 " after";
+  PlotSpec in;
+  in.title = "input";
+  in.xlabel = t.info.time_label();
+  in.ylabel = axis("input", t.input_columns, t.u.cols());
+  in.key = "outside right top";
+  for (Eigen::Index i = 0; i < t.u.cols(); ++i) in.series.push_back(series(name("u", i, t.u.cols()), x, column(t.u, i), "lines"));
+  PlotSpec out;
+  out.title = t.dmax_after > 0 ? "output; band: model after +- the certified d_max " + short_number(t.dmax_after) +
+                                     " (an RMS bound on the estimation windows, not a pointwise one)"
+                               : "output";
+  out.xlabel = t.info.time_label();
+  out.ylabel = axis("output", t.output_columns, t.y.cols());
+  out.key = "outside right top";
+  for (Eigen::Index i = 0; i < t.y.cols(); ++i) {
+    const std::string yi = name("y", i, t.y.cols());
+    if (t.yhat_after.cols() > 0 && t.dmax_after > 0) {
+      PlotSeries band = series(yi + " band (after +- dmax)", x, column(t.yhat_after, i), "lines");
+      band.y_high = band.y;
+      for (size_t k = 0; k < band.y.size(); ++k) band.y[k] -= t.dmax_after, band.y_high[k] += t.dmax_after;
+      band.color = "#88aadd";
+      out.series.push_back(std::move(band));
+    }
+    PlotSeries measured = series(yi + " measured", x, column(t.y, i), "lines");
+    measured.color = "#000000";
+    out.series.push_back(std::move(measured));
+    PlotSeries before = series(yi + " model before", x, column(t.yhat_before, i), "lines");
+    before.color = "#dd7711";
+    out.series.push_back(std::move(before));
+    if (t.yhat_after.cols() > 0) {
+      PlotSeries after = series(yi + " model after", x, column(t.yhat_after, i), "lines");
+      after.color = "#1155cc";
+      out.series.push_back(std::move(after));
+    }
+  }
+  fig.panels = {std::move(in), std::move(out)};
+  return fig;
+}
+
+PlotOutcome plot_test_record(const TestRecordPlot& t, const std::string& png_path) {
+  const PlotSpec spec = test_record_plot_spec(t);
+  return write_plot(spec, plot_table(spec, t.info.sample_time > 0 ? "time_s" : "sample"), png_path);
 }
 
 PlotOutcome plot_residual(const Mat<double>& before, const Mat<double>& after, const std::string& png_path,

@@ -23,12 +23,29 @@
 
 #include "core/scalar.h"
 #include "data/csv_writer.h"
+#include "data/signal_info.h"
 #include "diagnose/residual_analysis.h"
 #include "plot/gnuplot.h"
 
 namespace lpvid {
 
+/// The figure of one test record (scored once at the end): the input(s) on
+/// top; below, the measured output, the model's free-run output before and
+/// after, and the after model's output ± the certified d_max as a band. The x
+/// axis is time in seconds when the sample time is known, else the sample.
+/// d_max bounds the noise's RMS on the estimation windows, so the band shows
+/// its size, not a pointwise guarantee (the title says so).
+struct TestRecordPlot {
+  Mat<double> u, y, yhat_before, yhat_after;  ///< yhat_after may have no columns
+  double dmax_after = 0;                      ///< certified d_max of the after model; 0: no band
+  Eigen::Index warmup = 0;                    ///< first samples used for x0, not scored
+  std::vector<std::string> input_columns, output_columns;  ///< the model's columns (their units apply)
+  SignalInfo info;
+  std::string source;                         ///< the record's file and columns (title)
+};
+
 /// The plot specifications (exposed for tests and for other front ends).
+PlotSpec test_record_plot_spec(const TestRecordPlot& t);
 PlotSpec residual_plot_spec(const Mat<double>& before, const Mat<double>& after,
                             const std::vector<std::string>& output_names = {});
 PlotSpec autocorrelation_plot_spec(const Mat<double>& before, const Mat<double>& after,
@@ -52,6 +69,9 @@ PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<d
                                           const std::string& png_path,
                                           const std::vector<std::string>& output_names = {},
                                           const ResidualAnalysisOptions& options = {});
+/// The CSV columns: time (or sample), u…, then per output measured, model
+/// before/after and the band's lower and upper edge.
+PlotOutcome plot_test_record(const TestRecordPlot& t, const std::string& png_path);
 PlotOutcome plot_output_fit(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
                             const std::string& png_path, const std::vector<std::string>& output_names = {});
 

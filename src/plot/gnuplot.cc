@@ -81,27 +81,40 @@ std::string gnuplot_png_terminal() {
   return png ? "png" : "";
 }
 
-std::string gnuplot_script(const PlotSpec& spec, const std::string& terminal, const std::string& png_path,
-                           const std::string& data_path) {
-  std::ostringstream s;
-  if (terminal == "pngcairo")
-    s << "set terminal pngcairo size " << spec.width << "," << spec.height << " noenhanced font 'Sans,11'\n";
-  else
-    s << "set terminal png size " << spec.width << "," << spec.height << " noenhanced\n";
-  s << "set output " << gp_quote(png_path) << "\n"
-    << "set title " << gp_quote(spec.title) << "\n"
+namespace {
+
+/// The series of a figure in drawing order (panels top to bottom): one data
+/// block each, numbered in this order.
+std::vector<const PlotSeries*> drawn_series(const PlotSpec& spec) {
+  std::vector<const PlotSeries*> out;
+  const auto add = [&](const PlotSpec& p) {
+    for (const PlotSeries& ser : p.series)
+      if (!ser.x.empty()) out.push_back(&ser);
+  };
+  if (spec.panels.empty()) add(spec);
+  for (const PlotSpec& p : spec.panels) add(p);
+  return out;
+}
+
+/// One panel: its labels, key and plot command; `block` counts data blocks.
+void panel_script(std::ostringstream& s, const PlotSpec& spec, const std::string& data_path, int& block) {
+  s << "set title " << gp_quote(spec.title) << "\n"
     << "set xlabel " << gp_quote(spec.xlabel) << "\n"
     << "set ylabel " << gp_quote(spec.ylabel) << "\n"
     << "set grid\n"
     << "set key " << spec.key << " opaque\n";
-  if (spec.logx) s << "set logscale x\nset format x '%g'\n";
-  if (spec.logy) s << "set logscale y\nset format y '%g'\n";
+  s << (spec.logx ? "set logscale x\nset format x '%g'\n" : "unset logscale x\nset format x '% h'\n");
+  s << (spec.logy ? "set logscale y\nset format y '%g'\n" : "unset logscale y\nset format y '% h'\n");
   std::vector<std::string> parts;
-  int block = 0;
   for (const PlotSeries& ser : spec.series) {
     if (ser.x.empty()) continue;
     const std::string src = gp_quote(data_path) + " index " + std::to_string(block);
-    parts.push_back(src + " using 1:2 with " + ser.style + " lw 2 pt 7 ps 1.2 title " + gp_quote(ser.title));
+    const std::string color = ser.color.empty() ? "" : " lc rgb " + gp_quote(ser.color);
+    if (!ser.y_high.empty())
+      parts.push_back(src + " using 1:2:3 with filledcurves fs transparent solid 0.25 noborder" + color + " title " +
+                      gp_quote(ser.title));
+    else
+      parts.push_back(src + " using 1:2 with " + ser.style + " lw 2 pt 7 ps 1.2" + color + " title " + gp_quote(ser.title));
     if (!ser.labels.empty()) parts.push_back(src + " using 1:2:3 with labels offset char 1,0.7 font ',9' notitle");
     ++block;
   }
@@ -111,14 +124,47 @@ std::string gnuplot_script(const PlotSpec& spec, const std::string& terminal, co
   s << "plot ";
   for (size_t i = 0; i < parts.size(); ++i) s << (i ? ", \\\n     " : "") << parts[i];
   s << "\n";
+}
+
+/// Everything after `set terminal` and `set output`: the figure itself.
+std::string figure_script(const PlotSpec& spec, const std::string& data_path) {
+  std::ostringstream s;
+  int block = 0;
+  if (spec.panels.empty()) {
+    panel_script(s, spec, data_path, block);
+    return s.str();
+  }
+  s << "set multiplot layout " << spec.panels.size() << ",1 title " << gp_quote(spec.title) << "\n";
+  for (const PlotSpec& p : spec.panels) panel_script(s, p, data_path, block);
+  s << "unset multiplot\n";
+  return s.str();
+}
+
+/// svg_path with the PNG's extension replaced.
+std::string svg_path_of(const std::string& png_path) { return fs::path(png_path).replace_extension(".svg").string(); }
+
+}  // namespace
+
+std::string gnuplot_script(const PlotSpec& spec, const std::string& terminal, const std::string& png_path,
+                           const std::string& data_path) {
+  std::ostringstream s;
+  if (terminal == "pngcairo")
+    s << "set terminal pngcairo size " << spec.width << "," << spec.height << " noenhanced font 'Sans,11'\n";
+  else
+    s << "set terminal png size " << spec.width << "," << spec.height << " noenhanced\n";
+  const std::string figure = figure_script(spec, data_path);
+  s << "set output " << gp_quote(png_path) << "\n" << figure;
+  // the same figure as SVG (gnuplot's built-in svg terminal needs no cairo)
+  s << "set output\n"
+    << "set terminal svg size " << spec.width << "," << spec.height << " noenhanced font 'Sans,11' background '#ffffff'\n"
+    << "set output " << gp_quote(svg_path_of(png_path)) << "\n"
+    << figure << "set output\n";
   return s.str();
 }
 
 PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
   PlotOutcome out;
-  bool any = false;
-  for (const PlotSeries& ser : spec.series) any = any || !ser.x.empty();
-  if (!any) {
+  if (drawn_series(spec).empty()) {
     out.message = "nothing to plot (no points)";
     return out;
   }
@@ -138,12 +184,13 @@ PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
   {
     std::ofstream d(data);
     bool first = true;
-    for (const PlotSeries& ser : spec.series) {
-      if (ser.x.empty()) continue;
+    for (const PlotSeries* sp : drawn_series(spec)) {
+      const PlotSeries& ser = *sp;
       if (!first) d << "\n\n";
       first = false;
       for (size_t i = 0; i < ser.x.size() && i < ser.y.size(); ++i) {
         d << number(ser.x[i]) << " " << number(ser.y[i]);
+        if (!ser.y_high.empty()) d << " " << number(i < ser.y_high.size() ? ser.y_high[i] : ser.y[i]);
         if (!ser.labels.empty()) {
           std::string label = i < ser.labels.size() ? ser.labels[i] : "";
           for (char& c : label)
@@ -158,6 +205,7 @@ PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
   }
   std::error_code ec;
   fs::remove(png_path, ec);
+  fs::remove(svg_path_of(png_path), ec);
   int status = 0;
   const std::string log = run_capture(sh_quote(gnuplot_program()) + " " + sh_quote(script.string()), &status);
   const bool written = fs::exists(png_path, ec) && fs::file_size(png_path, ec) > 0;
@@ -165,7 +213,9 @@ PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
     out.message = "gnuplot failed (exit status " + std::to_string(status) + ")" + (log.empty() ? "" : ": " + log);
   } else {
     out.ok = true;
-    out.message = "wrote " + png_path + " (gnuplot, terminal " + out.terminal + ")";
+    const std::string svg = svg_path_of(png_path);
+    if (fs::exists(svg, ec) && fs::file_size(svg, ec) > 0) out.svg = svg;
+    out.message = "wrote " + png_path + (out.svg.empty() ? "" : " and " + out.svg) + " (gnuplot, terminal " + out.terminal + ")";
   }
   fs::remove_all(dir, ec);
   return out;

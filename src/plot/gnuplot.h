@@ -10,8 +10,6 @@
 /// returns ok = false with a message saying so, and the caller goes on
 /// (the numbers are always written as CSV as well).
 ///
-/// (Kept in src/identify/ because src/plot/ is not globbed by CMake yet;
-/// it depends on nothing but the standard library and can move as is.)
 
 #include <string>
 #include <vector>
@@ -23,6 +21,10 @@ struct PlotSeries {
   std::vector<double> x, y;
   std::vector<std::string> labels;        ///< optional text next to each point (same length as x)
   std::string style = "linespoints";      ///< gnuplot `with` style: lines, points, linespoints
+  /// A band: when not empty (length of x), the area between y and y_high is
+  /// filled (gnuplot `filledcurves`, translucent) instead of a line.
+  std::vector<double> y_high;
+  std::string color;                      ///< gnuplot rgb colour ("#4477aa"); "" for gnuplot's own cycle
 };
 
 /// A horizontal line y = value across the whole plot (e.g. a confidence band).
@@ -40,10 +42,15 @@ struct PlotSpec {
   bool logx = false, logy = false;
   std::string key = "top right";          ///< gnuplot `set key` position
   std::vector<PlotHLine> hlines;          ///< drawn after the series (need at least one series)
+  /// A figure of stacked panels (top to bottom, sharing the width): when not
+  /// empty, each panel is drawn with its own title, labels, series and lines,
+  /// `title` heads the figure and this spec's own series are not drawn.
+  std::vector<PlotSpec> panels;
 };
 
 struct PlotOutcome {
-  bool ok = false;
+  bool ok = false;    ///< the PNG was written
+  std::string svg;    ///< the SVG written beside it (same stem), "" if none
   std::string message;   ///< why not, or what was written
   std::string terminal;  ///< "pngcairo" or "png"
 };
@@ -55,8 +62,10 @@ std::string gnuplot_program();
 /// when gnuplot cannot be run or has neither.
 std::string gnuplot_png_terminal();
 
-/// Writes the plot as a PNG file. Never throws for a missing or failing
-/// gnuplot (ok = false and the message; gnuplot's own error text included).
+/// Writes the plot as a PNG file and, from the same script, as an SVG file
+/// beside it (png_path with extension .svg; vector graphics for papers).
+/// Never throws for a missing or failing gnuplot (ok = false and the
+/// message; gnuplot's own error text included).
 PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path);
 
 /// The gnuplot script plot_png runs (exposed for tests): `data_path` holds

@@ -105,6 +105,54 @@ TEST(DiagnosePlots, WritesCsvAndPngOrSaysWhyNot) {
   for (const char* f : {"acf.png", "res.png", "fit.png"}) EXPECT_TRUE(is_png(dir.file(f))) << f;
 }
 
+TEST(DiagnosePlots, TestRecordFigureHasTimeUnitsAndTheBand) {
+  TestRecordPlot t;
+  t.u = gaussian(60, 1, 11, 1.0);
+  t.y = gaussian(60, 1, 12, 1.0);
+  t.yhat_before = gaussian(60, 1, 13, 1.0);
+  t.yhat_after = t.y + gaussian(60, 1, 14, 0.1);
+  t.dmax_after = 0.25;
+  t.warmup = 10;
+  t.input_columns = {"uEst"};
+  t.output_columns = {"yEst"};
+  t.info.sample_time = 4.0;
+  t.info.units = {{"uEst", "V"}, {"yEst", "V"}};
+  t.source = "tanks.csv columns uVal,yVal";
+  const PlotSpec f = test_record_plot_spec(t);
+  ASSERT_EQ(f.panels.size(), 2u);
+  EXPECT_EQ(f.panels[0].xlabel, "time [s]");
+  EXPECT_EQ(f.panels[0].ylabel, "input [V]");
+  EXPECT_EQ(f.panels[1].ylabel, "output [V]");
+  ASSERT_EQ(f.panels[1].series.size(), 4u);  // band, measured, before, after
+  const PlotSeries& band = f.panels[1].series[0];
+  ASSERT_EQ(band.y_high.size(), 60u);
+  EXPECT_DOUBLE_EQ(band.x[7], 28.0);  // sample 7 at 4 s
+  EXPECT_DOUBLE_EQ(band.y[7], t.yhat_after(7, 0) - 0.25);
+  EXPECT_DOUBLE_EQ(band.y_high[7], t.yhat_after(7, 0) + 0.25);
+  // the figure's data blocks in order, both panels in one script, PNG then SVG
+  const std::string script = gnuplot_script(f, "pngcairo", "/tmp/t.png", "/tmp/d.txt");
+  EXPECT_NE(script.find("set multiplot layout 2,1"), std::string::npos) << script;
+  EXPECT_NE(script.find("index 1 using 1:2:3 with filledcurves"), std::string::npos) << script;
+  EXPECT_NE(script.find("set output '/tmp/t.svg'"), std::string::npos) << script;
+  // CSV: distinct names, the band's two edges
+  ScratchDir dir("test-record-plot");
+  const PlotOutcome o = plot_test_record(t, dir.file("test.png"));
+  EXPECT_EQ(first_line(dir.file("test.csv")),
+            "time_s,u,y_band_lower,y_band_upper,y_measured,y_model_before,y_model_after");
+  // the warm-up must leave samples to score; no sample time: the x axis counts samples
+  t.warmup = 60;
+  EXPECT_THROW(test_record_plot_spec(t), InputError);
+  t.warmup = 10;
+  t.info = {};
+  EXPECT_EQ(test_record_plot_spec(t).panels[1].xlabel, "sample");
+  EXPECT_EQ(test_record_plot_spec(t).panels[0].ylabel, "input");
+  if (gnuplot_png_terminal().empty()) GTEST_SKIP() << "gnuplot with a PNG terminal is not installed";
+  EXPECT_TRUE(o.ok) << o.message;
+  EXPECT_TRUE(is_png(dir.file("test.png")));
+  EXPECT_EQ(o.svg, dir.file("test.svg"));
+  EXPECT_NE(first_line(o.svg).find("<?xml"), std::string::npos);
+}
+
 TEST(DiagnosePlots, MissingGnuplotIsNotFatal) {
   const char* old = std::getenv("LPVID_GNUPLOT");
   const std::string saved = old ? old : "";
