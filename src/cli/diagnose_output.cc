@@ -424,10 +424,14 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
       names.clear();
       for (const std::string& y : res.before_model.columns.y) names.push_back(y + (in.folds ? " (last fold)" : " (held out)"));
     }
+    // the rows' place in the file: the last fold block of the estimation rows (fold mode)
+    const double first_row =
+        in.folds && !r.fold_blocks.empty() ? static_cast<double>(in.file_row_offset + r.fold_blocks.back().first) : 0.0;
+    const SignalInfo& info = res.after_model.signal_info;
     const std::vector<std::pair<std::string, PlotOutcome>> made = {
-        {d + "residual.png", plot_residual(rb, ra, d + "residual.png", names)},
+        {d + "residual.png", plot_residual(rb, ra, d + "residual.png", names, info, first_row)},
         {d + "autocorrelation.png", plot_residual_autocorrelation(rb, ra, d + "autocorrelation.png", names)},
-        {d + "output.png", plot_output_fit(in.val->y, yb, ya, d + "output.png", names)}};
+        {d + "output.png", plot_output_fit(in.val->y, yb, ya, d + "output.png", names, info, first_row)}};
     std::cout << (in.folds ? "\nplots (the last fold's rows)\n" : "\nplots (validation data)\n");
     const auto list = [&](const std::string& path, const PlotOutcome& o) {
       std::cout << "  " << (o.ok ? path + (o.svg.empty() ? "" : " (+ .svg)") : "not written: " + o.message) << "\n";

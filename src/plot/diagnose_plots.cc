@@ -219,8 +219,12 @@ PlotSpec test_record_plot_spec(const TestRecordPlot& t) {
   fig.width = 1200;
   fig.height = 800;
   const double scored = residual_rms(t.y.bottomRows(n - t.warmup) - t.yhat_before.bottomRows(n - t.warmup)).overall;
-  fig.title = "Test record " + t.source + ": scored once; x0 from the first " + std::to_string(t.warmup) +
-              " samples, RMS over the rest " + short_number(scored) + " before";
+  // the file's name without its folders: the title must fit above the figure
+  std::string source = t.source;
+  const size_t space = source.find(' '), slash = source.substr(0, space).rfind('/');
+  if (slash != std::string::npos) source = source.substr(slash + 1);
+  fig.title = "Test record " + source + ": x0 from the first " + std::to_string(t.warmup) + " samples; RMS over the rest " +
+              short_number(scored) + " before";
   if (t.yhat_after.cols() > 0)
     fig.title += ", " + short_number(residual_rms(t.y.bottomRows(n - t.warmup) - t.yhat_after.bottomRows(n - t.warmup)).overall) +
                  " after";
@@ -243,7 +247,7 @@ PlotSpec test_record_plot_spec(const TestRecordPlot& t) {
       PlotSeries band = series(yi + " band (after +- dmax)", x, column(t.yhat_after, i), "lines");
       band.y_high = band.y;
       for (size_t k = 0; k < band.y.size(); ++k) band.y[k] -= t.dmax_after, band.y_high[k] += t.dmax_after;
-      band.color = "#88aadd";
+      band.color = "#7799dd";
       out.series.push_back(std::move(band));
     }
     PlotSeries measured = series(yi + " measured", x, column(t.y, i), "lines");
@@ -267,10 +271,21 @@ PlotOutcome plot_test_record(const TestRecordPlot& t, const std::string& png_pat
   return write_plot(spec, plot_table(spec, t.info.sample_time > 0 ? "time_s" : "sample"), png_path);
 }
 
+void use_time_axis(PlotSpec& spec, const SignalInfo& info, double first_row) {
+  const auto shift = [&](PlotSpec& p) {
+    for (PlotSeries& ser : p.series)
+      for (double& x : ser.x) x = info.time_of(first_row + x);
+    p.xlabel = info.sample_time > 0 ? "time [s]" : "file row";
+  };
+  shift(spec);
+  for (PlotSpec& p : spec.panels) shift(p);
+}
+
 PlotOutcome plot_residual(const Mat<double>& before, const Mat<double>& after, const std::string& png_path,
-                          const std::vector<std::string>& output_names) {
-  const PlotSpec spec = residual_plot_spec(before, after, output_names);
-  std::vector<TextColumn> table = plot_table(spec, "sample");
+                          const std::vector<std::string>& output_names, const SignalInfo& info, double first_row) {
+  PlotSpec spec = residual_plot_spec(before, after, output_names);
+  use_time_axis(spec, info, first_row);
+  std::vector<TextColumn> table = plot_table(spec, info.sample_time > 0 ? "time_s" : "sample");
   table.pop_back();  // the zero line
   return write_plot(spec, table, png_path);
 }
@@ -288,9 +303,11 @@ PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<d
 }
 
 PlotOutcome plot_output_fit(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
-                            const std::string& png_path, const std::vector<std::string>& output_names) {
-  const PlotSpec spec = output_fit_plot_spec(y, yhat_before, yhat_after, output_names);
-  return write_plot(spec, plot_table(spec, "sample"), png_path);
+                            const std::string& png_path, const std::vector<std::string>& output_names,
+                            const SignalInfo& info, double first_row) {
+  PlotSpec spec = output_fit_plot_spec(y, yhat_before, yhat_after, output_names);
+  use_time_axis(spec, info, first_row);
+  return write_plot(spec, plot_table(spec, info.sample_time > 0 ? "time_s" : "sample"), png_path);
 }
 
 }  // namespace lpvid

@@ -63,8 +63,16 @@ std::vector<TextColumn> plot_table(const PlotSpec& spec, const std::string& x_na
 /// png_path with its extension replaced by ".csv".
 std::string plot_csv_path(const std::string& png_path);
 
+/// Puts a plot over samples on the record's time axis: x ↦ time_of(first_row
+/// + x), i.e. seconds when the sample time is known, else the file row; the
+/// x label says which.
+void use_time_axis(PlotSpec& spec, const SignalInfo& info, double first_row);
+
+/// `info` and `first_row` (the file row of the first sample): use_time_axis;
+/// the CSV's first column is then time_s (or sample, the file row).
 PlotOutcome plot_residual(const Mat<double>& before, const Mat<double>& after, const std::string& png_path,
-                          const std::vector<std::string>& output_names = {});
+                          const std::vector<std::string>& output_names = {}, const SignalInfo& info = {},
+                          double first_row = 0);
 PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<double>& after,
                                           const std::string& png_path,
                                           const std::vector<std::string>& output_names = {},
@@ -73,6 +81,7 @@ PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<d
 /// before/after and the band's lower and upper edge.
 PlotOutcome plot_test_record(const TestRecordPlot& t, const std::string& png_path);
 PlotOutcome plot_output_fit(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
-                            const std::string& png_path, const std::vector<std::string>& output_names = {});
+                            const std::string& png_path, const std::vector<std::string>& output_names = {},
+                            const SignalInfo& info = {}, double first_row = 0);
 
 }  // namespace lpvid

@@ -111,7 +111,7 @@ void panel_script(std::ostringstream& s, const PlotSpec& spec, const std::string
     const std::string src = gp_quote(data_path) + " index " + std::to_string(block);
     const std::string color = ser.color.empty() ? "" : " lc rgb " + gp_quote(ser.color);
     if (!ser.y_high.empty())
-      parts.push_back(src + " using 1:2:3 with filledcurves fs transparent solid 0.25 noborder" + color + " title " +
+      parts.push_back(src + " using 1:2:3 with filledcurves fs transparent solid 0.4 noborder" + color + " title " +
                       gp_quote(ser.title));
     else
       parts.push_back(src + " using 1:2 with " + ser.style + " lw 2 pt 7 ps 1.2" + color + " title " + gp_quote(ser.title));
@@ -134,9 +134,12 @@ std::string figure_script(const PlotSpec& spec, const std::string& data_path) {
     panel_script(s, spec, data_path, block);
     return s.str();
   }
-  s << "set multiplot layout " << spec.panels.size() << ",1 title " << gp_quote(spec.title) << "\n";
+  // panels share the time axis: the same left and right edges (a key outside
+  // on the right would otherwise move each panel's edge) and no padding in x
+  s << "set multiplot layout " << spec.panels.size() << ",1 title " << gp_quote(spec.title) << "\n"
+    << "set lmargin at screen 0.08\nset rmargin at screen 0.78\nset autoscale xfix\n";
   for (const PlotSpec& p : spec.panels) panel_script(s, p, data_path, block);
-  s << "unset multiplot\n";
+  s << "unset multiplot\nset lmargin\nset rmargin\nset autoscale x\n";
   return s.str();
 }
 
