@@ -441,6 +441,50 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                        {"message", o.message}});
     };
     for (const auto& [path, o] : made) list(path, o);
+    // the estimation record and its roles: the selection blocks shaded, the after model's free run
+    {
+      RecordPlot rp;
+      rp.u = in.est->u;
+      rp.y = in.est->y;
+      validation_rms(res.after_model, *in.est, in.init_samples, &rp.yhat_after);
+      if (!rp.yhat_after.allFinite()) rp.yhat_after.resize(0, 0);
+      for (const FoldBlock& b : r.fold_blocks) rp.blocks.emplace_back(static_cast<long>(b.first), static_cast<long>(b.last));
+      rp.input_columns = res.before_model.columns.u;
+      rp.output_columns = res.before_model.columns.y;
+      rp.info = info;
+      rp.first_row = in.file_row_offset;
+      const std::string file = std::filesystem::path(in.command_line_data).filename().string();
+      rp.title = "Estimation record " + file + " rows " + std::to_string(in.file_row_offset) + ":" +
+                 std::to_string(in.file_row_offset + in.est->n()) +
+                 (in.folds ? "; shaded: the " + std::to_string(r.fold_blocks.size()) + " blocks held out in turn to choose the effects"
+                           : "; the effects were chosen on other rows (validation)") +
+                 (res.tests.empty() ? "" : "; test records: test*.png");
+      const std::string path = d + "record.png";
+      list(path, plot_record(rp, path));
+    }
+    // the fitted static maps of the after model (model/static_blocks.h), over the estimation record's range
+    const auto range_of = [](const Mat<double>& m) {
+      const double lo = m.minCoeff(), hi = m.maxCoeff(), pad = 0.1 * std::max(hi - lo, 1e-12);
+      return std::pair<double, double>{lo - pad, hi + pad};
+    };
+    const StaticBlocks<double>& st = res.after_model.statics;
+    if (!st.input.is_identity()) {
+      const auto [lo, hi] = range_of(in.est->u);
+      const std::string path = d + "input_map.png";
+      list(path, plot_static_map(st.input, lo, hi, "Fitted static input map u' = g_in(u) (" + std::string(to_string(st.input.kind)) + ")",
+                                 "u, the measured input", "u', what the LPV part sees", path));
+    }
+    if (st.has_output()) {
+      // g_out's argument v = ŷ + Φ along the estimation record (the model's own x0)
+      const Simulation<double> sim = simulate(res.after_model, *in.est);
+      const Mat<double> v = sim.yhat + sim.offset;
+      const auto [lo, hi] = range_of(v.allFinite() ? v : in.est->y);
+      const std::string path = d + "output_map.png";
+      list(path, plot_static_map(st.output, lo, hi,
+                                 "Fitted static output map y = g_out(v) (" + std::string(to_string(st.output.kind)) +
+                                     "), over the range of v on the estimation record",
+                                 "v = yhat + Phi, the LPV part's output", "y = g_out(v)", path));
+    }
     // each test record: input, output, the models' free runs and the certified d_max as a band
     if (in.tests && !res.tests.empty()) {
       std::cout << "plots (test records, scored once at the end)\n";

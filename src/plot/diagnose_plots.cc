@@ -1,5 +1,6 @@
 #include "plot/diagnose_plots.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -52,6 +53,13 @@ std::vector<double> column(const Mat<double>& m, Eigen::Index j) {
 void add_columns(PlotSpec& spec, const Mat<double>& m, const std::vector<std::string>& names, const std::string& tag) {
   for (Eigen::Index i = 0; i < m.cols(); ++i)
     spec.series.push_back(series(output_name(names, i) + " " + tag, range(m.rows()), column(m, i), "lines"));
+}
+
+/// Adds column i of m against x as a line of a fixed colour ("" for gnuplot's cycle).
+void add_line(PlotSpec& p, const std::string& title, const std::vector<double>& x, const Mat<double>& m, Eigen::Index i,
+              const std::string& color) {
+  p.series.push_back(series(title, x, column(m, i), "lines"));
+  p.series.back().color = color;
 }
 
 std::string short_number(double x) {
@@ -250,20 +258,111 @@ PlotSpec test_record_plot_spec(const TestRecordPlot& t) {
       band.color = "#7799dd";
       out.series.push_back(std::move(band));
     }
-    PlotSeries measured = series(yi + " measured", x, column(t.y, i), "lines");
-    measured.color = "#000000";
-    out.series.push_back(std::move(measured));
-    PlotSeries before = series(yi + " model before", x, column(t.yhat_before, i), "lines");
-    before.color = "#dd7711";
-    out.series.push_back(std::move(before));
-    if (t.yhat_after.cols() > 0) {
-      PlotSeries after = series(yi + " model after", x, column(t.yhat_after, i), "lines");
-      after.color = "#1155cc";
-      out.series.push_back(std::move(after));
-    }
+    add_line(out, yi + " measured", x, t.y, i, "#000000");
+    add_line(out, yi + " model before", x, t.yhat_before, i, "#dd7711");
+    if (t.yhat_after.cols() > 0) add_line(out, yi + " model after", x, t.yhat_after, i, "#1155cc");
   }
   fig.panels = {std::move(in), std::move(out)};
   return fig;
+}
+
+PlotSpec record_plot_spec(const RecordPlot& r) {
+  require_signal(r.u, "record plot: input");
+  require_signal(r.y, "record plot: output");
+  const Eigen::Index n = r.y.rows();
+  if (r.u.rows() != n || (r.yhat_after.cols() > 0 && (r.yhat_after.rows() != n || r.yhat_after.cols() != r.y.cols())))
+    throw InputError("record plot: the input, output and model output differ in length or width");
+  for (const auto& [a, b] : r.blocks)
+    if (a < 0 || b > n || a >= b) throw InputError("record plot: a selection block lies outside the record");
+  std::vector<double> x(static_cast<size_t>(n));
+  for (Eigen::Index k = 0; k < n; ++k) x[static_cast<size_t>(k)] = r.info.time_of(static_cast<double>(r.first_row + k));
+  const std::string xlabel = r.info.sample_time > 0 ? "time [s]" : "file row";
+  const auto axis = [&](const char* what, const std::vector<std::string>& cols) {
+    const std::string u = cols.empty() ? "" : r.info.unit_of(cols.front());
+    for (const std::string& c : cols)
+      if (r.info.unit_of(c) != u) return std::string(what);
+    return std::string(what) + (u.empty() ? "" : " [" + u + "]");
+  };
+  // a block shaded over the panel's range: a band from the signal's min to its max over the block's rows
+  const auto shade = [&](PlotSpec& p, const Mat<double>& m) {
+    const double lo = m.minCoeff(), hi = m.maxCoeff();
+    for (size_t b = 0; b < r.blocks.size(); ++b) {
+      const auto [first, last] = r.blocks[b];
+      PlotSeries band;
+      band.title = r.block_name + " " + std::to_string(b + 1);
+      band.x.assign(x.begin() + first, x.begin() + last);
+      band.y.assign(band.x.size(), lo);
+      band.y_high.assign(band.x.size(), hi);
+      band.color = b % 2 ? "#cfcfcf" : "#e6e6e6";
+      p.series.push_back(std::move(band));
+    }
+  };
+  PlotSpec fig;
+  fig.width = 1200;
+  fig.height = 800;
+  fig.title = r.title;
+  PlotSpec in;
+  in.title = "input";
+  in.xlabel = xlabel;
+  in.ylabel = axis("input", r.input_columns);
+  in.key = "outside right top";
+  PlotSpec out;
+  out.title = "output";
+  out.xlabel = xlabel;
+  out.ylabel = axis("output", r.output_columns);
+  out.key = "outside right top";
+  shade(out, r.yhat_after.cols() > 0 ? Mat<double>((Mat<double>(n, 2 * r.y.cols()) << r.y, r.yhat_after).finished()) : r.y);
+  for (PlotSeries& b : out.series) b.title.clear();  // one legend for the blocks: the input panel's
+  shade(in, r.u);
+  for (Eigen::Index i = 0; i < r.u.cols(); ++i) {
+    add_line(in, i < static_cast<Eigen::Index>(r.input_columns.size()) ? r.input_columns[static_cast<size_t>(i)] : "u" + std::to_string(i + 1),
+             x, r.u, i, r.u.cols() == 1 ? "#6a3d9a" : "");
+  }
+  for (Eigen::Index i = 0; i < r.y.cols(); ++i) {
+    const std::string yi = i < static_cast<Eigen::Index>(r.output_columns.size()) ? r.output_columns[static_cast<size_t>(i)]
+                                                                                  : "y" + std::to_string(i + 1);
+    add_line(out, yi + " measured", x, r.y, i, "#000000");
+    if (r.yhat_after.cols() > 0) add_line(out, yi + " model after", x, r.yhat_after, i, "#1155cc");
+  }
+  fig.panels = {std::move(in), std::move(out)};
+  return fig;
+}
+
+PlotOutcome plot_record(const RecordPlot& r, const std::string& png_path) {
+  const PlotSpec spec = record_plot_spec(r);
+  // CSV: the signals only (a shaded block is a row range, listed in the report)
+  PlotSpec signals = spec;
+  for (PlotSpec& p : signals.panels)
+    p.series.erase(std::remove_if(p.series.begin(), p.series.end(), [](const PlotSeries& ser) { return !ser.y_high.empty(); }),
+                   p.series.end());
+  return write_plot(spec, plot_table(signals, r.info.sample_time > 0 ? "time_s" : "file_row"), png_path);
+}
+
+PlotSpec static_map_plot_spec(const StaticMap<double>& g, double lo, double hi, const std::string& title,
+                              const std::string& argument, const std::string& value) {
+  if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi)) throw InputError("static map plot: need a finite range lo < hi");
+  constexpr int kPoints = 400;
+  std::vector<double> v(kPoints + 1), gv(kPoints + 1);
+  for (int i = 0; i <= kPoints; ++i) {
+    v[static_cast<size_t>(i)] = lo + (hi - lo) * i / kPoints;
+    gv[static_cast<size_t>(i)] = g(v[static_cast<size_t>(i)]);
+  }
+  PlotSpec spec;
+  spec.title = title;
+  spec.xlabel = argument;
+  spec.ylabel = value;
+  PlotSeries fitted = series("fitted map", v, gv, "lines");
+  fitted.color = "#1155cc";
+  PlotSeries identity = series("identity (no map)", v, v, "lines");
+  identity.color = "#999999";
+  spec.series = {std::move(fitted), std::move(identity)};
+  return spec;
+}
+
+PlotOutcome plot_static_map(const StaticMap<double>& g, double lo, double hi, const std::string& title,
+                            const std::string& argument, const std::string& value, const std::string& png_path) {
+  const PlotSpec spec = static_map_plot_spec(g, lo, hi, title, argument, value);
+  return write_plot(spec, plot_table(spec, "argument"), png_path);
 }
 
 PlotOutcome plot_test_record(const TestRecordPlot& t, const std::string& png_path) {

@@ -19,11 +19,13 @@
 /// default to y1, y2, ….
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/scalar.h"
 #include "data/csv_writer.h"
 #include "data/signal_info.h"
+#include "model/static_blocks.h"
 #include "diagnose/residual_analysis.h"
 #include "plot/gnuplot.h"
 
@@ -44,7 +46,27 @@ struct TestRecordPlot {
   std::string source;                         ///< the record's file and columns (title)
 };
 
+/// The whole estimation record and the roles of its rows: the input(s) on
+/// top, below the measured output and the after model's free run (x0 from the
+/// first samples), each selection block (a fold held out, or the validation
+/// rows) shaded in both panels. x: time_of(first_row + k).
+struct RecordPlot {
+  Mat<double> u, y, yhat_after;                 ///< yhat_after may have no columns
+  std::vector<std::pair<long, long>> blocks;    ///< selection rows [first, last) of the record
+  std::string block_name = "fold";              ///< "fold k" in the legend
+  std::vector<std::string> input_columns, output_columns;
+  SignalInfo info;
+  long first_row = 0;                           ///< file row of the record's first sample
+  std::string title;
+};
+
+/// A fitted static map g (model/static_blocks.h) over [lo, hi], with the
+/// identity for reference.
+PlotSpec static_map_plot_spec(const StaticMap<double>& g, double lo, double hi, const std::string& title,
+                              const std::string& argument, const std::string& value);
+
 /// The plot specifications (exposed for tests and for other front ends).
+PlotSpec record_plot_spec(const RecordPlot& r);
 PlotSpec test_record_plot_spec(const TestRecordPlot& t);
 PlotSpec residual_plot_spec(const Mat<double>& before, const Mat<double>& after,
                             const std::vector<std::string>& output_names = {});
@@ -80,6 +102,9 @@ PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<d
 /// The CSV columns: time (or sample), u…, then per output measured, model
 /// before/after and the band's lower and upper edge.
 PlotOutcome plot_test_record(const TestRecordPlot& t, const std::string& png_path);
+PlotOutcome plot_record(const RecordPlot& r, const std::string& png_path);
+PlotOutcome plot_static_map(const StaticMap<double>& g, double lo, double hi, const std::string& title,
+                            const std::string& argument, const std::string& value, const std::string& png_path);
 PlotOutcome plot_output_fit(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
                             const std::string& png_path, const std::vector<std::string>& output_names = {},
                             const SignalInfo& info = {}, double first_row = 0);

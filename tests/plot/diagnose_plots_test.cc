@@ -153,6 +153,48 @@ TEST(DiagnosePlots, TestRecordFigureHasTimeUnitsAndTheBand) {
   EXPECT_NE(first_line(o.svg).find("<?xml"), std::string::npos);
 }
 
+TEST(DiagnosePlots, RecordFigureShadesTheSelectionBlocks) {
+  RecordPlot r;
+  r.u = gaussian(80, 1, 21, 1.0);
+  r.y = gaussian(80, 1, 22, 2.0);
+  r.yhat_after = r.y + gaussian(80, 1, 23, 0.1);
+  r.blocks = {{0, 40}, {40, 80}};
+  r.input_columns = {"pump"};
+  r.output_columns = {"level"};
+  r.info.sample_time = 0.5;
+  r.info.units = {{"pump", "V"}, {"level", "cm"}};
+  r.first_row = 100;
+  const PlotSpec f = record_plot_spec(r);
+  ASSERT_EQ(f.panels.size(), 2u);
+  EXPECT_EQ(f.panels[0].ylabel, "input [V]");
+  EXPECT_EQ(f.panels[1].ylabel, "output [cm]");
+  // input panel: two shaded blocks (legend), then the input; times from file row 100 at 0.5 s
+  ASSERT_EQ(f.panels[0].series.size(), 3u);
+  EXPECT_EQ(f.panels[0].series[1].title, "fold 2");
+  EXPECT_DOUBLE_EQ(f.panels[0].series[1].x.front(), 70.0);  // (100 + 40) · 0.5
+  EXPECT_DOUBLE_EQ(f.panels[0].series[1].y.front(), r.u.minCoeff());
+  EXPECT_DOUBLE_EQ(f.panels[0].series[1].y_high.front(), r.u.maxCoeff());
+  ScratchDir dir("record-plot");
+  plot_record(r, dir.file("record.png"));
+  EXPECT_EQ(first_line(dir.file("record.csv")), "time_s,pump,level_measured,level_model_after");
+  r.blocks = {{70, 90}};
+  EXPECT_THROW(record_plot_spec(r), InputError);
+}
+
+TEST(DiagnosePlots, StaticMapPlotEvaluatesTheMap) {
+  StaticMap<double> g;
+  g.kind = StaticKind::kPolynomial;
+  g.coefficients = {0.0, 1.0, 0.4};  // y = v + 0.4 v^2
+  const PlotSpec p = static_map_plot_spec(g, -2.0, 2.0, "g", "v", "y");
+  ASSERT_EQ(p.series.size(), 2u);
+  EXPECT_DOUBLE_EQ(p.series[0].x.front(), -2.0);
+  EXPECT_DOUBLE_EQ(p.series[0].y.front(), -2.0 + 0.4 * 4.0);
+  EXPECT_DOUBLE_EQ(p.series[0].x.back(), 2.0);
+  EXPECT_DOUBLE_EQ(p.series[0].y.back(), 2.0 + 0.4 * 4.0);
+  EXPECT_EQ(p.series[1].y, p.series[1].x);  // the identity for reference
+  EXPECT_THROW(static_map_plot_spec(g, 1.0, 1.0, "g", "v", "y"), InputError);
+}
+
 TEST(DiagnosePlots, MissingGnuplotIsNotFatal) {
   const char* old = std::getenv("LPVID_GNUPLOT");
   const std::string saved = old ? old : "";
