@@ -17,6 +17,7 @@
 #include "core/number_text.h"
 #include "identify/basis_selection.h"
 #include "identify/tradeoff.h"
+#include "plot/tradeoff_plot.h"
 #include "model/model_file.h"
 #include "solvers/external_solvers.h"
 

@@ -202,22 +202,6 @@ void store_cascade_candidate(const LpvModel<double>& base, const Experiment<doub
 
 }  // namespace
 
-std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m) {
-  std::vector<ParameterSlot> s = output_map_slots(m);
-  for (auto v : {offset_slots(m), x0_slots(m), static_map_slots(m)}) s.insert(s.end(), v.begin(), v.end());
-  return s;
-}
-
-std::vector<ParameterSlot> with_dynamics_slots(std::vector<ParameterSlot> slots, const LpvModel<double>& m) {
-  for (const ParameterSlot& d : dynamics_slots(m)) {
-    const bool known = std::any_of(slots.begin(), slots.end(), [&](const ParameterSlot& s) {
-      return s.where == d.where && s.term == d.term && s.row == d.row && s.col == d.col;
-    });
-    if (!known) slots.push_back(d);
-  }
-  return slots;
-}
-
 LpvModel<double> with_input_scheduling(const LpvModel<double>& m) {
   LpvModel<double> out = m;
   for (const std::string& col : m.columns.u)

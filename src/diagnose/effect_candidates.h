@@ -78,14 +78,6 @@ struct EffectCandidate {
 std::vector<EffectCandidate> candidate_effects(const LpvModel<double>& current, const Experiment<double>& est,
                                                const CandidateOptions& options);
 
-/// The slots that are re-fitted with every candidate: C, D terms, offset, x0
-/// and the static maps' parameters.
-std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m);
-
-/// `slots` plus the model's dynamics slots (A, B: dynamics_slots) that are
-/// not already among them: the joint re-fit of issue 9 item 2.
-std::vector<ParameterSlot> with_dynamics_slots(std::vector<ParameterSlot> slots, const LpvModel<double>& m);
-
 /// The model with every input column that is not yet a scheduling variable
 /// added as one (named after the column): lets basis_term try f(u)·x, f(u)·u.
 LpvModel<double> with_input_scheduling(const LpvModel<double>& m);

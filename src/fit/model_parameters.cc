@@ -1,5 +1,6 @@
 #include "fit/model_parameters.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/number_text.h"
@@ -257,6 +258,22 @@ LpvModel<double> explicit_model(const LpvModel<double>& m) {
     for (size_t j = 0; j < out.offset.basis.size(); ++j) out.offset.values.push_back(Vec<double>::Zero(m.ny));
   if (out.x0.size() != m.nx) out.x0 = Vec<double>::Zero(m.nx);
   return out;
+}
+
+std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> s = output_map_slots(m);
+  for (auto v : {offset_slots(m), x0_slots(m), static_map_slots(m)}) s.insert(s.end(), v.begin(), v.end());
+  return s;
+}
+
+std::vector<ParameterSlot> with_dynamics_slots(std::vector<ParameterSlot> slots, const LpvModel<double>& m) {
+  for (const ParameterSlot& d : dynamics_slots(m)) {
+    const bool known = std::any_of(slots.begin(), slots.end(), [&](const ParameterSlot& s) {
+      return s.where == d.where && s.term == d.term && s.row == d.row && s.col == d.col;
+    });
+    if (!known) slots.push_back(d);
+  }
+  return slots;
 }
 
 }  // namespace lpvid

@@ -90,4 +90,13 @@ std::vector<ParameterSlot> static_map_slots(const LpvModel<double>& m);
 /// has no unknowns left: every parameter is a slot.
 LpvModel<double> explicit_model(const LpvModel<double>& m);
 
+/// The slots that are re-fitted with every candidate effect: C, D terms,
+/// offset, x0 and the static maps' parameters.
+std::vector<ParameterSlot> refit_slots(const LpvModel<double>& m);
+
+/// `slots` plus the model's dynamics slots (A, B: dynamics_slots) that are
+/// not already among them: the joint re-fit of the linear part with an effect
+/// (a Wiener or Hammerstein map changes the best A, B too).
+std::vector<ParameterSlot> with_dynamics_slots(std::vector<ParameterSlot> slots, const LpvModel<double>& m);
+
 }  // namespace lpvid

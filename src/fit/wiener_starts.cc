@@ -6,7 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "diagnose/effect_candidates.h"
+#include "fit/model_parameters.h"
 #include "fit/output_error_fit.h"
 
 namespace lpvid {

@@ -33,7 +33,6 @@
 #include "identify/affine_residual.h"
 #include "identify/certify.h"
 #include "identify/identify.h"
-#include "plot/gnuplot.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
 
@@ -72,13 +71,12 @@ std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, con
                                           const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                           const TradeoffOptions& options, SdpSolver& solver);
 
+/// λ as the CSV and the plot labels write it (shortest stream text: 0.25).
+std::string lambda_text(double lambda);
+
 /// CSV text: lambda,verified,delta,dmax,delta2_exact,dmax2_exact,delta_solver,
 /// dmax_solver,status,certificate (empty cells where there is no value).
 std::string tradeoff_csv(const std::vector<TradeoffPoint>& points);
-
-/// The plot: certified δ against certified d_max, points labelled by λ; an
-/// axis is logarithmic when its values span more than two decades.
-PlotSpec tradeoff_plot(const std::vector<TradeoffPoint>& points, const std::string& title);
 
 /// "" if, over the verified points in order of λ, δ is non-increasing and
 /// d_max non-decreasing up to rel·value + abs; else the first violation.

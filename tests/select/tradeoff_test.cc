@@ -23,7 +23,7 @@
 #include "data/experiment_builder.h"
 #include "examples/paper_example1.h"
 #include "identify/basis_selection.h"
-#include "plot/gnuplot.h"
+#include "plot/tradeoff_plot.h"
 #include "identify/tradeoff.h"
 #include "solvers/sdp_solver.h"
 #include "verify/certificate_check.h"

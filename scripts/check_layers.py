@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""The floors of the house: every folder of src/ (and verify/, python/) has a
+level, and a file may include only headers of its own folder or of a lower
+level. An include that runs up a floor, a folder without a level, or a circle
+of folders (which a strict order excludes, and which is reported by itself
+for clarity) makes this check fail with the file and line of each offending
+include. Run by ctest (IncludeLayers), hence by CI.
+
+    python3 scripts/check_layers.py [repository root]
+"""
+import os
+import re
+import sys
+
+# Lowest first. What each floor is for, in one line:
+LEVELS = [
+    ("src/core", "numbers, text, files, limits, threads: no mathematics of the paper"),
+    ("src/data", "CSV tables, column maps, experiments, signal descriptions"),
+    ("src/model", "the LPV model, its file format and simulation"),
+    ("src/toeplitz", "Toeplitz operators of the model along a trajectory (templated on the scalar)"),
+    ("src/examples", "known systems: the paper's examples, plant analogues, effect cases"),
+    ("verify", "the exact verifier: PSD decisions and certificate checks (never a solver)"),
+    ("src/solvers", "SDP back ends (CSDP, SDPA, outside solvers)"),
+    ("src/lmi", "the LMIs of Theorems 2.1 and 3.1 and their structured solvers"),
+    ("src/identify", "certification, identification, basis selection, trade-off curves"),
+    ("src/fit", "least-squares and output-error fits of model parameters"),
+    ("src/diagnose", "residual -> missing effect -> re-fitted model, certified"),
+    ("src/plot", "figures (gnuplot) of the results"),
+    ("src/cli", "the command lines: options, reports, file names"),
+    ("python", "the Python module over the command lines"),
+]
+LEVEL = {room: i for i, (room, _) in enumerate(LEVELS)}
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+
+
+def room_of(path):
+    """The folder (room) of a repository-relative path, e.g. src/lmi."""
+    parts = path.split("/")
+    if parts[0] == "src" and len(parts) > 2:
+        return "src/" + parts[1]
+    return parts[0]
+
+
+def resolve(root, inc):
+    """The repository path an include names (src/ or top level), or None."""
+    for candidate in ("src/" + inc, inc):
+        if os.path.isfile(os.path.join(root, candidate)):
+            return candidate
+    return None
+
+
+def main():
+    root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
+    problems, edges = [], {}
+    files = 0
+    for top in ("src", "verify", "python"):
+        for dirpath, _, names in os.walk(os.path.join(root, top)):
+            for name in sorted(names):
+                if not name.endswith((".h", ".cc")):
+                    continue
+                path = os.path.relpath(os.path.join(dirpath, name), root)
+                files += 1
+                a = room_of(path)
+                if a not in LEVEL:
+                    problems.append(f"{path}: the folder {a} has no level in scripts/check_layers.py")
+                    continue
+                with open(os.path.join(root, path), encoding="utf-8") as f:
+                    for line_no, line in enumerate(f, 1):
+                        m = INCLUDE.match(line)
+                        if not m:
+                            continue
+                        target = resolve(root, m.group(1))
+                        if target is None:
+                            continue
+                        b = room_of(target)
+                        if b == a:
+                            continue
+                        edges.setdefault(a, set()).add(b)
+                        if b not in LEVEL:
+                            problems.append(f"{path}:{line_no}: includes {m.group(1)} of {b}, a folder with no level")
+                        elif LEVEL[b] > LEVEL[a]:
+                            problems.append(f"{path}:{line_no}: includes {m.group(1)}: {a} (level {LEVEL[a]}) "
+                                            f"may not include {b} (level {LEVEL[b]}, higher)")
+    # circles of rooms (depth-first search on the room graph)
+    state, stack, circles = {}, [], []
+
+    def visit(v):
+        state[v] = 1
+        stack.append(v)
+        for w in sorted(edges.get(v, ())):
+            if state.get(w) == 1:
+                circles.append(stack[stack.index(w):] + [w])
+            elif w not in state:
+                visit(w)
+        stack.pop()
+        state[v] = 2
+
+    for v in sorted(edges):
+        if v not in state:
+            visit(v)
+    problems += ["circle of folders: " + " -> ".join(c) for c in circles]
+    if problems:
+        print("\n".join(problems))
+        print(f"check_layers: {len(problems)} problem(s) in {files} files")
+        return 1
+    print(f"check_layers: {files} files in {len(LEVELS)} levels, "
+          f"{sum(len(v) for v in edges.values())} folder-to-folder include edges, all downward; no circles")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
