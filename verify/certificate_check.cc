@@ -34,6 +34,14 @@ Mat<Rational> paper_gram(const LpvModel<Rational>& model, const Experiment<Ratio
 }  // namespace
 
 namespace {
+/// The exact check of a primal point (steps 4–6).
+struct PrimalCheck {
+  enum Result { kHolds, kConditionFails, kMalformed } result = kMalformed;
+  std::string reason;  ///< the failing condition or the malformation
+  std::string text;    ///< what was checked (details)
+};
+PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>& exp, const Simulation<Rational>& sim,
+                               std::ostringstream& details);
 CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c);
 CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir, const std::string& data_file);
 }  // namespace
@@ -94,23 +102,44 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   const Eigen::Index n = exp.n(), ny = c.model.ny, nz = c.model.nz();
   details << "data " << data_path.string() << " (sha256 matches); n = " << n << ", ny = " << ny << ", nz = " << nz << ", toeplitz mode " << to_string(c.mode);
 
-  if (c.claim != CertificateClaim::kConsistent) return check_dual_claim(c, exp, sim, details.str());
+  if (is_dual_claim(c.claim)) return check_dual_claim(c, exp, sim, details.str());
+  const PrimalCheck p = check_primal_point(c, exp, sim, details);
+  if (c.claim == CertificateClaim::kNotAWitness) {
+    if (p.result == PrimalCheck::kConditionFails) return {true, "", p.text, "", ""};
+    return invalid_verdict(p.result == PrimalCheck::kHolds ? "the point satisfies (C1) and (C2): it is a witness"
+                                                           : p.text,
+                           p.result == PrimalCheck::kHolds ? p.text : details.str());
+  }
+  if (p.result != PrimalCheck::kHolds) return invalid_verdict(p.reason, details.str());
+  return {true, "", p.text, "", ""};
+}
 
+/// Steps 4–6 for the primal point of a "consistent" or "not_a_witness" file.
+/// kMalformed: the point does not fit the data (sizes): no verdict on
+/// Theorem 2.1 either way. kConditionFails: a condition of Theorem 2.1 fails
+/// exactly for this point (`reason` says which, with the numbers).
+PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>& exp, const Simulation<Rational>& sim,
+                               std::ostringstream& details) {
+  const Eigen::Index n = exp.n(), ny = c.model.ny, nz = c.model.nz();
+  const auto fails = [&details](const std::string& why) {
+    return PrimalCheck{PrimalCheck::kConditionFails, why, details.str() + "; " + why};
+  };
+  const auto malformed = [](const std::string& why) { return PrimalCheck{PrimalCheck::kMalformed, why, why}; };
   // 4. w.
   Mat<Rational> w;
   if (c.form == CertificateForm::kDelta) {
-    if (c.mode != ToeplitzMode::kSignal) return invalid_verdict("form \"delta\" is only valid with toeplitz_mode \"signal\"");
+    if (c.mode != ToeplitzMode::kSignal) return malformed("form \"delta\" is only valid with toeplitz_mode \"signal\"");
     const Eigen::Index L = c.horizon, K = c.taps.rows();
-    if (L > n) return invalid_verdict("delta_horizon " + std::to_string(L) + " exceeds the " + std::to_string(n) + " samples");
+    if (L > n) return malformed("delta_horizon " + std::to_string(L) + " exceeds the " + std::to_string(n) + " samples");
     for (Eigen::Index k = 0; k < n - L; ++k)
       for (Eigen::Index j = 0; j < nz; ++j)
         if (sim.z(k, j) != 0)
-          return invalid_verdict("z_" + std::to_string(k) + " is not zero but precedes the delta horizon of " + std::to_string(L) +
-                         " samples (the horizon must cover every sample from the first non-zero z)");
+          return fails("z_" + std::to_string(k) + " is not zero but precedes the delta horizon of " + std::to_string(L) +
+                       " samples (the horizon must cover every sample from the first non-zero z)");
     w = apply_fir(c.taps, sim.z, ny, L);
     details << ", form delta with " << K << " taps on a horizon of " << L << " samples";
   } else {
-    if (c.w.rows() != n) return invalid_verdict("w has " + std::to_string(c.w.rows()) + " rows for " + std::to_string(n) + " samples");
+    if (c.w.rows() != n) return malformed("w has " + std::to_string(c.w.rows()) + " rows for " + std::to_string(n) + " samples");
     w = c.w;
     details << ", form w";
   }
@@ -122,20 +151,19 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
     for (Eigen::Index i = 0; i < ny; ++i) dd += d(k, i) * d(k, i);
   const Rational bound = Rational(static_cast<long>(n * ny)) * c.dmax2;
   if (dd > bound)
-    return invalid_verdict("(C2) fails: ||d||^2 = " + approx_text(dd) + " > n*ny*dmax2 = " + approx_text(bound) +
-                       " (exact comparison of rationals)",
-                   details.str());
+    return fails("(C2) fails: ||d||^2 = " + approx_text(dd) + " > n*ny*dmax2 = " + approx_text(bound) +
+                 " (exact comparison of rationals)");
   details << "; (C2) holds: ||d||^2 = " << approx_text(dd) << " <= n*ny*dmax2 = " << approx_text(bound);
 
-  // 6. (C1), exactly (verify/c1_check.h).
+  // 6. (C1), exactly (verify/c1_check.h). A failure is an exact NOT_PSD decision.
   const C1Outcome c1 = c.form == CertificateForm::kDelta
                            ? check_c1_delta_form(c.taps, c.horizon, ny, nz, c.delta2)
                            : check_c1_w_form(c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)
                                                                               : paper_gram(c.model, exp),
                                              w, c.delta2);
-  if (!c1.holds) return invalid_verdict(c1.text, details.str());
+  if (!c1.holds) return fails(c1.text);
   details << "; " << c1.text;
-  return {true, "", details.str(), "", ""};
+  return {PrimalCheck::kHolds, "", details.str()};
 }
 }  // namespace
 
@@ -160,6 +188,10 @@ CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
     case CertificateClaim::kConsistent:
       e << "consistent at delta^2 = " << exact(c.delta2) << ", dmax^2 = " << exact(c.dmax2)
         << " (noise RMS: ||d||^2 <= n*ny*dmax^2)";
+      break;
+    case CertificateClaim::kNotAWitness:
+      e << "the given " << (c.form == CertificateForm::kDelta ? "Delta taps" : "w") << " do not satisfy Theorem 2.1 at delta^2 = "
+        << exact(c.delta2) << ", dmax^2 = " << exact(c.dmax2) << " (noise RMS: ||d||^2 <= n*ny*dmax^2)";
       break;
     case CertificateClaim::kInvalidated:
       e << "no causal LTI Delta with ||Delta||_inf^2 <= " << exact(c.delta2) << " and no noise with RMS^2 <= "

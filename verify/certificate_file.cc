@@ -165,6 +165,8 @@ const char* to_string(CertificateClaim c) {
       return "invalidated";
     case CertificateClaim::kLowerBound:
       return "lower_bound";
+    case CertificateClaim::kNotAWitness:
+      return "not_a_witness";
   }
   return "?";
 }
@@ -182,9 +184,9 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
   if (string_member(root, "format", file, "") != kCertificateFormat)
     throw_input_error(file, root.line, "format", std::string("expected \"") + kCertificateFormat + "\"");
   const std::string claim = string_member(root, "claim", file, "");
-  if (claim != "consistent" && claim != "invalidated" && claim != "lower_bound")
+  if (claim != "consistent" && claim != "invalidated" && claim != "lower_bound" && claim != "not_a_witness")
     throw_input_error(file, member(root, "claim", file, "").line, "claim",
-                      "expected \"consistent\", \"invalidated\" or \"lower_bound\"");
+                      "expected \"consistent\", \"invalidated\", \"lower_bound\" or \"not_a_witness\"");
   if (string_member(root, "noise_normalisation", file, "") != "rms")
     throw_input_error(file, root.line, "noise_normalisation", "expected \"rms\" (||d||^2 <= n*ny*dmax^2)");
 
@@ -209,10 +211,11 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
   }
   c.model = model_from_json<Rational>(member(root, "model", file, ""), file, "model");
   c.mode = toeplitz_mode_from_string(string_member(root, "toeplitz_mode", file, ""));
-  if (claim != "consistent") {
+  if (claim == "invalidated" || claim == "lower_bound") {
     parse_dual_claim(root, file, claim, c);
     return c;
   }
+  if (claim == "not_a_witness") c.claim = CertificateClaim::kNotAWitness;
   for (const char* key : {"objective", "lambda", "lower_bound", "dual"})
     if (const JsonNode* n = root.find(key)) throw_input_error(file, n->line, key, "only dual claims carry this key");
   c.delta2 = number_from_json<Rational>(member(root, "delta2", file, ""), file, "delta2");
@@ -294,7 +297,7 @@ std::string certificate_json(const Certificate& c) {
   j["model"] = model_to_json(c.model);
   j["toeplitz_mode"] = to_string(c.mode);
   j["noise_normalisation"] = "rms";
-  if (c.claim != CertificateClaim::kConsistent) {
+  if (is_dual_claim(c.claim)) {
     dual_claim_json(c, j);
     j["info"] = c.info;
     return pretty_json(j);

@@ -19,7 +19,10 @@
 ///     "info": { … }                          // free, never read by the verifier
 ///   }
 ///
-/// Dual claims (issue 8; docs/dual_certificates.md) use the same file:
+/// "claim": "not_a_witness" has the fields of "consistent" (the point under
+/// judgement) and claims that this point fails (C1) or (C2).
+///
+/// Dual claims (docs/dual_certificates.md) use the same file:
 ///
 ///   "claim": "invalidated" | "lower_bound",
 ///   "toeplitz_mode": "signal",
@@ -64,11 +67,22 @@ enum class CertificateForm { kDelta, kW, kDualDelta, kDualDeltaPath };
 
 /// What the certificate claims. kConsistent: the model is not invalidated at
 /// (δ², d_max²) (a primal point). kInvalidated / kLowerBound: a dual point of
-/// the full-horizon Δ form (toeplitz/delta_form_dual.h).
-enum class CertificateClaim { kConsistent, kInvalidated, kLowerBound };
+/// the full-horizon Δ form (toeplitz/delta_form_dual.h). kNotAWitness: the
+/// primal point the file carries (Δ taps or w, written by someone else and
+/// judged by `lpvid oracle`) does NOT satisfy Theorem 2.1 at (δ², d_max²):
+/// the same checks as kConsistent, and the claim holds iff one of the
+/// mathematical conditions fails exactly — (C2), (C1) or, in form "delta",
+/// a non-zero z before the Δ horizon. A malformed point (wrong sizes) is not
+/// evidence of anything: it makes the claim fail like any other bad file.
+enum class CertificateClaim { kConsistent, kInvalidated, kLowerBound, kNotAWitness };
 
-/// "consistent", "invalidated", "lower_bound".
+/// "consistent", "invalidated", "lower_bound", "not_a_witness".
 const char* to_string(CertificateClaim c);
+
+/// Claims carried by a dual point (form "dual_delta" / "dual_delta_path").
+inline bool is_dual_claim(CertificateClaim c) {
+  return c == CertificateClaim::kInvalidated || c == CertificateClaim::kLowerBound;
+}
 
 /// The dual point Y1 ⪰ 0, Y2 = (1/σ)[σ; g][σ; g]ᵀ (toeplitz/delta_form_dual.h).
 struct DualPoint {

@@ -207,6 +207,7 @@ int run_merge(const std::string& dir_text, std::string report_path, bool quiet) 
         m.upper = objective_at(objective, c.delta2, c.dmax2);
         for (Eigen::Index i = 0; i < c.model.x0.size(); ++i) m.x0 += (i ? " " : "") + rational_to_text(c.model.x0(i));
         if (c.claim == CertificateClaim::kLowerBound) m.status = "refused", m.reason = "a lower-bound certificate in place of the upper end";
+        if (c.claim == CertificateClaim::kNotAWitness) m.status = "refused", m.reason = "a not_a_witness certificate in place of the upper end";
       } else {
         m.status = "refused";
       }
