@@ -25,6 +25,7 @@ LEVELS = [
     ("src/identify", "certification, identification, basis selection, trade-off curves"),
     ("src/fit", "least-squares and output-error fits of model parameters"),
     ("src/diagnose", "residual -> missing effect -> re-fitted model, certified"),
+    ("src/oracle", "judging outside implementations' answers against lpvid's certified ones"),
     ("src/plot", "figures (gnuplot) of the results"),
     ("src/cli", "the command lines: options, reports, file names"),
     ("python", "the Python module over the command lines"),

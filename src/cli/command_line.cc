@@ -33,6 +33,7 @@ int run_lpvid(const std::vector<std::string>& args, const std::string& program) 
   runners.push_back(add_certify_command(app));
   runners.push_back(add_jobs_command(app));
   runners.push_back(add_compare_command(app));
+  runners.push_back(add_oracle_command(app));
 
   ArgvWords argv(program, args);  // parsed as main()'s argv is
   try {

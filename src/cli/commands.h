@@ -21,5 +21,6 @@ Runner add_fit_linear_command(CLI::App& app);
 Runner add_certify_command(CLI::App& app);
 Runner add_jobs_command(CLI::App& app);
 Runner add_compare_command(CLI::App& app);
+Runner add_oracle_command(CLI::App& app);
 
 }  // namespace lpvid::cli

@@ -5,6 +5,7 @@
 
 #include "core/file_io.h"
 #include "cli/commands.h"
+#include "cli/random_cases.h"
 #include "core/input_error.h"
 #include "data/csv_writer.h"
 #include "examples/effect_cases.h"
@@ -23,6 +24,7 @@ struct GenerateArgs {
   std::string out, model_out, truth_out;
   std::string effect = "none", validation_out;
   double noise_std = 0.02;
+  RandomCaseFlags random;
 };
 
 std::vector<TextColumn> effect_case_columns(const Experiment<Rational>& e) {
@@ -67,13 +69,26 @@ int run_generate_example2(const GenerateArgs& a) {
   return 0;
 }
 
+/// `generate random`: one case of the property tests' generator, from the seed.
+int run_generate_random(const GenerateArgs& a) {
+  const GeneratedCase c = random_oracle_case(a.seed, random_task_options(a.random));
+  write_case_folder(a.out, c);
+  const RandomCase& r = c.random;
+  std::cout << "wrote " << a.out << "/{data.csv, model.json, truth.json, task.json}: seed " << a.seed << ", " << r.exp.n()
+            << " samples, " << r.model.ny << " output(s), " << r.model.nu << " input(s), " << r.model.nx << " state(s), "
+            << r.model.n_rho() << " scheduling variable(s); task " << to_string(c.task.kind) << "; generated with delta "
+            << r.delta << ", dmax " << r.dmax << " (the truth satisfies Theorem 2.1 there)\n";
+  return 0;
+}
+
 int run_generate(const GenerateArgs& a) {
+  if (a.which == "random") return run_generate_random(a);
   check_output_file(a.out, "data");
   check_output_file(a.validation_out, "validation data");
   check_output_file(a.model_out, "model");
   check_output_file(a.truth_out, "true model");
   if (a.which != "example1" && a.which != "example2" && a.which != "effect-case")
-    throw InputError("generate: unknown data set '" + a.which + "' (known: example1, example2, effect-case)");
+    throw InputError("generate: unknown data set '" + a.which + "' (known: example1, example2, effect-case, random)");
   if (a.n < 2) throw InputError("generate: --n must be at least 2");
   if (a.which == "effect-case") return run_generate_effect_case(a);
   if (a.which == "example2") return run_generate_example2(a);
@@ -105,11 +120,12 @@ Runner add_generate_command(CLI::App& app) {
   auto a = std::make_shared<GenerateArgs>();
   CLI::App* cmd = app.add_subcommand(
       "generate", "Write a data set with a known answer (the paper's Example 1, or an Example 2 flavour with an offset)");
-  cmd->add_option("which", a->which, "data set: example1, example2 (eq. 20: output offset Phi(rho)) or effect-case (an effect the written model does not declare)");
+  cmd->add_option("which", a->which, "data set: example1, example2 (eq. 20: output offset Phi(rho)), effect-case (an effect the written model does not declare) or random (a random case of the property tests' generator with an oracle task; --out is then a folder)");
   cmd->add_option("--n", a->n, "samples (default 60)");
   cmd->add_option("--noise-variance", a->noise_variance, "variance of the white output noise (paper Table II: 0.1)");
   cmd->add_option("--seed", a->seed, "random seed (default 1)");
-  cmd->add_option("--out", a->out, "data CSV to write (effect-case: the estimation record)")->required();
+  cmd->add_option("--out", a->out, "data CSV to write (effect-case: the estimation record; random: the case folder)")->required();
+  add_random_case_flags(*cmd, a->random);
   std::string kinds;
   for (const auto& k : effect_case_kinds()) kinds += (kinds.empty() ? "" : ", ") + k;
   auto* effect = cmd->add_option("--effect", a->effect, "effect-case: the undeclared effect (" + kinds + ")");
@@ -117,6 +133,16 @@ Runner add_generate_command(CLI::App& app) {
   auto* noise_std = cmd->add_option("--noise-std", a->noise_std, "effect-case: standard deviation of the white output noise (0.02)");
   // Options of one data set are refused for the others (never silently ignored).
   cmd->callback([cmd, a, effect, validation, noise_std] {
+    const std::vector<std::string> random_only = {"--siso", "--lti", "--min-n", "--max-n", "--leading-zeros",
+                                                  "--max-delay", "--static-blocks", "--kinds", "--tolerance"};
+    if (a->which == "random") {
+      for (const char* other : {"--noise-variance", "--model-out", "--truth-out", "--effect", "--validation-out", "--noise-std"})
+        if (cmd->count(other) > 0) throw CLI::ValidationError(other, "is not for random (it writes data, model, truth and task into --out)");
+      if (cmd->count("--n") > 0) a->random.min_n = a->random.max_n = a->n;
+      return;
+    }
+    for (const std::string& name : random_only)
+      if (cmd->count(name) > 0) throw CLI::ValidationError(name, "is only for random (the data set here is " + a->which + ")");
     if (a->which == "effect-case") {
       if (cmd->count("--noise-variance") > 0)
         throw CLI::ValidationError("--noise-variance", "is for example1/example2; effect-case takes --noise-std");

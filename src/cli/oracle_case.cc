@@ -1,0 +1,168 @@
+#include "cli/oracle_case.h"
+
+#include <chrono>
+#include <filesystem>
+#include <future>
+
+#include "cli/inputs.h"
+#include "core/file_io.h"
+#include "core/input_error.h"
+#include "core/number_text.h"
+#include "oracle/answer.h"
+#include "oracle/judge.h"
+#include "oracle/outside_command.h"
+#include "oracle/task.h"
+#include "solvers/external_solvers.h"
+#include "verify/certificate_check.h"
+#include "verify/certificate_file.h"
+
+namespace lpvid::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The common options of `lpvid invalidate` for the task: lpvid certifies
+/// exactly what that command would.
+CommonOptions task_options(const OracleTask& task, const fs::path& folder, const std::string& solver) {
+  CommonOptions c;
+  c.command = "oracle";
+  c.quiet = true;
+  c.solver = solver;
+  c.data_path = (folder / task.data).string();
+  c.model_path = (folder / task.model).string();
+  c.certificate_path = (folder / "lpvid.cert.json").string();
+  c.delta_text = task.delta;
+  c.dmax_text = task.dmax;
+  if (!task.lambda.empty()) c.lambda = double_from_text(task.lambda);
+  return c;
+}
+
+std::string claim_words(const OracleTask& task, const OracleAnswer& a) {
+  if (a.failed) return "failed";
+  const auto text = [](const Rational& q) { return double_to_text(CGAL::to_double(q)); };
+  std::string s;
+  switch (task.kind) {
+    case TaskKind::kMinDmax: s = "dmax = " + text(*a.dmax); break;
+    case TaskKind::kMinDelta: s = "delta = " + text(*a.delta); break;
+    case TaskKind::kWeighted: s = "delta = " + text(*a.delta) + ", dmax = " + text(*a.dmax); break;
+    case TaskKind::kDecide: s = a.verdict; break;
+  }
+  return a.witness ? s + " +witness" : s;
+}
+
+/// The exact check of the witness at the claimed values (the task's fixed
+/// values for the others). A failing witness leaves a "not_a_witness"
+/// certificate in the folder, checked again from the file.
+WitnessResult check_witness(const OracleTask& task, const OracleAnswer& a, const Inputs& in, const CertifyOptions& co,
+                            const fs::path& folder) {
+  WitnessResult r;
+  if (!a.witness) return r;
+  Certificate c;
+  set_data_reference(c, co, (folder / "witness.json").string());
+  c.model = in.model_q;
+  c.mode = ToeplitzMode::kSignal;
+  const Rational delta = task.delta.empty() ? *a.delta : rational_from_text(task.delta);
+  const Rational dmax = task.dmax.empty() ? *a.dmax : rational_from_text(task.dmax);
+  c.delta2 = delta * delta;
+  c.dmax2 = dmax * dmax;
+  if (a.witness->taps_form) {
+    c.form = CertificateForm::kDelta;
+    c.taps = a.witness->taps;
+    c.horizon = a.witness->horizon;
+  } else {
+    c.form = CertificateForm::kW;
+    c.w = a.witness->w;
+  }
+  c.info["tool"] = "lpvid oracle";
+  c.info["meaning"] = "the outside implementation's witness, judged at its claimed values";
+  const CertificateVerdict holds = check_certificate(c, folder.string());
+  if (holds.holds) {
+    r.status = WitnessResult::kHolds;
+    r.text = holds.details;
+    return r;
+  }
+  c.claim = CertificateClaim::kNotAWitness;
+  const CertificateVerdict fails = check_certificate(c, folder.string());
+  if (!fails.holds) {
+    r.status = WitnessResult::kMalformed;
+    r.text = holds.reason;
+    return r;
+  }
+  r.certificate = (folder / "witness.not_a_witness.json").string();
+  write_certificate(r.certificate, c);
+  r.status = WitnessResult::kFails;
+  r.text = holds.reason;
+  return r;
+}
+
+}  // namespace
+
+CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptions& o) {
+  const fs::path folder = fs::absolute(folder_text);
+  const std::string task_path = (folder / "task.json").string();
+  const OracleTask task = parse_task(read_text_file(task_path), task_path);
+  CommonOptions c = task_options(task, folder, o.solver);
+  const Inputs in = load_inputs(c);
+
+  CaseReport rep;
+  rep.name = folder.filename().string();
+  rep.folder = folder.string();
+  rep.kind = task.kind;
+  rep.n = static_cast<long>(in.exp_q.n());
+  rep.nu = in.model_q.nu;
+  rep.ny = in.model_q.ny;
+  const std::string out = (folder / "answer.json").string();
+  std::error_code ec;
+  fs::remove(out, ec);
+  rep.outside_log = (folder / "outside.log").string();
+  const std::string command = substitute_placeholders(
+      o.command, {{"data", c.data_path}, {"model", c.model_path}, {"task", task_path}, {"out", out}, {"dir", folder.string()}});
+
+  // The outside command runs while lpvid certifies the same task.
+  auto outside = std::async(std::launch::async, run_shell_command, command, o.case_timeout, rep.outside_log);
+  const auto started = std::chrono::steady_clock::now();
+  auto solver = make_solver_for_cli(c.solver, "");
+  const CertifyOptions co = certify_options(c, in.objective);
+  const CertifiedBounds b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
+  rep.lpvid_seconds = seconds_since(started);
+  const CommandRun run = outside.get();
+  rep.outside_seconds = run.seconds;
+  rep.outside_exit = run.exit_code;
+
+  const auto error = [&rep](const std::string& why) {
+    rep.claim = "-";
+    rep.judgement.verdict = OracleVerdict::kError;
+    rep.judgement.reason = why;
+    return rep;
+  };
+  if (!run.started) return error("the command did not start: " + run.error);
+  if (run.timed_out) return error("the command ran past the case time limit of " + double_to_text(o.case_timeout) + " s");
+  if (run.exit_code != 0) return error("the command exited with code " + std::to_string(run.exit_code) + " (log " + rep.outside_log + ")");
+  if (!fs::is_regular_file(out)) return error("the command wrote no answer at " + out);
+  OracleAnswer answer;
+  try {
+    answer = parse_answer(read_text_file(out), out, task, in.model_q.ny, in.model_q.nz());
+  } catch (const InputError& e) {
+    return error(std::string("malformed answer: ") + e.what());
+  }
+  rep.claim = claim_words(task, answer);
+  const WitnessResult witness = check_witness(task, answer, in, co, folder);
+  rep.judgement = judge(task, answer, reference_of(b, in.objective, co.certificate_path), witness);
+
+  // A refutation's evidence is checked once more, from its file, by the verifier.
+  if (rep.judgement.verdict == OracleVerdict::kRefuted) {
+    const CertificateVerdict v = check_certificate_file(rep.judgement.evidence);
+    rep.evidence_check = v.holds ? v.claim_text : "invalid: " + v.reason;
+    if (!v.holds) {
+      rep.judgement.verdict = OracleVerdict::kUndecided;
+      rep.judgement.reason = "lpvid's evidence did not pass the verifier (" + v.reason + "); not counted: " + rep.judgement.reason;
+    }
+  }
+  return rep;
+}
+
+}  // namespace lpvid::cli

@@ -1,0 +1,132 @@
+// lpvid oracle: judges an outside implementation's answers against lpvid's
+// certified ones, case by case (oracle/judge.h for the rules).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/oracle_case.h"
+#include "cli/random_cases.h"
+#include "cli/report.h"
+#include "core/file_io.h"
+#include "core/input_error.h"
+#include "oracle/oracle_report.h"
+
+namespace lpvid::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct OracleArgs {
+  int cases = 20;
+  uint64_t seed = 1;
+  std::string cases_dir, work = "oracle-run", report, junit;
+  double run_timeout = 0;
+  bool strict = false, quiet = false;
+  OracleCaseOptions run;
+  RandomCaseFlags random;
+};
+
+/// The case folders to judge: the given ones (every sub-folder with a
+/// task.json, in name order), or N random cases written under --work.
+std::vector<std::string> case_folders(const OracleArgs& a) {
+  std::vector<std::string> out;
+  if (!a.cases_dir.empty()) {
+    if (!fs::is_directory(a.cases_dir)) throw InputError("--cases-dir: '" + a.cases_dir + "' is not a folder");
+    for (const auto& e : fs::directory_iterator(a.cases_dir))
+      if (e.is_directory() && fs::is_regular_file(e.path() / "task.json")) out.push_back(e.path().string());
+    std::sort(out.begin(), out.end());
+    if (out.empty()) throw InputError("--cases-dir: no sub-folder of '" + a.cases_dir + "' holds a task.json");
+    return out;
+  }
+  if (a.cases < 1) throw InputError("--cases: at least 1");
+  const RandomTaskOptions options = random_task_options(a.random);
+  for (int i = 0; i < a.cases; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "case-%04d", i + 1);
+    const std::string folder = (fs::path(a.work) / name).string();
+    write_case_folder(folder, random_oracle_case(a.seed + static_cast<uint64_t>(i), options));
+    out.push_back(folder);
+  }
+  return out;
+}
+
+int run_oracle(const OracleArgs& a) {
+  check_output_file(a.report, "report");
+  check_output_file(a.junit, "JUnit report");
+  const auto started = std::chrono::steady_clock::now();
+  const auto elapsed = [&started] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+  const std::vector<std::string> folders = case_folders(a);
+  std::vector<CaseReport> reports;
+  for (size_t i = 0; i < folders.size(); ++i) {
+    if (a.run_timeout > 0 && elapsed() > a.run_timeout) {
+      CaseReport skipped;
+      skipped.name = fs::path(folders[i]).filename().string();
+      skipped.folder = folders[i];
+      skipped.claim = "-";
+      skipped.judgement.verdict = OracleVerdict::kError;
+      skipped.judgement.reason = "not run: the run time limit (--timeout) was reached";
+      reports.push_back(skipped);
+      continue;
+    }
+    reports.push_back(run_oracle_case(folders[i], a.run));
+    const CaseReport& r = reports.back();
+    if (!a.quiet)
+      std::fprintf(stderr, "[oracle %7.1f s] case %zu/%zu %s (%s, n=%ld, %dx%d): %s%s%s\n", elapsed(), i + 1, folders.size(),
+                   r.name.c_str(), to_string(r.kind), r.n, r.ny, r.nu, to_string(r.judgement.verdict),
+                   r.judgement.evidence.empty() || r.judgement.verdict != OracleVerdict::kRefuted ? "" : ", certificate ",
+                   r.judgement.verdict == OracleVerdict::kRefuted ? r.judgement.evidence.c_str() : "");
+  }
+  const double seconds = elapsed();
+  std::cout << case_table(reports);
+  for (const CaseReport& r : reports)
+    if (r.judgement.verdict != OracleVerdict::kConfirmed)
+      std::cout << "  " << r.name << " " << to_string(r.judgement.verdict) << ": " << r.judgement.reason
+                << (r.evidence_check.empty() ? "" : " [lpvid-verify: " + r.evidence_check + "]") << "\n";
+  std::cout << "time " << seconds << " s; each refutation names a certificate that 'lpvid-verify certificate' accepts\n";
+  write_json(a.report, oracle_report_json(reports, a.run.command, seconds, a.strict));
+  if (!a.junit.empty()) write_text_file(a.junit, junit_xml(reports, seconds, a.strict), "JUnit report");
+  const OracleTotals t = totals_of(reports);
+  if (t.refuted > 0) return kExitInvalidated;
+  if (t.error > 0 || (a.strict && t.suboptimal > 0)) return kExitSolver;
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner add_oracle_command(CLI::App& app) {
+  auto a = std::make_shared<OracleArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "oracle",
+      "Judge an outside implementation: run it on random (or given) cases and confirm, refute (with a certificate), "
+      "or call suboptimal each answer");
+  cmd->add_option("--command", a->run.command,
+                  "the outside command; {data}, {model}, {task}, {out} (and {dir}) become the case's paths, e.g. "
+                  "\"python3 my_impl.py {data} {model} {task} {out}\"")
+      ->required();
+  cmd->add_option("--cases", a->cases, "number of random cases (20)");
+  cmd->add_option("--seed", a->seed, "seed of the first random case; case i uses seed + i - 1 (1)");
+  cmd->add_option("--cases-dir", a->cases_dir, "judge the given cases instead: every sub-folder holding a task.json");
+  cmd->add_option("--work", a->work, "folder for the random cases, answers, logs and certificates (oracle-run)");
+  cmd->add_option("--report", a->report, "JSON report to write");
+  cmd->add_option("--junit", a->junit, "JUnit XML file to write (one testcase per case)");
+  cmd->add_option("--case-timeout", a->run.case_timeout, "seconds the outside command may take per case (120)");
+  cmd->add_option("--timeout", a->run_timeout, "seconds for the whole run; later cases are not started (0: none)");
+  cmd->add_option("--solver", a->run.solver, "lpvid's own SDP solver (csdp)");
+  cmd->add_flag("--strict", a->strict, "suboptimal answers fail the run too (exit 3, JUnit failures)");
+  cmd->add_flag("--quiet", a->quiet, "no progress lines on stderr");
+  add_random_case_flags(*cmd, a->random);
+  cmd->callback([cmd, a] {
+    if (!a->cases_dir.empty())
+      for (const char* name : {"--cases", "--seed", "--siso", "--lti", "--min-n", "--max-n", "--leading-zeros", "--max-delay",
+                               "--static-blocks", "--kinds", "--tolerance"})
+        if (cmd->count(name) > 0)
+          throw CLI::ValidationError(name, "shapes random cases; with --cases-dir the given task files decide");
+  });
+  return [cmd, a] { return cmd->parsed() ? run_oracle(*a) : -1; };
+}
+
+}  // namespace lpvid::cli

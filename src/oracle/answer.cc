@@ -1,0 +1,80 @@
+#include "oracle/answer.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "core/input_error.h"
+#include "model/json_members.h"
+#include "model/model_file.h"
+#include "model/model_json_tree.h"
+
+namespace lpvid {
+namespace {
+
+/// A claimed bound: an exact number ≥ 0.
+Rational claimed_value(const JsonNode& root, const char* key, const std::string& file) {
+  const JsonNode& n = member(root, key, file, "");
+  const Rational q = number_from_json<Rational>(n, file, key);
+  if (q < 0) throw_input_error(file, n.line, key, "a bound is >= 0");
+  return q;
+}
+
+Witness parse_witness(const JsonNode& n, const std::string& file, Eigen::Index ny, Eigen::Index nz) {
+  if (!n.is_object()) throw_input_error(file, n.line, "witness", "expected an object with delta_taps or w");
+  Witness wit;
+  const JsonNode* taps = n.find("delta_taps");
+  const JsonNode* w = n.find("w");
+  if ((taps != nullptr) == (w != nullptr))
+    throw_input_error(file, n.line, "witness", "give either delta_taps (with delta_horizon) or w");
+  if (taps) {
+    wit.taps = matrix_member(*taps, file, "witness.delta_taps", ny * nz);
+    wit.horizon = integer_member(member(n, "delta_horizon", file, "witness"), file, "witness.delta_horizon");
+    if (wit.horizon < 1 || wit.horizon < wit.taps.rows())
+      throw_input_error(file, n.line, "witness.delta_horizon", "must be at least 1 and at least the number of taps");
+  } else {
+    wit.taps_form = false;
+    wit.w = matrix_member(*w, file, "witness.w", ny);
+  }
+  return wit;
+}
+
+}  // namespace
+
+OracleAnswer parse_answer(std::string_view text, const std::string& file, const OracleTask& task, Eigen::Index ny,
+                          Eigen::Index nz) {
+  const JsonNode root = parse_exact_json(text, file);
+  if (!root.is_object()) throw_input_error(file, root.line, "", "an answer is a JSON object");
+  if (string_member(root, "format", file, "") != kOracleAnswerFormat)
+    throw_input_error(file, root.line, "format", std::string("expected \"") + kOracleAnswerFormat + "\"");
+  static const std::vector<std::string> allowed = {"format", "status", "delta", "dmax", "verdict", "witness", "message"};
+  for (const auto& [key, value] : root.members)
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      throw_input_error(file, value.line, key, "unknown key in an answer (known: format, status, delta, dmax, verdict, witness, message)");
+  OracleAnswer a;
+  if (const JsonNode* m = root.find("message"); m && m->is_string()) a.message = m->text;
+  if (const JsonNode* s = root.find("status")) {
+    if (!s->is_string() || (s->text != "ok" && s->text != "failed"))
+      throw_input_error(file, s->line, "status", "expected \"ok\" or \"failed\"");
+    a.failed = s->text == "failed";
+    if (a.failed) return a;
+  }
+  switch (task.kind) {
+    case TaskKind::kMinDmax: a.dmax = claimed_value(root, "dmax", file); break;
+    case TaskKind::kMinDelta: a.delta = claimed_value(root, "delta", file); break;
+    case TaskKind::kWeighted:
+      a.delta = claimed_value(root, "delta", file);
+      a.dmax = claimed_value(root, "dmax", file);
+      break;
+    case TaskKind::kDecide: a.verdict = string_member(root, "verdict", file, ""); break;
+  }
+  if (const JsonNode* v = root.find("verdict"); v && !(v->is_string() && (v->text == "consistent" || v->text == "invalidated")))
+    throw_input_error(file, v->line, "verdict", "expected \"consistent\" or \"invalidated\"");
+  if (const JsonNode* w = root.find("witness")) {
+    if (task.kind == TaskKind::kDecide && a.verdict == "invalidated")
+      throw_input_error(file, w->line, "witness", "an \"invalidated\" verdict has no primal witness");
+    a.witness = parse_witness(*w, file, ny, nz);
+  }
+  return a;
+}
+
+}  // namespace lpvid

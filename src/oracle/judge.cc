@@ -1,0 +1,110 @@
+#include "oracle/judge.h"
+
+#include "core/number_text.h"
+
+namespace lpvid {
+
+const char* to_string(OracleVerdict v) {
+  switch (v) {
+    case OracleVerdict::kConfirmed: return "confirmed";
+    case OracleVerdict::kRefuted: return "refuted";
+    case OracleVerdict::kSuboptimal: return "suboptimal";
+    case OracleVerdict::kUndecided: return "undecided";
+    case OracleVerdict::kError: return "error";
+  }
+  return "?";
+}
+
+ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& objective, const std::string& certificate) {
+  ReferenceResult r;
+  r.outcome = outcome_of(b, objective);
+  r.upper_verified = b.verified;
+  if (b.verified) {
+    r.upper = b.upper;
+    r.upper_certificate = certificate;
+  }
+  if (b.lower.verified && objective.kind != BoundObjective::Kind::kFeasibility) {
+    r.lower_verified = true;
+    r.lower = b.lower.value;
+    r.lower_certificate = b.lower.certificate;
+  }
+  if (r.outcome == CertifyOutcome::kInvalidated) r.invalidation_certificate = certificate;
+  if (!b.verified) r.reason = b.reason;
+  if (!b.lower.verified && !b.lower.reason.empty()) r.reason += (r.reason.empty() ? "" : "; ") + b.lower.reason;
+  return r;
+}
+
+namespace {
+
+std::string approx(const Rational& q) { return double_to_text(CGAL::to_double(q)); }
+
+Judgement verdict(OracleVerdict v, std::string reason, std::string evidence = "") {
+  Judgement j;
+  j.verdict = v;
+  j.reason = std::move(reason);
+  j.evidence = std::move(evidence);
+  return j;
+}
+
+Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const ReferenceResult& ref, const WitnessResult& wit) {
+  const Rational zero(0);
+  const Rational J = objective_at(objective_of(task), a.delta ? *a.delta * *a.delta : zero, a.dmax ? *a.dmax * *a.dmax : zero);
+  const std::string name = task.kind == TaskKind::kMinDmax ? "dmax^2" : task.kind == TaskKind::kMinDelta ? "delta^2" : "objective";
+  const std::string claim = "claimed " + name + " = " + approx(J);
+  const auto with_claim = [&J](Judgement j) {
+    j.claimed = J;
+    return j;
+  };
+  if (wit.status == WitnessResult::kFails)
+    return with_claim(verdict(OracleVerdict::kRefuted, "the witness fails the exact check at the claimed values: " + wit.text, wit.certificate));
+  if (ref.lower_verified && J < ref.lower)
+    return with_claim(verdict(OracleVerdict::kRefuted,
+                              claim + " is below lpvid's certified lower end " + approx(ref.lower) + " (dual certificate)",
+                              ref.lower_certificate));
+  const Rational slack = Rational(1) + rational_from_text(double_to_text(task.tolerance));
+  if (ref.upper_verified && J > ref.upper * slack)
+    return with_claim(verdict(OracleVerdict::kSuboptimal,
+                              claim + " is above lpvid's certified upper end " + approx(ref.upper) + " by more than the tolerance " +
+                                  double_to_text(task.tolerance),
+                              ref.upper_certificate));
+  const bool witnessed = wit.status == WitnessResult::kHolds;
+  const std::string interval = "[" + (ref.lower_verified ? approx(ref.lower) : std::string("?")) + ", " +
+                               (ref.upper_verified ? approx(ref.upper) : std::string("?")) + "]";
+  if (ref.upper_verified && ref.lower_verified)
+    return with_claim(verdict(OracleVerdict::kConfirmed,
+                              claim + " lies in lpvid's certified interval " + interval + (witnessed ? "; the witness holds exactly" : ""),
+                              ref.upper_certificate));
+  if (witnessed && (ref.lower_verified || (ref.upper_verified && J >= ref.upper)))
+    return with_claim(verdict(OracleVerdict::kConfirmed, claim + ": the witness holds exactly; lpvid's interval " + interval));
+  if (ref.upper_verified && J >= ref.upper)
+    return with_claim(verdict(OracleVerdict::kConfirmed, claim + " is attained: lpvid's certificate holds at " + approx(ref.upper),
+                              ref.upper_certificate));
+  return with_claim(verdict(OracleVerdict::kUndecided, claim + ": lpvid's interval " + interval +
+                                                            " cannot decide it (" + (ref.reason.empty() ? "no certified lower end" : ref.reason) + ")"));
+}
+
+Judgement judge_decision(const OracleAnswer& a, const ReferenceResult& ref, const WitnessResult& wit) {
+  if (wit.status == WitnessResult::kFails)
+    return verdict(OracleVerdict::kRefuted, "the witness fails the exact check: " + wit.text, wit.certificate);
+  const bool says_consistent = a.verdict == "consistent";
+  if (ref.outcome == CertifyOutcome::kVerified)
+    return says_consistent ? verdict(OracleVerdict::kConfirmed, "consistent, as lpvid certifies", ref.upper_certificate)
+                           : verdict(OracleVerdict::kRefuted, "claimed invalidated, but lpvid certifies consistent", ref.upper_certificate);
+  if (ref.outcome == CertifyOutcome::kInvalidated)
+    return says_consistent
+               ? verdict(OracleVerdict::kRefuted, "claimed consistent, but lpvid certifies invalidated", ref.invalidation_certificate)
+               : verdict(OracleVerdict::kConfirmed, "invalidated, as lpvid certifies", ref.invalidation_certificate);
+  if (wit.status == WitnessResult::kHolds) return verdict(OracleVerdict::kConfirmed, "consistent: the witness holds exactly");
+  return verdict(OracleVerdict::kUndecided, std::string("claimed ") + a.verdict + "; lpvid could not certify either way (" +
+                                                to_string(ref.outcome) + (ref.reason.empty() ? "" : ": " + ref.reason) + ")");
+}
+
+}  // namespace
+
+Judgement judge(const OracleTask& task, const OracleAnswer& answer, const ReferenceResult& ref, const WitnessResult& witness) {
+  if (answer.failed) return verdict(OracleVerdict::kError, "the implementation reported failure" + (answer.message.empty() ? "" : ": " + answer.message));
+  if (witness.status == WitnessResult::kMalformed) return verdict(OracleVerdict::kError, "malformed witness: " + witness.text);
+  return task.kind == TaskKind::kDecide ? judge_decision(answer, ref, witness) : judge_bound(task, answer, ref, witness);
+}
+
+}  // namespace lpvid

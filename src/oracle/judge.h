@@ -1,0 +1,72 @@
+#pragma once
+/// The oracle's verdict on one outside answer (the judging rules of
+/// `lpvid oracle`, README "lpvid as the oracle"). lpvid certifies the task
+/// itself — an interval [L, U] of the optimum (U from a primal certificate, L
+/// from a dual one), or "consistent"/"invalidated" at fixed bounds — and
+/// checks a witness, when the answer has one, exactly at the claimed values.
+///
+///  - refuted: the claim is impossible, with a certificate lpvid-verify
+///    accepts: a claimed optimum J < L (the lower-end certificate), a verdict
+///    contradicting lpvid's certified one (lpvid's certificate), a witness
+///    that fails the exact check (a "not_a_witness" certificate);
+///  - suboptimal: J > U·(1 + tolerance) (lpvid's primal certificate shows a
+///    better value);
+///  - confirmed: L ≤ J ≤ U·(1 + tolerance) with both ends certified, or a
+///    witness that holds exactly at the claimed values (with L certified, or
+///    J ≥ U), or a verdict equal to lpvid's certified one;
+///  - undecided: lpvid could not certify enough to decide (never counted as
+///    an outside error);
+///  - error: no usable answer (the command failed, timed out, or wrote a
+///    malformed answer or witness).
+/// J is the task's objective at the claim: d_max² (min_dmax), δ²
+/// (min_delta), λδ² + (1−λ)d_max² (weighted); the tolerance is relative to it.
+
+#include <optional>
+#include <string>
+
+#include "core/scalar.h"
+#include "identify/certify.h"
+#include "oracle/answer.h"
+#include "oracle/task.h"
+
+namespace lpvid {
+
+enum class OracleVerdict { kConfirmed, kRefuted, kSuboptimal, kUndecided, kError };
+
+/// "confirmed", "refuted", "suboptimal", "undecided", "error".
+const char* to_string(OracleVerdict v);
+
+/// What lpvid certified for the task (from CertifiedBounds).
+struct ReferenceResult {
+  CertifyOutcome outcome = CertifyOutcome::kNotVerified;
+  bool upper_verified = false;
+  Rational upper;                 ///< the objective at lpvid's primal certificate
+  std::string upper_certificate;  ///< also the "consistent" certificate of a decide task
+  bool lower_verified = false;
+  Rational lower;
+  std::string lower_certificate;
+  std::string invalidation_certificate;  ///< decide: the "invalidated" certificate
+  std::string reason;                    ///< why lpvid certified less than both ends
+};
+
+/// The reference of a task from lpvid's certified bounds.
+ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& objective, const std::string& certificate);
+
+/// The exact check of the answer's witness at the claimed values.
+struct WitnessResult {
+  enum Status { kNone, kHolds, kFails, kMalformed } status = kNone;
+  std::string text;         ///< the verifier's words
+  std::string certificate;  ///< kFails: the "not_a_witness" certificate (checked)
+};
+
+struct Judgement {
+  OracleVerdict verdict = OracleVerdict::kUndecided;
+  std::string reason;
+  std::string evidence;        ///< the certificate file behind refuted/suboptimal/confirmed, if any
+  std::optional<Rational> claimed;  ///< J (bound tasks)
+};
+
+Judgement judge(const OracleTask& task, const OracleAnswer& answer, const ReferenceResult& ref,
+                const WitnessResult& witness);
+
+}  // namespace lpvid
