@@ -169,11 +169,15 @@ int zero_leading_inputs(Experiment<Rational>& exp, int max_zeros, RandomDraw& dr
 }
 
 /// The generating Δ before scaling: `delay` zero taps, then K ∈ [1, max_taps]
-/// taps with entries k/10, |k| ≤ 10 (all zero for zero_delta).
+/// taps with entries k/10, |k| ≤ 10 (all zero for zero_delta). With a delay
+/// option the first of these has a nonzero h(0, 0), so the delay is exactly
+/// `delay` (without one, the historical law: all K taps may be zero).
 Mat<double> raw_taps(const RandomCaseOptions& o, Eigen::Index cols, int delay, RandomDraw& draw) {
   const int K = draw.integer(1, o.max_taps);
   Mat<double> raw = Mat<double>::Zero(delay + K, cols);
-  if (!o.zero_delta) raw.bottomRows(K) = nearest_double(decimal_matrix(draw, K, cols, DecimalLaw{10, 10}));
+  if (o.zero_delta) return raw;
+  raw.bottomRows(K) = nearest_double(decimal_matrix(draw, K, cols, DecimalLaw{10, 10}));
+  if (o.max_delay > 0) raw(delay, 0) = nearest_double(nonzero_decimal(draw, 10, 10));
   return raw;
 }
 

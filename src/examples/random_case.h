@@ -40,7 +40,8 @@
 ///    the nonzero-gain property above, so z is still not identically zero
 ///    (m' ≤ n − 2 leaves room for the path through the state);
 ///  - max_delay = j: Δ's first j' ∈ [0, j] taps are zero (a delayed Δ), with
-///    K raised by j' so that a nonzero tap remains (unless zero_delta);
+///    K raised by j' and h_{j'}(0, 0) ≠ 0, so that the delay is exactly j'
+///    (unless zero_delta);
 ///  - static_blocks: sometimes an input saturation (lower < 0 < upper, so a
 ///    nonzero input stays nonzero and the gain property holds) and/or an
 ///    output polynomial v + c₂v² + c₀ with a small c₂, in both model and truth.
