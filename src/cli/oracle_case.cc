@@ -1,6 +1,7 @@
 #include "cli/oracle_case.h"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <future>
 
@@ -43,7 +44,11 @@ CommonOptions task_options(const OracleTask& task, const fs::path& folder, const
 
 std::string claim_words(const OracleTask& task, const OracleAnswer& a) {
   if (a.failed) return "failed";
-  const auto text = [](const Rational& q) { return double_to_text(CGAL::to_double(q)); };
+  const auto text = [](const Rational& q) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", CGAL::to_double(q));
+    return std::string(buf);
+  };
   std::string s;
   switch (task.kind) {
     case TaskKind::kMinDmax: s = "dmax = " + text(*a.dmax); break;

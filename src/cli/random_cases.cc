@@ -35,6 +35,7 @@ RandomTaskOptions random_task_options(const RandomCaseFlags& f) {
   o.cases.min_n = f.min_n;
   o.cases.max_n = f.max_n;
   o.cases.model.lti = f.lti;
+  o.cases.model.allow_general = true;  // all three uncertainty structures
   if (f.siso) o.cases.model.max_nu = o.cases.model.max_ny = 1;
   o.cases.leading_zero_inputs = f.leading_zeros;
   o.cases.max_delay = f.max_delay;

@@ -62,13 +62,17 @@ std::string totals_text(const OracleTotals& t) {
 
 std::string case_table(const std::vector<CaseReport>& cases) {
   std::ostringstream o;
-  o << padded("case", 11) << padded("task", 10) << padded("size", 14) << padded("claim", 28) << padded("verdict", 12)
-    << "outside s  lpvid s  evidence\n";
+  o << padded("case", 11) << padded("task", 10) << padded("n  ny x nu", 12) << padded("claim", 42) << padded("verdict", 12)
+    << "outside s  lpvid s  certificate\n";
   for (const CaseReport& c : cases) {
-    const std::string size = "n=" + std::to_string(c.n) + " " + std::to_string(c.ny) + "x" + std::to_string(c.nu);
-    o << padded(c.name, 11) << padded(to_string(c.kind), 10) << padded(size, 14) << padded(c.claim, 28)
+    const std::string size = std::to_string(c.n) + "  " + std::to_string(c.ny) + " x " + std::to_string(c.nu);
+    // the certificate relative to the run's folder (the case folder's parent)
+    std::string evidence = c.judgement.evidence;
+    const std::string parent = c.folder.substr(0, c.folder.size() - c.name.size());
+    if (!parent.empty() && evidence.rfind(parent, 0) == 0) evidence = evidence.substr(parent.size());
+    o << padded(c.name, 11) << padded(to_string(c.kind), 10) << padded(size, 12) << padded(c.claim, 42)
       << padded(to_string(c.judgement.verdict), 12) << padded(fixed(c.outside_seconds, 2), 11)
-      << padded(fixed(c.lpvid_seconds, 2), 9) << c.judgement.evidence << "\n";
+      << padded(fixed(c.lpvid_seconds, 2), 9) << evidence << "\n";
   }
   o << totals_text(totals_of(cases)) << "\n";
   return o.str();
