@@ -9,6 +9,8 @@
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "identify/fix_and_certify.h"
+#include "model/simulate.h"
 #include "oracle/answer.h"
 #include "oracle/judge.h"
 #include "oracle/outside_command.h"
@@ -55,6 +57,7 @@ std::string claim_words(const OracleTask& task, const OracleAnswer& a) {
     case TaskKind::kMinDelta: s = "delta = " + text(*a.delta); break;
     case TaskKind::kWeighted: s = "delta = " + text(*a.delta) + ", dmax = " + text(*a.dmax); break;
     case TaskKind::kDecide: s = a.verdict; break;
+    case TaskKind::kIdentify: s = "dmax = " + text(*a.dmax) + " with theta"; break;
   }
   return a.witness ? s + " +witness" : s;
 }
@@ -62,13 +65,13 @@ std::string claim_words(const OracleTask& task, const OracleAnswer& a) {
 /// The exact check of the witness at the claimed values (the task's fixed
 /// values for the others). A failing witness leaves a "not_a_witness"
 /// certificate in the folder, checked again from the file.
-WitnessResult check_witness(const OracleTask& task, const OracleAnswer& a, const Inputs& in, const CertifyOptions& co,
-                            const fs::path& folder) {
+WitnessResult check_witness(const OracleTask& task, const OracleAnswer& a, const LpvModel<Rational>& model,
+                            const CertifyOptions& co, const fs::path& folder) {
   WitnessResult r;
   if (!a.witness) return r;
   Certificate c;
   set_data_reference(c, co, (folder / "witness.json").string());
-  c.model = in.model_q;
+  c.model = model;
   c.mode = ToeplitzMode::kSignal;
   const Rational delta = task.delta.empty() ? *a.delta : rational_from_text(task.delta);
   const Rational dmax = task.dmax.empty() ? *a.dmax : rational_from_text(task.dmax);
@@ -104,6 +107,23 @@ WitnessResult check_witness(const OracleTask& task, const OracleAnswer& a, const
   return r;
 }
 
+/// identify: lpvid's own identification of the task (Theorem 3.1, iterated
+/// relaxation, θ fixed and certified), the reference for "suboptimal".
+void identify_reference(const Inputs& in, const CommonOptions& c, const fs::path& folder, SdpSolver& solver,
+                        ReferenceResult& ref) {
+  IdentifyOptions opt;
+  opt.objective = in.objective;
+  opt.iterate = true;
+  CertifyOptions co = certify_options(c, in.objective);
+  co.certificate_path = (folder / "lpvid.identify.cert.json").string();
+  co.lower_end = false;
+  const IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, solver);
+  if (!id.bounds.verified) return;
+  ref.identified_verified = true;
+  ref.identified = id.bounds.dmax2;
+  ref.identified_certificate = co.certificate_path;
+}
+
 }  // namespace
 
 CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptions& o) {
@@ -132,7 +152,11 @@ CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptio
   const auto started = std::chrono::steady_clock::now();
   auto solver = make_solver_for_cli(c.solver, "");
   const CertifyOptions co = certify_options(c, in.objective);
-  const CertifiedBounds b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
+  const bool identify = task.kind == TaskKind::kIdentify;
+  ReferenceResult identified;
+  CertifiedBounds b;
+  if (identify) identify_reference(in, c, folder, *solver, identified);
+  else b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
   rep.lpvid_seconds = seconds_since(started);
   const CommandRun run = outside.get();
   rep.outside_seconds = run.seconds;
@@ -150,13 +174,24 @@ CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptio
   if (!fs::is_regular_file(out)) return error("the command wrote no answer at " + out);
   OracleAnswer answer;
   try {
-    answer = parse_answer(read_text_file(out), out, task, in.model_q.ny, in.model_q.nz());
+    answer = parse_answer(read_text_file(out), out, task, in.model_q);
   } catch (const InputError& e) {
     return error(std::string("malformed answer: ") + e.what());
   }
   rep.claim = claim_words(task, answer);
-  const WitnessResult witness = check_witness(task, answer, in, co, folder);
-  rep.judgement = judge(task, answer, reference_of(b, in.objective, co.certificate_path), witness);
+  // identify: the claim is judged on the model with the claimed θ folded in
+  const LpvModel<Rational> judged = identify && !answer.failed ? fold_correction(in.model_q, answer.theta) : in.model_q;
+  if (identify && !answer.failed) {
+    const auto again = std::chrono::steady_clock::now();
+    b = certify_fixed(judged, in.exp_q, in.mode, co, *solver);
+    rep.lpvid_seconds += seconds_since(again);
+  }
+  const WitnessResult witness = check_witness(task, answer, judged, co, folder);
+  ReferenceResult ref = reference_of(b, in.objective, co.certificate_path);
+  ref.identified_verified = identified.identified_verified;
+  ref.identified = identified.identified;
+  ref.identified_certificate = identified.identified_certificate;
+  rep.judgement = judge(task, answer, ref, witness);
 
   // A refutation's evidence is checked once more, from its file, by the verifier.
   if (rep.judgement.verdict == OracleVerdict::kRefuted) {

@@ -19,7 +19,7 @@ void add_random_case_flags(CLI::App& cmd, RandomCaseFlags& f) {
                  "random cases: up to this many leading samples with every input 0, so z starts with zeros (0)");
   cmd.add_option("--max-delay", f.max_delay, "random cases: the generating Delta's first 0..K taps are zero (0)");
   cmd.add_flag("--static-blocks", f.static_blocks, "random cases: sometimes a known static input or output map");
-  cmd.add_option("--kinds", f.kinds, "task kinds to draw from, comma separated (min_dmax,min_delta,weighted,decide)");
+  cmd.add_option("--kinds", f.kinds, "task kinds to draw from, comma separated: min_dmax, min_delta, weighted, decide, identify (default: the first four)");
   cmd.add_option("--tolerance", f.tolerance, "relative slack on the objective before an answer is 'suboptimal' (0.01)");
 }
 

@@ -18,7 +18,7 @@ struct RandomCaseFlags {
   bool siso = false, lti = false, static_blocks = false;
   int min_n = 20, max_n = 200;
   int leading_zeros = 0, max_delay = 0;
-  std::string kinds = "min_dmax,min_delta,weighted,decide";
+  std::string kinds = "min_dmax,min_delta,weighted,decide";  ///< identify on request (slower)
   double tolerance = 0.01;
 };
 

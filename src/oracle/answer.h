@@ -5,7 +5,9 @@
 ///   {"format": "lpvid-oracle-answer/1",
 ///    "status": "ok",             // or "failed" (with "message"): no claim
 ///    "delta": "0.25",            // min_delta, weighted: the claimed optimal δ
-///    "dmax": 0.0312,             // min_dmax, weighted: the claimed optimal d_max
+///    "dmax": 0.0312,             // min_dmax, weighted, identify: the claimed optimal d_max
+///    "theta": {"rho1": {"C": [[…]], "D": [[…]]}, …},  // identify: C_i, D_i per
+///                                // correction basis function (as `lpvid identify` reports θ)
 ///    "verdict": "consistent",    // decide: "consistent" or "invalidated"
 ///    "witness": {"delta_taps": [[h_0 row-major ny·nz], …], "delta_horizon": L}
 ///            or {"w": [[w_0 (ny)], …, [w_{n−1}]]},
@@ -40,12 +42,13 @@ struct OracleAnswer {
   std::optional<Rational> delta, dmax;  ///< the claimed values (as needed by the task kind)
   std::string verdict;                  ///< decide: "consistent" or "invalidated"
   std::optional<Witness> witness;
+  Vec<Rational> theta;  ///< identify: C_i, D_i in output_correction_layout order (model/simulate.h)
   std::string message;
 };
 
-/// Reads and checks an answer to `task` for a model with `ny` outputs and
-/// `nz` uncertainty channels (throws InputError "file:line: field: reason").
-OracleAnswer parse_answer(std::string_view text, const std::string& file, const OracleTask& task, Eigen::Index ny,
-                          Eigen::Index nz);
+/// Reads and checks an answer to `task` on `model` (sizes, correction basis)
+/// (throws InputError "file:line: field: reason").
+OracleAnswer parse_answer(std::string_view text, const std::string& file, const OracleTask& task,
+                          const LpvModel<Rational>& model);
 
 }  // namespace lpvid

@@ -49,7 +49,7 @@ Judgement verdict(OracleVerdict v, std::string reason, std::string evidence = ""
 Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const ReferenceResult& ref, const WitnessResult& wit) {
   const Rational zero(0);
   const Rational J = objective_at(objective_of(task), a.delta ? *a.delta * *a.delta : zero, a.dmax ? *a.dmax * *a.dmax : zero);
-  const std::string name = task.kind == TaskKind::kMinDmax ? "dmax^2" : task.kind == TaskKind::kMinDelta ? "delta^2" : "objective";
+  const std::string name = task.kind == TaskKind::kMinDelta ? "delta^2" : task.kind == TaskKind::kWeighted ? "objective" : "dmax^2";
   const std::string claim = "claimed " + name + " = " + approx(J);
   const auto with_claim = [&J](Judgement j) {
     j.claimed = J;
@@ -67,6 +67,12 @@ Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const Refer
                               claim + " is above lpvid's certified upper end " + approx(ref.upper) + " by more than the tolerance " +
                                   double_to_text(task.tolerance),
                               ref.upper_certificate));
+  if (ref.identified_verified && J > ref.identified * slack)
+    return with_claim(verdict(OracleVerdict::kSuboptimal,
+                              claim + " is above the d_max^2 = " + approx(ref.identified) +
+                                  " of lpvid's own identified and certified model by more than the tolerance " +
+                                  double_to_text(task.tolerance),
+                              ref.identified_certificate));
   const bool witnessed = wit.status == WitnessResult::kHolds;
   const std::string interval = "[" + (ref.lower_verified ? approx(ref.lower) : std::string("?")) + ", " +
                                (ref.upper_verified ? approx(ref.upper) : std::string("?")) + "]";

@@ -10,7 +10,8 @@
 ///    contradicting lpvid's certified one (lpvid's certificate), a witness
 ///    that fails the exact check (a "not_a_witness" certificate);
 ///  - suboptimal: J > U·(1 + tolerance) (lpvid's primal certificate shows a
-///    better value);
+///    better value); identify: also J above lpvid's own identified and
+///    certified d_max² by more than the tolerance;
 ///  - confirmed: L ≤ J ≤ U·(1 + tolerance) with both ends certified, or a
 ///    witness that holds exactly at the claimed values (with L certified, or
 ///    J ≥ U), or a verdict equal to lpvid's certified one;
@@ -18,8 +19,12 @@
 ///    an outside error);
 ///  - error: no usable answer (the command failed, timed out, or wrote a
 ///    malformed answer or witness).
-/// J is the task's objective at the claim: d_max² (min_dmax), δ²
+/// J is the task's objective at the claim: d_max² (min_dmax, identify), δ²
 /// (min_delta), λδ² + (1−λ)d_max² (weighted); the tolerance is relative to it.
+/// identify: the claim (θ, d_max) is judged as the fixed model with θ folded
+/// in; [L, U] is that model's certified interval, so a refutation proves
+/// that THIS θ cannot explain the data with the claimed d_max at δ (Theorem
+/// 3.1 is a BMI: lpvid certifies no lower end over all θ).
 
 #include <optional>
 #include <string>
@@ -46,6 +51,9 @@ struct ReferenceResult {
   Rational lower;
   std::string lower_certificate;
   std::string invalidation_certificate;  ///< decide: the "invalidated" certificate
+  bool identified_verified = false;      ///< identify: lpvid's own identified model was certified
+  Rational identified;                   ///< ... with this d_max²
+  std::string identified_certificate;
   std::string reason;                    ///< why lpvid certified less than both ends
 };
 

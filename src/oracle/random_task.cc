@@ -1,5 +1,7 @@
 #include "oracle/random_task.h"
 
+#include <algorithm>
+
 #include "core/decimal_rounding.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
@@ -18,14 +20,23 @@ GeneratedCase random_oracle_case(uint64_t seed, const RandomTaskOptions& o) {
   GeneratedCase g;
   g.seed = seed;
   SeededDraw draw(seed);
-  g.random = random_case(o.cases, draw);
-  const RandomCase& r = g.random;
   OracleTask& t = g.task;
   t.kind = o.kinds[static_cast<size_t>(draw.integer(0, static_cast<int>(o.kinds.size()) - 1))];
+  RandomCaseOptions cases = o.cases;
+  if (t.kind == TaskKind::kIdentify) {
+    // a correction basis with a true θ to find; θ of the output only (SPEC §5)
+    cases.model.min_correction = std::max(cases.model.min_correction, 1);
+    cases.model.max_correction = std::max(cases.model.max_correction, 2);
+    cases.model.allow_general = false;
+    cases.true_correction = true;
+  }
+  g.random = random_case(cases, draw);
+  const RandomCase& r = g.random;
   t.tolerance = o.tolerance;
   bool tight = false;
   switch (t.kind) {
-    case TaskKind::kMinDmax: t.delta = bound_text(r.delta); break;
+    case TaskKind::kMinDmax:
+    case TaskKind::kIdentify: t.delta = bound_text(r.delta); break;
     case TaskKind::kMinDelta: t.dmax = bound_text(r.dmax); break;
     case TaskKind::kWeighted: t.lambda = "0.5"; break;
     case TaskKind::kDecide:

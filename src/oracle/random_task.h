@@ -3,6 +3,8 @@
 /// tests use (examples/random_case.h), and a task on it, all reproducible
 /// from one seed. The task's fixed values come from the generating truth:
 ///  - min_dmax at δ = δ_true, min_delta at d_max = d_true, weighted with λ = 1/2;
+///  - identify at δ = δ_true, on a model with 1–2 correction basis functions
+///    whose true θ made the data (truth.json);
 ///  - decide at (δ_true, d_true) (consistent by construction: the truth is a
 ///    witness) or at (δ_true/4, d_true/4) (often invalidated), by a coin.
 

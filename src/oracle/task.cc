@@ -18,20 +18,22 @@ const char* to_string(TaskKind kind) {
     case TaskKind::kMinDelta: return "min_delta";
     case TaskKind::kWeighted: return "weighted";
     case TaskKind::kDecide: return "decide";
+    case TaskKind::kIdentify: return "identify";
   }
   return "?";
 }
 
 TaskKind task_kind_from_string(const std::string& text, const std::string& where) {
-  for (TaskKind k : {TaskKind::kMinDmax, TaskKind::kMinDelta, TaskKind::kWeighted, TaskKind::kDecide})
+  for (TaskKind k : {TaskKind::kMinDmax, TaskKind::kMinDelta, TaskKind::kWeighted, TaskKind::kDecide, TaskKind::kIdentify})
     if (text == to_string(k)) return k;
-  throw InputError(where + ": unknown task kind '" + text + "' (known: min_dmax, min_delta, weighted, decide)");
+  throw InputError(where + ": unknown task kind '" + text + "' (known: min_dmax, min_delta, weighted, decide, identify)");
 }
 
 BoundObjective objective_of(const OracleTask& task) {
   BoundObjective o;
   switch (task.kind) {
-    case TaskKind::kMinDmax: o.kind = BoundObjective::Kind::kMinDmax; break;
+    case TaskKind::kMinDmax:
+    case TaskKind::kIdentify: o.kind = BoundObjective::Kind::kMinDmax; break;
     case TaskKind::kMinDelta: o.kind = BoundObjective::Kind::kMinDelta; break;
     case TaskKind::kWeighted: o.kind = BoundObjective::Kind::kWeighted; break;
     case TaskKind::kDecide: o.kind = BoundObjective::Kind::kFeasibility; break;
@@ -92,7 +94,7 @@ OracleTask parse_task(std::string_view text, const std::string& file) {
     throw_input_error(file, m->line, "toeplitz_mode", "the oracle judges the signal mode only");
   if (const JsonNode* m = root.find("noise_normalisation"); m && !(m->is_string() && m->text == "rms"))
     throw_input_error(file, m->line, "noise_normalisation", "expected \"rms\"");
-  const bool fixed_delta = t.kind == TaskKind::kMinDmax || t.kind == TaskKind::kDecide;
+  const bool fixed_delta = t.kind == TaskKind::kMinDmax || t.kind == TaskKind::kDecide || t.kind == TaskKind::kIdentify;
   const bool fixed_dmax = t.kind == TaskKind::kMinDelta || t.kind == TaskKind::kDecide;
   const std::string kind = to_string(t.kind);
   if (fixed_delta) t.delta = bound_text(root, "delta", file);

@@ -116,6 +116,17 @@ TEST_F(Oracle, IgnoringTheLeadingZerosOfZIsRefuted) {
   expect_refutations_verified(report);
 }
 
+TEST_F(Oracle, IdentifyClaimsAreJudgedOnTheirTheta) {
+  // the correct toy answers with lpvid identify's own certified θ and d_max
+  nlohmann::json report;
+  EXPECT_EQ(oracle("correct", "--cases 3 --seed 11 --min-n 10 --max-n 30 --kinds identify", report), 0) << output();
+  EXPECT_EQ(verdicts(report)["confirmed"], 3) << report.dump(1);
+  // the same θ with d_max scaled by 0.95: below the lower end of the model with that θ
+  EXPECT_EQ(oracle("scaled", "--cases 3 --seed 11 --min-n 10 --max-n 30 --kinds identify", report), 1) << output();
+  EXPECT_GE(verdicts(report)["refuted"], 1) << report.dump(1);
+  expect_refutations_verified(report);
+}
+
 TEST_F(Oracle, BadCommandsAndAnswersAreErrorsNotRefutations) {
   nlohmann::json report;
   // an unknown placeholder is refused before anything runs

@@ -4,7 +4,8 @@ deliberately wrong. Each answers a task by asking lpvid itself (so the right
 answer is known) and then, depending on MODE:
 
   correct        the certified bound, rounded up, with lpvid's Delta taps as
-                 the witness (decide: lpvid's verdict)
+                 the witness (decide: lpvid's verdict; identify: lpvid
+                 identify --iterate's theta and d_max)
   scaled         every claimed bound times 0.95 (too good by 5 %)
   flipped        decide: "consistent" where lpvid certified "invalidated"
   bad_witness    the correct bound, but the witness's first tap moved by
@@ -30,8 +31,10 @@ def run_lpvid(lpvid, data, model, task, stem):
         "min_delta": ["--dmax", task.get("dmax")],
         "weighted": ["--lambda", task.get("lambda")],
         "decide": ["--delta", task.get("delta"), "--dmax", task.get("dmax")],
+        "identify": ["--delta", task.get("delta"), "--iterate"],
     }[task["kind"]]
-    cmd = [lpvid, "invalidate", "--quiet", "--data", data, "--model", model, "--report", stem + ".report.json",
+    command = "identify" if task["kind"] == "identify" else "invalidate"
+    cmd = [lpvid, command, "--quiet", "--data", data, "--model", model, "--report", stem + ".report.json",
            "--certificate", stem + ".cert.json"] + bounds
     code = subprocess.run(cmd, stdout=subprocess.DEVNULL).returncode
     with open(stem + ".report.json") as f:
@@ -47,6 +50,13 @@ def answer_from(task, code, report, certificate):
     a = {"format": "lpvid-oracle-answer/1"}
     if task["kind"] == "decide":
         a["verdict"] = "invalidated" if code == 1 else "consistent"
+    elif task["kind"] == "identify":
+        if report.get("dmax") is None:
+            return {"format": "lpvid-oracle-answer/1", "status": "failed", "message": "lpvid did not verify"}
+        a["dmax"] = report["dmax"]
+        # the report gives the certified theta (rounded to 12 digits) as doubles: back to its exact decimals
+        a["theta"] = {f: {k: [[format(x, ".12g") for x in row] for row in m] for k, m in t.items()}
+                      for f, t in report["theta"].items()}
     else:
         if report.get("delta") is None:
             return {"format": "lpvid-oracle-answer/1", "status": "failed", "message": "lpvid did not verify"}

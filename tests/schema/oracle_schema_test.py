@@ -63,7 +63,7 @@ impl = os.path.join(source, "examples", "oracle", "my_impl.py")
 cases = os.path.join(work, "cases")
 variants = [["--siso"], [], ["--siso", "--leading-zeros", "4"], ["--max-delay", "2"], ["--lti"]]
 seed = 1
-for kind in ("min_dmax", "min_delta", "weighted", "decide"):
+for kind in ("min_dmax", "min_delta", "weighted", "decide", "identify"):
     for extra in variants[:3] if kind != "decide" else variants:
         folder = os.path.join(cases, f"{kind}-{seed}")
         r = subprocess.run([lpvid, "generate", "random", "--seed", str(seed), "--kinds", kind, "--min-n", "10",
@@ -75,6 +75,15 @@ for kind in ("min_dmax", "min_delta", "weighted", "decide"):
         errors = [e.message for e in validators["task"].iter_errors(task)]
         check(not errors and task["kind"] == kind, f"{folder}/task.json valid, kind {kind} {errors}")
         out = os.path.join(folder, "answer.json")
+        if kind == "identify":  # the ten-line example answers the fixed-model kinds; the toy answers identify
+            toy = os.path.join(source, "tests", "oracle", "toy_impls.py")
+            r = subprocess.run([sys.executable, toy, "correct", lpvid, os.path.join(folder, "data.csv"),
+                                os.path.join(folder, "model.json"), os.path.join(folder, "task.json"), out],
+                               capture_output=True, text=True)
+            if check(r.returncode == 0 and os.path.exists(out), f"toy answers {folder} ({r.stderr.strip()[-300:]})"):
+                errors = [e.message for e in validators["answer"].iter_errors(load(out))]
+                check(not errors and "theta" in load(out), f"{folder}/answer.json valid, with theta {errors}")
+            continue
         r = subprocess.run([sys.executable, impl, os.path.join(folder, "data.csv"), os.path.join(folder, "model.json"),
                             os.path.join(folder, "task.json"), out], env=env, capture_output=True, text=True)
         if check(r.returncode == 0 and os.path.exists(out), f"my_impl.py answers {folder} ({r.stderr.strip()[-300:]})"):
@@ -82,6 +91,9 @@ for kind in ("min_dmax", "min_delta", "weighted", "decide"):
             check(not errors, f"{folder}/answer.json valid {errors}")
 
 # The oracle over these cases with the same implementation: nothing refuted.
+for folder in os.listdir(cases):
+    if folder.startswith("identify"):
+        shutil.rmtree(os.path.join(cases, folder))
 cmd = f"{sys.executable} {impl} {{data}} {{model}} {{task}} {{out}}"
 r = subprocess.run([lpvid, "oracle", "--quiet", "--cases-dir", cases, "--command", cmd, "--report",
                     os.path.join(work, "report.json")], env=env, capture_output=True, text=True)
