@@ -5,7 +5,7 @@
 //
 // Slack. The generating pair is feasible with room to spare: ‖T_Δ‖ ≤
 // δ/(1+1e-6) and ‖d_exact‖ ≤ 0.9·d_max·√(n·ny) + 5e-12·max|y|·√(n·ny)
-// (gen_identify.h). Hence
+// (examples/random_case.h). Hence
 //  - kFeasibility at (1.01·δ, 1.01·d_max) is strictly feasible;
 //  - the minimal δ at d_max' = 1.01·d_max is ≤ δ, and the certificate adds
 //    the solver's relative gap (1e-7 of the scaled objective), the δ² margin
