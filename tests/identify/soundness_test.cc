@@ -5,7 +5,7 @@
 //
 // Slack. The generating pair is feasible with room to spare: ‖T_Δ‖ ≤
 // δ/(1+1e-6) and ‖d_exact‖ ≤ 0.9·d_max·√(n·ny) + 5e-12·max|y|·√(n·ny)
-// (gen_identify.h). Hence
+// (examples/random_case.h). Hence
 //  - kFeasibility at (1.01·δ, 1.01·d_max) is strictly feasible;
 //  - the minimal δ at d_max' = 1.01·d_max is ≤ δ, and the certificate adds
 //    the solver's relative gap (1e-7 of the scaled objective), the δ² margin
@@ -81,8 +81,7 @@ RC_GTEST_PROP(InvalidationSoundness, GeneratingDeltaIsAcceptedExactly, ()) {
 
 // The model that generated the data is never invalidated at slightly larger
 // bounds, and the optimal certified bounds are not above the generating ones.
-RC_GTEST_PROP(InvalidationSoundness, TrueModelIsNeverInvalidated, ()) {
-  const IdentCase c = *ident_case(soundness_options());
+void assert_never_invalidated(const IdentCase& c) {
   ScratchDir dir("sound");
   const std::string data = dir.file("data.csv");
   write_experiment_csv(data, c.model, c.exp);
@@ -116,6 +115,25 @@ RC_GTEST_PROP(InvalidationSoundness, TrueModelIsNeverInvalidated, ()) {
   RC_ASSERT(bn.verified);
   RC_ASSERT(bn.dmax <= 0.9 * c.dmax * (1 + 1e-3));
   RC_ASSERT(check_certificate_file(dir.file("n.json")).holds);
+}
+
+RC_GTEST_PROP(InvalidationSoundness, TrueModelIsNeverInvalidated, ()) {
+  assert_never_invalidated(*ident_case(soundness_options()));
+}
+
+// The same on the generator's harder cases: leading zero inputs (z_0 … z_{m−1}
+// = 0, SPEC §9: the horizon shrinks), a delayed Δ, and static input/output
+// maps (the residual is y − g_out(ŷ + Φ), model/static_blocks.h).
+RC_GTEST_PROP(InvalidationSoundness, TrueModelWithLeadingZerosDelayOrStaticBlocksIsNeverInvalidated, ()) {
+  IdentCaseOptions o = soundness_options();
+  o.leading_zero_inputs = 3;
+  o.max_delay = 2;
+  o.static_blocks = true;
+  const IdentCase c = *ident_case(o);
+  RC_CLASSIFY(c.zero_inputs > 0, "leading zero inputs");
+  RC_CLASSIFY(c.delay > 0, "delayed delta");
+  RC_CLASSIFY(!c.model.statics.empty(), "static block");
+  assert_never_invalidated(c);
 }
 
 // Same with Δ = 0: data = model output + noise is consistent with δ = 0
