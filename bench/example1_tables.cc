@@ -19,7 +19,7 @@
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "examples/paper_example1.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/identify.h"
 
 using namespace lpvid;

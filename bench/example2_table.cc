@@ -27,7 +27,7 @@
 #include "data/csv_writer.h"
 #include "examples/rigid_body_3x3.h"
 #include "fit/local_lpv.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/identify.h"
 #include "model/simulate.h"
 

@@ -19,7 +19,7 @@
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "examples/random_stream.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/identify.h"
 #include "model/simulate.h"
 

@@ -25,7 +25,7 @@
 #include "data/csv_writer.h"
 #include "examples/paper_example1.h"
 #include "examples/random_stream.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"

@@ -11,7 +11,7 @@
 #include "core/input_error.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
 #include "verify/certificate_check.h"

@@ -1,6 +1,6 @@
 // lpvid certify: an outside SDP solver's solution of the Theorem 2.1 program
 // (written by `lpvid invalidate --write-sdpa`) turned into a checked
-// certificate (identify/outside_solution.h).
+// certificate (certify/outside_solution.h).
 #include <iostream>
 #include <memory>
 
@@ -8,7 +8,7 @@
 #include "cli/inputs.h"
 #include "cli/report.h"
 #include "core/input_error.h"
-#include "identify/outside_solution.h"
+#include "certify/outside_solution.h"
 
 namespace lpvid::cli {
 namespace {

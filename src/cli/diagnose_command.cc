@@ -221,7 +221,7 @@ int run_diagnose(DiagnoseArgs& a) {
   o.certify.full_horizon_limit = 0;
   o.certify.lower_end = a.lower_ends;
   o.certify.certificate_path = certificate_path(a.common);
-  o.certify.scale_signals = true;  // λ on unit-RMS signals (identify/bound_scaling.h)
+  o.certify.scale_signals = true;  // λ on unit-RMS signals (certify/bound_scaling.h)
   o.file_row_offset = file_offset;
   // --write-sdpa numbers the programs it writes in solve order: sequential then.
   o.threads = a.common.write_sdpa.empty() ? static_cast<unsigned>(a.threads) : 1u;

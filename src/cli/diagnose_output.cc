@@ -26,7 +26,7 @@ std::string num(double x, int digits = 4) {
 
 ojson finite_or_null(double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); }
 
-/// The scales of identify/bound_scaling.h and the bounds in scaled units.
+/// The scales of certify/bound_scaling.h and the bounds in scaled units.
 ojson scaling_json(const CertifiedBounds& b) {
   const SignalScales& sc = b.scales;
   return {{"y_scale", sc.y_scale_text()},

@@ -9,7 +9,7 @@
 #include "cli/report.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/fix_and_certify.h"
 #include "model/model_file.h"
 #include "solvers/external_solvers.h"

@@ -11,7 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "data/experiment.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"

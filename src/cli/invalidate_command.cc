@@ -6,8 +6,8 @@
 #include "cli/inputs.h"
 #include "cli/report.h"
 #include "core/input_error.h"
-#include "identify/certify.h"
-#include "identify/outside_solution.h"
+#include "certify/certify.h"
+#include "certify/outside_solution.h"
 #include "solvers/external_solvers.h"
 
 namespace lpvid::cli {
@@ -19,7 +19,7 @@ int run_invalidate(CommonOptions& c) {
   if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
     throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" or use 'lpvid identify'");
   // --write-sdpa: the Theorem 2.1 program itself, for an outside solver and
-  // `lpvid certify --solution` (identify/outside_solution.h).
+  // `lpvid certify --solution` (certify/outside_solution.h).
   const bool export_program = !c.write_sdpa.empty() && in.mode == ToeplitzMode::kSignal;
   auto solver = make_solver_for_cli(c.solver, export_program ? "" : c.write_sdpa);
   const CertifyOptions co = certify_options(c, in.objective);

@@ -7,7 +7,7 @@
 
 #include "core/exit_codes.h"
 #include "identify/affine_residual.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 

@@ -29,7 +29,7 @@
 #include "diagnose/effect_ranking.h"
 #include "diagnose/window_bounds.h"
 #include "diagnose/window_identification.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {

@@ -6,7 +6,7 @@
 /// `begin` (simulated from the fitted x0 over the whole record): the state is
 /// free (fitted), not assumed zero. The model's numbers are rounded to 12
 /// significant digits and read as exact decimals; the window is certified by
-/// identify/certify.h (Δ form, exact check of the certificate file).
+/// certify/certify.h (Δ form, exact check of the certificate file).
 ///
 /// What a verified bound means: on exactly these samples of this file, the
 /// rounded model explains the data with an uncertainty ‖Δ‖ ≤ δ and noise
@@ -15,7 +15,7 @@
 #include <string>
 
 #include "data/experiment.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
 

@@ -5,7 +5,7 @@
 /// has in C, D}, its C_i, D_i are unknowns on top of the least-squares
 /// values, x0 is free; the solver is the alternating Δ/θ method
 /// (identify/alternating_identify.h), whose iterates are feasible for the
-/// true BMI, and the result is certified exactly (identify/certify.h).
+/// true BMI, and the result is certified exactly (certify/certify.h).
 ///
 /// Not applicable with a static output map (the output is then not affine
 /// in θ) or a model without states and inputs; `why_not` says so.

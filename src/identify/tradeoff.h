@@ -31,7 +31,7 @@
 #include "core/scalar.h"
 #include "data/experiment.h"
 #include "identify/affine_residual.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/identify.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"

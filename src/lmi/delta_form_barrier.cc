@@ -132,6 +132,23 @@ Dense diagonal_sums(const Dense& M) {
   return out;
 }
 
+/// The noise's part of the gradient and Hessian: ∂‖d‖²/∂h_ij = −2 Z_jᵀ d_i,
+/// ∂²‖d‖²/∂h_ij ∂h_ij' = 2 Z_jᵀ Z_j', weighted by c_s/(N μ) when s is
+/// eliminated, or through −log φ with φ = N s − ‖d‖² when s is fixed.
+void add_noise_terms(const Problem& p, const Point& pt, double mu, Vecd& g, Dense& H) {
+  const Index L = p.L, ny = p.ny, nz = p.nz, nt = p.taps();
+  const auto at = [&](Index i, Index j) { return (i * nz + j) * L; };
+  Vecd Zd = Vecd::Zero(nt);
+  for (Index i = 0; i < ny; ++i)
+    for (Index j = 0; j < nz; ++j) Zd.segment(at(i, j), L) = p.Z[static_cast<size_t>(j)].transpose() * pt.d_tail.col(i);
+  const double w = p.s_var ? p.cs / (p.N * mu) : 1.0 / pt.phi;  // c_s·‖d‖²/(N μ), or −log φ with φ = N s − ‖d‖²
+  g.head(nt) -= 2.0 * w * Zd;
+  for (Index i = 0; i < ny; ++i)
+    for (Index j = 0; j < nz; ++j)
+      for (Index j2 = 0; j2 < nz; ++j2) H.block(at(i, j), at(i, j2), L, L) += 2.0 * w * p.G[static_cast<size_t>(j * nz + j2)];
+  if (!p.s_var) H.topLeftCorner(nt, nt) += 4.0 * Zd * Zd.transpose() / (pt.phi * pt.phi);
+}
+
 /// Gradient and Hessian of F_μ at an interior point; P, Q, R as in the header.
 /// Entry-pair blocks of the Hessian, variable (i, j) at shift k against
 /// (i', j') at shift l (sub-blocks X_ab of P, Q, R as in sub_block):
@@ -192,16 +209,7 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
     H.block(nt, 0, 1, nt) = H.block(0, nt, nt, 1).transpose();
     H(nt, nt) = P.squaredNorm();
   }
-  // the noise: ∂‖d‖²/∂h_ij = −2 Z_jᵀ d_i, ∂²‖d‖²/∂h_ij ∂h_ij' = 2 Z_jᵀ Z_j'
-  Vecd Zd = Vecd::Zero(nt);
-  for (Index i = 0; i < ny; ++i)
-    for (Index j = 0; j < nz; ++j) Zd.segment(at(i, j), L) = p.Z[static_cast<size_t>(j)].transpose() * pt.d_tail.col(i);
-  const double w = p.s_var ? p.cs / (p.N * mu) : 1.0 / pt.phi;  // c_s·‖d‖²/(N μ), or −log φ with φ = N s − ‖d‖²
-  g.head(nt) -= 2.0 * w * Zd;
-  for (Index i = 0; i < ny; ++i)
-    for (Index j = 0; j < nz; ++j)
-      for (Index j2 = 0; j2 < nz; ++j2) H.block(at(i, j), at(i, j2), L, L) += 2.0 * w * p.G[static_cast<size_t>(j * nz + j2)];
-  if (!p.s_var) H.topLeftCorner(nt, nt) += 4.0 * Zd * Zd.transpose() / (pt.phi * pt.phi);
+  add_noise_terms(p, pt, mu, g, H);
 }
 
 /// The tangent of the central path from μ to μ/factor at a centred x:
@@ -338,6 +346,212 @@ DeltaFormSolution fail(DeltaFormSolution out, const std::string& why) {
   return out;
 }
 
+/// One run of the barrier method: the state its stages share (the scaled
+/// problem, the iterate x = (h, t), μ, the evaluated point, the derivative
+/// buffers) and the stages themselves, in the order solve_delta_form_barrier
+/// calls them.
+class BarrierRun {
+ public:
+  BarrierRun(const Problem& p, const BoundObjective& objective, const BarrierOptions& options)
+      : p_(p), options_(options), grid_(p.L), feasibility_(objective.kind == BoundObjective::Kind::kFeasibility),
+        nt_(p.taps()), Ly_(static_cast<double>(p.L * p.ny)), x_(Vecd::Zero(p.dim())) {}
+
+  /// Start: h = 0 and, for a free δ, t central for μ₀ (c_t/μ = tr P = L·ny/t);
+  /// μ₀ puts the eliminated s at twice the residual's mean square. "" on success.
+  std::string start() {
+    const double D0 = p_.r_head.squaredNorm() + p_.r_tail.squaredNorm();
+    mu_ = p_.cs * std::max(D0 / p_.N, 1e-12);
+    if (p_.t_var) x_(nt_) = mu_ * Ly_ / p_.ct;
+    if (!p_.s_var) {
+      // min δ at a fixed d_max: (C2) strictly inside, then t = twice an
+      // estimate of ‖T_h‖², doubled until interior; μ₀ central for it
+      if (const std::string why = ridge_start(p_, x_); !why.empty()) return why;
+      const double norm2 = norm2_estimate(block_toeplitz(p_, x_));
+      x_(nt_) = 2.0 * norm2 + 1e-9 * (1.0 + norm2);
+      mu_ = p_.ct * x_(nt_) / Ly_;
+      for (int it = 0; it < 60 && !evaluate(p_, x_, mu_).interior; ++it) {
+        x_(nt_) *= 2.0;
+        mu_ = p_.ct * x_(nt_) / Ly_;
+      }
+    }
+    pt_ = evaluate(p_, x_, mu_);
+    return pt_.interior ? "" : "the start is not interior";
+  }
+
+  /// Newton on F_μ until the decrement λ² is below `tol`; "" on success.
+  std::string center(double tol, int max_steps) {
+    for (int inner = 0; inner < max_steps; ++inner) {
+      if (++newton_ > options_.max_newton) return "no convergence within " + std::to_string(options_.max_newton) + " Newton steps";
+      Vecd dx;
+      double dec2 = 0;
+      if (const std::string err = newton_direction(dx, dec2); !err.empty()) return err;
+      if (dec2 < tol) return "";
+      if (!line_search(dx, dec2)) return "the line search found no interior point";
+      if (stalled_) return "";  // no progress possible in floating point: as central as it gets
+    }
+    return "not centred within " + std::to_string(max_steps) + " Newton steps";
+  }
+
+  /// Follows the central path until the gap is small (or, for fixed bounds,
+  /// until a feasible point or a proof of infeasibility appears). "" on success.
+  std::string follow_path() {
+    for (;;) {
+      // 200, not 60: from h = 0 the first centering of a MIMO problem at a large δ
+      // (Example 1, 2×2, n = 200, δ = 1) took about 70 damped steps
+      if (const std::string err = center(0.25, 200); !err.empty()) return err;
+      const double obj = objective_of(x_, pt_);
+      if (feasibility_) {
+        if (s_of(pt_) <= p_.s_fix) {  // a feasible point: the taps certify "consistent" (no polishing: keep it)
+          found_feasible_ = true;
+          return "";
+        }
+        if (obj - 2.0 * p_.nu * mu_ > p_.s_fix) {  // the central path's lower estimate is above d_max²
+          infeasible_ = true;
+          return "";
+        }
+      }
+      if (p_.nu * mu_ <= std::max((feasibility_ ? options_.feasibility_rel_gap : options_.rel_gap) * std::abs(obj), options_.abs_gap))
+        return "";
+      reduce_mu();
+    }
+  }
+
+  /// Y = μ·C⁻¹ is dual feasible only on the central path: centre tightly
+  /// (the residual is what certify/dual_certify.h must project away and
+  /// cover with a PSD margin), then the final derivatives. "" on success.
+  std::string finish() {
+    if (!found_feasible_)
+      if (const std::string err = center(1e-14, 30); !err.empty() && err.rfind("not centred", 0) != 0) return err;
+    derivatives(p_, pt_, mu_, grid_, g_, H_, P_, Q_, R_);
+    if (feasibility_ && !(s_of(pt_) <= p_.s_fix)) infeasible_ = true;  // undecided at the smallest gap: the dual certificate decides
+    return "";
+  }
+
+  /// The answer in original units (as solve_delta_form): taps, bounds, dual matrices, status.
+  void write(DeltaFormSolution& out, const BoundObjective& objective, double sigma_r, double kz) const {
+    write_duals(out, sigma_r, kz);
+    const double s = s_of(pt_);
+    out.taps = Eigen::Map<const Dense>(x_.data(), p_.L, p_.q()) / kz;  // column i·nz + j: entry (i, j) over l
+    out.delta2 = p_.t_var ? x_(nt_) / (kz * kz) : objective.delta * objective.delta;
+    out.dmax2 = feasibility_ ? objective.dmax * objective.dmax : s * sigma_r * sigma_r;
+    out.path_mu = found_feasible_ ? 0.0 : mu_;  // a point found on the way is not centred
+    out.solve.status = infeasible_ ? SolveStatus::kPrimalInfeasible : SolveStatus::kOptimal;
+    out.solve.iterations = newton_;
+    // objective in original units: σ_r² × the scaled one (c_t was set so that
+    // this holds for the weighted objective's t too); min δ: δ² = t'/kz²
+    const double scale = p_.s_var ? sigma_r * sigma_r : 1.0 / (kz * kz);
+    out.solve.objective = objective_of(x_, pt_) * scale;
+    out.solve.dual_objective = (objective_of(x_, pt_) - p_.nu * mu_) * scale;
+    out.solve.message = "structured barrier: " + std::to_string(newton_) + " Newton steps, final mu " + std::to_string(mu_);
+  }
+
+ private:
+  /// s: eliminated (its minimiser for the current h) or fixed.
+  double s_of(const Point& q) const { return p_.s_var ? q.D / p_.N + mu_ / p_.cs : p_.s_fix; }
+  double objective_of(const Vecd& y, const Point& q) const { return (p_.t_var ? p_.ct * y(nt_) : 0.0) + p_.cs * s_of(q); }
+
+  /// The Newton direction and its decrement λ² = −gᵀdx. MIMO: ZᵀZ-type noise
+  /// terms are singular along taps that do not change d, and at small μ they
+  /// dwarf the log-det curvature there; a zero pivot in floating point then
+  /// gets a Levenberg shift τ·I (still a descent direction; the line search
+  /// decides the step).
+  std::string newton_direction(Vecd& dx, double& dec2) {
+    derivatives(p_, pt_, mu_, grid_, g_, H_, P_, Q_, R_);
+    bool solved = false;
+    const double scale_h = std::max(H_.diagonal().cwiseAbs().maxCoeff(), 1e-300);
+    for (int shift = 0; shift < 8 && !solved; ++shift) {
+      Dense Hs = H_;
+      if (shift > 0) Hs.diagonal().array() += scale_h * std::pow(10.0, -16 + 2 * shift);
+      const Eigen::LDLT<Dense> ldlt(Hs);
+      dx = ldlt.solve(-g_);
+      solved = ldlt.info() == Eigen::Success && dx.allFinite() && ldlt.isPositive();
+    }
+    if (!solved) return "the Newton system is singular";
+    dec2 = -g_.dot(dx);
+    return dec2 >= 0 ? "" : "not a descent direction (the Hessian lost definiteness)";
+  }
+
+  /// Backtracking (Armijo) from the full step; F_μ changes are O(1) numbers
+  /// (the objective enters divided by μ but as a difference). nz > 1: the
+  /// noise term is flat along taps with Σ_j Z_j h_ij = 0 and only the log-det
+  /// barrier rules them; full steps with λ > 1 (outside the Dikin ellipsoid)
+  /// there ran to within 1e-8 of tI − TTᵀ's boundary and Newton then crawled
+  /// out at λ² ≈ 3 for ~100 steps (3×3, n = 200). From λ·α ≤ damping the step
+  /// stays within a few Dikin radii. False when no interior point was found.
+  bool line_search(const Vecd& dx, double dec2) {
+    const double lambda = std::sqrt(dec2);
+    double alpha = p_.nz > 1 ? std::min(1.0, options_.damping / (1.0 + lambda)) : 1.0;
+    Point trial;
+    for (int ls = 0; ls < 60; ++ls, alpha *= 0.5) {
+      trial = evaluate(p_, x_ + alpha * dx, mu_);
+      if (trial.interior && (dec2 < 1e-6 || trial.value - pt_.value <= -0.25 * alpha * dec2)) break;
+    }
+    if (!trial.interior) return false;
+    stalled_ = alpha < 1e-12;
+    if (stalled_) return true;
+    x_ += alpha * dx;
+    pt_ = std::move(trial);
+    return true;
+  }
+
+  /// μ divided by its factor, with the predictor's tangent step halved until
+  /// it is interior and lowers F_μ (x is kept otherwise: F_μ's domain does not
+  /// depend on μ).
+  void reduce_mu() {
+    const double factor = p_.s_var ? options_.mu_factor : options_.mu_factor_fixed_noise;
+    const Vecd step = options_.predictor ? predictor_step(p_, pt_, H_, mu_, factor) : Vecd();
+    mu_ /= factor;
+    pt_ = evaluate(p_, x_, mu_);
+    double beta = 1.0;
+    for (int k = 0; k < 12 && step.size() == p_.dim(); ++k, beta *= 0.5) {
+      Point trial = evaluate(p_, x_ + beta * step, mu_);
+      if (trial.interior && trial.value < pt_.value) {
+        x_ += beta * step;
+        pt_ = std::move(trial);
+        return;
+      }
+    }
+  }
+
+  /// Dual matrices of (C1) and (C2) from the central point (scaled), then in
+  /// original units as solve_delta_form.
+  void write_duals(DeltaFormSolution& out, double sigma_r, double kz) const {
+    const Index Y = p_.L * p_.ny, Z = p_.L * p_.nz, Nn = p_.n * p_.ny;
+    out.dual_c1 = Dense::Zero(Y + Z, Y + Z);
+    out.dual_c1.topLeftCorner(Y, Y) = mu_ * P_;
+    out.dual_c1.topRightCorner(Y, Z) = -mu_ * Q_;
+    out.dual_c1.bottomLeftCorner(Z, Y) = -mu_ * Q_.transpose();
+    out.dual_c1.bottomRightCorner(Z, Z) = mu_ * (Dense::Identity(Z, Z) + R_);
+    Vecd d(Nn);  // row k·ny + i of (C2)
+    for (Index k = 0; k < p_.n; ++k)
+      for (Index i = 0; i < p_.ny; ++i) d(k * p_.ny + i) = k < p_.m ? p_.r_head(k, i) : pt_.d_tail(k - p_.m, i);
+    const double phi = p_.N * s_of(pt_) - pt_.D;  // = N μ / c_s on the path when s is eliminated
+    out.dual_c2 = Dense::Zero(Nn + 1, Nn + 1);
+    out.dual_c2(0, 0) = mu_ / phi;
+    out.dual_c2.block(1, 0, Nn, 1) = -mu_ * d / phi;
+    out.dual_c2.block(0, 1, 1, Nn) = out.dual_c2.block(1, 0, Nn, 1).transpose();
+    out.dual_c2.bottomRightCorner(Nn, Nn) = mu_ * (Dense::Identity(Nn, Nn) + d * d.transpose() / phi);
+    out.dual_c1.topRows(Y) *= kz;
+    out.dual_c1.leftCols(Y) *= kz;
+    out.dual_c2.row(0) /= sigma_r;
+    out.dual_c2.col(0) /= sigma_r;
+  }
+
+  const Problem& p_;
+  const BarrierOptions& options_;
+  const CorrelationGrid grid_;
+  const bool feasibility_;
+  const Index nt_;
+  const double Ly_;
+  Vecd x_;
+  double mu_ = 0;
+  Point pt_;
+  int newton_ = 0;
+  bool infeasible_ = false, found_feasible_ = false, stalled_ = false;
+  Vecd g_;
+  Dense H_, P_, Q_, R_;
+};
+
 }  // namespace
 
 DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
@@ -352,159 +566,11 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
   const Problem p = make_problem(z, r, objective, sigma_z, sigma_r);
   out.leading_zeros = p.m;
   out.horizon = p.L;
-  const double kz = sigma_z / sigma_r;  // h' = kz·h, t' = kz²·t, s' = s/σ_r²
-  const bool feasibility = objective.kind == BoundObjective::Kind::kFeasibility;
-  const Index L = p.L, nt = p.taps();
-  const double Ly = static_cast<double>(L * p.ny);
-
-  // Start: h = 0 and, for a free δ, t central for μ₀ (c_t/μ = tr P = L·ny/t);
-  // μ₀ puts the eliminated s at twice the residual's mean square.
-  Vecd x = Vecd::Zero(p.dim());
-  const double D0 = p.r_head.squaredNorm() + p.r_tail.squaredNorm();
-  double mu = p.cs * std::max(D0 / p.N, 1e-12);
-  if (p.t_var) x(nt) = mu * Ly / p.ct;
-  if (!p.s_var) {
-    // min δ at a fixed d_max: (C2) strictly inside, then t = twice an
-    // estimate of ‖T_h‖², doubled until interior; μ₀ central for it
-    if (const std::string why = ridge_start(p, x); !why.empty()) return fail(out, why);
-    const double norm2 = norm2_estimate(block_toeplitz(p, x));
-    x(nt) = 2.0 * norm2 + 1e-9 * (1.0 + norm2);
-    mu = p.ct * x(nt) / Ly;
-    for (int it = 0; it < 60 && !evaluate(p, x, mu).interior; ++it) {
-      x(nt) *= 2.0;
-      mu = p.ct * x(nt) / Ly;
-    }
-  }
-  Point pt = evaluate(p, x, mu);
-  if (!pt.interior) return fail(out, "the start is not interior");
-  // s: eliminated (its minimiser for the current h) or fixed
-  const auto s_of = [&](const Point& q) { return p.s_var ? q.D / p.N + mu / p.cs : p.s_fix; };
-  const auto objective_of = [&](const Vecd& y, const Point& q) { return (p.t_var ? p.ct * y(nt) : 0.0) + p.cs * s_of(q); };
-
-  const CorrelationGrid grid(L);
-  int newton = 0;
-  Vecd g;
-  Dense H, P, Q, R;
-  // Newton on F_μ until the decrement λ² is below `tol`; "" on success.
-  const auto center = [&](double tol, int max_steps) -> std::string {
-    for (int inner = 0; inner < max_steps; ++inner) {
-      if (++newton > options.max_newton) return "no convergence within " + std::to_string(options.max_newton) + " Newton steps";
-      derivatives(p, pt, mu, grid, g, H, P, Q, R);
-      // MIMO: ZᵀZ-type noise terms are singular along taps that do not change
-      // d, and at small μ they dwarf the log-det curvature there; a zero pivot
-      // in floating point then gets a Levenberg shift τ·I (still a descent
-      // direction; the line search decides the step).
-      Vecd dx;
-      bool solved = false;
-      const double scale_h = std::max(H.diagonal().cwiseAbs().maxCoeff(), 1e-300);
-      for (int shift = 0; shift < 8 && !solved; ++shift) {
-        Dense Hs = H;
-        if (shift > 0) Hs.diagonal().array() += scale_h * std::pow(10.0, -16 + 2 * shift);
-        const Eigen::LDLT<Dense> ldlt(Hs);
-        dx = ldlt.solve(-g);
-        solved = ldlt.info() == Eigen::Success && dx.allFinite() && ldlt.isPositive();
-      }
-      if (!solved) return "the Newton system is singular";
-      const double dec2 = -g.dot(dx);
-      if (!(dec2 >= 0)) return "not a descent direction (the Hessian lost definiteness)";
-      if (dec2 < tol) return "";
-      // Backtracking (Armijo) from the full step; F_μ changes are O(1)
-      // numbers (the objective enters divided by μ but as a difference).
-      // nz > 1: the noise term is flat along taps with Σ_j Z_j h_ij = 0 and
-      // only the log-det barrier rules them; full steps with λ > 1 (outside
-      // the Dikin ellipsoid) there ran to within 1e-8 of tI − TTᵀ's boundary
-      // and Newton then crawled out at λ² ≈ 3 for ~100 steps (3×3, n = 200).
-      // From λ·α ≤ damping the step stays within a few Dikin radii.
-      const double lambda = std::sqrt(dec2);
-      double alpha = p.nz > 1 ? std::min(1.0, options.damping / (1.0 + lambda)) : 1.0;
-      Point trial;
-      for (int ls = 0; ls < 60; ++ls, alpha *= 0.5) {
-        trial = evaluate(p, x + alpha * dx, mu);
-        if (trial.interior && (dec2 < 1e-6 || trial.value - pt.value <= -0.25 * alpha * dec2)) break;
-      }
-      if (!trial.interior) return "the line search found no interior point";
-      if (alpha < 1e-12) return "";  // no progress possible in floating point: as central as it gets
-      x += alpha * dx;
-      pt = std::move(trial);
-    }
-    return "not centred within " + std::to_string(max_steps) + " Newton steps";
-  };
-
-  bool infeasible = false, found_feasible = false;
-  for (;;) {
-    // 200, not 60: from h = 0 the first centering of a MIMO problem at a large δ
-    // (Example 1, 2×2, n = 200, δ = 1) took about 70 damped steps
-    if (const std::string err = center(0.25, 200); !err.empty()) return fail(out, err);
-    const double obj = objective_of(x, pt);
-    if (feasibility) {
-      if (s_of(pt) <= p.s_fix) {  // a feasible point: the taps certify "consistent" (no polishing: keep it)
-        found_feasible = true;
-        break;
-      }
-      if (obj - 2.0 * p.nu * mu > p.s_fix) {  // the central path's lower estimate is above d_max²
-        infeasible = true;
-        break;
-      }
-    }
-    if (p.nu * mu <= std::max((feasibility ? options.feasibility_rel_gap : options.rel_gap) * std::abs(obj), options.abs_gap))
-      break;
-    const double factor = p.s_var ? options.mu_factor : options.mu_factor_fixed_noise;
-    const Vecd step = options.predictor ? predictor_step(p, pt, H, mu, factor) : Vecd();
-    mu /= factor;
-    pt = evaluate(p, x, mu);  // same x, new μ (always interior: F_μ's domain does not depend on μ)
-    // the tangent step, halved until it is interior and lowers F_μ
-    double beta = 1.0;
-    for (int k = 0; k < 12 && step.size() == p.dim(); ++k, beta *= 0.5) {
-      Point trial = evaluate(p, x + beta * step, mu);
-      if (trial.interior && trial.value < pt.value) {
-        x += beta * step;
-        pt = std::move(trial);
-        break;
-      }
-    }
-  }
-  // Y = μ·C⁻¹ is dual feasible only on the central path: centre tightly first
-  // (the residual is what identify/dual_certify.h must project away and
-  // cover with a PSD margin).
-  if (!found_feasible)
-    if (const std::string err = center(1e-14, 30); !err.empty() && err.rfind("not centred", 0) != 0) return fail(out, err);
-  derivatives(p, pt, mu, grid, g, H, P, Q, R);
-  const double s = s_of(pt);
-  if (feasibility && !(s <= p.s_fix)) infeasible = true;  // undecided at the smallest gap: the dual certificate decides
-
-  // Dual matrices (scaled), then original units as solve_delta_form.
-  const Index Y = L * p.ny, Z = L * p.nz, Nn = p.n * p.ny;
-  out.dual_c1 = Dense::Zero(Y + Z, Y + Z);
-  out.dual_c1.topLeftCorner(Y, Y) = mu * P;
-  out.dual_c1.topRightCorner(Y, Z) = -mu * Q;
-  out.dual_c1.bottomLeftCorner(Z, Y) = -mu * Q.transpose();
-  out.dual_c1.bottomRightCorner(Z, Z) = mu * (Dense::Identity(Z, Z) + R);
-  Vecd d(Nn);  // row k·ny + i of (C2)
-  for (Index k = 0; k < p.n; ++k)
-    for (Index i = 0; i < p.ny; ++i) d(k * p.ny + i) = k < p.m ? p.r_head(k, i) : pt.d_tail(k - p.m, i);
-  const double phi = p.N * s - pt.D;  // = N μ / c_s on the path when s is eliminated
-  out.dual_c2 = Dense::Zero(Nn + 1, Nn + 1);
-  out.dual_c2(0, 0) = mu / phi;
-  out.dual_c2.block(1, 0, Nn, 1) = -mu * d / phi;
-  out.dual_c2.block(0, 1, 1, Nn) = out.dual_c2.block(1, 0, Nn, 1).transpose();
-  out.dual_c2.bottomRightCorner(Nn, Nn) = mu * (Dense::Identity(Nn, Nn) + d * d.transpose() / phi);
-  out.dual_c1.topRows(Y) *= kz;
-  out.dual_c1.leftCols(Y) *= kz;
-  out.dual_c2.row(0) /= sigma_r;
-  out.dual_c2.col(0) /= sigma_r;
-
-  out.taps = Eigen::Map<const Dense>(x.data(), L, p.q()) / kz;  // column i·nz + j: entry (i, j) over l
-  out.delta2 = p.t_var ? x(nt) / (kz * kz) : objective.delta * objective.delta;
-  out.dmax2 = feasibility ? objective.dmax * objective.dmax : s * sigma_r * sigma_r;
-  out.path_mu = found_feasible ? 0.0 : mu;  // a point found on the way is not centred
-  out.solve.status = infeasible ? SolveStatus::kPrimalInfeasible : SolveStatus::kOptimal;
-  out.solve.iterations = newton;
-  // objective in original units: σ_r² × the scaled one (c_t was set so that
-  // this holds for the weighted objective's t too); min δ: δ² = t'/kz²
-  const double scale = p.s_var ? sigma_r * sigma_r : 1.0 / (kz * kz);
-  out.solve.objective = objective_of(x, pt) * scale;
-  out.solve.dual_objective = (objective_of(x, pt) - p.nu * mu) * scale;
-  out.solve.message = "structured barrier: " + std::to_string(newton) + " Newton steps, final mu " + std::to_string(mu);
+  BarrierRun run(p, objective, options);
+  if (const std::string err = run.start(); !err.empty()) return fail(out, err);
+  if (const std::string err = run.follow_path(); !err.empty()) return fail(out, err);
+  if (const std::string err = run.finish(); !err.empty()) return fail(out, err);
+  run.write(out, objective, sigma_r, sigma_z / sigma_r);  // h' = kz·h, t' = kz²·t, s' = s/σ_r² with kz = σ_z/σ_r
   out.solve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -34,7 +34,7 @@
 /// On the central path Y = μ·C⁻¹ is dual feasible (the dual equality holds up
 /// to the Newton residual), with C1'⁻¹ = [P, −Q; −Qᵀ, I + R] and
 /// C2⁻¹ = [1/φ, −dᵀ/φ; −d/φ, I + d dᵀ/φ] (φ = N s − ‖d‖²): these are the
-/// dual matrices handed to identify/dual_certify.h, which makes the dual
+/// dual matrices handed to certify/dual_certify.h, which makes the dual
 /// equality exact. Nothing here is trusted: both ends are certified exactly.
 ///
 /// Objectives: min d_max² at δ, the weighted one (0 < λ < 1), and fixed

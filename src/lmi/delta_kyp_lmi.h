@@ -18,7 +18,7 @@
 /// (T_wᵀT_w ⪯ t·T_zᵀT_z) whatever the number of leading zeros of z. It is a
 /// restriction of (C1') (‖T_Δ‖ on a finite horizon can be below ‖Δ‖_∞), so
 /// bounds are sound upper bounds; the certificate still carries the exact
-/// finite-horizon ‖T_Δ‖² of the rounded taps (identify/certify.h).
+/// finite-horizon ‖T_Δ‖² of the rounded taps (certify/certify.h).
 ///
 ///   (C2)   [ n·ny·s        (c − R h)ᵀ ]
 ///          [ c − R h       I          ]  ⪰ 0   ⇔  ‖r − Z h‖² ≤ n·ny·s

@@ -30,7 +30,7 @@
 #include <string>
 
 #include "core/scalar.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "oracle/answer.h"
 #include "oracle/task.h"
 

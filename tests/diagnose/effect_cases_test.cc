@@ -12,7 +12,7 @@
 #include "diagnose/effect_ranking.h"
 #include "diagnose/window_bounds.h"
 #include "examples/effect_cases.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"

@@ -17,7 +17,7 @@
 #include "core/number_text.h"
 #include "core/sha256.h"
 #include "examples/random_case.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "support/gen_identify.h"

@@ -22,7 +22,7 @@
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "identify/alternating_identify.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"

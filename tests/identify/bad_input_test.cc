@@ -10,7 +10,7 @@
 
 #include "core/input_error.h"
 #include "identify/affine_residual.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/identify.h"
 #include "lmi/delta_form_lmi.h"
 #include "solvers/sdp_solver.h"

@@ -1,5 +1,5 @@
 // Issue 9 item 5: the weighted objective is stated on signals scaled by
-// powers of ten to RMS ~1 (identify/bound_scaling.h). Known answers:
+// powers of ten to RMS ~1 (certify/bound_scaling.h). Known answers:
 //  - by arithmetic: the exponents, and λ_orig = λ s_z²/(λ s_z² + 1 − λ);
 //  - by construction: multiplying u and y of a linear model's data by 10³
 //    multiplies z and r by exactly 10³, so the scaled programs are the same
@@ -10,8 +10,8 @@
 
 #include <cmath>
 
-#include "identify/bound_scaling.h"
-#include "identify/certify.h"
+#include "certify/bound_scaling.h"
+#include "certify/certify.h"
 #include "support/gen_identify.h"
 #include "support/scratch_dir.h"
 #include "support/siso_window_case.h"

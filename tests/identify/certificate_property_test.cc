@@ -13,7 +13,7 @@
 #include "core/file_io.h"
 #include "core/sha256.h"
 #include "data/csv_reader.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"
 #include "toeplitz/fir.h"

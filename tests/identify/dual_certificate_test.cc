@@ -13,7 +13,7 @@
 #include <cmath>
 
 #include "examples/paper_example1.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"
 #include "support/scratch_dir.h"

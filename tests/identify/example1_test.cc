@@ -16,7 +16,7 @@
 
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/identify.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"

@@ -16,7 +16,7 @@
 #include <limits>
 
 #include "identify/affine_residual.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/identify.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"

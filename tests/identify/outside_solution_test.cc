@@ -1,4 +1,4 @@
-// Theorem 2.1 solved by an outside solver (identify/outside_solution.h): the
+// Theorem 2.1 solved by an outside solver (certify/outside_solution.h): the
 // exported program, the `csdp` program's answer read back, and what a wrong
 // or foreign answer can do (at worst fail to verify, never a false claim).
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include "core/input_error.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
-#include "identify/outside_solution.h"
+#include "certify/outside_solution.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "solvers/sdpa_file.h"

@@ -18,7 +18,7 @@
 #include "data/csv_writer.h"
 #include "examples/model_literals.h"
 #include "identify/affine_residual.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"

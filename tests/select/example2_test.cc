@@ -16,7 +16,7 @@
 #include "data/csv_writer.h"
 #include "data/experiment_builder.h"
 #include "examples/paper_example2.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "identify/identify.h"
 #include "model/model_file.h"
 #include "model/simulate.h"

@@ -30,7 +30,7 @@
 #include "data/experiment_builder.h"
 #include "examples/random_case.h"
 #include "identify/affine_residual.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "model/monomial.h"

@@ -19,7 +19,7 @@
 
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "model/model_file.h"
 #include "support/fixtures.h"
 #include "support/gen_files.h"

@@ -1,7 +1,9 @@
-#include "identify/dual_certify.h"
+#include "certify/dual_certify.h"
 
 #include <chrono>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
@@ -133,6 +135,97 @@ void write_and_check(Certificate& c, const CertifyOptions& o, const std::string&
 }
 
 
+/// g on a 10⁻¹⁴ grid: entries of `column` (k·ny + i order) divided by
+/// `scale`, exactly, and their doubles.
+struct GridSignal {
+  Mat<Rational> g;
+  Mat<double> g_d;
+};
+GridSignal grid_signal(const Vec<double>& column, double scale, Eigen::Index n, Eigen::Index ny) {
+  const double unit_d = 1e-14;
+  const Rational unit = power_of_ten(-14);
+  GridSignal s{Mat<Rational>(n, ny), Mat<double>(n, ny)};
+  for (Eigen::Index k = 0; k < n; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i) {
+      s.g(k, i) = on_grid(column(k * ny + i) / scale, unit_d, unit);
+      s.g_d(k, i) = nearest_double(s.g(k, i));
+    }
+  return s;
+}
+
+/// ‖g‖² and gᵀr in double (for choosing σ).
+std::pair<double, double> g_norms(const Mat<double>& g_d, const Mat<Rational>& r) {
+  const Mat<double> r_d = nearest_double(r);
+  double gg = 0, gr = 0;
+  for (Eigen::Index k = 0; k < g_d.rows(); ++k)
+    for (Eigen::Index i = 0; i < g_d.cols(); ++i) {
+      gg += g_d(k, i) * g_d(k, i);
+      gr += g_d(k, i) * r_d(k, i);
+    }
+  return {gg, gr};
+}
+
+/// σ chosen in double (best_sigma), then rounded to 15 digits.
+Rational chosen_sigma(double trU, double trV, const std::pair<double, double>& gg_gr, Eigen::Index N, DualClaim claim,
+                      const FixedValues& f, double sigma0) {
+  const auto [gg, gr] = gg_gr;
+  const double sigma_d = best_sigma(trU, trV, gg, gr, static_cast<double>(N), claim, nearest_double(f.delta2),
+                                    nearest_double(f.dmax2), nearest_double(f.lambda), sigma0 > 0 ? sigma0 : std::sqrt(gg + 1e-300));
+  return round_to_digits(sigma_d, 15);
+}
+
+/// Y1 (normalised, symmetrised) on the 10⁻¹⁴ grid.
+Mat<Rational> grid_matrix(const Mat<double>& Y1d) {
+  const double unit_d = 1e-14;
+  const Rational unit = power_of_ten(-14);
+  const Eigen::Index P = Y1d.rows();
+  Mat<Rational> Y1(P, P);
+  for (Eigen::Index i = 0; i < P; ++i)
+    for (Eigen::Index j = i; j < P; ++j) {
+      Y1(i, j) = on_grid(0.5 * (Y1d(i, j) + Y1d(j, i)), unit_d, unit);
+      Y1(j, i) = Y1(i, j);
+    }
+  return Y1;
+}
+
+/// Step 3: Y1 projected onto Ω_l(W) = C_l(g) exactly (the dual equality of
+/// toeplitz/delta_form_dual.h), the error spread along each block diagonal.
+void project_onto_dual_equality(Mat<Rational>& Y1, const Mat<Rational>& g, const Mat<Rational>& z, Eigen::Index L,
+                                Eigen::Index ny, Eigen::Index nz) {
+  const Mat<Rational> target = fir_adjoint(g, z, L);
+  const Mat<Rational> have = block_diagonal_sums(Y1, L, ny, nz);
+  const Eigen::Index off = L * ny;
+  for (Eigen::Index l = 0; l < L; ++l)
+    for (Eigen::Index i = 0; i < ny; ++i)
+      for (Eigen::Index j = 0; j < nz; ++j) {
+        const Rational E = target(l, i * nz + j) - have(l, i * nz + j);
+        if (E == 0) continue;
+        const Rational share = E / Rational(static_cast<long>(L - l));
+        for (Eigen::Index b = 0; b + l < L; ++b) {
+          Y1((b + l) * ny + i, off + b * nz + j) += share;
+          Y1(off + b * nz + j, (b + l) * ny + i) = Y1((b + l) * ny + i, off + b * nz + j);
+        }
+      }
+}
+
+/// Step 4: Y1 + ε·I with ε from the floating λ_min, grown until the rigorous
+/// filter proves it ≻ 0; nullopt when six tries fail (`eps_out`: the last ε).
+std::optional<Mat<Rational>> with_psd_margin(const Mat<Rational>& Y1, Rational& eps_q, double& eps_out) {
+  const Eigen::Index P = Y1.rows();
+  const Mat<double> Y1f = nearest_double(Y1);
+  Eigen::SelfAdjointEigenSolver<Mat<double>> es(Y1f, Eigen::EigenvaluesOnly);
+  const double lmin = es.eigenvalues().minCoeff();
+  double eps = std::max(0.0, -lmin) * 1.5 + 8.0 * static_cast<double>(P + 2) * 0x1.0p-53 * std::max(Y1f.trace(), 1e-300) + 1e-300;
+  for (int attempt = 0; attempt < 6; ++attempt, eps *= 10) {
+    eps_q = round_up_to_digits(exact_rational_of_double(eps), 2);
+    Mat<Rational> Y1m = Y1;
+    for (Eigen::Index i = 0; i < P; ++i) Y1m(i, i) += eps_q;
+    if (run_psd_filter(Y1m).proved_pd) return Y1m;
+  }
+  eps_out = eps / 10;
+  return std::nullopt;
+}
+
 DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                const Simulation<Rational>& sim, const Mat<double>& Y1_in, const Mat<double>& Y2_in,
                                const CertifyOptions& o, const std::string& path) {
@@ -147,92 +240,36 @@ DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment
   if (!Y1_in.allFinite() || !Y2_in.allFinite()) return done("the solver's dual matrices are not finite");
   const Mat<Rational> r = exp.y - sim.output;
   const DualClaim claim = claim_of(o.objective);
-
   const FixedValues fixed = fixed_values(o, claim);
-  const Rational &delta2 = fixed.delta2, &dmax2 = fixed.dmax2, &lambda = fixed.lambda;
 
-  // 2. Normalise (the dual is homogeneous) and round to a decimal grid.
+  // 2. Normalise (the dual is homogeneous) and round to a decimal grid; 3. project exactly.
   const double scale = std::max(Y1_in.cwiseAbs().maxCoeff(), Y2_in.col(0).cwiseAbs().maxCoeff());
   if (!(scale > 0)) return done("the solver's dual matrices are zero");
-  const Mat<double> Y1d = Y1_in / scale;
-  const int digits = 14;
-  const int e = -digits;  // entries are ≤ 1 in magnitude
-  const double unit_d = std::pow(10.0, e);
-  const Rational unit = power_of_ten(e);
-  Mat<Rational> g(n, ny);
-  Mat<double> g_d(n, ny);
-  for (Eigen::Index k = 0; k < n; ++k)
-    for (Eigen::Index i = 0; i < ny; ++i) {
-      g(k, i) = on_grid(Y2_in(1 + k * ny + i, 0) / scale, unit_d, unit);
-      g_d(k, i) = nearest_double(g(k, i));
-    }
-  Mat<Rational> Y1(P, P);
-  for (Eigen::Index i = 0; i < P; ++i)
-    for (Eigen::Index j = i; j < P; ++j) {
-      Y1(i, j) = on_grid(0.5 * (Y1d(i, j) + Y1d(j, i)), unit_d, unit);
-      Y1(j, i) = Y1(i, j);
-    }
-
-  // 3. Project onto Ω_l(W) = C_l(g), exactly.
-  const Mat<Rational> target = fir_adjoint(g, sim.z, L);
-  const Mat<Rational> have = block_diagonal_sums(Y1, L, ny, nz);
-  const Eigen::Index off = L * ny;
-  for (Eigen::Index l = 0; l < L; ++l)
-    for (Eigen::Index i = 0; i < ny; ++i)
-      for (Eigen::Index j = 0; j < nz; ++j) {
-        const Rational E = target(l, i * nz + j) - have(l, i * nz + j);
-        if (E == 0) continue;
-        const Rational share = E / Rational(static_cast<long>(L - l));
-        for (Eigen::Index b = 0; b + l < L; ++b) {
-          Y1((b + l) * ny + i, off + b * nz + j) += share;
-          Y1(off + b * nz + j, (b + l) * ny + i) = Y1((b + l) * ny + i, off + b * nz + j);
-        }
-      }
-
-  // 4. PSD margin: ε·I with ε from the floating λ_min, grown until the
-  // rigorous filter proves Y1 + εI ≻ 0.
-  const Mat<double> Y1f = nearest_double(Y1);
-  Eigen::SelfAdjointEigenSolver<Mat<double>> es(Y1f, Eigen::EigenvaluesOnly);
-  const double lmin = es.eigenvalues().minCoeff();
-  const double trace = Y1f.trace();
-  double eps = std::max(0.0, -lmin) * 1.5 + 8.0 * static_cast<double>(P + 2) * 0x1.0p-53 * std::max(trace, 1e-300) + 1e-300;
-  Mat<Rational> Y1m;
-  bool pd = false;
+  GridSignal gs = grid_signal(Y2_in.col(0).tail(N), scale, n, ny);
+  Mat<Rational> Y1 = grid_matrix(Y1_in / scale);
+  project_onto_dual_equality(Y1, gs.g, sim.z, L, ny, nz);
+  // 4. PSD margin.
   Rational eps_q;
-  for (int attempt = 0; attempt < 6 && !pd; ++attempt, eps *= 10) {
-    eps_q = round_up_to_digits(exact_rational_of_double(eps), 2);
-    Y1m = Y1;
-    for (Eigen::Index i = 0; i < P; ++i) Y1m(i, i) += eps_q;
-    pd = run_psd_filter(Y1m).proved_pd;
-  }
-  if (!pd) return done("the rounded dual matrix Y1 is not positive definite even with a margin of " + double_to_text(eps / 10));
+  double eps_failed = 0;
+  std::optional<Mat<Rational>> Y1m = with_psd_margin(Y1, eps_q, eps_failed);
+  if (!Y1m) return done("the rounded dual matrix Y1 is not positive definite even with a margin of " + double_to_text(eps_failed));
 
   // 5. σ.
-  double trU = 0, trV = 0, gg = 0, gr = 0;
-  for (Eigen::Index i = 0; i < P; ++i) (i < off ? trU : trV) += nearest_double(Y1m(i, i));
-  const Mat<double> r_d = nearest_double(r);
-  for (Eigen::Index k = 0; k < n; ++k)
-    for (Eigen::Index i = 0; i < ny; ++i) {
-      gg += g_d(k, i) * g_d(k, i);
-      gr += g_d(k, i) * r_d(k, i);
-    }
-  const double sigma0 = Y2_in(0, 0) / scale;
-  const double sigma_d = best_sigma(trU, trV, gg, gr, static_cast<double>(N), claim, nearest_double(delta2),
-                                    nearest_double(dmax2), nearest_double(lambda), sigma0 > 0 ? sigma0 : std::sqrt(gg + 1e-300));
-  const Rational sigma = round_to_digits(sigma_d, 15);
+  double trU = 0, trV = 0;
+  for (Eigen::Index i = 0; i < P; ++i) (i < L * ny ? trU : trV) += nearest_double((*Y1m)(i, i));
+  const Rational sigma = chosen_sigma(trU, trV, g_norms(gs.g_d, r), N, claim, fixed, Y2_in(0, 0) / scale);
   if (!(sigma > 0)) return done("no positive sigma");
 
   // 6. The bound, exactly; the certificate; the check from the file.
-  const DualTerms<Rational> terms = dual_terms(Y1m, g, sigma, r, L);
-  const Rational bound = dual_bound(terms, claim, delta2, dmax2, lambda);
+  const Rational bound = dual_bound(dual_terms(*Y1m, gs.g, sigma, r, L), claim, fixed.delta2, fixed.dmax2, fixed.lambda);
   if (claim == DualClaim::kInvalidated && !(bound > 0))
     return done("after rounding and the PSD margin (" + double_to_text(nearest_double(eps_q)) +
                 ") the dual point no longer proves infeasibility (margin " + double_to_text(nearest_double(bound)) + ")");
   Certificate c = dual_certificate(model, claim, fixed, bound, 12);
   c.form = CertificateForm::kDualDelta;
   c.dual.horizon = L;
-  c.dual.Y1 = std::move(Y1m);
-  c.dual.g = std::move(g);
+  c.dual.Y1 = std::move(*Y1m);
+  c.dual.g = std::move(gs.g);
   c.dual.sigma = sigma;
   c.info["psd_margin"] = nearest_double(eps_q);
   c.info["dual_scale"] = scale;
@@ -240,9 +277,48 @@ DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment
   return done(out.reason);
 }
 
+/// The compact recipe of a central-path point: the taps (tiny ones zero),
+/// t = δ², μ scaled like g, x = μ to start with.
+PathDualRecipe path_recipe(const DeltaFormSolution& s, double scale) {
+  PathDualRecipe recipe;
+  const double hmax = s.taps.cwiseAbs().maxCoeff();
+  recipe.taps = Mat<Rational>(s.taps.rows(), s.taps.cols());
+  for (Eigen::Index l = 0; l < s.taps.rows(); ++l)
+    for (Eigen::Index c = 0; c < s.taps.cols(); ++c) {
+      const double h = s.taps(l, c);
+      recipe.taps(l, c) = std::fabs(h) <= 0x1.0p-80 * hmax ? Rational(0) : exact_rational_of_double(h);
+    }
+  recipe.t = exact_rational_of_double(s.delta2);
+  recipe.mu = exact_rational_of_double(s.path_mu / scale);
+  recipe.x = recipe.mu;
+  return recipe;
+}
+
+/// The floor γ = ‖E‖_F²/x (rounded up), with the filter proving U − 2γ·I ≻ 0
+/// (twice what the verifier needs: a verifier compiled elsewhere rounds U_d
+/// in other last bits). x costs x·L·nz in tr V, so it starts at the
+/// smallest value the spectrum allows: λ_min(U) ≥ μ/t (t·I − TTᵀ ⪯ t·I), so
+/// x = max(μ, 4·‖E‖²·t/μ) keeps 2γ ≤ λ_min(U)/2; it doubles while the filter
+/// cannot prove it. E depends on neither x nor σ. Empty when proved; else why not.
+std::string prove_floor(PathDualRecipe& recipe, const PathDualGrid& grid, const Rational& E_norm2) {
+  const Rational from_spectrum = Rational(4) * E_norm2 * recipe.t / recipe.mu;
+  if (from_spectrum > recipe.x) recipe.x = exact_rational_of_double(nearest_double(from_spectrum) * (1 + 1e-12));
+  std::string why;
+  for (int attempt = 0; attempt < 24; ++attempt) {
+    recipe.floor = round_up_to_digits(E_norm2 / recipe.x, 2);
+    PathDualRecipe doubled = recipe;
+    doubled.floor = recipe.floor * Rational(2);
+    const PsdResult psd = path_dual_psd(doubled, grid.U, false);
+    if (psd.verdict != PsdVerdict::kNotPsd) return "";
+    why = psd.reason;
+    recipe.x = recipe.x * Rational(2);
+  }
+  return "U - 2*u_floor*I is not proved positive definite even with x = " + double_to_text(nearest_double(recipe.x)) + " (" + why + ")";
+}
+
 /// The compact form (verify/path_dual.h) from a barrier's central-path point:
 /// the recipe is the point itself (taps, t, μ) with x = μ; g from Y2's first
-/// column on a decimal grid; the floor γ and x as commented below.
+/// column on a decimal grid; the floor γ and x as in prove_floor.
 DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                               const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
                               const std::string& path) {
@@ -260,26 +336,8 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   // g on a 10⁻¹⁴ grid relative to its largest entry; μ scaled alike (homogeneous).
   const Vec<double> g_col = s.dual_c2.col(0).tail(N);
   const double scale = std::max(g_col.cwiseAbs().maxCoeff(), 1e-300);
-  const double unit_d = 1e-14;
-  const Rational unit = power_of_ten(-14);
-  Mat<Rational> g(n, ny);
-  Mat<double> g_d(n, ny);
-  for (Eigen::Index k = 0; k < n; ++k)
-    for (Eigen::Index i = 0; i < ny; ++i) {
-      g(k, i) = on_grid(g_col(k * ny + i) / scale, unit_d, unit);
-      g_d(k, i) = nearest_double(g(k, i));
-    }
-  PathDualRecipe recipe;
-  const double hmax = s.taps.cwiseAbs().maxCoeff();
-  recipe.taps = Mat<Rational>(L, ny * nz);
-  for (Eigen::Index l = 0; l < L; ++l)
-    for (Eigen::Index c = 0; c < ny * nz; ++c) {
-      const double h = s.taps(l, c);
-      recipe.taps(l, c) = std::fabs(h) <= 0x1.0p-80 * hmax ? Rational(0) : exact_rational_of_double(h);
-    }
-  recipe.t = exact_rational_of_double(s.delta2);
-  recipe.mu = exact_rational_of_double(s.path_mu / scale);
-  recipe.x = recipe.mu;
+  GridSignal gs = grid_signal(g_col, scale, n, ny);
+  PathDualRecipe recipe = path_recipe(s, scale);
   std::string problem;
   const Mat<double> U_d = path_dual_floating_u(recipe, ny, nz, problem);
   if (!problem.empty()) return done(problem);
@@ -288,64 +346,27 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   if (!grid.problem.empty()) return done(grid.problem);
   const PathDualSums sums = path_dual_sums(recipe, grid.U, ny, nz);
   if (!sums.problem.empty()) return done(sums.problem);
-  const Mat<Rational> C = fir_adjoint(g, sim.z, L);
+  const Mat<Rational> C = fir_adjoint(gs.g, sim.z, L);
+  PathDualValue v = path_dual_value(recipe, sums, C, gs.g, Rational(1), r, ny, nz);
+  if (const std::string why = prove_floor(recipe, grid, v.E_norm2); !why.empty()) return done(why);
+  v = path_dual_value(recipe, sums, C, gs.g, Rational(1), r, ny, nz);
 
-  // The floor γ = ‖E‖_F²/x (rounded up), with the filter proving U − 2γ·I ≻ 0
-  // (twice what the verifier needs: a verifier compiled elsewhere rounds U_d
-  // in other last bits). x costs x·L·nz in tr V, so it starts at the
-  // smallest value the spectrum allows: λ_min(U) ≥ μ/t (t·I − TTᵀ ⪯ t·I), so
-  // x = max(μ, 4·‖E‖²·t/μ) keeps 2γ ≤ λ_min(U)/2; it doubles while the filter
-  // cannot prove it. E depends on neither x nor σ.
-  const Rational one(1);
-  PathDualValue v = path_dual_value(recipe, sums, C, g, one, r, ny, nz);
-  {
-    const Rational from_spectrum = Rational(4) * v.E_norm2 * recipe.t / recipe.mu;
-    if (from_spectrum > recipe.x) recipe.x = exact_rational_of_double(nearest_double(from_spectrum) * (1 + 1e-12));
-  }
-  bool ok = false;
-  std::string why;
-  for (int attempt = 0; attempt < 24 && !ok; ++attempt) {
-    recipe.floor = round_up_to_digits(v.E_norm2 / recipe.x, 2);
-    PathDualRecipe doubled = recipe;
-    doubled.floor = recipe.floor * Rational(2);
-    const PsdResult psd = path_dual_psd(doubled, grid.U, false);
-    ok = psd.verdict != PsdVerdict::kNotPsd;
-    if (!ok) {
-      why = psd.reason;
-      recipe.x = recipe.x * Rational(2);
-    }
-  }
-  if (!ok) return done("U - 2*u_floor*I is not proved positive definite even with x = " + double_to_text(nearest_double(recipe.x)) + " (" + why + ")");
-  v = path_dual_value(recipe, sums, C, g, one, r, ny, nz);
-
-  // σ, then the bound exactly.
-  double gg = 0, gr = 0;
-  const Mat<double> r_d = nearest_double(r);
-  for (Eigen::Index k = 0; k < n; ++k)
-    for (Eigen::Index i = 0; i < ny; ++i) {
-      gg += g_d(k, i) * g_d(k, i);
-      gr += g_d(k, i) * r_d(k, i);
-    }
-  // β(σ = 1) = −(tr V + ‖g‖² + 2gᵀr) gives tr V.
-  const double trV = nearest_double(-v.terms.beta) - gg - 2 * gr;
-  const double sigma0 = s.dual_c2(0, 0) / scale;
-  const double sigma_d = best_sigma(nearest_double(v.terms.trace_U), trV, gg, gr, static_cast<double>(N), claim,
-                                    nearest_double(fixed.delta2), nearest_double(fixed.dmax2), nearest_double(fixed.lambda),
-                                    sigma0 > 0 ? sigma0 : std::sqrt(gg + 1e-300));
-  const Rational sigma = round_to_digits(sigma_d, 15);
+  // σ (β(σ = 1) = −(tr V + ‖g‖² + 2gᵀr) gives tr V), then the bound exactly.
+  const std::pair<double, double> gg_gr = g_norms(gs.g_d, r);
+  const double trV = nearest_double(-v.terms.beta) - gg_gr.first - 2 * gg_gr.second;
+  const Rational sigma = chosen_sigma(nearest_double(v.terms.trace_U), trV, gg_gr, N, claim, fixed, s.dual_c2(0, 0) / scale);
   if (!(sigma > 0)) return done("no positive sigma");
-  v = path_dual_value(recipe, sums, C, g, sigma, r, ny, nz);
+  v = path_dual_value(recipe, sums, C, gs.g, sigma, r, ny, nz);
   const Rational bound = dual_bound(v.terms, claim, fixed.delta2, fixed.dmax2, fixed.lambda);
   if (claim == DualClaim::kInvalidated && !(bound > 0))
-    return done("the compact dual point does not prove infeasibility (margin " +
-                double_to_text(nearest_double(bound)) + ")");
+    return done("the compact dual point does not prove infeasibility (margin " + double_to_text(nearest_double(bound)) + ")");
   // The claimed lower end 10⁻⁹ (relative) below the bound: a verifier built
   // elsewhere rebuilds U with other last bits.
   const Rational slack = bound > 0 ? bound * power_of_ten(-9) : Rational(0);
   Certificate c = dual_certificate(model, claim, fixed, bound - slack, 12);
   c.form = CertificateForm::kDualDeltaPath;
   c.dual.horizon = L;
-  c.dual.g = std::move(g);
+  c.dual.g = std::move(gs.g);
   c.dual.sigma = sigma;
   c.info["dual_scale"] = scale;
   c.info["x_over_mu"] = nearest_double(recipe.x / recipe.mu);

@@ -1,4 +1,4 @@
-#include "identify/outside_solution.h"
+#include "certify/outside_solution.h"
 
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 /// certify_fixed_model states it to its own solver (same signals, scaling,
 /// tightened fixed bounds, --max-taps K; the structured SISO solver is not an
 /// SDP, so the export always writes the SDP). The outside answer is only a
-/// hint: its taps go through steps 3–6 of identify/certify.h (rounded; w, d,
+/// hint: its taps go through steps 3–6 of certify/certify.h (rounded; w, d,
 /// δ², d_max² computed exactly; the certificate checked again by the
 /// verifier), so a wrong or foreign solution can at worst fail to verify.
 
@@ -19,7 +19,7 @@
 
 #include "core/scalar.h"
 #include "data/experiment.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "lmi/delta_form_lmi.h"
 #include "model/lpv_model.h"
 

@@ -22,7 +22,7 @@
 
 #include "core/scalar.h"
 #include "data/experiment.h"
-#include "identify/bound_scaling.h"
+#include "certify/bound_scaling.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "model/simulate.h"
@@ -73,7 +73,7 @@ struct CertifyOptions {
   std::function<void(const std::string&)> progress;
   long full_horizon_limit = 400;
   /// A weighted objective λδ² + (1−λ)d_max² is meant for z and y scaled by
-  /// powers of ten to RMS ~1 (identify/bound_scaling.h); the certificate
+  /// powers of ten to RMS ~1 (certify/bound_scaling.h); the certificate
   /// stays in original units. Other objectives are unaffected.
   bool scale_signals = false;
 };
@@ -125,7 +125,7 @@ struct CertifiedBounds {
 BoundObjective solver_objective(BoundObjective objective);
 
 /// With CertifyOptions::scale_signals, the options with the weighted
-/// objective mapped to original units (identify/bound_scaling.h; `scales`
+/// objective mapped to original units (certify/bound_scaling.h; `scales`
 /// receives the scales); otherwise `options` unchanged. `exp` has its
 /// state-scheduling columns, `sim` is its exact simulation.
 CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<Rational>& model,

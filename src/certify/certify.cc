@@ -1,4 +1,4 @@
-#include "identify/certify.h"
+#include "certify/certify.h"
 
 #include <chrono>
 #include <cmath>
@@ -13,10 +13,10 @@
 #include "data/csv_reader.h"
 #include "lmi/delta_form_barrier.h"
 #include "lmi/delta_form_lmi.h"
-#include "lmi/delta_kyp_lmi.h"
+#include "lmi/delta_form_solve.h"
 #include "lmi/relaxed_bmi_lmi.h"
-#include "identify/bound_scaling.h"
-#include "identify/dual_certify.h"
+#include "certify/bound_scaling.h"
+#include "certify/dual_certify.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
@@ -214,44 +214,6 @@ Rational objective_at(const BoundObjective& obj, const Rational& delta2, const R
 
 namespace {
 
-/// One Δ-form (or KYP) solve with K taps (0: full horizon), dual matrices
-/// requested when the caller wants a dual certificate.
-DeltaFormSolution solve_for_certificate(const Simulation<Rational>& sim, const Mat<Rational>& r, Eigen::Index n,
-                                        const BoundObjective& obj, const CertifyOptions& o, SdpSolver& solver,
-                                        long taps, bool kyp, bool want_dual) {
-  SolverOptions so = o.solver;
-  so.want_dual = want_dual;
-  const auto tell = [&](const std::string& s) {
-    if (o.progress) o.progress(s);
-  };
-  const Eigen::Index L = n - leading_zero_samples(sim.z);
-  if (!kyp && taps == 0 && o.structured && barrier_applies(nearest_double(sim.z), nearest_double(r), obj)) {
-    // Full horizon: the structured barrier (lmi/delta_form_barrier.h);
-    // on a numerical failure the general SDP backend takes over.
-    tell("solving Theorem 2.1 on the full horizon (" + std::to_string(L) + " taps) with the structured barrier");
-    DeltaFormSolution fast = solve_delta_form_barrier(nearest_double(sim.z), nearest_double(r), obj);
-    if (fast.solve.status != SolveStatus::kBackendError) return fast;
-    tell(fast.solve.message + "; solving again with " + solver.name());
-    DeltaFormSolution slow = solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
-    slow.solve.message += (slow.solve.message.empty() ? "" : "; ") + fast.solve.message + " (fell back to " + solver.name() + ")";
-    slow.solve.seconds += fast.solve.seconds;
-    return slow;
-  }
-  tell("solving Theorem 2.1 with " + solver.name() + " (" + (taps == 0 ? std::to_string(L) : std::to_string(taps)) +
-       " taps" + (kyp ? ", KYP" : "") + ")");
-  if (!kyp) return solve_delta_form(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
-  // (KYP) bounds ‖Δ‖_∞ ≥ ‖T_Δ‖ on any horizon: small program, same certificate.
-  const DeltaKypSolution k = solve_delta_kyp(nearest_double(sim.z), nearest_double(r), obj, solver, so, taps);
-  DeltaFormSolution sol;
-  sol.solve = k.solve;
-  sol.leading_zeros = leading_zero_samples(sim.z);
-  sol.horizon = n - sol.leading_zeros;
-  sol.taps = k.taps.topRows(std::min<Eigen::Index>(k.taps.rows(), sol.horizon));
-  sol.delta2 = k.delta2;
-  sol.dmax2 = k.dmax2;
-  return sol;
-}
-
 std::string status_reason(const DeltaFormSolution& sol, const char* what) {
   return std::string("the ") + what + " solve of Theorem 2.1 ended with status " + to_string(sol.solve.status) +
          (sol.solve.message.empty() ? "" : ": " + sol.solve.message);
@@ -313,124 +275,156 @@ double relative_gap(const CertifiedBounds& b) {
   return nearest_double((b.upper - b.lower.value) / b.upper);
 }
 
+namespace {
+
+/// What the stages of certify_fixed_model share: the exact signals (and
+/// their doubles, converted once), the options in original units, and the
+/// solve plan (K taps or the full horizon; Δ form or KYP).
+struct CertifyRun {
+  const LpvModel<Rational>& model;
+  const ExactSignals& exact;
+  DeltaFormSignals signals;
+  CertifyOptions o;
+  BoundObjective objective;  ///< solver_objective(o.objective)
+  SdpSolver& solver;
+  bool kyp = false, feasibility = false;
+  long K = 0;  ///< taps of the first solve; 0: the full horizon
+
+  /// One solve: K taps (0: full horizon), KYP or not, with dual matrices when wanted.
+  DeltaFormSolution solve(long taps, bool kyp_form, bool want_dual) const {
+    DeltaFormRequest q;
+    q.method = kyp_form ? DeltaFormMethod::kKyp : o.structured ? DeltaFormMethod::kStructured : DeltaFormMethod::kSdp;
+    q.taps = taps;
+    q.solver = o.solver;
+    q.solver.want_dual = want_dual;
+    q.progress = o.progress;
+    return solve_delta_form(signals, objective, q, solver);
+  }
+};
+
+/// Steps 3–6 on a solve: the primal certificate (the upper end) in `b`.
+void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, CertifiedBounds& b) {
+  b.solve_status = sol.solve.status;
+  b.solve_seconds += sol.solve.seconds;
+  b.taps = sol.taps.rows();
+  b.horizon = sol.horizon;
+  if (!has_solution(sol.solve.status)) {
+    b.reason = status_reason(sol, sol.taps.rows() < sol.horizon && sol.taps.rows() > 0 ? "restricted (K-tap)" : "Delta-form");
+    return;
+  }
+  b.delta2_solver = sol.delta2;
+  if (run.o.progress)
+    run.o.progress("solved in " + double_to_text(std::round(sol.solve.seconds * 10) / 10) + " s; checking the upper end exactly");
+  certify_taps(run.model, run.exact.sim, run.exact.r, sol.taps, sol.horizon, run.o, run.solver.name(), b);
+  if (b.verified) b.upper = objective_at(run.o.objective, b.delta2, b.dmax2);
+}
+
+/// The lower end from the dual of a solve (lifted to the full horizon when K < L); keeps the best.
+void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, CertifiedBounds& out) {
+  if (s.dual_c1.size() == 0) return;
+  if (run.o.progress) run.o.progress("building and checking the lower end's dual certificate");
+  const DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, s, run.o, lower_certificate_path(run.o.certificate_path));
+  if (d.verified && (!out.lower.verified || d.bound > out.lower.value)) {
+    out.lower.verified = true;
+    out.lower.value = d.bound;
+    out.lower.certificate = d.certificate_path;
+    out.lower.verifier_details = d.verifier_details + (d.note.empty() ? "" : " (" + d.note + ")");
+    out.lower.reason.clear();
+  } else if (!out.lower.verified) {
+    out.lower.reason = d.reason;
+  }
+  out.lower.seconds += d.seconds;
+}
+
+/// Fixed bounds without a primal certificate: a restricted program's
+/// infeasibility decides nothing, so only a primal or an exactly checked
+/// dual of the FULL-horizon problem may ("invalidated", at the certificate path).
+void decide_fixed_bounds(const CertifyRun& run, const DeltaFormSolution& first, CertifiedBounds& out) {
+  if (out.verified || !run.o.lower_end || run.kyp) return;
+  DeltaFormSolution full = first;
+  if (run.K != 0) {
+    full = run.solve(0, false, true);
+    CertifiedBounds again;
+    certify_upper_end(run, full, again);
+    again.solve_seconds += out.solve_seconds;
+    if (again.verified || !has_solution(full.solve.status)) {
+      const std::string restricted = out.reason;
+      out = again;
+      out.full_horizon = true;
+      if (!again.verified && !restricted.empty())
+        out.reason = again.reason + " (first, with " + std::to_string(run.K) + " taps: " + restricted + ")";
+    }
+  } else if (full.dual_c1.size() == 0) {
+    full = run.solve(0, false, true);
+  }
+  if (out.verified || full.solve.status != SolveStatus::kPrimalInfeasible || full.dual_c1.size() == 0) return;
+  if (run.o.progress) run.o.progress("infeasible: building and checking the dual certificate of invalidation");
+  const DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, full, run.o, run.o.certificate_path);
+  out.invalidated = d.verified;
+  out.lower.seconds = d.seconds;
+  out.lower.verifier_details = d.verifier_details;
+  out.lower.certificate = d.certificate_path;
+  if (!d.verified) out.reason += "; no exact invalidation certificate: " + d.reason;
+}
+
+/// An optimised bound: the lower end from the first solve's dual (KYP has
+/// none: its Δ-form twin is solved for it); when the gap stays above
+/// gap_target after a K-tap solve and L is small enough, the full horizon
+/// too (its primal may lower the upper end, its dual raises the lower end).
+void bracket_optimum(const CertifyRun& run, const DeltaFormSolution& first, CertifiedBounds& out) {
+  if (run.kyp) {
+    const DeltaFormSolution twin = run.solve(run.K, false, true);
+    out.solve_seconds += twin.solve.seconds;
+    certify_lower_end(run, twin, out);
+  } else {
+    certify_lower_end(run, first, out);
+  }
+  const double gap = relative_gap(out);
+  if (run.K == 0 || run.exact.horizon > run.o.full_horizon_limit || gap <= run.o.gap_target) return;
+  const DeltaFormSolution full = run.solve(0, false, true);
+  CertifiedBounds better;
+  certify_upper_end(run, full, better);
+  out.solve_seconds += full.solve.seconds;
+  if (better.verified && (!out.verified || better.upper < out.upper)) {
+    better.solve_seconds = out.solve_seconds;
+    better.lower = out.lower;
+    out = better;
+  }
+  out.full_horizon = true;
+  certify_lower_end(run, full, out);
+}
+
+}  // namespace
+
 CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                     const CertifyOptions& options, SdpSolver& solver) {
   const auto t0 = std::chrono::steady_clock::now();
-  CertifiedBounds out;
-  // 1. Exact signals.
+  // 1. Exact signals, and their doubles once.
   const ExactSignals es = exact_signals(model, exp_in, options.certificate_path);
-  const Experiment<Rational>& exp = es.exp;
-  const Simulation<Rational>& sim = es.sim;
-  const Mat<Rational>& r = es.r;
-  const Eigen::Index n = es.n, L = es.horizon;
-  if (L == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(sim.z));  // throws the usual InputError
-  // A weighted objective stated on signals scaled to unit size (identify/
+  if (es.horizon == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(es.sim.z));  // throws the usual InputError
+  // A weighted objective stated on signals scaled to unit size (certify/
   // bound_scaling.h): the same program in original units with λ_orig.
   SignalScales scales;
-  const CertifyOptions o = in_original_units(options, model, sim, exp, &scales);
+  CertifyRun run{model, es, {nearest_double(es.sim.z), nearest_double(es.r)}, in_original_units(options, model, es.sim, es.exp, &scales),
+                 BoundObjective{}, solver};
+  run.objective = solver_objective(run.o.objective);
+  run.kyp = run.o.delta_norm == DeltaNorm::kKyp;
+  run.feasibility = run.o.objective.kind == BoundObjective::Kind::kFeasibility;
+  if (run.kyp && run.o.max_taps <= 0) throw InputError("certify: the KYP Delta form needs a finite number of taps (--max-taps > 0)");
+  // The structured full-horizon solve is cheaper than a K-tap SDP and exact for the horizon.
+  const bool structured = run.o.structured && !run.kyp && barrier_applies(Mat<double>::Ones(1, 1), Mat<double>::Ones(1, 1), run.objective);
+  run.K = !structured && run.o.max_taps > 0 && run.o.max_taps < es.horizon ? run.o.max_taps : 0;
 
-  // 2. Δ form in floating point.
-  const BoundObjective obj = solver_objective(o.objective);
-  const bool kyp = o.delta_norm == DeltaNorm::kKyp;
-  if (kyp && o.max_taps <= 0) throw InputError("certify: the KYP Delta form needs a finite number of taps (--max-taps > 0)");
-  const bool feasibility = o.objective.kind == BoundObjective::Kind::kFeasibility;
-  // The structured full-horizon solver (SISO and MIMO) is cheaper than a K-tap SDP and exact for the horizon.
-  const bool structured = o.structured && !kyp &&
-                          barrier_applies(Mat<double>::Ones(1, 1), Mat<double>::Ones(1, 1), obj);
-  const long K = !structured && o.max_taps > 0 && o.max_taps < L ? o.max_taps : 0;  // 0: the full horizon
-  const bool dual_here = o.lower_end && !kyp && !feasibility;
-
-  // 3–6. The primal certificate (upper end) from the K-tap solve.
-  const auto primal = [&](const DeltaFormSolution& sol, CertifiedBounds& b) {
-    b.solve_status = sol.solve.status;
-    b.solve_seconds += sol.solve.seconds;
-    b.taps = sol.taps.rows();
-    b.horizon = sol.horizon;
-    if (!has_solution(sol.solve.status)) {
-      b.reason = status_reason(sol, sol.taps.rows() < sol.horizon && sol.taps.rows() > 0 ? "restricted (K-tap)" : "Delta-form");
-      return;
-    }
-    b.delta2_solver = sol.delta2;
-    if (o.progress) o.progress("solved in " + double_to_text(std::round(sol.solve.seconds * 10) / 10) + " s; checking the upper end exactly");
-    certify_taps(model, sim, r, sol.taps, sol.horizon, o, solver.name(), b);
-    if (b.verified) b.upper = objective_at(o.objective, b.delta2, b.dmax2);
-  };
-  DeltaFormSolution sol = solve_for_certificate(sim, r, n, obj, o, solver, K, kyp, dual_here);
-  primal(sol, out);
-  out.full_horizon = K == 0;
-
-  const auto lower_from = [&](const DeltaFormSolution& s) {
-    if (s.dual_c1.size() == 0) return;
-    if (o.progress) o.progress("building and checking the lower end's dual certificate");
-    const DualOutcome d = certify_dual(model, exp, sim, s, o, lower_certificate_path(o.certificate_path));
-    if (d.verified && (!out.lower.verified || d.bound > out.lower.value)) {
-      out.lower.verified = true;
-      out.lower.value = d.bound;
-      out.lower.certificate = d.certificate_path;
-      out.lower.verifier_details = d.verifier_details + (d.note.empty() ? "" : " (" + d.note + ")");
-      out.lower.reason.clear();
-    } else if (!out.lower.verified) {
-      out.lower.reason = d.reason;
-    }
-    out.lower.seconds += d.seconds;
-  };
-
-  if (feasibility) {
-    // A restricted program's infeasibility decides nothing: only a primal or
-    // an exactly checked dual of the FULL-horizon problem may.
-    if (!out.verified && o.lower_end && !kyp && o.objective.kind == BoundObjective::Kind::kFeasibility) {
-      DeltaFormSolution full = sol;
-      if (K != 0 || kyp) {
-        full = solve_for_certificate(sim, r, n, obj, o, solver, 0, false, true);
-        CertifiedBounds again;
-        primal(full, again);
-        again.solve_seconds += out.solve_seconds;
-        if (again.verified || !has_solution(full.solve.status)) {
-          const std::string first = out.reason;
-          out = again;
-          out.full_horizon = true;
-          if (!again.verified && !first.empty()) out.reason = again.reason + " (first, with " + std::to_string(K) + " taps: " + first + ")";
-        }
-      } else if (full.dual_c1.size() == 0) {
-        full = solve_for_certificate(sim, r, n, obj, o, solver, 0, false, true);
-      }
-      if (!out.verified && full.solve.status == SolveStatus::kPrimalInfeasible && full.dual_c1.size() > 0) {
-        if (o.progress) o.progress("infeasible: building and checking the dual certificate of invalidation");
-        const DualOutcome d = certify_dual(model, exp, sim, full, o, o.certificate_path);
-        out.invalidated = d.verified;
-        out.lower.seconds = d.seconds;
-        out.lower.verifier_details = d.verifier_details;
-        out.lower.certificate = d.certificate_path;
-        if (!d.verified) out.reason += "; no exact invalidation certificate: " + d.reason;
-      }
-    }
-  } else if (o.lower_end) {
-    // Lower end: the dual of this solve (lifted to the full horizon when K < L).
-    if (kyp) {
-      const DeltaFormSolution s2 = solve_for_certificate(sim, r, n, obj, o, solver, K, false, true);
-      out.solve_seconds += s2.solve.seconds;
-      lower_from(s2);
-    } else {
-      lower_from(sol);
-    }
-    const double gap = relative_gap(out);
-    if (K != 0 && L <= o.full_horizon_limit && !(gap <= o.gap_target)) {
-      const DeltaFormSolution full = solve_for_certificate(sim, r, n, obj, o, solver, 0, false, true);
-      CertifiedBounds better;
-      primal(full, better);
-      out.solve_seconds += full.solve.seconds;
-      if (better.verified && (!out.verified || better.upper < out.upper)) {
-        better.solve_seconds = out.solve_seconds;
-        better.lower = out.lower;
-        out = better;
-      }
-      out.full_horizon = true;
-      lower_from(full);
-    }
-  } else {
-    out.lower.reason = "not requested";
-  }
-  if (kyp && feasibility && !out.verified) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
+  // 2–6. The first solve and its primal certificate (the upper end).
+  CertifiedBounds out;
+  const DeltaFormSolution first = run.solve(run.K, run.kyp, run.o.lower_end && !run.kyp && !run.feasibility);
+  certify_upper_end(run, first, out);
+  out.full_horizon = run.K == 0;
+  // Then the lower end, or the verdict at fixed bounds.
+  if (run.feasibility) decide_fixed_bounds(run, first, out);
+  else if (run.o.lower_end) bracket_optimum(run, first, out);
+  else out.lower.reason = "not requested";
+  if (run.kyp && run.feasibility && !out.verified) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
   out.scales = scales;
   out.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

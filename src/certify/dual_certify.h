@@ -22,7 +22,7 @@
 
 #include "core/scalar.h"
 #include "data/experiment.h"
-#include "identify/certify.h"
+#include "certify/certify.h"
 #include "lmi/delta_form_lmi.h"
 #include "model/lpv_model.h"
 #include "model/simulate.h"

@@ -1,4 +1,4 @@
-#include "identify/bound_scaling.h"
+#include "certify/bound_scaling.h"
 
 #include <algorithm>
 #include <cmath>

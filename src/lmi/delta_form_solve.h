@@ -1,0 +1,42 @@
+#pragma once
+/// The one entry to Theorem 2.1's Δ form in floating point (eq. 11–12 with
+/// w = Δ ∗ z, SPEC §4): which solver runs, and the fall-back between them.
+///
+///  - kStructured: on the full horizon (taps = 0) and where the structured
+///    barrier applies (lmi/delta_form_barrier.h: ny = nz = 1), the barrier;
+///    on its numerical failure the SDP backend solves the same program (the
+///    message says so). Otherwise as kSdp.
+///  - kSdp: the K-tap (or full-horizon, taps = 0) SDP of lmi/delta_form_lmi.h.
+///  - kKyp: ‖Δ‖_∞ by the bounded real lemma (lmi/delta_kyp_lmi.h), K taps;
+///    ‖Δ‖_∞ ≥ ‖T_Δ‖ on any horizon, so its taps give the same certificate.
+/// Every answer is a DeltaFormSolution in original units.
+
+#include <functional>
+#include <string>
+
+#include "core/scalar.h"
+#include "lmi/bound_objective.h"
+#include "lmi/delta_form_lmi.h"
+#include "solvers/sdp_solver.h"
+
+namespace lpvid {
+
+enum class DeltaFormMethod { kStructured, kSdp, kKyp };
+
+/// z (n × nz) and r = y − ŷ − Φ (n × ny) as doubles, converted once from
+/// the exact signals.
+struct DeltaFormSignals {
+  Mat<double> z, r;
+};
+
+struct DeltaFormRequest {
+  DeltaFormMethod method = DeltaFormMethod::kStructured;
+  long taps = 0;  ///< K; 0: the full horizon L = n − (leading zero samples of z)
+  SolverOptions solver;
+  std::function<void(const std::string&)> progress;  ///< one line per solve and fall-back; unset: silent
+};
+
+DeltaFormSolution solve_delta_form(const DeltaFormSignals& signals, const BoundObjective& objective,
+                                   const DeltaFormRequest& request, SdpSolver& solver);
+
+}  // namespace lpvid
