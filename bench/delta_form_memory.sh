@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Peak memory and time of `lpvid-verify certificate` on a Δ-form certificate
-# with a long horizon (issue 10: "n = 3000 certificates need 3.2 GB").
+# with a long horizon (n = 3000 certificates were reported to need 3.2 GB).
 # The SDP of `lpvid invalidate` does not reach n = 3000 on this machine (CSDP
 # used 10 GB and > 20 min before it was stopped), so the certificate is
 # written directly: Example 1 data from `lpvid generate example1 --n N`, the

@@ -1,5 +1,5 @@
-// The generated analogues of the real records (issue 18 item 4,
-// src/examples/plant_analogues.h) through the diagnose pipeline, as a table:
+// The generated analogues of the real records (src/examples/plant_analogues.h)
+// through the diagnose pipeline, as a table:
 //   linear start  fit-linear --order auto (orders 1..5, scored on the last 30 %)
 //   selection     4 blocked folds of the estimation record (diagnose/fold_plan.h)
 //   test          a separate record, scored once: x0 from the warm-up, RMS over the rest

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times the hostile inputs of issue 10 against the built binaries and prints a
+# Times hostile and mistaken inputs against the built binaries and prints a
 # table: case, exit code, wall seconds, first line of the message. Every case
 # must end within 10 s with its documented exit code (README "Exit codes").
 #   bash bench/hostile_inputs.sh [build-dir]      (default: build)

@@ -1,4 +1,4 @@
-// Identification benchmark (issue 3): time to identify (Theorem 3.1) and to
+// Identification benchmark: time to identify (Theorem 3.1) and to
 // certify the identified model (exact check of the written certificate), for
 // SISO and 2×2 LPV systems at n = 50, 100, 200, 400, per method and backend.
 // Prints a table; not a test.

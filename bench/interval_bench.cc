@@ -1,4 +1,4 @@
-// Certified intervals and invalidation (issue 8, item 6): for SISO n = 100,
+// Certified intervals and invalidation: for SISO n = 100,
 // 200, 400 and the 2×2 Example 1 at n = 60, 100, the time to certify the
 // optimum's interval [lower, upper] (min d_max² at a fixed δ), the time the
 // verifier takes for each certificate kind, the interval's relative gap, and
@@ -55,7 +55,7 @@ void write_data(const std::string& path, const LpvModel<Rational>& m, const Expe
   write_csv(path, cols);
 }
 
-/// A 3×3 case (ny = nz = 3, for the issue's 3×3 rows until Example 2 exists):
+/// A 3×3 case (ny = nz = 3, for the targets' 3×3 rows until Example 2 exists):
 /// a stable LTI model with additive uncertainty, u ~ N(0, I), y = ŷ + a
 /// delayed, mixed part of z (a Δ of norm ≈ 0.4) + noise U(−0.002, 0.002).
 void mimo3_case(int n, const std::filesystem::path& dir, LpvModel<Rational>* model, Experiment<Rational>* exp) {

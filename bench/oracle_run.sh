@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Times `lpvid oracle` on N random cases against the README's ten-line outside
 # implementation (examples/oracle/my_impl.py, which itself runs lpvid), and
-# prints the oracle's table and the wall time. Target (issue: lpvid as the
+# prints the oracle's table and the wall time. Target (lpvid as the
 # oracle): 100 SISO cases with n <= 200 within 5 minutes on 2 cores.
 #
 #   bash bench/oracle_run.sh [BUILD_DIR] [CASES] [extra oracle flags...]

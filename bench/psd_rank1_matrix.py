@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes M = v v^T + s * 10^-e * I (s = -1 or +1) for `lpvid-verify psd`.
 
-The hard cases of issue 10: with s = -1 the matrix is NOT_PSD (for x with
+The hard cases for the exact decision: with s = -1 the matrix is NOT_PSD (for x with
 x.v = 0, x^T M x = -10^-e |x|^2 < 0) but every floating-point view of it is
 the rank-1 matrix v v^T, so the filter finds no negative direction and the
 full exact path needs thousands of primes; with s = +1 it is PD (v v^T is PSD

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Peak memory and time of `lpvid-verify certificate` on paper-mode (form "w")
-# certificates of the paper's Example 1 for growing n (issue 10, item 2).
+# certificates of the paper's Example 1 for growing n.
 # For each n: `lpvid generate example1 --n N`, then `lpvid invalidate
 # --toeplitz paper` with the true model writes the certificate (the SDP takes
 # most of the time: ~30 s at n = 100), then every verifier given is run under

@@ -1,5 +1,5 @@
-# Install rules and the CMake package `lpvid` (issue 10 item 4: a library for
-# other projects): `cmake --install build --prefix P`, then in another project
+# Install rules and the CMake package `lpvid` (a library for other
+# projects): `cmake --install build --prefix P`, then in another project
 # `find_package(lpvid CONFIG REQUIRED)` and link lpvid::core, lpvid::verify or
 # lpvid::lib. Kept in its own file, included at the end of the top-level one,
 # so that the target definitions there stay as they are: what installing

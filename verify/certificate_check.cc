@@ -93,7 +93,7 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   if (c.model.offset.values.empty() && !c.model.offset.basis.empty())
     return invalid_verdict("the model still has an unknown offset (offset.values missing)");
   if (c.delta2 < 0 || c.dmax2 < 0) return invalid_verdict("delta2 and dmax2 must be >= 0");
-  // a state offset E(ρ) (issue 18) is part of the exact simulation below; T_G12·T_u cannot hold it
+  // a state offset E(ρ) is part of the exact simulation below; T_G12·T_u cannot hold it
   if (c.mode == ToeplitzMode::kPaper && has_state_offset(c.model))
     return invalid_verdict("toeplitz mode \"paper\" does not support state_offset (T_z = T_G12 T_u drops E(rho))");
 

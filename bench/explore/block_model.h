@@ -1,7 +1,7 @@
 #pragma once
 /// The linear starting model (observer_form.h) with the candidate effects of
 /// SPEC §6/§8 around it, simulated in free run and fitted by output error.
-/// This is the evidence engine of issue 4 item 7 (bench/effect_explore.cc):
+/// This is the evidence engine of bench/effect_explore.cc:
 /// which effect, added to the linear model, lowers the validation error.
 ///
 ///   v_k  = u_{k−d}                                   input delay d (input_delay)

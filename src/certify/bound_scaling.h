@@ -1,6 +1,6 @@
 #pragma once
-/// Signals scaled to unit size before the bound search (issue 9 item 5;
-/// docs/bound_scaling.md has the derivation).
+/// Signals scaled to unit size before the bound search (docs/bound_scaling.md
+/// has the derivation).
 ///
 /// Theorem 2.1 in the Δ form (paper eq. 4–7 with G11 = 0, SPEC §4; lmi/
 /// delta_form_lmi.h) sees the data only through z (the uncertainty channel's

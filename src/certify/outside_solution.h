@@ -1,6 +1,6 @@
 #pragma once
-/// Theorem 2.1 for a fixed model, solved by an outside SDP solver (issue 10,
-/// item 4). The round trip, from the README:
+/// Theorem 2.1 for a fixed model, solved by an outside SDP solver.
+/// The round trip, from the README:
 ///
 ///     lpvid invalidate … --write-sdpa P.dat-s      export_theorem21_program: P.dat-s and P.dat-s.json
 ///     csdp P.dat-s P.sol                           any solver that reads SDPA sparse files

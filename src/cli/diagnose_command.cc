@@ -1,5 +1,5 @@
 // lpvid diagnose: residual → missing effect → better model, before/after
-// (SPEC §6, §8; issue 4). See src/diagnose/effect_ranking.h for the method.
+// (SPEC §6, §8). See src/diagnose/effect_ranking.h for the method.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -217,7 +217,7 @@ int run_diagnose(DiagnoseArgs& a) {
   o.certify = certify_options(a.common, in.objective);  // rows: set per window
   o.certify.progress = nullptr;  // windows run in parallel: diagnose prints its own progress
   // Many windows: the lower end comes from the K-tap solve's dual lifted to
-  // the full horizon, without the extra full-horizon solve (issue 8).
+  // the full horizon, without the extra full-horizon solve.
   o.certify.full_horizon_limit = 0;
   o.certify.lower_end = a.lower_ends;
   o.certify.certificate_path = certificate_path(a.common);

@@ -1,6 +1,6 @@
-// lpvid fit-linear: the linear starting model of diagnose (SPEC §6; issue 4
-// item 7): ARX, then output-error refinement (fit/linear_fit.h), written
-// as an lpvid-model/1 file with "scheduling": [].
+// lpvid fit-linear: the linear starting model of diagnose (SPEC §6): ARX,
+// then output-error refinement (fit/linear_fit.h), written as an
+// lpvid-model/1 file with "scheduling": [].
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -78,10 +78,11 @@ int run_fit_linear(const FitLinearArgs& a) {
   report["command"] = "fit-linear";
   std::optional<LinearFit> chosen;
   if (order == 0) {
-    // The order is chosen on selection data (issue 9 item 4): the validation
-    // data given here (the benchmark's held-out estimation rows in the demo),
-    // else the last third of the estimation rows, fitted on the first two
-    // thirds. Never on test data: fit-linear has no test role.
+    // The order is chosen on selection data, not on the rows it was fitted
+    // on (a higher order always fits those better): the validation data
+    // given here (the benchmark's held-out estimation rows in the demo), else
+    // the last third of the estimation rows, fitted on the first two thirds.
+    // Never on test data: fit-linear has no test role.
     const Eigen::Index cut = val ? est.n() : est.n() * 2 / 3;
     const Experiment<double> fit_rows = val ? est : select_rows(est, 0, cut);
     const Experiment<double> held_out = val ? *val : select_rows(est, cut, est.n());

@@ -82,7 +82,7 @@ int run_identify(IdentifyArgs& a) {
     write_json(a.common.report_path, report);
     const bool infeasible = res.status == SolveStatus::kPrimalInfeasible;
     // The relaxation (and the alternating method) are restrictions of the
-    // BMI: their infeasibility says nothing about the model class (issue 8).
+    // BMI: their infeasibility says nothing about the model class.
     if (infeasible) {
       report["status"] = "undecided";
       write_json(a.common.report_path, report);

@@ -37,8 +37,9 @@ nlohmann::ordered_json theta_json(const LpvModel<double>& model, const Parameter
 /// Writes JSON to path (if non-empty); throws InputError when it cannot.
 void write_json(const std::string& path, const nlohmann::ordered_json& j);
 
-/// The certified interval of the objective (issue 8): lower, upper,
-/// relative_gap, lower_verified, upper_verified, the lower end's certificate.
+/// The certified interval of the objective (the upper end from a primal
+/// certificate, the lower end from a dual one): lower, upper, relative_gap,
+/// lower_verified, upper_verified, the lower end's certificate.
 nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObjective& objective);
 
 /// Readable lines for the bounds ("delta <= ... (verified)").

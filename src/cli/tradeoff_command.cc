@@ -1,6 +1,7 @@
-// lpvid tradeoff: the delta–dmax trade-off curve (SPEC §4 last item; the
-// issue's "identify --tradeoff"): identify and certify for each lambda of a
-// grid, print the table, write the curve as CSV and plot it with gnuplot.
+// lpvid tradeoff: the delta–dmax trade-off curve (SPEC §4 last item; a
+// command of its own, not an "identify --tradeoff" option): identify and
+// certify for each lambda of a grid, print the table, write the curve as
+// CSV and plot it with gnuplot.
 // The rules are in identify/tradeoff.h.
 #include <cstdio>
 #include <fstream>

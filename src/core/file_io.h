@@ -1,6 +1,6 @@
 #pragma once
-/// Reading and writing files (issue 10): one place for the rules every
-/// command follows.
+/// Reading and writing files: one place for the rules every command
+/// follows, so that hostile or mistaken input is handled the same way everywhere.
 ///  - Inputs are regular files (not /dev/zero, a FIFO or a directory) no
 ///    larger than input_limits().max_file_bytes: otherwise InputError (exit 2).
 ///  - A file that exists but cannot be opened or read, and an output that

@@ -1,5 +1,5 @@
 #pragma once
-/// Resource limits on untrusted input (issue 10): every reader checks them
+/// Resource limits on untrusted input: every reader checks them
 /// and names the limit and how to raise it, so that a hostile or mistaken
 /// input ends quickly with exit code 2 instead of exhausting memory or time.
 ///

@@ -1,5 +1,5 @@
 #pragma once
-/// Runs independent jobs on a few threads (issue 9 item 5: bound windows).
+/// Runs independent jobs on a few threads (the bound windows of diagnose/bound_windows.h).
 ///
 /// Job i writes only its own result slot, so the results are in the same
 /// order, and the same numbers, as a sequential run: nothing a job computes

@@ -11,7 +11,7 @@
 ///
 /// i is 1-based without leading zeros; c is an exact decimal or p/q text
 /// ("0.5", "1/3", "2.5e-3"); "x<i>+c" means the shift −c and "x<i>" alone the
-/// shift 0 (issue 18 item 2).
+/// shift 0.
 
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-/// Which rows of the estimation record get verified bounds (issue 9 item 5).
+/// Which rows of the estimation record get verified bounds.
 ///
 /// By default the WHOLE estimation record is covered by consecutive windows
 /// of kDefaultWindowLength rows (Theorem 2.1's LMIs grow with the window, so

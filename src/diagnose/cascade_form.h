@@ -1,6 +1,6 @@
 #pragma once
-/// Physical coordinates for state nonlinearities (issue 18 item 2): a
-/// √ outflow or an overflow acts on a LEVEL, but the linear starting model
+/// Physical coordinates for state nonlinearities: a √ outflow
+/// or an overflow acts on a LEVEL, but the linear starting model
 /// is in observer canonical form (fit/observer_form.h), whose second state
 /// is no level at all. For a 2nd-order LTI model with real poles p_u, p_d
 /// the same input–output map has the cascade realisation

@@ -1,5 +1,6 @@
 #pragma once
-/// The closed loop of SPEC §6 as one library call (issue 10 item 1):
+/// The closed loop of SPEC §6 as one library call (`lpvid diagnose` is a
+/// front end to it, other programs can call it directly):
 ///
 ///   1. rank effects: every candidate is fitted and scored on held-out folds
 ///      of the ESTIMATION record (selection empty), or fitted on it and

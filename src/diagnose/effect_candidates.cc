@@ -87,7 +87,7 @@ std::string short_text(double v) {
   return buf;
 }
 
-/// state_nonlinearity (issue 18 item 2): x_{k+1} = A x + B u' + e·f(x_i − c),
+/// state_nonlinearity: x_{k+1} = A x + B u' + e·f(x_i − c),
 /// f = √|·|, |·| or max(·, 0), as a scheduling column "@f(x<i>-c)" and a state
 /// offset term ρ_new·e (model.state_offset). e starts at 0 (the start is the
 /// current model), c below the simulated range of x_i for √ and |·| (so the

@@ -1,6 +1,6 @@
 #pragma once
 /// The library of candidate effects that `lpvid diagnose` tries (SPEC §6,
-/// effect kinds of SPEC §8, issue 4 item 2). Each candidate is the current
+/// effect kinds of SPEC §8). Each candidate is the current
 /// model with ONE effect added at a starting guess, plus the slots the fit
 /// may move (the effect's own parameters, the output map C, D, the offset
 /// and x0: adding an effect re-fits the output map, A and B stay).
@@ -27,8 +27,8 @@
 ///                      simulated state (model/state_scheduling.h), j = 1 …
 ///                      state_degree: a state-dependent nonlinearity as a
 ///                      quasi-LPV term, needs the joint re-fit (A moves)
-///   state_nonlinearity e·f(x_i − c) added to the state equation (issue 18
-///                      item 2): a scheduling column "@sqrt(x<i>-c)",
+///   state_nonlinearity e·f(x_i − c) added to the state equation: a
+///                      scheduling column "@sqrt(x<i>-c)",
 ///                      "@abs(x<i>-c)" or "@hinge(x<i>-c)" (model/state_scheduling.h)
 ///                      and a state offset E(ρ) = ρ_new·e (model.state_offset),
 ///                      i = 1 … nx. √ is a tank's outflow (c started below the

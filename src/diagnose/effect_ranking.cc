@@ -87,7 +87,7 @@ FitResult best_fit(const std::vector<LpvModel<double>>& starts, const LpvModel<d
 /// A candidate at its best fit: the effect with the dynamics kept, and (with
 /// joint_dynamics) with A, B re-fitted jointly from every start and from the
 /// first fit; of the two, the one with the lower selection RMS is kept (the
-/// joint fit has more freedom and can fit the noise: issue 9 item 2).
+/// joint fit has more freedom and can fit the noise).
 ScoredCandidate fit_candidate(const EffectCandidate& c, const Experiment<double>& est, const Experiment<double>& val,
                               const RankingOptions& o, const LpvModel<double>& previous) {
   ScoredCandidate s;

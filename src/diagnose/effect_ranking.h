@@ -1,6 +1,5 @@
 #pragma once
-/// Residual → missing effect (SPEC §6 steps 2–3, issue 4 items 3–4,
-/// issue 18 items 1 and 5). Two ways to hold data out:
+/// Residual → missing effect (SPEC §6 steps 2–3). Two ways to hold data out:
 ///
 /// FOLDS (the default of `lpvid diagnose`, val empty): K blocked folds of
 /// the estimation record (diagnose/fold_plan.h). Every candidate, and the
@@ -60,8 +59,9 @@ struct RankingOptions {
   Eigen::Index init_samples = kValidationInitSamples;  ///< validation samples used to fit x0
   FitOptions fit;
   /// Re-fit A and B together with each effect and with the no-effect
-  /// reference (Wiener/Hammerstein: issue 9 item 2); false: only the output
-  /// map, offset, x0 and the effect move (the issue-4 behaviour).
+  /// reference (Wiener/Hammerstein models need the linear part re-estimated
+  /// with the static map); false: only the output map, offset, x0 and the
+  /// effect move, A and B stay as declared.
   bool joint_dynamics = true;
   /// Blocked folds of the estimation record when no validation set is given
   /// (>= 2). Their held-out scores use `fold_warmup` samples of each block for

@@ -1,5 +1,5 @@
 #pragma once
-/// The linear part's order chosen jointly with an effect (issue 18 item 1):
+/// The linear part's order chosen jointly with an effect:
 /// a |·| sensor after a 3rd-order resonant part is a different model from
 /// |·| after the order-2 part that a linear fit THROUGH the |·| picked. So
 /// every static output-map candidate is also offered on the current model

@@ -1,6 +1,6 @@
 #pragma once
-/// Verified bounds of a fitted model on a window of a long record (issue 4
-/// item 8, SPEC §4, §7). The LMIs of Theorem 2.1 have blocks of size ~2n, so
+/// Verified bounds of a fitted model on a window of a long record (SPEC §4,
+/// §7). The LMIs of Theorem 2.1 have blocks of size ~2n, so
 /// they are solved on a window [begin, end) of the estimation record, not on
 /// all of it. The initial state of the window is the model's own state at
 /// `begin` (simulated from the fitted x0 over the whole record): the state is

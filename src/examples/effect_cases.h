@@ -1,5 +1,5 @@
 #pragma once
-/// Data with an effect the declared model lacks (issue 4 item 6): a known
+/// Data with an effect the declared model lacks: a known
 /// LPV system (2 states, one input u1, one output y1, one scheduling
 /// variable rho1 excited independently of u) plus ONE effect, simulated on
 /// an estimation and a validation record (different input realisations),

@@ -1,7 +1,7 @@
 #pragma once
 /// Writing the known example systems in code: exact decimal literals, small
 /// matrices of them, and the SISO one-scheduling-variable skeleton shared by
-/// the Example 2 flavour (eq. 20) and the effect cases of issue 4.
+/// the Example 2 flavour (eq. 20) and the effect cases (examples/effect_cases.h).
 
 #include <initializer_list>
 

@@ -1,6 +1,6 @@
 #pragma once
 /// Generated analogues of the real records on which `lpvid diagnose` was
-/// measured (issue 18 item 4; the real records are not in the repository).
+/// measured (the real records are not in the repository).
 /// Each is a known plant simulated in double precision on an estimation
 /// and a test record (different input realisations), so the right effect
 /// family and the achievable error are known by construction:

@@ -1,5 +1,5 @@
 #pragma once
-/// The linear starting model of `lpvid diagnose` (SPEC §6, issue 4 item 7):
+/// The linear starting model of `lpvid diagnose` (SPEC §6):
 /// an LTI state-space model of chosen order fitted to measured data.
 ///
 ///  1. ARX least squares (Ljung, System Identification, 2nd ed., 1999, §7.3,

@@ -1,18 +1,18 @@
 #pragma once
 /// The continuous parameters that `lpvid diagnose` fits by least squares
-/// (issue 4, SPEC §6): named slots pointing into an LpvModel<double>.
+/// (SPEC §6): named slots pointing into an LpvModel<double>.
 ///
 /// A slot is one scalar of the model: an entry of a C or D term (the output
 /// map C(ρ) = Σ_i f_i(ρ) C_i of eq. 8–10, including correction terms that
 /// were folded in as explicit terms), an offset value φ_j (eq. 20), an entry
 /// of x0, or a parameter of a static input/output map (model/static_blocks.h).
 /// A and B are slots only in the joint re-fit of the dynamics with an effect
-/// (dynamics_slots, issue 9 item 2): Wiener / Hammerstein models need the
+/// (dynamics_slots): Wiener / Hammerstein models need the
 /// linear part re-estimated together with the static map. Without A, B slots
 /// and without a static output map the output is affine in every C, D, φ
 /// and x0 slot.
 ///
-/// Issue 18 item 2: an entry of a state offset value e_j (kStateOffset,
+/// For state nonlinearities: an entry of a state offset value e_j (kStateOffset,
 /// E(ρ) = Σ_j h_j(ρ) e_j in the state equation) and the shift c of a
 /// state-function scheduling column "@sqrt(x<i>-c)" (kStateShift, the
 /// fitted level). The shift lives in the column text: slot_values reads it
@@ -50,7 +50,7 @@ LpvModel<double> with_slot_values(const LpvModel<double>& m, const std::vector<P
 std::vector<ParameterSlot> output_map_slots(const LpvModel<double>& m);
 /// Slots of the B terms with basis f (entries of f(ρ)·B_f).
 std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Monomial& f);
-/// Slots of the state equation for the joint re-fit (issue 9 item 2): every
+/// Slots of the state equation for the joint re-fit: every
 /// entry of every B term, and of every A term, except that when the constant
 /// A term is in observer canonical form (fit/observer_form.h: ones on
 /// the superdiagonal, zeros elsewhere outside column 1) every A term moves
@@ -59,7 +59,7 @@ std::vector<ParameterSlot> input_term_slots(const LpvModel<double>& m, const Mon
 /// With a state offset, also every entry of its values (state_offset_slots).
 std::vector<ParameterSlot> dynamics_slots(const LpvModel<double>& m);
 
-/// Slots of every entry of every state offset value e_j (issue 18).
+/// Slots of every entry of every state offset value e_j.
 std::vector<ParameterSlot> state_offset_slots(const LpvModel<double>& m);
 /// Slot of the shift c of scheduling column j, which must be
 /// "@abs/@sqrt/@hinge(x<i>-c)" (throws std::invalid_argument otherwise).

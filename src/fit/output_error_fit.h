@@ -29,7 +29,7 @@ struct FitOptions {
   /// the fit of one fold of a blocked cross-validation (diagnose/fold_plan.h).
   /// Empty (skip_first >= skip_last): nothing is left out.
   Eigen::Index skip_first = 0, skip_last = 0;
-  /// Stability guard when A is a slot (issue 9 item 2): a step to a constant
+  /// Stability guard when A is a slot (the joint re-fit): a step to a constant
   /// A term with spectral radius >= this is rejected (observer_form.h).
   /// Not applied when the start is already beyond it and has a state offset
   /// on state functions (a store with A = I kept bounded by its outflow):

@@ -1,6 +1,6 @@
 #pragma once
 /// Starting points for output-map (Wiener) candidates when the linear part
-/// was fitted THROUGH the map (issue 9 items 2 and 6): the classical Wiener
+/// was fitted THROUGH the map (as fit-linear does on real data): the classical Wiener
 /// initialisation (Ljung, System Identification, 2nd ed., §5.5; Schoukens &
 /// Tiels, "Identification of block-oriented nonlinear systems starting from
 /// linear approximations", 2017): turn the measured y into a target v* for

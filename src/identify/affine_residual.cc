@@ -79,7 +79,7 @@ AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experime
   if (unknowns.x0 && model.nx > 0) {
     Mat<T> Jy(a.n * a.ny, model.nx), Jz1(a.n * a.nz, model.nx);
     if (has_state_offset(model)) {
-      // With a state offset E(ρ) (issue 18) the response to x0 is not linear
+      // With a state offset E(ρ) the response to x0 is not linear
       // (E acts from x = 0, and "@sqrt(x<i>-c)" columns follow x): column c is
       // the secant sim(x0 + e_c) − sim(x0) along the actual input. Only the
       // identification's objective is approximate; the certificate checks the

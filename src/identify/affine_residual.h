@@ -15,7 +15,7 @@
 ///          x0 = model.x0 + p_x0 (apply_parameters adds it).
 /// The state does not depend on θ (A_i, B_i are fixed), so all of this is
 /// exact: the output is affine in θ, φ and x0. Exception: with a state
-/// offset E(ρ) (model.state_offset, issue 18) the x0 columns are the secant
+/// offset E(ρ) (model.state_offset) the x0 columns are the secant
 /// sim(x0 + e_c) − sim(x0), an approximation; the certificate of the folded
 /// model is still checked by its exact simulation.
 /// Multiplicative structure: z = W·ŷ, so Jz = W·(∂ŷ/∂θ_out, ∂ŷ/∂x0), 0 for φ.

@@ -1,5 +1,5 @@
 #pragma once
-/// The two stages after an identification solve (issue 10: written once,
+/// The two stages after an identification solve (written once,
 /// used by identify, tradeoff, select-basis and the diagnose windows):
 ///   fix:     θ (with φ, x0) rounded to CertifyOptions::digits significant
 ///            digits and folded into the exact model, so that the model the
@@ -8,8 +8,8 @@
 ///            re-solve: certify_with_taps), else Theorem 2.1 solved again for
 ///            the fixed model (certify_fixed_model); when the taps certified
 ///            the upper end, the lower end of the optimum still needs a dual
-///            point of the full-horizon problem (issue 8), solved here too
-///            unless CertifyOptions::lower_end is false.
+///            point of the full-horizon problem (a dual certificate), solved
+///            here too unless CertifyOptions::lower_end is false.
 /// `identify_and_certify` runs fit → fix → certify for `lpvid identify`.
 
 #include "core/scalar.h"

@@ -1,6 +1,6 @@
 #pragma once
 /// Theorem 2.1 for a FIXED model in the well-conditioned Δ form (Poolla et
-/// al.; SPEC §4, issue 3 item 5):
+/// al.; SPEC §4):
 ///
 ///   w = Δ ∗ z with a causal FIR Δ (taps h_0 … h_{L−1}, each ny × nz), and
 ///   (C1')  [ t·I      T_Δ ]

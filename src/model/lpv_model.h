@@ -64,7 +64,7 @@ struct Offset {
   std::vector<Vec<T>> values;
 };
 
-/// Affine term of the state equation (issue 18 item 2, beyond SPEC §2):
+/// Affine term of the state equation (beyond SPEC §2):
 /// E(ρ) = Σ_j h_j(ρ) e_j, e_j ∈ R^nx, so x_{k+1} = A(ρ_k) x_k + B(ρ_k) u'_k + E(ρ_k).
 /// With a scheduling column "@sqrt(x1-c)" (model/state_scheduling.h) a basis
 /// term ρ with value e adds e·√|x1 − c|: a tank's outflow. The values are

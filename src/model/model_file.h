@@ -48,7 +48,7 @@
 ///   state_offset optional {"basis": [distinct texts], "values": [nx-vectors,
 ///                one per basis function]} (values required): the affine term
 ///                E(ρ) = Σ_j h_j(ρ) e_j of x_{k+1} = A(ρ)x + B(ρ)u' + E(ρ)
-///                (issue 18 item 2; with a column "@sqrt(x1-c)" a term
+///                (with a column "@sqrt(x1-c)" a term
 ///                ρ·e is the outflow e·√|x1 − c|). Absent: no term. Toeplitz
 ///                mode "paper" refuses a model with it.
 ///   x0           optional list of nx numbers (default zero).

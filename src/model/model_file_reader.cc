@@ -400,7 +400,7 @@ class ModelReader {
       }
     }
 
-    // state offset E(ρ) (issue 18 item 2): values required, one nx-vector per basis function
+    // state offset E(ρ): values required, one nx-vector per basis function
     if (const JsonNode* o = root.find("state_offset")) {
       const std::string op = member_path(path, "state_offset");
       expect(*o, Kind::kObject, op);

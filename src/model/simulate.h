@@ -11,7 +11,7 @@
 /// with A(ρ) = A_0(ρ) + Σ_i f_i(ρ) A_i and B(ρ) = B_0(ρ) + Σ_i f_i(ρ) B_i: the
 /// fixed A_i, B_i of the correction S_C (eq. 10) are part of the state
 /// equation, and so is the state offset E(ρ) = Σ_j h_j(ρ) e_j (model.state_offset,
-/// issue 18 item 2; zero unless given). The correction's C_i, D_i are unknowns; since A_i, B_i are fixed
+/// zero unless given). The correction's C_i, D_i are unknowns; since A_i, B_i are fixed
 /// the state x does not depend on them and
 ///
 ///   ŷ_k(θ) = ŷ_k + Σ_i f_i(ρ_k) (C_i x_k + D_i u_k)

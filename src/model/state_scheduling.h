@@ -1,7 +1,7 @@
 #pragma once
-/// Scheduling on the model's own simulated state (issue 9 item 3, issue 18
-/// item 2): a quasi-LPV embedding of a state-dependent nonlinearity (cubic
-/// stiffness, √level outflow, overflow) in the model of SPEC §2.
+/// Scheduling on the model's own simulated state: a quasi-LPV embedding of
+/// a state-dependent nonlinearity (cubic stiffness, √level outflow,
+/// overflow) in the model of SPEC §2.
 ///
 /// A scheduling variable whose data column is a state form of
 /// data/column_map.h is not read from the data file: at sample k it is a

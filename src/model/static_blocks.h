@@ -2,7 +2,7 @@
 /// Static blocks around the LPV part (SPEC §6, §8 effect kinds): an input
 /// delay, a static input map before the LPV system and a static output map
 /// after it. They are what `lpvid diagnose` adds when the residual points to
-/// a saturation, dead-zone, |·|, polynomial or delay (issue 4); the model
+/// a saturation, dead-zone, |·|, polynomial or delay; the model
 /// file keeps them under "static" (lpvid-model/1, an added field):
 ///
 ///   "static": {"input_delay": 2,

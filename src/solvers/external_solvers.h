@@ -1,5 +1,5 @@
 #pragma once
-/// Solvers outside this process (issue 3, item 1): any LmiProgram can be
+/// Solvers outside this process: any LmiProgram can be
 /// written as an SDPA sparse file, solved by an outside program, and its
 /// answer read back for certification.
 ///

@@ -1,5 +1,5 @@
 #pragma once
-/// The JSON file written beside an SDPA file (issue 10, item 4): what an
+/// The JSON file written beside an SDPA file: what an
 /// outside solver's variables mean, so that its answer can be read without
 /// lpvid's source.
 ///

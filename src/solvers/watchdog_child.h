@@ -13,8 +13,8 @@
 /// silent for longer than max(min_stall_seconds, stall_factor × max(the
 /// longest silence seen so far, the delay until the first output)). The
 /// first delay (setup and the first iteration) scales the patience with the
-/// problem, so one slow healthy iteration is not taken for a hang (issue 8:
-/// SISO n = 400 full horizon, > 1 s per iteration, was killed after 2 s);
+/// problem, so one slow healthy iteration is not taken for a hang (a SISO
+/// n = 400 full-horizon solve, > 1 s per iteration, was once killed after 2 s);
 /// callers also raise min_stall_seconds with the problem size. The child writes its result to `result` (an
 /// unlinked temporary file shared with the parent) and exits with _exit.
 

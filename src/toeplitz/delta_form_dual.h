@@ -1,6 +1,7 @@
 #pragma once
-/// The Lagrange dual of Theorem 2.1 in the full-horizon Δ form (SPEC §4,
-/// issue 8; the mathematics is written out in docs/dual_certificates.md).
+/// The Lagrange dual of Theorem 2.1 in the full-horizon Δ form (SPEC §4): it
+/// certifies "invalidated" and lower bounds (the mathematics is written out
+/// in docs/dual_certificates.md).
 /// Templated on the scalar: the certificate builder evaluates it in doubles
 /// and rationals, the verifier in exact rationals only.
 ///

@@ -1,6 +1,6 @@
 #pragma once
-/// Causal FIR filters on signals: the Δ of the Poolla form of (C1) (SPEC §4,
-/// issue 3 item 5) acting on the uncertainty channel z, and the leading
+/// Causal FIR filters on signals: the Δ of the Poolla form of (C1) (SPEC §4)
+/// acting on the uncertainty channel z, and the leading
 /// zero samples that causality pins (SPEC §9). Templated on the scalar.
 
 #include "core/scalar.h"

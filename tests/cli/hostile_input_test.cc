@@ -1,4 +1,4 @@
-// Hostile and failing inputs through the real binaries (issue 10): each ends
+// Hostile and failing inputs through the real binaries: each ends
 // with a message naming the problem and the documented exit code
 // (src/cli/report.h: 2 bad input, 6 I/O failure; lpvid-verify the same), and
 // a failed run leaves none of its outputs behind. How long each takes is

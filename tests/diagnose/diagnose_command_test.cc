@@ -77,7 +77,7 @@ TEST_F(DiagnoseCommandTest, ControlCaseAnswersNone) {
   EXPECT_EQ(r["effects"][0]["kind"], "none");
 }
 
-// Issue 9, protocol: the test role is scored once, at the end, and never
+// The benchmark protocol: the test role is scored once, at the end, and never
 // influences the choice. Known answers by construction: with the test data
 // equal to the selection data, the test RMS is the selection RMS of the same
 // model; with another test file the chosen effects and the written model are
@@ -116,7 +116,7 @@ TEST_F(DiagnoseCommandTest, TestRoleIsScoredOnceAndNeverChooses) {
   EXPECT_TRUE(report("t3.json")["test"].is_null());
 }
 
-// Issue 9 item 5: without --window the bounds cover the whole estimation
+// Without --window the bounds cover the whole estimation
 // record (windows of 200 rows; a last one of 70 >= 50 rows stays its own),
 // each window states its rows, every certificate passes the verifier, and
 // certifying the windows on two threads reports exactly what one thread does.

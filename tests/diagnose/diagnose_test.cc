@@ -1,4 +1,4 @@
-// diagnose() as a library call (issue 10 item 1), on data made by
+// diagnose() as a library call, on data made by
 // construction (examples/effect_cases.h: the declared LPV system plus an
 // undeclared output offset of 0.5 and white noise of std 0.02):
 //  - it names the offset, and the bounds after are verified, their

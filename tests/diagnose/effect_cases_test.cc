@@ -1,6 +1,6 @@
-// Issue 4 "done when": on every generated case the right effect kind is
-// ranked first and chosen, and the validation RMS falls by at least 30 %;
-// the control case answers `none`. Known answers by construction
+// What `diagnose` must achieve: on every generated case the right effect
+// kind is ranked first and chosen, and the validation RMS falls by at least
+// 30 %; the control case answers `none`. Known answers by construction
 // (examples/effect_cases.h: the data come from the declared LPV system plus
 // exactly one effect). Also: the certificate of a model with static blocks
 // verifies exactly and a changed saturation level is rejected.

@@ -45,7 +45,7 @@ TEST_F(FitLinearCommandTest, WritesAModelThatReproducesTheData) {
             0)
       << output();
   EXPECT_NE(output().find("order 2"), std::string::npos) << output();
-  // issue 9 item 4: chosen on the selection data given, and the rule is stated
+  // the order is chosen on the selection data given, and the rule is stated
   EXPECT_NE(output().find("free run scored on the validation (selection) data"), std::string::npos) << output();
   EXPECT_NE(output().find("chosen: order 2, the smallest order whose held-out free-run RMS is within 5%"),
             std::string::npos)

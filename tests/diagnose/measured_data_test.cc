@@ -1,11 +1,11 @@
-// Issue 4 item 7 on the real measurements (read in place from ../shared/data;
+// `diagnose` on the real measurements (read in place from ../shared/data;
 // skipped when absent, e.g. on a machine without the benchmark files):
-//  - cascaded tanks, with the benchmark's protocol (issue 9): the linear model
+//  - cascaded tanks, with the benchmark's protocol: the linear model
 //    and every candidate are fitted on Est rows 0:716, the order and the
 //    effects are chosen on Est rows 716:1024, and Val is scored once at the
 //    end; the benchmark's figure (free-run RMS on Val, x0 from the first 5 Val
 //    samples) must be below the published linear reference 0.7574 V, below
-//    the starting model's and below 0.45 V (issue 9's goal, the top of the
+//    the starting model's and below 0.45 V (the goal: the top of the
 //    published nonlinear models' range);
 //  - dryer (linear with a transport delay): no nonlinear effect may be added.
 // The thresholds are the benchmark's published numbers, not our output.
@@ -60,7 +60,7 @@ TEST(MeasuredData, CascadedTanksBeatsTheLinearReference) {
   ASSERT_FALSE(r.chosen.empty());
   EXPECT_LT(after, 0.7574);
   EXPECT_LT(after, before);
-  EXPECT_LT(after, 0.45);  // issue 9's goal: inside the published nonlinear models' range (0.34-0.45 V)
+  EXPECT_LT(after, 0.45);  // the goal: inside the published nonlinear models' range (0.34-0.45 V)
   RecordProperty("tanks_test_rms_before", std::to_string(before));
   RecordProperty("tanks_test_rms_after", std::to_string(after));
 }
@@ -77,7 +77,7 @@ TEST(MeasuredData, DryerGetsNoInventedEffect) {
   const RankingResult r = diagnose(s, 2);
   // The dryer is linear with a transport delay: Ljung's models of these data
   // use an input delay of 3 samples (System Identification Toolbox, "dryer2",
-  // arx with nk = 3). With the dynamics re-fitted jointly (issue 9 item 2) an
+  // arx with nk = 3). With the dynamics re-fitted jointly an
   // input delay of at most 3 samples is a linear effect that may be found;
   // any nonlinear effect is invented.
   for (const ScoredCandidate& c : r.chosen) {

@@ -1,4 +1,4 @@
-// Issue 18 item 4: generated analogues of the real records on which
+// Generated analogues of the real records on which
 // `diagnose` was measured (src/examples/plant_analogues.h), through the
 // fold-based selection (diagnose/fold_plan.h) from the linear model that
 // `fit-linear --order auto` would choose. Known answers by construction:
@@ -9,7 +9,8 @@
 //  - Duffing oscillator (cubic stiffness in the loop): a state-scheduled A
 //    term is chosen first, test RMS <= 0.6 x;
 //  - the same oscillator without the cubic term (control): none.
-// The numbers 0.6 and the families are the issue's, not this program's output.
+// The numbers 0.6 and the families were required in advance, not taken from
+// this program's output.
 #include <gtest/gtest.h>
 
 #include "data/experiment_builder.h"
@@ -51,7 +52,7 @@ std::string chosen_text(const RankingResult& r) {
 TEST(PlantAnalogues, AbsSensorAfterAResonantPartGetsAStaticOutputMap) {
   const Outcome o = run("abs_sensor", 600);
   ASSERT_FALSE(o.r.chosen.empty());
-  // the family of the issue: |·| or any static output map after a linear part
+  // the required family: |·| or any static output map after a linear part
   // of re-chosen order; the resonance is 3rd order, so the linear part must reach 3
   const std::string& kind = o.r.chosen.front().kind;
   EXPECT_TRUE(kind == "abs_value" || kind == "output_piecewise_linear" || kind == "output_polynomial")
@@ -73,7 +74,7 @@ TEST(PlantAnalogues, DuffingGetsAStateScheduledStiffness) {
 // Two tanks with √ outflow and an overflow of the upper tank (n = 1000; at
 // n = 600 the per-fold fits of the store cascade on 300-row stretches stop in
 // poor local minima on 2 folds and an output polynomial after order 2 wins:
-// measured, noted in the issue): the store cascade (√ outflow and overflow in
+// measured): the store cascade (√ outflow and overflow in
 // the state equation) is chosen first, and the test RMS falls to <= 0.6 x.
 // Without the state nonlinearities the family cannot be chosen.
 TEST(PlantAnalogues, TanksGetTheStoreCascade) {

@@ -1,4 +1,4 @@
-// The state_nonlinearity effect (issue 18 item 2, SPEC §6, §8): candidates
+// The state_nonlinearity effect (SPEC §6, §8): candidates
 // e·f(x_i − c) in the state equation, f = √|·|, |·|, max(·, 0), with the
 // shift c and the state offset e as fit slots (fit/model_parameters.h).
 //

@@ -1,7 +1,7 @@
-// Issue 9 item 6: the declared dynamics are WRONG the way real data makes
+// The declared dynamics are WRONG the way real data makes
 // them wrong: the LPV part (A, B, C, D, x0) is fitted by output error
 // through the undeclared effect, not given exactly. The joint re-fit of the
-// dynamics with each candidate (issue 9 item 2) must still rank the right
+// dynamics with each candidate must still rank the right
 // kind first and choose it, and the control case must answer `none`.
 // Known answers by construction (examples/effect_cases.h).
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-// fit/linear_fit.h: ARX + output-error fit of an LTI model (SPEC §6,
-// issue 4 item 7). Properties on noise-free data from random stable systems
+// fit/linear_fit.h: ARX + output-error fit of an LTI model (SPEC §6).
+// Properties on noise-free data from random stable systems
 // (tests/support/gen_lti.h): the true order reproduces the free-run output,
 // A is stable, the order rule picks the true order, the model file round
 // trip keeps the output; bad input throws a clear InputError.

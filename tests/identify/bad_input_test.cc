@@ -117,7 +117,7 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
   RC_ASSERT(b.delta == 0.0);
   RC_ASSERT(b.dmax == 0.0);
   // No consistency certificate: the only file allowed there is an exactly
-  // checked "invalidated" certificate (issue 8), which this case must get.
+  // checked "invalidated" certificate, which this case must get.
   RC_ASSERT(b.invalidated);
   const CertificateVerdict v = check_certificate_file(dir.file("c.json"));
   RC_ASSERT(v.holds);

@@ -1,4 +1,4 @@
-// Issue 9 item 5: the weighted objective is stated on signals scaled by
+// The weighted objective is stated on signals scaled by
 // powers of ten to RMS ~1 (certify/bound_scaling.h). Known answers:
 //  - by arithmetic: the exponents, and λ_orig = λ s_z²/(λ s_z² + 1 − λ);
 //  - by construction: multiplying u and y of a linear model's data by 10³

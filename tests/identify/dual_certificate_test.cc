@@ -1,4 +1,4 @@
-// Dual certificates (issue 8; toeplitz/delta_form_dual.h): "invalidated" and
+// Dual certificates (toeplitz/delta_form_dual.h): "invalidated" and
 // "lower_bound" claims are checked exactly by the verifier, and the answers
 // are known by construction:
 //  - the data come from a known truth (Δ with ‖T_Δ‖ < δ, noise with RMS
@@ -153,10 +153,10 @@ RC_GTEST_PROP(DualCertificateProperty, LowerEndIsBelowUpperEndAndBelowTheTruth, 
   RC_ASSERT(!check_tampered(dir, "t.json", t).holds);
 }
 
-// Issue 8's case: the true Δ is a 70-sample delay on n = 100 samples, which
-// no 64-tap Δ can represent. With the default options (64 taps first) the
-// model must still be certified consistent: a restricted program's
-// infeasibility is not a verdict, the full horizon decides.
+// A Δ the default restriction cannot hold: the true Δ is a 70-sample delay
+// on n = 100 samples, which no 64-tap Δ can represent. With the default
+// options (64 taps first) the model must still be certified consistent: a
+// restricted program's infeasibility is not a verdict, the full horizon decides.
 TEST(DualCertificate, DelayedDeltaIsConsistentWithDefaultOptions) {
   IdentCaseOptions o;
   o.min_n = 100;
@@ -194,7 +194,7 @@ TEST(DualCertificate, DelayedDeltaIsConsistentWithDefaultOptions) {
   EXPECT_FALSE(r.invalidated);
 }
 
-// Issue 8 item 4: the KYP restriction (‖Δ‖∞ by the KYP lemma, 2×2, 16 taps)
+// The KYP restriction (‖Δ‖∞ by the KYP lemma, 2×2, 16 taps)
 // certifies the 2×2 Example 1 at n = 60 (it used to end in a solver failure),
 // and its interval's ends are ordered; the lower end is the full horizon's dual.
 TEST(DualCertificate, KypWorksOnMimoExample1) {

@@ -1,5 +1,5 @@
-// State functions as scheduling columns and the state offset E(ρ) (issue 18
-// item 2; model/state_scheduling.h, model/lpv_model.h). Known answers from
+// State functions as scheduling columns and the state offset E(ρ)
+// (model/state_scheduling.h, model/lpv_model.h). Known answers from
 // the definitions, never from the program's output:
 //  - grid(√v) = floor(√(v·4^b) + 1/2)/2^b, checked by the bracket
 //    (m − 1/2)² ≤ v·4^b < (m + 1/2)² on m = grid·2^b (exact rationals),

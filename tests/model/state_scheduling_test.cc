@@ -1,5 +1,5 @@
-// Scheduling on the model's own state (model/state_scheduling.h, issue 9
-// item 3). Known answers from the definition: grid(v) = floor(v·2^32 + 1/2)/2^32,
+// Scheduling on the model's own state (model/state_scheduling.h).
+// Known answers from the definition: grid(v) = floor(v·2^32 + 1/2)/2^32,
 // the double and the exact rule agree on values away from a midpoint, and a
 // "@x1" column is the state x_1 of the model's own simulation whatever the
 // data file holds there.

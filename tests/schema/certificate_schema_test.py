@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""docs/certificate.schema.json against real certificates (issue 10 item 4).
+"""docs/certificate.schema.json against real certificates.
 
 Writes certificates with the built `lpvid` on fixtures/example1 (a primal
 "consistent" one in form delta, its dual "lower_bound" companion, form w of

@@ -1,5 +1,5 @@
 #pragma once
-/// A small SISO case for bound-window tests (issue 9 item 5), known by
+/// A small SISO case for bound-window tests, known by
 /// construction: G is x⁺ = 0.5x + u, y = x + 0.5u (x0 = 0, multiplicative
 /// uncertainty), optionally with a constant output offset φ; data are
 /// integers in micro-units written as exact decimals, so a file scaled by a

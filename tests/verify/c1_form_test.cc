@@ -240,7 +240,7 @@ RC_GTEST_PROP(VerifyC1DeltaForm, RankOneTapBoundary, ()) {
   RC_ASSERT(!below.holds);
 }
 
-// The hostile case of issue 10: δ² = 10^−5000 on a horizon of 40 samples.
+// A hostile input: δ² = 10^−5000 on a horizon of 40 samples.
 TEST(VerifyC1DeltaForm, TinyDeltaSquaredIsDecidedAtOnce) {
   const Rational delta2 = pow10(-5000);
   Mat<Rational> taps = Mat<Rational>::Zero(3, 1);

@@ -1,5 +1,5 @@
-// The certificate reader and checker on corrupted certificates (issue 10:
-// the most exposed parser; these tests run in the ASan/UBSan build too, see
+// The certificate reader and checker on corrupted certificates (the
+// most exposed parser; these tests run in the ASan/UBSan build too, see
 // scripts/test.sh --sanitize). A genuine certificate of the true Example-1
 // model on its noise-free data is made once; then
 //  - random byte edits (gen::files::corrupted) and

@@ -1,4 +1,4 @@
-/// Bounded resources of the exact PSD decision (issue 10): the multi-modular
+/// Bounded resources of the exact PSD decision: the multi-modular
 /// path falls back to Bareiss instead of giving up when it runs out of primes,
 /// and the leading-block screen decides easy NOT_PSD matrices early.
 
