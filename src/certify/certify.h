@@ -4,8 +4,9 @@
 /// The model is FIXED here (θ, φ, x0 already rounded to short rationals and
 /// folded in). Then:
 ///  1. z and r = y − ŷ − Φ are computed exactly from the data text;
-///  2. Theorem 2.1 is solved in the Δ form (lmi/delta_form_lmi.h) with at
-///     most `max_taps` taps: well conditioned, never forms T_zᵀT_z;
+///  2. Theorem 2.1 is solved in the Δ form (lmi/delta_form_solve.h: the
+///     structured barrier on the full horizon, else the SDP with at most
+///     `max_taps` taps): well conditioned, never forms T_zᵀT_z;
 ///  3. the taps are rounded to `digits` significant decimal digits;
 ///  4. w = Δ∗z, d = r − w are exact; d_max² := ‖d‖²/(n·ny) rounded UP to 15
 ///     digits (or the fixed d_max², which must then hold exactly);
@@ -14,6 +15,10 @@
 ///     (at most 5 tries);
 ///  6. the certificate is written and checked again from the file by the
 ///     verifier (verify/certificate_check.h). `verified` is that verdict.
+/// Then, in certify_fixed_model's stages: for an optimised bound the lower
+/// end from the dual (certify/dual_certify.h), with a full-horizon solve when
+/// a K-tap one leaves the gap above gap_target; for fixed bounds without a
+/// primal certificate, an exactly checked "invalidated" certificate.
 
 #include <functional>
 #include <optional>
@@ -49,7 +54,7 @@ struct CertifyOptions {
   std::vector<std::string> data_names;   ///< headerless files only
   long row_begin = 0, row_end = -1;      ///< the window of the data used
   std::string fixed_delta_text, fixed_dmax_text;  ///< exact text of a fixed bound (CLI), if any
-  /// Issue 8: also certify the lower end of the optimum (a dual certificate
+  /// Also certify the lower end of the optimum (a dual certificate
   /// of the full-horizon problem, written beside the certificate as
   /// "<certificate stem>.lower.json"), and for fixed bounds, when no primal
   /// certificate exists, try to certify "invalidated" (written at
@@ -132,7 +137,7 @@ CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<R
                                  const Simulation<Rational>& sim, const Experiment<Rational>& exp,
                                  SignalScales* scales = nullptr);
 
-/// How a certification ended (issue 10: typed, so that callers never compare
+/// How a certification ended (typed, so that callers never compare
 /// status strings). Decided in this order:
 enum class CertifyOutcome {
   kVerified,      ///< a consistency certificate was written and checked exactly
@@ -168,7 +173,7 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
 /// digits, and (C1) [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 checked exactly (by the
 /// verifier, on its Schur complement δ²T_zᵀT_z − T_wᵀT_w: verify/c1_w_form.cc) with δ²
 /// inflated as above. T_zᵀT_z squares the data's conditioning; for long
-/// records this can fail where the Δ form would pass (issue 3, item 5).
+/// records this can fail where the Δ form would pass.
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                           const CertifyOptions& options, SdpSolver& solver);
 

@@ -1,6 +1,6 @@
 #pragma once
 /// From a solver's dual matrices to an exactly checked dual certificate
-/// (issue 8; the mathematics in toeplitz/delta_form_dual.h and
+/// (the mathematics in toeplitz/delta_form_dual.h and
 /// docs/dual_certificates.md), in the spirit of Peyrl & Parrilo (2008):
 ///  1. take Y1, Y2 of the Δ-form solve in original units (any positive
 ///     scale; a restricted K-tap solve gives a Y1 of the full size too);
