@@ -20,6 +20,7 @@
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
+#include "toeplitz/tap_toeplitz.h"
 #include "verify/certificate_check.h"
 
 namespace lpvid {
@@ -34,12 +35,9 @@ namespace {
 
 /// Largest singular value² of the block Toeplitz T_Δ (L blocks, K taps).
 double toeplitz_norm2(const Mat<double>& taps, Eigen::Index horizon, Eigen::Index ny, Eigen::Index nz) {
-  const Eigen::Index L = horizon, K = taps.rows();
-  Mat<double> T = Mat<double>::Zero(L * ny, L * nz);
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index b = std::max<Eigen::Index>(0, a - K + 1); b <= a; ++b)
-      for (Eigen::Index i = 0; i < ny; ++i)
-        for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
+  Mat<double> padded = Mat<double>::Zero(horizon, taps.cols());  // h_K … h_{L−1} = 0
+  padded.topRows(std::min(taps.rows(), horizon)) = taps.topRows(std::min(taps.rows(), horizon));
+  const Mat<double> T = tap_toeplitz_dense(padded, ny, nz);
   Eigen::SelfAdjointEigenSolver<Mat<double>> es(T.transpose() * T, Eigen::EigenvaluesOnly);
   return std::max(0.0, es.eigenvalues().maxCoeff());
 }

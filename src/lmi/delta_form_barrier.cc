@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/rms.h"
+#include "lmi/noise_block.h"
 #include "toeplitz/correlation_2d.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/tap_toeplitz.h"
@@ -53,8 +54,7 @@ Dense sub_block(const Dense& M, Index p, Index q, Index i, Index j) {
 /// (i, j) of tap l at x((i·nz + j)·L + l), i.e. the taps matrix (L × ny·nz,
 /// column i·nz + j) stored column by column. s is eliminated (see the
 /// header) unless it is fixed (min δ at d_max).
-struct Problem {
-  Index n = 0, m = 0, L = 0, ny = 1, nz = 1;
+struct Problem : SignalScaling {  ///< n, ny, nz, m, L and the scales σ_z, σ_r
   double N = 0;
   Dense r_head, r_tail;     ///< scaled residual: rows < m (no Δ acts there) and rows ≥ m (ny columns)
   std::vector<Dense> Z;     ///< per input j of Δ: L × L lower-triangular Toeplitz of the scaled z_j (rows ≥ m)
@@ -236,16 +236,11 @@ Vecd predictor_step(const Problem& p, const Point& pt, const Dense& H, double mu
 Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective, double& sigma_z,
                      double& sigma_r) {
   Problem p;
-  p.n = z.rows();
-  p.ny = r.cols();
-  p.nz = z.cols();
-  p.m = check_uncertainty_excited(z);
-  p.L = p.n - p.m;
+  static_cast<SignalScaling&>(p) = signal_scaling(z, r);
   p.N = static_cast<double>(p.n * p.ny);
   p.nu = static_cast<double>(p.L * (p.ny + p.nz)) + p.N + 1.0;
-  sigma_z = rms(z.bottomRows(p.L));
-  sigma_r = rms(r);
-  if (!(sigma_r > 0.0)) sigma_r = 1.0;
+  sigma_z = p.sigma_z;
+  sigma_r = p.sigma_r;
   const Dense rs = r / sigma_r;
   p.r_head = rs.topRows(p.m);
   p.r_tail = rs.bottomRows(p.L);

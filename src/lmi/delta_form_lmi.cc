@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "lmi/noise_block.h"
 #include "core/rms.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
@@ -36,13 +37,12 @@ void read_delta_solution(const SolveResult& solve, const DeltaScaledVariables& v
 namespace {
 
 /// The program and where its variables are.
-struct DeltaFormLayout {
+struct DeltaFormLayout : SignalScaling {  ///< n, ny, nz, m, L and the scales σ_z, σ_r
   LmiProgram program;
-  Eigen::Index n = 0, ny = 0, nz = 0, m = 0, L = 0, K = 0;
+  Eigen::Index K = 0;
   int tap0 = -1;  ///< first tap variable: h_l(i, j) is tap0 + l·ny·nz + i·nz + j
   int t = -1;     ///< δ² (scaled), -1 if fixed
   int s = -1;     ///< d_max² (scaled), -1 if fixed
-  double sigma_z = 1.0, sigma_r = 1.0;
 };
 
 /// LmiProgram::about of a Δ-form program (what an outside solver's x means).
@@ -75,19 +75,11 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
   obj.validate();
   if (z.rows() != r.rows()) throw std::invalid_argument("delta form: z and r have different lengths");
   DeltaFormLayout f;
-  f.n = z.rows();
-  f.nz = z.cols();
-  f.ny = r.cols();
-  f.m = check_uncertainty_excited(z);
-  f.L = f.n - f.m;
+  static_cast<SignalScaling&>(f) = signal_scaling(z, r);
   f.K = max_taps > 0 ? std::min(max_taps, f.L) : f.L;
-  f.sigma_z = rms(z.bottomRows(f.L));
-  f.sigma_r = rms(r);
-  if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
   const Mat<double> zs = z / f.sigma_z;
   const Mat<double> rs = r / f.sigma_r;
   const double kz = f.sigma_z / f.sigma_r;  // Δ' = kz·Δ, t' = kz²·t
-  const double N = static_cast<double>(f.n * f.ny);
 
   LmiProgram& p = f.program;
   const Eigen::Index taps_per = f.ny * f.nz;
@@ -122,16 +114,10 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
                       static_cast<int>(off + b * f.nz + j), 1.0);
 
   // (C2): [N s, dᵀ; d, I] ⪰ 0, d = r − Δ∗z.
-  const int B = p.add_block("C2_noise", static_cast<int>(f.n * f.ny + 1));
-  if (f.s >= 0)
-    p.add_entry(B, f.s, 0, 0, N);
-  else
-    p.add_entry(B, -1, 0, 0, N * obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r));
+  const int B = add_noise_block(p, f.s, obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r), rs);
   for (Eigen::Index k = 0; k < f.n; ++k)
     for (Eigen::Index i = 0; i < f.ny; ++i) {
       const int row = static_cast<int>(1 + k * f.ny + i);
-      p.add_entry(B, -1, row, row, 1.0);
-      if (rs(k, i) != 0.0) p.add_entry(B, -1, 0, row, rs(k, i));
       for (Eigen::Index l = 0; l <= std::min(k - f.m, f.K - 1); ++l)
         for (Eigen::Index j = 0; j < f.nz; ++j)
           if (zs(k - l, j) != 0.0)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lmi/noise_block.h"
 #include "core/rms.h"
 #include "core/input_error.h"
 #include "lmi/delta_form_lmi.h"
@@ -61,7 +62,6 @@ Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObje
   f.sigma_r = rms(sig.rb);
   if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
   const double kz = f.sigma_z / f.sigma_r;
-  const double N = static_cast<double>(f.n * f.ny);
 
   LmiProgram& p = f.program;
   // Scale each unknown so that a unit step moves z and r by about their RMS.
@@ -110,17 +110,10 @@ Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObje
     }
 
   // (C2): [N s, dᵀ; d, I], d = rb − R q − w.
-  const int B = p.add_block("C2_noise", static_cast<int>(N + 1));
-  if (f.s >= 0)
-    p.add_entry(B, f.s, 0, 0, N);
-  else
-    p.add_entry(B, -1, 0, 0, N * obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r));
+  const int B = add_noise_block(p, f.s, obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r), Mat<double>(sig.rb / f.sigma_r));
   for (Eigen::Index k = 0; k < f.n; ++k)
     for (Eigen::Index i = 0; i < f.ny; ++i) {
       const int row = static_cast<int>(1 + k * f.ny + i);
-      p.add_entry(B, -1, row, row, 1.0);
-      const double rbs = sig.rb(k, i) / f.sigma_r;
-      if (rbs != 0.0) p.add_entry(B, -1, 0, row, rbs);
       for (Eigen::Index j = 0; j < sig.nq(); ++j) {
         const double v = sig.R[static_cast<size_t>(j)](k, i) / (f.sigma_r * f.qscale[static_cast<size_t>(j)]);
         if (v != 0.0) p.add_entry(B, static_cast<int>(f.q0 + j), 0, row, -v);
