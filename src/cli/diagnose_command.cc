@@ -241,9 +241,7 @@ int run_diagnose(DiagnoseArgs& a) {
                   " (fit: every model and candidate)";
   ri.test_sources = test_texts;
   ri.est = &est_d;
-  ri.val = &val_d;
   ri.tests = &tests;
-  ri.init_samples = by_folds ? warmup : a.init_samples;
   ri.folds = by_folds;
   ri.fold_warmup = warmup;
   ri.test_warmup = warmup;

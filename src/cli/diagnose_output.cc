@@ -181,8 +181,7 @@ ojson candidate_json(const ScoredCandidate& c) {
 }
 
 /// Whiteness and input correlation of a validation residual (printed + JSON).
-ojson analysis_json(const std::string& title, const Mat<double>& r, const Mat<double>& u) {
-  const ResidualAnalysis a = analyse_residual(r, u, {});
+ojson analysis_json(const std::string& title, const ResidualAnalysis& a) {
   ojson j = ojson::object();
   j["rms"] = a.rms.overall;
   j["max_lag"] = a.whiteness.max_lag;
@@ -207,26 +206,6 @@ ojson analysis_json(const std::string& title, const Mat<double>& r, const Mat<do
   std::cout << "\n";
   j["input_correlation"] = cross;
   return j;
-}
-
-/// Share of the round's estimation residual that each candidate's added
-/// output signal explains (least-squares projection, residual_analysis.h).
-std::vector<double> estimation_shares(const RankingRound& rr, const Experiment<double>& est) {
-  const Mat<double> base = simulate(rr.current, est).output;
-  const Mat<double> r = est.y - base;
-  std::vector<CandidateSignal> sig;
-  std::vector<size_t> index;
-  for (size_t k = 0; k < rr.ranked.size(); ++k) {
-    const Mat<double> added = simulate(rr.ranked[k].model, est).output - base;
-    if (!added.allFinite() || added.squaredNorm() == 0) continue;
-    sig.push_back({rr.ranked[k].label, added});
-    index.push_back(k);
-  }
-  std::vector<double> out(rr.ranked.size(), 0.0);
-  if (!r.allFinite()) return out;
-  const std::vector<CandidateShare> sh = candidate_shares(r, sig);
-  for (size_t i = 0; i < sh.size(); ++i) out[index[i]] = sh[i].share;
-  return out;
 }
 
 /// "0:256, 256:512, …" in data-file rows.
@@ -259,9 +238,9 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                                std::to_string(in.fold_warmup) + " samples, RMS over the rest)\n  rule        " +
                                acceptance_rule_text(r.fold_blocks.size(), r.min_gain) +
                                "; the model kept is the one fitted on all estimation rows\n"
-                         : "  validation  " + in.validation + " (" + std::to_string(in.val->n()) +
+                         : "  validation  " + in.validation + " (" + std::to_string(res.shown.data.n()) +
                                " samples; selection: ranks the effects; x0 fitted on the first " +
-                               std::to_string(in.init_samples) + ", then free-run simulation)\n")
+                               std::to_string(res.shown.init_samples) + ", then free-run simulation)\n")
             << "  test        "
             << (res.tests.empty() ? std::string("none given (--test / --test-columns): the validation figure chose the model")
                                   : test_roles_text(in))
@@ -282,7 +261,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
               << "  rank  kind               " << (in.folds ? "held-out" : "val RMS ")
               << "   explained  est RMS    est share  params  candidate\n";
     ojson cands = ojson::array();
-    const std::vector<double> shares = estimation_shares(rr, *in.est);
+    const std::vector<double>& shares = res.estimation_shares[i];
     for (size_t k = 0; k < rr.ranked.size(); ++k) {
       const ScoredCandidate& c = rr.ranked[k];
       char line[320];
@@ -403,35 +382,34 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   const ojson test = tests.empty() ? ojson(nullptr) : tests.front();
 
   // residual analysis and plots on the validation data (free run)
-  Mat<double> yb, ya;
-  validation_rms(res.before_model, *in.val, in.init_samples, &yb);
-  validation_rms(res.after_model, *in.val, in.init_samples, &ya);
-  const Mat<double> rb = in.val->y - yb, ra = in.val->y - ya;
+  const ShownRecord& shown = res.shown;
+  const Mat<double>&yb = shown.y_before, &ya = shown.y_after;
+  const Mat<double> rb = shown.data.y - yb, ra = shown.data.y - ya;
   std::cout << (in.folds ? "\nresidual on the last fold's rows (" + in.validation +
                                "; free run, x0 from its first samples; the final models were fitted on these rows too)\n"
                          : std::string("\nvalidation residual (free run)\n"));
   ojson analysis = ojson::object();
-  if (rb.allFinite() && ra.allFinite()) {
-    analysis["before"] = analysis_json("before", rb, in.val->u);
-    analysis["after"] = analysis_json("after ", ra, in.val->u);
+  if (shown.finite) {
+    analysis["before"] = analysis_json("before", shown.before);
+    analysis["after"] = analysis_json("after ", shown.after);
   }
   ojson plots = ojson::array();
-  if (!in.plots_dir.empty() && rb.allFinite() && ra.allFinite()) {
+  if (!in.plots_dir.empty() && shown.finite) {
     std::filesystem::create_directories(in.plots_dir);
     const std::string d = in.plots_dir + "/";
     std::vector<std::string> names = in.validation_outputs;
-    if (names.size() != static_cast<size_t>(in.val->ny())) {  // held-out rows of --data
+    if (names.size() != static_cast<size_t>(shown.data.ny())) {  // held-out rows of --data
       names.clear();
       for (const std::string& y : res.before_model.columns.y) names.push_back(y + (in.folds ? " (last fold)" : " (held out)"));
     }
     // the rows' place in the file: the last fold block of the estimation rows (fold mode)
     const double first_row =
-        in.folds && !r.fold_blocks.empty() ? static_cast<double>(in.file_row_offset + r.fold_blocks.back().first) : 0.0;
+        shown.last_fold ? static_cast<double>(in.file_row_offset + shown.first) : 0.0;
     const SignalInfo& info = res.after_model.signal_info;
     const std::vector<std::pair<std::string, PlotOutcome>> made = {
         {d + "residual.png", plot_residual(rb, ra, d + "residual.png", names, info, first_row)},
         {d + "autocorrelation.png", plot_residual_autocorrelation(rb, ra, d + "autocorrelation.png", names)},
-        {d + "output.png", plot_output_fit(in.val->y, yb, ya, d + "output.png", names, info, first_row)}};
+        {d + "output.png", plot_output_fit(shown.data.y, yb, ya, d + "output.png", names, info, first_row)}};
     std::cout << (in.folds ? "\nplots (the last fold's rows)\n" : "\nplots (validation data)\n");
     const auto list = [&](const std::string& path, const PlotOutcome& o) {
       std::cout << "  " << (o.ok ? path + (o.svg.empty() ? "" : " (+ .svg)") : "not written: " + o.message) << "\n";
@@ -446,8 +424,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
       RecordPlot rp;
       rp.u = in.est->u;
       rp.y = in.est->y;
-      validation_rms(res.after_model, *in.est, in.init_samples, &rp.yhat_after);
-      if (!rp.yhat_after.allFinite()) rp.yhat_after.resize(0, 0);
+      rp.yhat_after = res.estimation_after;
       for (const FoldBlock& b : r.fold_blocks) rp.blocks.emplace_back(static_cast<long>(b.first), static_cast<long>(b.last));
       rp.input_columns = res.before_model.columns.u;
       rp.output_columns = res.before_model.columns.y;
@@ -530,7 +507,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                       {"before_held_out_folds", folds_json(r.before_folds)},
                       {"after_held_out_folds", folds_json(r.after_folds)}};
   } else {
-    j["validation"] = {{"source", in.validation}, {"samples", in.val->n()}, {"init_samples", in.init_samples},
+    j["validation"] = {{"source", in.validation}, {"samples", res.shown.data.n()}, {"init_samples", res.shown.init_samples},
                        {"role", "selection: ranks the candidate effects"}};
   }
   j["test"] = test;

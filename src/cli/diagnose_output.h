@@ -14,12 +14,11 @@ struct DiagnoseReportInputs {
   std::string command_line_data, validation, plots_dir, model_out, solver;
   std::string estimation;  ///< file and rows of the fit role
   std::vector<std::string> test_sources;  ///< each test set's file, columns and rows (as result.tests)
-  const DiagnoseResult* result = nullptr;
-  const Experiment<double>*est = nullptr, *val = nullptr;
+  const DiagnoseResult* result = nullptr;  ///< everything computed; the rest here is what the files and rows are called
+  const Experiment<double>* est = nullptr;  ///< the estimation record (plotted)
   const std::vector<Experiment<double>>* tests = nullptr;  ///< the test records (as result.tests), for their plots
-  int init_samples = static_cast<int>(RankingOptions{}.init_samples);
-  /// Fold mode: `val` is the estimation record's last fold block, shown for
-  /// the residual analysis and plots (the final models saw those rows).
+  /// Fold mode: the residual analysis and plots are on the estimation
+  /// record's last fold block (result->shown).
   bool folds = false;
   Eigen::Index fold_warmup = 0, test_warmup = 0;
   std::string estimation_rows_text;  ///< "file rows a:b" of the estimation record (fold mode)

@@ -6,6 +6,7 @@
 
 #include "core/input_error.h"
 #include "core/parallel_for.h"
+#include "data/experiment_builder.h"
 #include "fit/output_error_fit.h"
 
 namespace lpvid {
@@ -48,6 +49,48 @@ void check_options(const Experiment<double>& est_d, const Experiment<Rational>& 
     if (b < 0 || e <= b || e > est_q.n())
       throw InputError("--window " + std::to_string(b) + ":" + std::to_string(e) + " is outside the " +
                        std::to_string(est_q.n()) + " estimation samples");
+}
+
+/// Share of the round's estimation residual that each candidate's added
+/// output signal explains (least-squares projection, residual_analysis.h).
+std::vector<double> estimation_shares(const RankingRound& rr, const Experiment<double>& est) {
+  const Mat<double> base = simulate(rr.current, est).output;
+  const Mat<double> r = est.y - base;
+  std::vector<CandidateSignal> sig;
+  std::vector<size_t> index;
+  for (size_t k = 0; k < rr.ranked.size(); ++k) {
+    const Mat<double> added = simulate(rr.ranked[k].model, est).output - base;
+    if (!added.allFinite() || added.squaredNorm() == 0) continue;
+    sig.push_back({rr.ranked[k].label, added});
+    index.push_back(k);
+  }
+  std::vector<double> out(rr.ranked.size(), 0.0);
+  if (!r.allFinite()) return out;
+  const std::vector<CandidateShare> sh = candidate_shares(r, sig);
+  for (size_t i = 0; i < sh.size(); ++i) out[index[i]] = sh[i].share;
+  return out;
+}
+
+/// The residual the report shows, before and after (ShownRecord).
+ShownRecord shown_record(const DiagnoseResult& out, const Experiment<double>& est_d, const Experiment<double>& selection,
+                         const DiagnoseOptions& options) {
+  ShownRecord s;
+  s.last_fold = selection.n() == 0 && !out.rank.fold_blocks.empty();
+  s.init_samples = s.last_fold ? options.ranking.fold_warmup : options.ranking.init_samples;
+  if (s.last_fold) {
+    s.first = out.rank.fold_blocks.back().first;
+    s.data = select_rows(est_d, out.rank.fold_blocks.back().first, out.rank.fold_blocks.back().last);
+  } else {
+    s.data = selection;
+  }
+  validation_rms(out.before_model, s.data, s.init_samples, &s.y_before);
+  validation_rms(out.after_model, s.data, s.init_samples, &s.y_after);
+  s.finite = s.y_before.allFinite() && s.y_after.allFinite();
+  if (s.finite) {
+    s.before = analyse_residual(Mat<double>(s.data.y - s.y_before), s.data.u, {});
+    s.after = analyse_residual(Mat<double>(s.data.y - s.y_after), s.data.u, {});
+  }
+  return s;
 }
 
 }  // namespace
@@ -121,6 +164,11 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
     t.after = warmup_score(out.after_model, test, options.test_warmup);
     out.tests.push_back(t);
   }
+  // 5. what the report shows beside the numbers above
+  out.shown = shown_record(out, est_d, selection, options);
+  for (const RankingRound& rr : out.rank.rounds) out.estimation_shares.push_back(estimation_shares(rr, est_d));
+  validation_rms(out.after_model, est_d, out.shown.init_samples, &out.estimation_after);
+  if (!out.estimation_after.allFinite()) out.estimation_after.resize(0, 0);
   return out;
 }
 

@@ -28,6 +28,7 @@
 #include "data/experiment.h"
 #include "diagnose/bound_windows.h"
 #include "diagnose/effect_ranking.h"
+#include "diagnose/residual_analysis.h"
 #include "diagnose/window_bounds.h"
 #include "diagnose/window_identification.h"
 #include "certify/certify.h"
@@ -69,12 +70,33 @@ struct TestScore {
   FreeRunScore before, after;
 };
 
+/// The record the report analyses the residual on: the selection record, or
+/// in fold mode (no selection record) the estimation record's last fold
+/// block (the final models saw those rows too). Free runs with x0 fitted on
+/// the first `init_samples` samples (fit/output_error_fit.h validation_rms).
+struct ShownRecord {
+  Experiment<double> data;
+  bool last_fold = false;
+  Eigen::Index first = 0;         ///< last_fold: its first row in the estimation record
+  Eigen::Index init_samples = 0;
+  Mat<double> y_before, y_after;  ///< the models' free runs on `data`
+  bool finite = false;            ///< both free runs finite; only then are the analyses filled
+  ResidualAnalysis before, after; ///< of data.y − y_before and data.y − y_after (residual_analysis.h)
+};
+
 struct DiagnoseResult {
   RankingResult rank;
   LpvModel<double> before_model, after_model;  ///< as rounded for the certificates
   std::vector<WindowBounds> before, after;     ///< one per bound window, same windows
   WindowIdentification before_id, after_id;    ///< Theorem 3.1 on the first window
   std::vector<TestScore> tests;                ///< one per test set given, in their order
+  ShownRecord shown;
+  /// Per ranking round, per ranked candidate: the share of the round's
+  /// estimation residual energy that the candidate's added output signal
+  /// explains (least-squares projection, residual_analysis.h candidate_shares).
+  std::vector<std::vector<double>> estimation_shares;
+  /// The after model's free run on the estimation record (empty if not finite).
+  Mat<double> estimation_after;
   /// Every window's bound, before and after, verified exactly.
   bool verified() const;
 };

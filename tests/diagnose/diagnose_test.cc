@@ -8,6 +8,7 @@
 //    (even a wrong one) leaves every choice and every exact bound unchanged,
 //    and the score equals the free-run RMS of the chosen model on it;
 //  - bad options are refused before any work.
+#include <cmath>
 #include <filesystem>
 #include <vector>
 
@@ -93,6 +94,30 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   // after: only the noise (std 0.02) is left; before: the 0.5 offset is not explained
   EXPECT_LT(r.after[0].bounds.dmax, 0.04);
   EXPECT_GT(r.before[0].bounds.dmax, 0.2);
+
+  // what the report shows comes with the result (a second front end renders it):
+  // the residual on the selection record, before and after, by free run
+  const ShownRecord& shown = r.shown;
+  EXPECT_FALSE(shown.last_fold);
+  ASSERT_EQ(shown.data.n(), c.selection.n());
+  ASSERT_TRUE(shown.finite);
+  Mat<double> y_after;
+  validation_rms(r.after_model, c.selection, DiagnoseOptions{}.ranking.init_samples, &y_after);
+  EXPECT_EQ(shown.y_after, y_after);
+  const Mat<double> res_after = c.selection.y - y_after;
+  EXPECT_NEAR(shown.after.rms.overall, std::sqrt(res_after.squaredNorm() / static_cast<double>(res_after.size())), 1e-12);
+  EXPECT_LT(shown.after.rms.overall, 0.04);  // the noise
+  EXPECT_GT(shown.before.rms.overall, 0.2);  // the unexplained offset
+  ASSERT_EQ(r.estimation_shares.size(), r.rank.rounds.size());
+  for (size_t i = 0; i < r.rank.rounds.size(); ++i) {
+    ASSERT_EQ(r.estimation_shares[i].size(), r.rank.rounds[i].ranked.size());
+    for (double share : r.estimation_shares[i]) EXPECT_TRUE(share >= 0 && share <= 1 + 1e-12) << share;
+  }
+  // the offset candidate explains most of the declared model's estimation residual
+  const RankingRound& first = r.rank.rounds.front();
+  ASSERT_GE(first.chosen, 0);
+  EXPECT_GT(r.estimation_shares[0][static_cast<size_t>(first.chosen)], 0.5);
+  ASSERT_EQ(r.estimation_after.rows(), c.est_d.n());
 
   // the test role: the chosen models' free-run RMS, computed here again
   ASSERT_EQ(r.tests.size(), 1u);
