@@ -160,10 +160,7 @@ int run_diagnose(DiagnoseArgs& a) {
                        val_text, val_outputs);
   } else {
     const Eigen::Index n = est_d.n();
-    const auto cut = static_cast<Eigen::Index>(std::floor(static_cast<double>(n) * (1.0 - a.holdout)));
-    if (cut < 10 || n - cut < 10)
-      throw InputError("--holdout " + std::to_string(a.holdout) + " leaves fewer than 10 samples on one side of " +
-                       std::to_string(n));
+    const Eigen::Index cut = holdout_cut(n, a.holdout);
     val_d = select_rows(est_d, cut, n);
     est_d = select_rows(est_d, 0, cut);
     est_q = select_rows(est_q, 0, cut);

@@ -8,6 +8,15 @@
 
 namespace lpvid {
 
+Eigen::Index holdout_cut(Eigen::Index n, double holdout) {
+  if (!(holdout > 0 && holdout < 1)) throw InputError("--holdout must be in (0, 1)");
+  const auto cut = static_cast<Eigen::Index>(std::floor(static_cast<double>(n) * (1.0 - holdout)));
+  if (cut < 10 || n - cut < 10)
+    throw InputError("--holdout " + std::to_string(holdout) + " leaves fewer than 10 samples on one side of " +
+                     std::to_string(n));
+  return cut;
+}
+
 std::vector<FoldBlock> blocked_folds(Eigen::Index n, int k, Eigen::Index warmup) {
   if (k < 2) throw InputError("--folds must be at least 2 (got " + std::to_string(k) + ")");
   std::vector<FoldBlock> out;

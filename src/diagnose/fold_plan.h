@@ -35,6 +35,11 @@ struct FoldBlock {
   Eigen::Index first = 0, last = 0;  ///< rows [first, last) of the estimation record
 };
 
+/// The one-split role plan (no folds): rows [0, cut) fit, rows [cut, n)
+/// select the effects (the last `holdout` share of the record, 0 < holdout
+/// < 1). Throws InputError when either side has fewer than 10 samples.
+Eigen::Index holdout_cut(Eigen::Index n, double holdout);
+
 /// K blocked folds of n samples. Throws InputError unless K >= 2 and every
 /// block has more than 2·warmup samples (a warm-up and as many scored).
 std::vector<FoldBlock> blocked_folds(Eigen::Index n, int k, Eigen::Index warmup);

@@ -141,3 +141,19 @@ TEST(FoldPlan, WarmupScoreLeavesTheWarmupOutAndGivesTheFitPercent) {
 
 }  // namespace
 }  // namespace lpvid
+
+namespace lpvid {
+namespace {
+
+TEST(HoldoutCut, TheLastShareSelectsAndBothSidesKeepTenSamples) {
+  EXPECT_EQ(holdout_cut(100, 0.3), 70);   // floor(100 · (1 − 0.3)) in double is 70
+  EXPECT_EQ(holdout_cut(25, 0.5), 12);    // floor(12.5): 12 fit, 13 select
+  EXPECT_EQ(holdout_cut(20, 0.5), 10);    // exactly ten on each side
+  EXPECT_THROW(holdout_cut(19, 0.5), InputError);   // 9 fit
+  EXPECT_THROW(holdout_cut(100, 0.05), InputError);  // 5 select
+  EXPECT_THROW(holdout_cut(100, 1.0), InputError);
+  EXPECT_THROW(holdout_cut(100, 0.0), InputError);
+}
+
+}  // namespace
+}  // namespace lpvid
