@@ -20,32 +20,12 @@ struct KypLayout {
   double sigma_z = 1.0, sigma_r = 1.0;
 };
 
-KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index taps,
-                const Mat<double>& E) {
-  obj.validate();
-  if (z.rows() != r.rows()) throw std::invalid_argument("delta form (KYP): z and r have different lengths");
-  check_uncertainty_excited(z);
-  KypLayout f;
-  const Eigen::Index n = z.rows();
-  f.nz = z.cols();
-  f.ny = r.cols();
-  f.K = std::clamp<Eigen::Index>(taps, 1, n);
-  f.sigma_z = rms(z);
-  f.sigma_r = rms(r);
-  if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
-  const Mat<double> zs = z / f.sigma_z;
-  const Mat<double> rs = r / f.sigma_r;
-  const double kz = f.sigma_z / f.sigma_r;  // h' = kz·h, t' = kz²·t (as delta_form_lmi.cc)
-  const Eigen::Index q = f.ny * f.nz, nt = f.K * q;
-
+/// (KYP) as one LMI block, in ξ order: rows 0 … K·nz−1 are z_k, z_{k−1}, …;
+/// then ny rows of w; P (state x = ξ rows nz … S−1) enters with + P at the
+/// x_k rows and − P at the x_{k+1} rows (ξ rows 0 … S−nz−1).
+void add_kyp_block(KypLayout& f, const BoundObjective& obj, double kz) {
   LmiProgram& p = f.program;
-  f.tap0 = p.add_variables(static_cast<int>(nt));
-  if (!obj.delta_fixed())
-    f.t = p.add_variable("", obj.kind == BoundObjective::Kind::kWeighted ? obj.lambda / (f.sigma_z * f.sigma_z) : 1.0);
-  if (!obj.dmax_fixed())
-    f.s = p.add_variable("", obj.kind == BoundObjective::Kind::kWeighted ? 1.0 - obj.lambda : 1.0);
-
-  // (KYP), in ξ order: rows 0 … K·nz−1 are z_k, z_{k−1}, …; then ny rows of w.
+  const Eigen::Index q = f.ny * f.nz;
   const int S = static_cast<int>(f.K * f.nz), W = static_cast<int>(f.ny);
   const int A = p.add_block("kyp_bounded_real", S + W);
   const int nzi = static_cast<int>(f.nz);
@@ -61,7 +41,6 @@ KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective
       for (Eigen::Index j = 0; j < f.nz; ++j)
         p.add_entry(A, static_cast<int>(f.tap0 + l * q + i * f.nz + j), static_cast<int>(l * f.nz + j),
                     S + static_cast<int>(i), 1.0);
-  // P (state x = ξ rows nz … S−1): + P at the x_k rows, − P at the x_{k+1} rows (ξ rows 0 … S−nz−1).
   const int s_dim = S - nzi;
   for (int a = 0; a < s_dim; ++a)
     for (int b = a; b < s_dim; ++b) {
@@ -69,8 +48,14 @@ KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective
       p.add_entry(A, v, a + nzi, b + nzi, 1.0);
       p.add_entry(A, v, a, b, -1.0);
     }
+}
 
-  // (C2) through a thin QR of [Z E r] (scaled): ‖r − Z h − E g‖ = ‖c − R [h; g]‖.
+/// (C2) through a thin QR of [Z E r] (scaled): ‖r − Z h − E g‖ = ‖c − R [h; g]‖,
+/// so the block has min(n·ny, unknowns + 1) + 1 rows instead of n·ny + 1.
+void add_noise_qr_block(KypLayout& f, const BoundObjective& obj, const Mat<double>& zs, const Mat<double>& rs,
+                        const Mat<double>& E) {
+  LmiProgram& p = f.program;
+  const Eigen::Index n = zs.rows(), q = f.ny * f.nz, nt = f.K * q;
   const Eigen::Index rows = n * f.ny, m = E.cols(), nv = nt + m;
   if (m > 0 && E.rows() != rows) throw std::invalid_argument("delta form (KYP): extra regressors have the wrong length");
   if (m > 0) f.g0 = p.add_variables(static_cast<int>(m));
@@ -105,6 +90,31 @@ KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective
     for (Eigen::Index a = 0; a <= std::min(c, rr - 1); ++a)
       if (R(a, c) != 0.0) p.add_entry(B, var, 0, static_cast<int>(1 + a), -R(a, c));
   }
+}
+
+KypLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index taps,
+                const Mat<double>& E) {
+  obj.validate();
+  if (z.rows() != r.rows()) throw std::invalid_argument("delta form (KYP): z and r have different lengths");
+  check_uncertainty_excited(z);
+  KypLayout f;
+  const Eigen::Index n = z.rows();
+  f.nz = z.cols();
+  f.ny = r.cols();
+  f.K = std::clamp<Eigen::Index>(taps, 1, n);
+  f.sigma_z = rms(z);
+  f.sigma_r = rms(r);
+  if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
+  const double kz = f.sigma_z / f.sigma_r;  // h' = kz·h, t' = kz²·t (as delta_form_lmi.cc)
+
+  LmiProgram& p = f.program;
+  f.tap0 = p.add_variables(static_cast<int>(f.K * f.ny * f.nz));
+  if (!obj.delta_fixed())
+    f.t = p.add_variable("", obj.kind == BoundObjective::Kind::kWeighted ? obj.lambda / (f.sigma_z * f.sigma_z) : 1.0);
+  if (!obj.dmax_fixed())
+    f.s = p.add_variable("", obj.kind == BoundObjective::Kind::kWeighted ? 1.0 - obj.lambda : 1.0);
+  add_kyp_block(f, obj, kz);
+  add_noise_qr_block(f, obj, Mat<double>(z / f.sigma_z), Mat<double>(r / f.sigma_r), E);
   return f;
 }
 

@@ -27,19 +27,11 @@ void add_dense_upper(LmiProgram& p, int b, int v, const Mat<double>& M) {
       if (M(i, j) != 0.0) p.add_entry(b, v, static_cast<int>(i), static_cast<int>(j), M(i, j));
 }
 
-Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObjective& obj) {
-  obj.validate();
-  Layout f;
-  f.n = sig.n();
-  f.nz = sig.zb.cols();
-  f.ny = sig.rb.cols();
-  const bool paper = sig.Tz_paper.size() > 0;
-  if (paper && sig.nq() > 0) throw std::invalid_argument("relaxed program: paper mode needs a fixed model");
-  if (q_bar.size() != sig.nq()) throw std::invalid_argument("relaxed program: q_bar has the wrong size");
-
-  const Mat<double> zbar = sig.z_at(q_bar);
-  // Horizon: drop the leading samples where z̄ = 0 (signal mode), or the
-  // trailing zero columns of T_z (paper mode): both force w_k = 0 for k < m.
+/// Horizon and scales: drop the leading samples where z̄ = 0 (signal mode),
+/// or the trailing zero columns of T_z (paper mode): both force w_k = 0 for
+/// k < m. σ_z from z̄ (or T_z's first column), σ_r from r̄; each unknown
+/// scaled so that a unit step moves z and r by about their RMS.
+void set_horizon_and_scales(Layout& f, const AffineSignals& sig, const Mat<double>& zbar, bool paper) {
   if (paper) {
     Eigen::Index m = 0;
     while (m < f.n && sig.Tz_paper.col(f.n - 1 - m).isZero(0.0)) ++m;
@@ -55,30 +47,23 @@ Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObje
   for (const auto& Zj : sig.Z)
     if (!Zj.topRows(f.m).isZero(0.0))
       throw std::invalid_argument("relaxed program: an unknown moves z at a sample the relaxation pins to zero");
-
   f.sigma_z = paper ? std::sqrt(sig.Tz_paper.col(0).squaredNorm() / static_cast<double>(f.n * f.nz))
                     : rms(zbar.bottomRows(f.L));
   if (!(f.sigma_z > 0.0)) f.sigma_z = 1.0;
   f.sigma_r = rms(sig.rb);
   if (!(f.sigma_r > 0.0)) f.sigma_r = 1.0;
-  const double kz = f.sigma_z / f.sigma_r;
-
-  LmiProgram& p = f.program;
-  // Scale each unknown so that a unit step moves z and r by about their RMS.
   f.qscale.assign(static_cast<size_t>(sig.nq()), 1.0);
   for (Eigen::Index j = 0; j < sig.nq(); ++j) {
     const double a = rms(sig.Z[static_cast<size_t>(j)]) / f.sigma_z, b = rms(sig.R[static_cast<size_t>(j)]) / f.sigma_r;
     const double c = std::max(a, b);
     f.qscale[static_cast<size_t>(j)] = c > 0.0 ? c : 1.0;
   }
-  f.q0 = sig.nq() ? p.add_variables(static_cast<int>(sig.nq())) : 0;
-  f.w0 = p.add_variables(static_cast<int>(f.L * f.ny));
-  if (!obj.delta_fixed())
-    f.t = p.add_variable("delta2", obj.kind == BoundObjective::Kind::kWeighted ? obj.lambda / (f.sigma_z * f.sigma_z) : 1.0);
-  if (!obj.dmax_fixed())
-    f.s = p.add_variable("dmax2", obj.kind == BoundObjective::Kind::kWeighted ? 1.0 - obj.lambda : 1.0);
+}
 
-  // (C1): [Lin(q), T_wᵀ; T_w, t I], size L + L·ny.
+/// (C1): [Lin(q), T_wᵀ; T_w, t I], size L + L·ny; Lin(q) the linearisation of
+/// T_z(q)ᵀT_z(q) at q̄ (T_zᵀT_z itself in paper mode, where q is empty).
+void add_c1_block(Layout& f, const AffineSignals& sig, const Mat<double>& zbar, bool paper, const BoundObjective& obj) {
+  LmiProgram& p = f.program;
   const int A = p.add_block("C1_relaxed", static_cast<int>(f.L * (1 + f.ny)));
   if (paper) {
     const Mat<double> Tz = sig.Tz_paper / f.sigma_z;
@@ -97,6 +82,7 @@ Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObje
       add_dense_upper(p, A, static_cast<int>(f.q0 + j), Mat<double>(Gj + Gj.transpose()));
     }
   }
+  const double kz = f.sigma_z / f.sigma_r;
   const double t_fixed = obj.delta * obj.delta * kz * kz;
   for (Eigen::Index a = 0; a < f.L; ++a)
     for (Eigen::Index i = 0; i < f.ny; ++i) {
@@ -108,6 +94,28 @@ Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObje
       for (Eigen::Index b = 0; b <= a; ++b)
         p.add_entry(A, static_cast<int>(f.w0 + (a - b) * f.ny + i), static_cast<int>(b), row, 1.0);
     }
+}
+
+Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObjective& obj) {
+  obj.validate();
+  Layout f;
+  f.n = sig.n();
+  f.nz = sig.zb.cols();
+  f.ny = sig.rb.cols();
+  const bool paper = sig.Tz_paper.size() > 0;
+  if (paper && sig.nq() > 0) throw std::invalid_argument("relaxed program: paper mode needs a fixed model");
+  if (q_bar.size() != sig.nq()) throw std::invalid_argument("relaxed program: q_bar has the wrong size");
+  const Mat<double> zbar = sig.z_at(q_bar);
+  set_horizon_and_scales(f, sig, zbar, paper);
+
+  LmiProgram& p = f.program;
+  f.q0 = sig.nq() ? p.add_variables(static_cast<int>(sig.nq())) : 0;
+  f.w0 = p.add_variables(static_cast<int>(f.L * f.ny));
+  if (!obj.delta_fixed())
+    f.t = p.add_variable("delta2", obj.kind == BoundObjective::Kind::kWeighted ? obj.lambda / (f.sigma_z * f.sigma_z) : 1.0);
+  if (!obj.dmax_fixed())
+    f.s = p.add_variable("dmax2", obj.kind == BoundObjective::Kind::kWeighted ? 1.0 - obj.lambda : 1.0);
+  add_c1_block(f, sig, zbar, paper, obj);
 
   // (C2): [N s, dᵀ; d, I], d = rb − R q − w.
   const int B = add_noise_block(p, f.s, obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r), Mat<double>(sig.rb / f.sigma_r));
