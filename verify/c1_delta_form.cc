@@ -31,7 +31,7 @@
 #include "core/number_text.h"
 #include "verify/c1_check.h"
 #include "verify/exact_psd.h"
-#include "verify/gmp_raii.h"
+#include "core/gmp_raii.h"
 #include "verify/power_of_two.h"
 #include "verify/verdict_text.h"
 
@@ -57,9 +57,6 @@ std::pair<Rational, std::string> balancing_scale(const Rational& delta2) {
 /// rational products with a gcd each.
 Mat<Rational> schur_complement(const Mat<Rational>& taps, Eigen::Index L, Eigen::Index ny, Eigen::Index nz,
                                const Rational& d2) {
-  using psd_detail::Mpq;
-  using psd_detail::Mpz;
-  using psd_detail::MpzArray;
   const Eigen::Index K = taps.rows(), width = ny * nz;
   Mpz D, f;
   mpz_set_ui(D.z, 1);

@@ -6,14 +6,11 @@
 #include <cstddef>
 #include <vector>
 
-#include "verify/gmp_raii.h"
+#include "core/gmp_raii.h"
 
 namespace lpvid {
 
 Mat<Rational> column_gram(const Mat<Rational>& T) {
-  using psd_detail::Mpq;
-  using psd_detail::Mpz;
-  using psd_detail::MpzArray;
   const Eigen::Index rows = T.rows(), n = T.cols();
   const std::size_t r = static_cast<std::size_t>(rows);
   MpzArray num(r * static_cast<std::size_t>(n)), den(static_cast<std::size_t>(n));

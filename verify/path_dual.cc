@@ -8,16 +8,13 @@
 
 #include "core/number_text.h"
 #include "toeplitz/tap_toeplitz.h"
-#include "verify/gmp_raii.h"
+#include "core/gmp_raii.h"
 #include "verify/power_of_two.h"
 #include "verify/psd_filter.h"
 
 namespace lpvid {
 namespace {
 
-using psd_detail::Mpz;
-using psd_detail::MpzArray;
-using psd_detail::mpz_to_rational;
 
 /// z·2^k as a rational.
 Rational scaled(mpz_srcptr z, long k) { return mpz_to_rational(z) * power_of_two(k); }

@@ -2,12 +2,12 @@
 
 #include <gmp.h>
 
-#include "verify/gmp_raii.h"
+#include "core/gmp_raii.h"
 
 namespace lpvid {
 
 Rational power_of_two(long e) {
-  psd_detail::Mpq p;
+  Mpq p;
   mpq_set_ui(p.q, 1, 1);
   if (e >= 0)
     mpq_mul_2exp(p.q, p.q, static_cast<mp_bitcnt_t>(e));
@@ -46,7 +46,7 @@ std::vector<long> diagonal_balance_exponents(const Mat<Rational>& M, long min_ra
 
 Mat<Rational> diagonal_congruence(const Mat<Rational>& M, const std::vector<long>& k) {
   Mat<Rational> out(M.rows(), M.cols());
-  psd_detail::Mpq x;
+  Mpq x;
   for (Eigen::Index i = 0; i < M.rows(); ++i)
     for (Eigen::Index j = 0; j < M.cols(); ++j) {
       const long e = k[static_cast<std::size_t>(i)] + k[static_cast<std::size_t>(j)];

@@ -19,8 +19,6 @@ namespace {
 
 using psd_detail::check_witness;
 using psd_detail::IntegerMatrix;
-using psd_detail::Mpq;
-using psd_detail::Mpz;
 using psd_detail::reduced_witness;
 
 /// Runs f(lo, hi) on [begin, end) split into `threads` chunks of about equal

@@ -19,7 +19,6 @@
 namespace lpvid {
 namespace {
 
-using psd_detail::Mpz;
 
 /// Integer vector proportional (positive factor) to a finite double vector.
 std::vector<Mpz> integer_vector_of_doubles(const Vec<double>& v) {

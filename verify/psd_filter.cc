@@ -11,6 +11,7 @@
 #include <gmp.h>
 #include <mpfr.h>
 
+#include "core/gmp_raii.h"
 #include "core/number_text.h"
 #include "verify/power_of_two.h"
 
@@ -118,12 +119,9 @@ std::string contraction_problem() {
 /// The largest double ≤ q (MPFR, rounding downward twice: to 53 bits with an
 /// unbounded exponent, then to the double range; both round down).
 double round_down(const Rational& q) {
-  mpfr_t f;
-  mpfr_init2(f, 53);
-  mpfr_set_q(f, q.mpq(), MPFR_RNDD);
-  double x = mpfr_get_d(f, MPFR_RNDD);
-  mpfr_clear(f);
-  return x;
+  Mpfr f(53);
+  mpfr_set_q(f.f, q.mpq(), MPFR_RNDD);
+  return mpfr_get_d(f.f, MPFR_RNDD);
 }
 
 /// The candidate v = [−R11⁻¹·R(0:k−1, k); 1] for the failed step k of an

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "verify/exact_psd.h"
-#include "verify/gmp_raii.h"
+#include "core/gmp_raii.h"
 
 namespace lpvid::psd_detail {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "verify/gmp_raii.h"
+#include "core/gmp_raii.h"
 
 namespace lpvid::psd_detail {
 

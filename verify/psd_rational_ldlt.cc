@@ -12,12 +12,10 @@
 
 #include "core/number_text.h"
 #include "verify/exact_psd.h"
-#include "verify/gmp_raii.h"
+#include "core/gmp_raii.h"
 
 namespace lpvid {
 
-using psd_detail::Mpq;
-using psd_detail::MpqArray;
 
 PsdResult decide_psd_rational_ldlt(const Mat<Rational>& M) {
   require_symmetric(M);

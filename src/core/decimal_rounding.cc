@@ -5,26 +5,22 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "core/gmp_raii.h"
 #include "core/number_text.h"
 
 namespace lpvid {
 
 Rational power_of_ten(int e) {
-  mpz_t p;
-  mpz_init(p);
-  mpz_ui_pow_ui(p, 10, static_cast<unsigned long>(std::abs(e)));
-  mpq_t q;
-  mpq_init(q);
+  Mpz p;
+  mpz_ui_pow_ui(p.z, 10, static_cast<unsigned long>(std::abs(e)));
+  Mpq q;
   if (e >= 0) {
-    mpq_set_z(q, p);
+    mpq_set_z(q.q, p.z);
   } else {
-    mpq_set_den(q, p);  // 1/10^|e|: the numerator of a fresh mpq is 0, set it to 1
-    mpz_set_ui(mpq_numref(q), 1);
+    mpq_set_den(q.q, p.z);  // 1/10^|e|: the numerator of a fresh mpq is 0, set it to 1
+    mpz_set_ui(mpq_numref(q.q), 1);
   }
-  Rational out(q);
-  mpq_clear(q);
-  mpz_clear(p);
-  return out;
+  return Rational(q.q);
 }
 
 Rational round_to_digits(double x, int digits) {
@@ -51,19 +47,12 @@ Rational round_directed(const Rational& q, int digits, bool up) {
   while (power_of_ten(e + 1) <= q) ++e;
   const Rational unit = power_of_ten(e - digits + 1);
   const Rational s = q / unit;  // in [10^(digits−1), 10^digits)
-  mpz_t c;
-  mpz_init(c);
+  Mpz c;
   if (up)
-    mpz_cdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
+    mpz_cdiv_q(c.z, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
   else
-    mpz_fdiv_q(c, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, c);
-  Rational out = Rational(r) * unit;
-  mpq_clear(r);
-  mpz_clear(c);
-  return out;
+    mpz_fdiv_q(c.z, mpq_numref(s.mpq()), mpq_denref(s.mpq()));
+  return mpz_to_rational(c.z) * unit;
 }
 
 }  // namespace

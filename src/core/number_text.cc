@@ -9,6 +9,7 @@
 #include <gmp.h>
 #include <mpfr.h>
 
+#include "core/gmp_raii.h"
 #include "core/input_error.h"
 #include "core/limits.h"
 
@@ -97,40 +98,28 @@ std::string_view trim(std::string_view s) {
 }
 
 Rational decimal_to_rational(const Decimal& d) {
-  mpz_t num, pow10;
-  mpz_init_set_str(num, d.digits.c_str(), 10);
-  mpz_init(pow10);
-  mpz_ui_pow_ui(pow10, 10, static_cast<unsigned long>(d.scale < 0 ? -d.scale : d.scale));
-  mpq_t q;
-  mpq_init(q);
+  Mpz num, pow10;
+  mpz_set_str(num.z, d.digits.c_str(), 10);
+  mpz_ui_pow_ui(pow10.z, 10, static_cast<unsigned long>(d.scale < 0 ? -d.scale : d.scale));
+  Mpq q;
   if (d.scale >= 0) {
-    mpz_mul(num, num, pow10);
-    mpq_set_z(q, num);
+    mpz_mul(num.z, num.z, pow10.z);
+    mpq_set_z(q.q, num.z);
   } else {
-    mpq_set_num(q, num);
-    mpq_set_den(q, pow10);
-    mpq_canonicalize(q);
+    mpq_set_num(q.q, num.z);
+    mpq_set_den(q.q, pow10.z);
+    mpq_canonicalize(q.q);
   }
-  if (d.negative) mpq_neg(q, q);
-  Rational r(q);
-  mpq_clear(q);
-  mpz_clear(num);
-  mpz_clear(pow10);
-  return r;
+  if (d.negative) mpq_neg(q.q, q.q);
+  return Rational(q.q);
 }
 
 Rational integer_to_rational(std::string_view s) {
   std::string t(s);
   if (!t.empty() && t[0] == '+') t.erase(0, 1);
-  mpz_t z;
-  mpz_init_set_str(z, t.c_str(), 10);
-  mpq_t q;
-  mpq_init(q);
-  mpq_set_z(q, z);
-  Rational r(q);
-  mpq_clear(q);
-  mpz_clear(z);
-  return r;
+  Mpz z;
+  mpz_set_str(z.z, t.c_str(), 10);
+  return mpz_to_rational(z.z);
 }
 
 }  // namespace
@@ -171,12 +160,9 @@ double double_from_text(std::string_view text) {
 }
 
 double nearest_double(const Rational& q) {
-  mpfr_t f;
-  mpfr_init2(f, 53);
-  mpfr_set_q(f, q.mpq(), MPFR_RNDN);
-  double x = mpfr_get_d(f, MPFR_RNDN);
-  mpfr_clear(f);
-  return x;
+  Mpfr f(53);
+  mpfr_set_q(f.f, q.mpq(), MPFR_RNDN);
+  return mpfr_get_d(f.f, MPFR_RNDN);
 }
 
 Mat<double> nearest_double(const Mat<Rational>& m) {
@@ -215,8 +201,8 @@ std::string exact_decimal_or_fraction(const Rational& q) {
   mpz_srcptr num = mpq_numref(q.mpq());
   mpz_srcptr den = mpq_denref(q.mpq());
   if (mpz_cmp_ui(den, 1) == 0) return rational_to_text(q);
-  mpz_t rest, scaled, factor;
-  mpz_init_set(rest, den);
+  Mpz rest_owner(den);
+  mpz_ptr rest = rest_owner.z;
   const unsigned long twos = mpz_scan1(rest, 0);
   mpz_tdiv_q_2exp(rest, rest, twos);
   unsigned long fives = 0;
@@ -230,8 +216,8 @@ std::string exact_decimal_or_fraction(const Rational& q) {
     out = rational_to_text(q);
   } else {
     // value = num / den = (num · 10^k / den) / 10^k, and 10^k / den = 2^(k-twos)·5^(k-fives).
-    mpz_init(scaled);
-    mpz_init(factor);
+    Mpz scaled_owner, factor_owner;
+    mpz_ptr scaled = scaled_owner.z, factor = factor_owner.z;
     mpz_ui_pow_ui(factor, 5, k - fives);
     mpz_mul_2exp(factor, factor, k - twos);
     mpz_mul(scaled, num, factor);
@@ -242,10 +228,7 @@ std::string exact_decimal_or_fraction(const Rational& q) {
     std::string digits(buf.data());
     if (digits.size() <= k) digits = std::string(k + 1 - digits.size(), '0') + digits;
     out = (negative ? "-" : "") + digits.substr(0, digits.size() - k) + "." + digits.substr(digits.size() - k);
-    mpz_clear(scaled);
-    mpz_clear(factor);
   }
-  mpz_clear(rest);
   return out;
 }
 

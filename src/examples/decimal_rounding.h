@@ -5,6 +5,7 @@
 #include <cmath>
 #include <gmp.h>
 
+#include "core/gmp_raii.h"
 #include "core/scalar.h"
 
 namespace lpvid {
@@ -21,23 +22,12 @@ inline Rational round_decimal(const Rational& q, int digits) {
   Rational scale(1);
   for (int i = 0; i < digits; ++i) scale *= 10;
   const Rational s = q * scale;
-  mpz_t num, den, quo;
-  mpz_init_set(num, mpq_numref(s.mpq()));
-  mpz_init_set(den, mpq_denref(s.mpq()));
-  mpz_init(quo);
-  mpz_mul_ui(num, num, 2);
-  mpz_add(num, num, den);  // floor((2·num + den) / (2·den)) = floor(s + 1/2)
-  mpz_mul_ui(den, den, 2);
-  mpz_fdiv_q(quo, num, den);
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, quo);
-  Rational out(r);
-  mpq_clear(r);
-  mpz_clear(num);
-  mpz_clear(den);
-  mpz_clear(quo);
-  return out / scale;
+  Mpz num(mpq_numref(s.mpq())), den(mpq_denref(s.mpq())), quo;
+  mpz_mul_ui(num.z, num.z, 2);
+  mpz_add(num.z, num.z, den.z);  // floor((2·num + den) / (2·den)) = floor(s + 1/2)
+  mpz_mul_ui(den.z, den.z, 2);
+  mpz_fdiv_q(quo.z, num.z, den.z);
+  return mpz_to_rational(quo.z) / scale;
 }
 
 }  // namespace lpvid

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/gmp_raii.h"
 #include "core/number_text.h"
 
 namespace lpvid {
@@ -36,20 +37,15 @@ double scheduling_grid(double v) {
 
 Rational scheduling_grid(const Rational& v) {
   // floor(v·2^b + 1/2) = floor((2·num·2^b + den) / (2·den))
-  mpz_t num, den, q;
-  mpz_inits(num, den, q, nullptr);
-  mpz_mul_2exp(num, mpq_numref(v.mpq()), kSchedulingGridBits + 1);
-  mpz_add(num, num, mpq_denref(v.mpq()));
-  mpz_mul_2exp(den, mpq_denref(v.mpq()), 1);
-  mpz_fdiv_q(q, num, den);
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, q);
-  mpq_div_2exp(r, r, kSchedulingGridBits);
-  Rational out(r);
-  mpq_clear(r);
-  mpz_clears(num, den, q, nullptr);
-  return out;
+  Mpz num, den, q;
+  mpz_mul_2exp(num.z, mpq_numref(v.mpq()), kSchedulingGridBits + 1);
+  mpz_add(num.z, num.z, mpq_denref(v.mpq()));
+  mpz_mul_2exp(den.z, mpq_denref(v.mpq()), 1);
+  mpz_fdiv_q(q.z, num.z, den.z);
+  Mpq r;
+  mpq_set_z(r.q, q.z);
+  mpq_div_2exp(r.q, r.q, kSchedulingGridBits);
+  return Rational(r.q);
 }
 
 double scheduling_grid_sqrt(double v) { return scheduling_grid(std::sqrt(std::abs(v))); }
@@ -57,27 +53,22 @@ double scheduling_grid_sqrt(double v) { return scheduling_grid(std::sqrt(std::ab
 Rational scheduling_grid_sqrt(const Rational& v_in) {
   // N = |v|·4^b = p/q. a = isqrt(floor(N)) = floor(√N). floor(√N + 1/2) is a + 1
   // iff √N ≥ a + 1/2 iff 4p ≥ (2a + 1)²·q (exact), else a.
-  mpz_t p, q, a, lhs, rhs;
-  mpz_inits(p, q, a, lhs, rhs, nullptr);
-  mpz_abs(p, mpq_numref(v_in.mpq()));
-  mpz_mul_2exp(p, p, 2 * kSchedulingGridBits);
-  mpz_set(q, mpq_denref(v_in.mpq()));
-  mpz_fdiv_q(a, p, q);
-  mpz_sqrt(a, a);
-  mpz_mul_2exp(lhs, p, 2);
-  mpz_mul_2exp(rhs, a, 1);
-  mpz_add_ui(rhs, rhs, 1);
-  mpz_mul(rhs, rhs, rhs);
-  mpz_mul(rhs, rhs, q);
-  if (mpz_cmp(lhs, rhs) >= 0) mpz_add_ui(a, a, 1);
-  mpq_t r;
-  mpq_init(r);
-  mpq_set_z(r, a);
-  mpq_div_2exp(r, r, kSchedulingGridBits);
-  Rational out(r);
-  mpq_clear(r);
-  mpz_clears(p, q, a, lhs, rhs, nullptr);
-  return out;
+  Mpz p, q, a, lhs, rhs;
+  mpz_abs(p.z, mpq_numref(v_in.mpq()));
+  mpz_mul_2exp(p.z, p.z, 2 * kSchedulingGridBits);
+  mpz_set(q.z, mpq_denref(v_in.mpq()));
+  mpz_fdiv_q(a.z, p.z, q.z);
+  mpz_sqrt(a.z, a.z);
+  mpz_mul_2exp(lhs.z, p.z, 2);
+  mpz_mul_2exp(rhs.z, a.z, 1);
+  mpz_add_ui(rhs.z, rhs.z, 1);
+  mpz_mul(rhs.z, rhs.z, rhs.z);
+  mpz_mul(rhs.z, rhs.z, q.z);
+  if (mpz_cmp(lhs.z, rhs.z) >= 0) mpz_add_ui(a.z, a.z, 1);
+  Mpq r;
+  mpq_set_z(r.q, a.z);
+  mpq_div_2exp(r.q, r.q, kSchedulingGridBits);
+  return Rational(r.q);
 }
 
 namespace {

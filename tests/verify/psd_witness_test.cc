@@ -14,7 +14,6 @@
 namespace lpvid {
 namespace {
 
-using psd_detail::Mpz;
 
 RC_GTEST_PROP(VerifyWitnessSign, RowwiseSignEqualsTheRationalQuadraticForm, ()) {
   const int n = *rc::gen::inRange(1, 7);
