@@ -80,8 +80,8 @@ Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const Refer
     return with_claim(verdict(OracleVerdict::kConfirmed,
                               claim + " lies in lpvid's certified interval " + interval + (witnessed ? "; the witness holds exactly" : ""),
                               ref.upper_certificate));
-  if (witnessed && (ref.lower_verified || (ref.upper_verified && J >= ref.upper)))
-    return with_claim(verdict(OracleVerdict::kConfirmed, claim + ": the witness holds exactly; lpvid's interval " + interval));
+  if (witnessed)
+    return with_claim(verdict(OracleVerdict::kConfirmed, claim + " is attained: the witness holds exactly; lpvid's interval " + interval));
   if (ref.upper_verified && J >= ref.upper)
     return with_claim(verdict(OracleVerdict::kConfirmed, claim + " is attained: lpvid's certificate holds at " + approx(ref.upper),
                               ref.upper_certificate));

@@ -12,9 +12,10 @@
 ///  - suboptimal: J > U·(1 + tolerance) (lpvid's primal certificate shows a
 ///    better value); identify: also J above lpvid's own identified and
 ///    certified d_max² by more than the tolerance;
-///  - confirmed: L ≤ J ≤ U·(1 + tolerance) with both ends certified, or a
-///    witness that holds exactly at the claimed values (with L certified, or
-///    J ≥ U), or a verdict equal to lpvid's certified one;
+///  - confirmed: L ≤ J ≤ U·(1 + tolerance) with both ends certified; or a
+///    witness that holds exactly at the claimed values (J is attained; it
+///    may even be below lpvid's own U); or J ≥ U (attained by lpvid's
+///    certificate); or a verdict equal to lpvid's certified one;
 ///  - undecided: lpvid could not certify enough to decide (never counted as
 ///    an outside error);
 ///  - error: no usable answer (the command failed, timed out, or wrote a

@@ -126,8 +126,9 @@ std::string junit_xml(const std::vector<CaseReport>& cases, double seconds, bool
     << t.refuted + (strict ? t.suboptimal : 0) << "\" errors=\"" << t.error << "\" skipped=\"" << t.undecided
     << "\" time=\"" << fixed(seconds, 3) << "\">\n";
   for (const CaseReport& c : cases) {
-    const std::string detail = c.claim + ": " + c.judgement.reason +
-                               (c.judgement.evidence.empty() ? "" : "\ncertificate: " + c.judgement.evidence + " (" + c.evidence_check + ")");
+    const std::string check = c.evidence_check.empty() ? "" : " (lpvid-verify: " + c.evidence_check + ")";
+    const std::string detail =
+        c.claim + ": " + c.judgement.reason + (c.judgement.evidence.empty() ? "" : "\ncertificate: " + c.judgement.evidence + check);
     o << "    <testcase classname=\"lpvid.oracle." << to_string(c.kind) << "\" name=\"" << xml_escape(c.name) << "\" time=\""
       << fixed(c.outside_seconds, 3) << "\">\n";
     switch (c.judgement.verdict) {
