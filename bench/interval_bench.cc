@@ -29,7 +29,7 @@
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 using namespace lpvid;
 

@@ -23,9 +23,9 @@
 #include <thread>
 #include <vector>
 
-#include "verify/exact_psd.h"
-#include "verify/psd_command.h"
-#include "verify/rational_matrix_io.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/psd/psd_command.h"
+#include "verify/psd/rational_matrix_io.h"
 
 namespace {
 

@@ -15,7 +15,7 @@ d.dd in [0.01, 9.99], fixed seed). With "mod17", fl(M) = v v^T exactly and
 the filter's Cholesky meets an exact zero pivot whose direction is an exact
 witness; with "random", fl(v_i v_j) carries rounding errors far above
 10^-e, so no floating direction survives the exact check (the hard case). Entries are exact decimals (the file
-format of verify/rational_matrix_io.h); the diagonal v_i^2 + s 10^-e is
+format of verify/psd/rational_matrix_io.h); the diagonal v_i^2 + s 10^-e is
 written with all e fractional digits.
 """
 import argparse

@@ -27,7 +27,7 @@ if(TARGET lpvid_lib)
 endif()
 
 # Headers go to include/lpvid/ in the folders the sources use
-# ("model/lpv_model.h", "verify/exact_psd.h"), so one include directory
+# ("model/lpv_model.h", "verify/psd/exact_psd.h"), so one include directory
 # serves every library. The top-level file gives the source folders as plain
 # paths, which install(EXPORT) rejects: they are kept for the build tree only.
 foreach(t ${LPVID_INSTALL_LIBS})
@@ -64,9 +64,9 @@ if(TARGET lpvid_lib)
   set_property(TARGET lpvid_lib PROPERTY INTERFACE_LINK_LIBRARIES ${relocatable})
 endif()
 
-# The certificate format this build reads and writes (verify/certificate_file.h),
+# The certificate format this build reads and writes (verify/certificate/certificate_file.h),
 # published as lpvid_CERTIFICATE_FORMAT next to the JSON Schema of the format.
-file(STRINGS ${PROJECT_SOURCE_DIR}/verify/certificate_file.h format_line REGEX "kCertificateFormat = \"")
+file(STRINGS ${PROJECT_SOURCE_DIR}/verify/certificate/certificate_file.h format_line REGEX "kCertificateFormat = \"")
 string(REGEX REPLACE ".*kCertificateFormat = \"([^\"]+)\".*" "\\1" LPVID_CERTIFICATE_FORMAT "${format_line}")
 
 set(LPVID_INSTALL_TARGETS ${LPVID_INSTALL_LIBS} lpvid-verify)

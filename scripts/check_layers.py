@@ -19,7 +19,9 @@ LEVELS = [
     ("src/model", "the LPV model, its file format and simulation"),
     ("src/toeplitz", "Toeplitz operators of the model along a trajectory (templated on the scalar)"),
     ("src/examples", "known systems: the paper's examples, plant analogues, effect cases"),
-    ("verify", "the exact verifier: PSD decisions and certificate checks (never a solver)"),
+    ("verify/psd", "the exact verifier's PSD decisions: filter, witnesses, exact LDLT (never a solver)"),
+    ("verify/certificate", "the exact verifier's certificate files and their checks (C1, C2, dual points)"),
+    ("verify", "the lpvid-verify command line over the two rooms below it"),
     ("src/solvers", "SDP back ends (CSDP, SDPA, outside solvers)"),
     ("src/lmi", "the LMIs of Theorems 2.1 and 3.1 and their structured solvers"),
     ("src/certify", "Theorem 2.1 for a fixed model: certificates of the upper end, the lower end or invalidation"),
@@ -38,8 +40,8 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 def room_of(path):
     """The folder (room) of a repository-relative path, e.g. src/lmi."""
     parts = path.split("/")
-    if parts[0] == "src" and len(parts) > 2:
-        return "src/" + parts[1]
+    if parts[0] in ("src", "verify") and len(parts) > 2:
+        return parts[0] + "/" + parts[1]
     return parts[0]
 
 

@@ -21,8 +21,8 @@
 
 #include "core/argv_words.h"
 #include "core/limit_options.h"
-#include "verify/certificate_check.h"
-#include "verify/psd_command.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/psd/psd_command.h"
 
 namespace {
 

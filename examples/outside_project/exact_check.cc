@@ -10,8 +10,8 @@
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "model/model_file.h"
-#include "verify/certificate_check.h"
-#include "verify/exact_psd.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/psd/exact_psd.h"
 
 namespace {
 

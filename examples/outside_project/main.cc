@@ -14,7 +14,7 @@
 #include "certify/certify.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

@@ -21,7 +21,7 @@
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/tap_toeplitz.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 

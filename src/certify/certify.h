@@ -14,7 +14,7 @@
 ///     starting at 1e-9 and multiplied by 100 until the exact check passes
 ///     (at most 5 tries);
 ///  6. the certificate is written and checked again from the file by the
-///     verifier (verify/certificate_check.h). `verified` is that verdict.
+///     verifier (verify/certificate/certificate_check.h). `verified` is that verdict.
 /// Then, in certify_fixed_model's stages: for an optimised bound the lower
 /// end from the dual (certify/dual_certify.h), with a full-horizon solve when
 /// a K-tap one leaves the gap above gap_target; for fixed bounds without a
@@ -71,7 +71,7 @@ struct CertifyOptions {
   /// the full horizon.
   bool structured = true;
   /// Write lower-end / invalidation certificates in the dense form (the full
-  /// dual matrix Y1) even when the compact form (verify/path_dual.h) applies.
+  /// dual matrix Y1) even when the compact form (verify/certificate/path_dual.h) applies.
   bool dense_dual = false;
   /// Called with a short line at each stage (solve, fallback, upper end,
   /// lower end); the CLI prints them on stderr. Unset: silent.
@@ -171,7 +171,7 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
 /// Paper mode (T_z = T_G12 T_u is not a signal Toeplitz matrix, so there is
 /// no Δ form): the w form of Theorem 2.1 is solved, w rounded to `digits`
 /// digits, and (C1) [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 checked exactly (by the
-/// verifier, on its Schur complement δ²T_zᵀT_z − T_wᵀT_w: verify/c1_w_form.cc) with δ²
+/// verifier, on its Schur complement δ²T_zᵀT_z − T_wᵀT_w: verify/certificate/c1_w_form.cc) with δ²
 /// inflated as above. T_zᵀT_z squares the data's conditioning; for long
 /// records this can fail where the Δ form would pass.
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,

@@ -9,10 +9,10 @@
 #include "core/number_text.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/fir.h"
-#include "verify/certificate_check.h"
-#include "verify/certificate_file.h"
-#include "verify/path_dual.h"
-#include "verify/psd_filter.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate_file.h"
+#include "verify/certificate/path_dual.h"
+#include "verify/psd/psd_filter.h"
 
 namespace lpvid {
 namespace {
@@ -316,7 +316,7 @@ std::string prove_floor(PathDualRecipe& recipe, const PathDualGrid& grid, const 
   return "U - 2*u_floor*I is not proved positive definite even with x = " + double_to_text(nearest_double(recipe.x)) + " (" + why + ")";
 }
 
-/// The compact form (verify/path_dual.h) from a barrier's central-path point:
+/// The compact form (verify/certificate/path_dual.h) from a barrier's central-path point:
 /// the recipe is the point itself (taps, t, μ) with x = μ; g from Y2's first
 /// column on a decimal grid; the floor γ and x as in prove_floor.
 DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<Rational>& exp,

@@ -13,7 +13,7 @@
 ///     lifts the point to the full horizon;
 ///  4. add ε·I to Y1, ε growing ×10 from the floating estimate of
 ///     max(0, −λ_min) plus the rigorous filter's shift until the filter of
-///     verify/psd_filter.h proves Y1 ≻ 0;
+///     verify/psd/psd_filter.h proves Y1 ≻ 0;
 ///  5. choose σ (Y2 = (1/σ)[σ; g][σ; g]ᵀ) to maximise the bound;
 ///  6. compute the bound exactly; write the certificate and check it again
 ///     from the file with the verifier.
@@ -43,7 +43,7 @@ struct DualOutcome {
 /// Steps 2–6 for the dual matrices of a Δ-form solve (s.dual_c1: L·(ny+nz)
 /// square, s.dual_c2: (n·ny+1) square, original units). When they come from
 /// the structured barrier's central path (s.path_mu > 0) the compact form
-/// "dual_delta_path" (verify/path_dual.h: size linear in n) is tried first,
+/// "dual_delta_path" (verify/certificate/path_dual.h: size linear in n) is tried first,
 /// the dense form "dual_delta" when it fails or `o.dense_dual`.
 /// `objective` says which claim: kFeasibility → "invalidated" (the fixed δ,
 /// d_max are the exact texts of `o`), the others → "lower_bound" on the

@@ -19,7 +19,7 @@
 #include "diagnose/bound_windows.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid::cli {
 namespace {

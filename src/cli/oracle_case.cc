@@ -16,8 +16,8 @@
 #include "oracle/outside_command.h"
 #include "oracle/task.h"
 #include "solvers/external_solvers.h"
-#include "verify/certificate_check.h"
-#include "verify/certificate_file.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate_file.h"
 
 namespace lpvid::cli {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 /// RAII owners of GMP integers and rationals and of MPFR floats: in-place
 /// GMP arithmetic without temporaries (the exact PSD decision,
-/// verify/exact_psd.h; number text and decimal rounding), and no leak when
+/// verify/psd/exact_psd.h; number text and decimal rounding), and no leak when
 /// an exception unwinds. Every GMP/MPFR value of the project lives in one.
 
 #include <gmp.h>

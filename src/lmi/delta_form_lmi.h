@@ -48,7 +48,7 @@ struct DeltaFormSolution {
   /// Set by the structured barrier (lmi/delta_form_barrier.h): dual_c1 is
   /// μ·C1⁻¹ at the point (taps, t = delta2) in original units, i.e.
   /// [I; −Tᵀ]·μ(t·I − T Tᵀ)⁻¹·[I; −Tᵀ]ᵀ + diag(0, μ·I) — the recipe of the
-  /// compact dual certificate (verify/path_dual.h). 0 when the dual matrices
+  /// compact dual certificate (verify/certificate/path_dual.h). 0 when the dual matrices
   /// come from elsewhere.
   double path_mu = 0.0;
 };

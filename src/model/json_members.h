@@ -1,7 +1,7 @@
 #pragma once
 /// Reading and writing the members of exact JSON trees (model_json_tree.h)
 /// with errors that name the file, the line and the JSON path: shared by the
-/// certificate file (verify/certificate_file.h) and the oracle's task and
+/// certificate file (verify/certificate/certificate_file.h) and the oracle's task and
 /// answer files (oracle/).
 
 #include <string>

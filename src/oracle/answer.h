@@ -15,7 +15,7 @@
 ///
 /// Numbers are read exactly (a JSON number or a string holding a decimal or
 /// p/q). The witness is optional; with it, a claim is checked at the claimed
-/// values themselves (verify/certificate_check.h), not only against lpvid's
+/// values themselves (verify/certificate/certificate_check.h), not only against lpvid's
 /// interval.
 
 #include <optional>

@@ -3,7 +3,7 @@
 /// (L·ny × L·nz; rows a·ny + i, columns b·nz + j; T(a, b) = h_{a−b}, a ≥ b),
 /// without forming dense products: the kernels of the structured barrier
 /// (lmi/delta_form_barrier.h) and of the compact dual certificate
-/// (verify/path_dual.h).
+/// (verify/certificate/path_dual.h).
 ///
 /// Taps are given as an L × (ny·nz) matrix: column i·nz + j holds h_ij(0 … L−1).
 
@@ -14,7 +14,7 @@
 namespace lpvid {
 
 /// T itself, dense (L·ny × L·nz), over any scalar: the definition the fast
-/// products are checked against, and the exact T of verify/path_dual.h.
+/// products are checked against, and the exact T of verify/certificate/path_dual.h.
 template <typename S>
 Mat<S> tap_toeplitz_dense(const Mat<S>& taps, Eigen::Index ny, Eigen::Index nz) {
   const Eigen::Index L = taps.rows();

@@ -19,8 +19,8 @@
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
 #include "toeplitz/uncertainty_toeplitz.h"
-#include "verify/certificate_check.h"
-#include "verify/certificate_file.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate_file.h"
 
 namespace lpvid {
 namespace {

@@ -17,9 +17,9 @@
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"
 #include "support/scratch_dir.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 #include "core/input_error.h"
-#include "verify/certificate_file.h"
+#include "verify/certificate/certificate_file.h"
 
 namespace lpvid {
 namespace {

@@ -21,7 +21,7 @@
 #include "examples/effect_cases.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 namespace {

@@ -16,7 +16,7 @@
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 namespace {

@@ -18,7 +18,7 @@
 #include "support/gen_identify.h"
 #include "support/scratch_dir.h"
 #include "support/siso_window_case.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 namespace {

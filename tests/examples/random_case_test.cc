@@ -23,7 +23,7 @@
 #include "support/gen_identify.h"
 #include "support/rapidcheck_draw.h"
 #include "toeplitz/fir.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 namespace {

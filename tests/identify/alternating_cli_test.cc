@@ -13,7 +13,7 @@
 
 #include "support/fixtures.h"
 #include "support/gen_identify.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 namespace {

@@ -28,7 +28,7 @@
 #include "support/gen_identify.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 namespace {

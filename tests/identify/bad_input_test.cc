@@ -15,7 +15,7 @@
 #include "lmi/delta_form_lmi.h"
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 namespace {

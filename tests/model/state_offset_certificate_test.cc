@@ -23,8 +23,8 @@
 #include "solvers/sdp_solver.h"
 #include "support/gen_identify.h"
 #include "toeplitz/uncertainty_toeplitz.h"
-#include "verify/certificate_check.h"
-#include "verify/certificate_file.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate_file.h"
 
 namespace lpvid {
 namespace {

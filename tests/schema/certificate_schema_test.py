@@ -6,7 +6,7 @@ Writes certificates with the built `lpvid` on fixtures/example1 (a primal
 --toeplitz paper, a dual "invalidated" one) and validates each against the
 schema; then checks that broken copies (a required field removed, another
 format version, a key of the other form) FAIL. Also checks that the schema's
-version is the one verify/certificate_file.h reads, so neither can drift.
+version is the one verify/certificate/certificate_file.h reads, so neither can drift.
 
 usage: certificate_schema_test.py LPVID SOURCE_DIR WORK_DIR
 """

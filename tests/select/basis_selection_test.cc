@@ -23,7 +23,7 @@
 #include "examples/paper_example1.h"
 #include "identify/basis_selection.h"
 #include "solvers/sdp_solver.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 #include "support/scratch_dir.h"
 

@@ -1,5 +1,5 @@
 // (C1) of Theorem 2.1 as the certificate checker decides it
-// (verify/c1_check.h) against the PSD decision of the full (C1) matrix,
+// (verify/certificate/c1_check.h) against the PSD decision of the full (C1) matrix,
 // built here from its definition and decided by the rational LDLᵀ reference
 // (no filter, no balancing, no Schur step):
 //  - form "w": [T_zᵀT_z, T_wᵀ; T_w, δ²I] with T_zᵀT_z the plain product;
@@ -18,9 +18,9 @@
 #include "support/gen_matrices.h"
 #include "support/gen_numbers.h"
 #include "toeplitz/signal_toeplitz.h"
-#include "verify/c1_check.h"
-#include "verify/exact_psd.h"
-#include "verify/power_of_two.h"
+#include "verify/certificate/c1_check.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/psd/power_of_two.h"
 
 namespace lpvid {
 namespace {

@@ -24,8 +24,8 @@
 #include "support/fixtures.h"
 #include "support/gen_files.h"
 #include "support/scratch_dir.h"
-#include "verify/certificate_check.h"
-#include "verify/certificate_file.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate_file.h"
 
 namespace lpvid {
 namespace {

@@ -1,11 +1,11 @@
-// column_gram (verify/column_gram.h) against the plain rational product TᵀT,
+// column_gram (verify/certificate/column_gram.h) against the plain rational product TᵀT,
 // on matrices with leading zero rows in some columns and mixed denominators.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
 #include "support/gen_numbers.h"
-#include "verify/column_gram.h"
+#include "verify/certificate/column_gram.h"
 
 namespace lpvid {
 namespace {

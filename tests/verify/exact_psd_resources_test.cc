@@ -9,8 +9,8 @@
 
 #include "core/number_text.h"
 #include "support/input_error_text.h"
-#include "verify/exact_psd.h"
-#include "verify/psd_internal.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/psd/psd_internal.h"
 
 namespace lpvid {
 namespace {

@@ -1,4 +1,4 @@
-#include "verify/exact_psd.h"
+#include "verify/psd/exact_psd.h"
 
 #include <gmp.h>
 
@@ -12,7 +12,7 @@
 
 #include "core/number_text.h"
 #include "support/gen_matrices.h"
-#include "verify/psd_internal.h"
+#include "verify/psd/psd_internal.h"
 
 namespace lpvid {
 namespace {

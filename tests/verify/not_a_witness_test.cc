@@ -1,4 +1,4 @@
-// The claim "not_a_witness" (verify/certificate_file.h): a primal point that
+// The claim "not_a_witness" (verify/certificate/certificate_file.h): a primal point that
 // fails Theorem 2.1 exactly. Known answers by hand on a two-sample record:
 // the model ŷ = u (A = B = C = 0, D = 1, multiplicative W = 1, so z = u),
 // data u = (1, 1), y = (1, 2), hence the residual r = (0, 1). A causal Δ with
@@ -12,8 +12,8 @@
 #include "core/sha256.h"
 #include "core/file_io.h"
 #include "support/scratch_dir.h"
-#include "verify/certificate_check.h"
-#include "verify/certificate_file.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate_file.h"
 
 namespace lpvid {
 namespace {

@@ -1,4 +1,4 @@
-// The compact dual form (verify/path_dual.h) against its dense expansion:
+// The compact dual form (verify/certificate/path_dual.h) against its dense expansion:
 // for random recipes, the O(L²) exact sums must equal what the dense dual
 // point Y1 = J [U', E; Eᵀ, x·I] Jᵀ gives through the dense formulas of
 // toeplitz/delta_form_dual.h (dual equality, tr U, β), and whenever the
@@ -14,9 +14,9 @@
 #include "core/number_text.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/tap_toeplitz.h"
-#include "verify/exact_psd.h"
-#include "verify/path_dual.h"
-#include "verify/power_of_two.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/certificate/path_dual.h"
+#include "verify/psd/power_of_two.h"
 
 namespace lpvid {
 namespace {

@@ -1,4 +1,4 @@
-#include "verify/psd_command.h"
+#include "verify/psd/psd_command.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,8 +13,8 @@
 #include <rapidcheck/gtest.h>
 
 #include "support/gen_matrices.h"
-#include "verify/exact_psd.h"
-#include "verify/rational_matrix_io.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/psd/rational_matrix_io.h"
 
 namespace lpvid {
 namespace {

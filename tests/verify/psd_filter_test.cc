@@ -1,4 +1,4 @@
-#include "verify/psd_filter.h"
+#include "verify/psd/psd_filter.h"
 
 #include <cfenv>
 #include <string>
@@ -9,7 +9,7 @@
 
 #include "core/number_text.h"
 #include "support/gen_matrices.h"
-#include "verify/exact_psd.h"
+#include "verify/psd/exact_psd.h"
 
 namespace lpvid {
 namespace {

@@ -1,4 +1,4 @@
-// The exact witness check (verify/psd_witness.cc) reads M row by row with
+// The exact witness check (verify/psd/psd_witness.cc) reads M row by row with
 // one denominator per row instead of forming L·M: its sign of wᵀMw must be
 // that of the plain rational sum, also with denominators of 10^500.
 #include <gtest/gtest.h>
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "support/gen_numbers.h"
-#include "verify/exact_psd.h"
-#include "verify/psd_internal.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/psd/psd_internal.h"
 
 namespace lpvid {
 namespace {

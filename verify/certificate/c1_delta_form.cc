@@ -1,4 +1,4 @@
-/// (C1) of Theorem 2.1 for form "delta" (verify/c1_check.h):
+/// (C1) of Theorem 2.1 for form "delta" (verify/certificate/c1_check.h):
 ///   M = [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0  (size L·(ny + nz)),  i.e. ‖T_Δ‖ ≤ δ.
 ///
 ///  1. Every entry h of T_Δ sits in a 2×2 principal submatrix [δ², h; h, 1]
@@ -29,11 +29,11 @@
 #include <utility>
 
 #include "core/number_text.h"
-#include "verify/c1_check.h"
-#include "verify/exact_psd.h"
+#include "verify/certificate/c1_check.h"
+#include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
-#include "verify/power_of_two.h"
-#include "verify/verdict_text.h"
+#include "verify/psd/power_of_two.h"
+#include "verify/certificate/verdict_text.h"
 
 namespace lpvid {
 namespace {
@@ -53,7 +53,7 @@ std::pair<Rational, std::string> balancing_scale(const Rational& delta2) {
 /// d2·I − TᵀT, T the block lower-triangular Toeplitz matrix of `taps` (row t
 /// = Δ_t row-major, ny × nz) on L samples, formed on its band only. The taps
 /// are held as integers N over one common denominator D, so each entry is one
-/// integer dot product over D² (as in verify/column_gram.h), not a sum of
+/// integer dot product over D² (as in verify/certificate/column_gram.h), not a sum of
 /// rational products with a gcd each.
 Mat<Rational> schur_complement(const Mat<Rational>& taps, Eigen::Index L, Eigen::Index ny, Eigen::Index nz,
                                const Rational& d2) {

@@ -1,5 +1,5 @@
 /// Multi-modular symmetric elimination: the fast exact path of
-/// decide_psd_exact (verify/exact_psd.h).
+/// decide_psd_exact (verify/psd/exact_psd.h).
 ///
 /// The same elimination as Bareiss, carried out modulo many 31-bit primes and
 /// lifted by the Chinese remainder theorem. Every quantity that is lifted is a
@@ -43,8 +43,8 @@
 #include <utility>
 #include <vector>
 
-#include "verify/psd_internal.h"
-#include "verify/psd_modular_arith.h"
+#include "verify/psd/psd_internal.h"
+#include "verify/psd/psd_modular_arith.h"
 
 namespace lpvid::psd_detail {
 namespace {

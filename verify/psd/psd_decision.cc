@@ -1,4 +1,4 @@
-/// The PSD decision's entry points (verify/exact_psd.h): the floating filter
+/// The PSD decision's entry points (verify/psd/exact_psd.h): the floating filter
 /// with its exact witness check, then the exact path; plus the small helpers
 /// of the contract (verdict_word, require_symmetric, quadratic_form).
 
@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "core/number_text.h"
-#include "verify/power_of_two.h"
-#include "verify/psd_filter.h"
-#include "verify/psd_internal.h"
+#include "verify/psd/power_of_two.h"
+#include "verify/psd/psd_filter.h"
+#include "verify/psd/psd_internal.h"
 
 namespace lpvid {
 namespace {
@@ -86,7 +86,7 @@ PsdResult decide_psd_exact_limited(const Mat<Rational>& M, int threads, const Ex
   if (screen_leading_blocks(M, workers, limits, &screened)) return screened;
   ModularOutcome outcome = decide_psd_modular(M, workers, limits.max_primes);
   if (outcome.decided) return outcome.result;
-  // The multi-modular path could not decide (verify/psd_modular.cc, 5.):
+  // The multi-modular path could not decide (verify/psd/psd_modular.cc, 5.):
   // Bareiss decides exactly, without primes.
   PsdResult r = decide_psd_bareiss(M, threads);
   r.reason += " [multi-modular path undecided (" + outcome.why + "); decided by fraction-free Bareiss elimination]";
@@ -124,7 +124,7 @@ PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options) {
                     std::to_string(first_zero) + ")"
               : std::string();
 
-    // Power-of-two balancing (verify/power_of_two.h): when the diagonal spans
+    // Power-of-two balancing (verify/psd/power_of_two.h): when the diagonal spans
     // many binary orders (a dual matrix in original units, say), the filter's
     // absolute error terms would swamp the small rows; the exact congruence
     // D·R·D with D = diag(2^k) keeps the inertia and puts the diagonal near 1.

@@ -22,7 +22,7 @@
 ///    GMP integers, in place. Exact; slower for large n (bench/README.md).
 ///  - decide_psd_rational_ldlt: textbook LDLᵀ over GMP rationals, the slowest;
 ///    kept as an independent reference that the tests compare against.
-///  - decide_psd: filter first (verify/psd_filter.h: a rigorous floating-point
+///  - decide_psd: filter first (verify/psd/psd_filter.h: a rigorous floating-point
 ///    proof of PD, and a floating candidate for vᵀMv < 0 that is then checked
 ///    exactly), then decide_psd_exact when neither is conclusive.
 ///

@@ -1,4 +1,4 @@
-#include "verify/rational_matrix_io.h"
+#include "verify/psd/rational_matrix_io.h"
 
 #include <cerrno>
 #include <cstring>

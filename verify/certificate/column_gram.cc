@@ -1,4 +1,4 @@
-#include "verify/column_gram.h"
+#include "verify/certificate/column_gram.h"
 
 #include <gmp.h>
 

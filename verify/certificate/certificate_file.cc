@@ -1,4 +1,4 @@
-#include "verify/certificate_file.h"
+#include "verify/certificate/certificate_file.h"
 
 #include <fstream>
 #include <sstream>

@@ -1,7 +1,7 @@
 #pragma once
 /// Exact powers of two: the constants of the floating filter
-/// (verify/psd_filter.cc) and the balancing of the (C1) matrices of
-/// Theorem 2.1 before the PSD decision (verify/c1_check.h). Multiplying a
+/// (verify/psd/psd_filter.cc) and the balancing of the (C1) matrices of
+/// Theorem 2.1 before the PSD decision (verify/certificate/c1_check.h). Multiplying a
 /// matrix by 2^k > 0, or a congruence by diag(I, 2^k I), is exact in
 /// rationals and keeps the inertia, so the PSD verdict is unchanged; it only
 /// brings the entries into the range where the floating filter can decide.

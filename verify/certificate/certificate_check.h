@@ -12,18 +12,18 @@
 ///     LMI [n·ny·d_max², dᵀ; d, I] ⪰ 0 of SPEC §4 (Schur complement on I ≻ 0);
 ///  6. (C1): form "w": [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 decided exactly, on
 ///     its Schur complement δ²T_zᵀT_z − T_wᵀT_w (n × n; w = 0 and δ² = 0
-///     apart; verify/c1_check.h);
+///     apart; verify/certificate/c1_check.h);
 ///     form "delta": [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0 decided exactly, i.e.
 ///     ‖T_Δ‖ ≤ δ, on its Schur complement δ²I − T_ΔT_Δᵀ or δ²I − T_ΔᵀT_Δ
-///     (size L·min(ny, nz), verify/c1_delta_form.cc); then T_w = T_Δ T_z and T_wᵀT_w = T_zᵀT_ΔᵀT_ΔT_z ⪯ δ²T_zᵀT_z,
+///     (size L·min(ny, nz), verify/certificate/c1_delta_form.cc); then T_w = T_Δ T_z and T_wᵀT_w = T_zᵀT_ΔᵀT_ΔT_z ⪯ δ²T_zᵀT_z,
 ///     which is (C1). (The taps before the horizon multiply zero samples.)
 /// Any failure is "invalid" with the constraint, the index and the numbers.
 /// Dual claims ("invalidated", "lower_bound") share steps 1–3 and continue in
-/// verify/dual_check.h.
+/// verify/certificate/dual_check.h.
 
 #include <string>
 
-#include "verify/certificate_file.h"
+#include "verify/certificate/certificate_file.h"
 
 namespace lpvid {
 

@@ -1,4 +1,4 @@
-#include "verify/psd_command.h"
+#include "verify/psd/psd_command.h"
 
 #include <chrono>
 #include <cstdio>
@@ -11,8 +11,8 @@
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
-#include "verify/exact_psd.h"
-#include "verify/rational_matrix_io.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/psd/rational_matrix_io.h"
 
 namespace lpvid {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 /// TᵀT of a rational matrix, exactly, for the paper-mode T_z of (C1)
-/// (Theorem 2.1; verify/c1_check.h). Column j of T is held as integers over
+/// (Theorem 2.1; verify/certificate/c1_check.h). Column j of T is held as integers over
 /// its own denominator D_j (the lcm of the column's denominators), so
 ///   (TᵀT)_ij = (N_iᵀ N_j) / (D_i·D_j)
 /// is one integer dot product and one canonicalisation per entry, instead of

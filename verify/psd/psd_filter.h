@@ -3,7 +3,7 @@
 /// may answer first when it is certain; otherwise exact rationals decide").
 /// In the CGAL "filter, then exact" style it answers only "PD for sure" or
 /// "don't know". A "don't know" may carry a floating candidate v for
-/// vᵀMv < 0; that candidate proves nothing until verify/psd_witness.cc checks it
+/// vᵀMv < 0; that candidate proves nothing until verify/psd/psd_witness.cc checks it
 /// in exact integer arithmetic.
 ///
 /// THEOREM USED (Rump's criterion).

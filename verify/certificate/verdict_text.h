@@ -7,8 +7,8 @@
 #include <string>
 
 #include "core/scalar.h"
-#include "verify/certificate_check.h"
-#include "verify/exact_psd.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/psd/exact_psd.h"
 
 namespace lpvid {
 

@@ -1,5 +1,5 @@
 /// The reference decision: textbook LDLᵀ over GMP rationals with the pivot
-/// rule of verify/exact_psd.h (decide_psd_rational_ldlt). Slow; kept as an
+/// rule of verify/psd/exact_psd.h (decide_psd_rational_ldlt). Slow; kept as an
 /// implementation independent of the integer paths, for the tests.
 
 #include <gmp.h>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/number_text.h"
-#include "verify/exact_psd.h"
+#include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
 
 namespace lpvid {

@@ -37,7 +37,7 @@
 
 #include "core/scalar.h"
 #include "toeplitz/delta_form_dual.h"
-#include "verify/exact_psd.h"
+#include "verify/psd/exact_psd.h"
 
 namespace lpvid {
 

@@ -1,4 +1,4 @@
-/// (C1) of Theorem 2.1 for form "w" (verify/c1_check.h).
+/// (C1) of Theorem 2.1 for form "w" (verify/certificate/c1_check.h).
 ///
 /// EQUIVALENCE USED. Let G = T_zᵀT_z (n × n), T_w (n·ny × n), δ² ≥ 0 and
 ///   M = [G, T_wᵀ; T_w, δ²I]   ((C1) of Theorem 2.1 with G11 = 0, SPEC §4).
@@ -25,10 +25,10 @@
 #include <string>
 
 #include "toeplitz/toeplitz_gram.h"
-#include "verify/c1_check.h"
-#include "verify/exact_psd.h"
-#include "verify/power_of_two.h"
-#include "verify/verdict_text.h"
+#include "verify/certificate/c1_check.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/psd/power_of_two.h"
+#include "verify/certificate/verdict_text.h"
 
 namespace lpvid {
 namespace {

@@ -1,5 +1,5 @@
 /// Fraction-free (Bareiss) symmetric elimination on GMP integers
-/// (decide_psd_bareiss, verify/exact_psd.h).
+/// (decide_psd_bareiss, verify/psd/exact_psd.h).
 
 #include <gmp.h>
 
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/number_text.h"
-#include "verify/psd_internal.h"
+#include "verify/psd/psd_internal.h"
 
 namespace lpvid {
 namespace {

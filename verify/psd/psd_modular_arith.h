@@ -1,6 +1,6 @@
 #pragma once
 /// Word arithmetic modulo 31-bit primes and the Chinese remainder lift, for
-/// the multi-modular PSD decision (verify/psd_modular.cc).
+/// the multi-modular PSD decision (verify/psd/psd_modular.cc).
 
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,7 @@
 /// Word arithmetic modulo 31-bit primes and the Chinese remainder lift
-/// (verify/psd_modular_arith.h).
+/// (verify/psd/psd_modular_arith.h).
 
-#include "verify/psd_modular_arith.h"
+#include "verify/psd/psd_modular_arith.h"
 
 #include <algorithm>
 #include <mutex>

@@ -1,13 +1,13 @@
-#include "verify/dual_check.h"
+#include "verify/certificate/dual_check.h"
 
 #include <sstream>
 
 #include "core/number_text.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/fir.h"
-#include "verify/exact_psd.h"
-#include "verify/path_dual.h"
-#include "verify/verdict_text.h"
+#include "verify/psd/exact_psd.h"
+#include "verify/certificate/path_dual.h"
+#include "verify/certificate/verdict_text.h"
 
 namespace lpvid {
 namespace {
@@ -27,7 +27,7 @@ std::string bound_problem(const Certificate& c, const Rational& bound, std::ostr
   return "";
 }
 
-/// Steps 6–8 for the compact form (verify/path_dual.h): the point is rebuilt
+/// Steps 6–8 for the compact form (verify/certificate/path_dual.h): the point is rebuilt
 /// from its recipe; the dual equality holds by the construction of E; what is
 /// checked is ‖E‖_F² ≤ x·γ, the bound, and U − γ·I ⪰ 0.
 CertificateVerdict check_path_dual(const Certificate& c, const Simulation<Rational>& sim, const Mat<Rational>& r,

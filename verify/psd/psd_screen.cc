@@ -1,4 +1,4 @@
-/// The leading-block screen of decide_psd_exact (verify/psd_internal.h).
+/// The leading-block screen of decide_psd_exact (verify/psd/psd_internal.h).
 ///
 /// A principal submatrix of a PSD matrix is PSD: for K ⊂ {0..n−1} and x on K,
 /// xᵀ M_KK x = yᵀ M y with y = x padded by zeros. So a witness x for M_KK
@@ -21,7 +21,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "verify/psd_internal.h"
+#include "verify/psd/psd_internal.h"
 
 namespace lpvid::psd_detail {
 

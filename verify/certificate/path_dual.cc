@@ -1,4 +1,4 @@
-#include "verify/path_dual.h"
+#include "verify/certificate/path_dual.h"
 
 #include <gmp.h>
 
@@ -9,8 +9,8 @@
 #include "core/number_text.h"
 #include "toeplitz/tap_toeplitz.h"
 #include "core/gmp_raii.h"
-#include "verify/power_of_two.h"
-#include "verify/psd_filter.h"
+#include "verify/psd/power_of_two.h"
+#include "verify/psd/psd_filter.h"
 
 namespace lpvid {
 namespace {

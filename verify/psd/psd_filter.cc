@@ -1,4 +1,4 @@
-#include "verify/psd_filter.h"
+#include "verify/psd/psd_filter.h"
 
 #include <cfenv>
 #include <cfloat>
@@ -13,7 +13,7 @@
 
 #include "core/gmp_raii.h"
 #include "core/number_text.h"
-#include "verify/power_of_two.h"
+#include "verify/psd/power_of_two.h"
 
 static_assert(std::numeric_limits<double>::is_iec559, "psd_filter needs IEEE-754 binary64 doubles");
 static_assert(std::numeric_limits<double>::digits == 53, "psd_filter needs 53-bit doubles");

@@ -1,12 +1,12 @@
 #pragma once
 /// (C1) of Theorem 2.1 (SPEC §4) for a certificate, decided exactly
-/// (SPEC §7). Both forms end in the exact PSD decision of verify/exact_psd.h
+/// (SPEC §7). Both forms end in the exact PSD decision of verify/psd/exact_psd.h
 /// on a matrix with the same PSD verdict as (C1); the text names that matrix.
 ///
-///  - form "w" (verify/c1_w_form.cc): (C1) is
+///  - form "w" (verify/certificate/c1_w_form.cc): (C1) is
 ///      M = [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0     (size n + n·ny),
 ///    decided on the n × n Schur complement δ²·T_zᵀT_z − T_wᵀT_w (proof there);
-///  - form "delta" (verify/c1_delta_form.cc): [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0, i.e.
+///  - form "delta" (verify/certificate/c1_delta_form.cc): [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0, i.e.
 ///    ‖T_Δ‖ ≤ δ, which implies (C1) for w = Δ ∗ z (certificate_check.h),
 ///    decided on the L·min(ny, nz) Schur complement δ²I − T_ΔT_Δᵀ (or
 ///    δ²I − T_ΔᵀT_Δ) after balancing.

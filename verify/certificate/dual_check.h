@@ -9,14 +9,14 @@
 ///  6. the dual equality Ω_l(W) = C_l(g) holds exactly for l = 0 … L−1;
 ///  7. the bound is computed exactly (dual_bound) and must be > 0 for
 ///     "invalidated", ≥ the claimed lower_bound for "lower_bound";
-///  8. Y1 ⪰ 0, decided exactly (verify/exact_psd.h: filter, then exact).
+///  8. Y1 ⪰ 0, decided exactly (verify/psd/exact_psd.h: filter, then exact).
 /// No floating point decides anything; any failure is "invalid" with the
 /// constraint and the numbers.
 
 #include "core/scalar.h"
 #include "data/experiment.h"
 #include "model/simulate.h"
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
 

@@ -1,4 +1,4 @@
-#include "verify/power_of_two.h"
+#include "verify/psd/power_of_two.h"
 
 #include <gmp.h>
 

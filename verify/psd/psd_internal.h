@@ -1,5 +1,5 @@
 #pragma once
-/// Internals shared by the exact PSD decision's files (verify/exact_psd.h is
+/// Internals shared by the exact PSD decision's files (verify/psd/exact_psd.h is
 /// the contract; nothing outside verify/psd_*.cc and the tests includes this).
 
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "verify/exact_psd.h"
+#include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
 
 namespace lpvid::psd_detail {
@@ -29,7 +29,7 @@ std::unique_ptr<IntegerMatrix> integer_matrix(const Mat<Rational>& M);
 
 /// Sign of wᵀMw, exactly, for the symmetric rational M (upper triangle) and
 /// integer w: over the support of w and with one common denominator per row
-/// (verify/psd_witness.cc), without forming L·M.
+/// (verify/psd/psd_witness.cc), without forming L·M.
 int quadratic_form_sign(const Mat<Rational>& M, const std::vector<Mpz>& w);
 
 /// Divides w by the gcd of its entries (w ≠ 0) and returns it as rationals.
@@ -58,7 +58,7 @@ struct ModularOutcome {
 /// i.e. Hadamard bounds up to about 2·10⁷ bits.
 inline constexpr std::size_t kAllPrimes = static_cast<std::size_t>(-1);
 
-/// The multi-modular decision (verify/psd_modular.cc) with at most
+/// The multi-modular decision (verify/psd/psd_modular.cc) with at most
 /// `max_primes` primes.
 ModularOutcome decide_psd_modular(const Mat<Rational>& M, int threads, std::size_t max_primes = kAllPrimes);
 
@@ -68,7 +68,7 @@ struct ExactPsdLimits {
   /// Most primes the multi-modular path may use (beyond: Bareiss decides).
   std::size_t max_primes = kAllPrimes;
   /// The leading-block screen decides the leading principal submatrices of
-  /// sizes 2, 4, 8, … ≤ n / screen_divisor first (verify/psd_screen.cc);
+  /// sizes 2, 4, 8, … ≤ n / screen_divisor first (verify/psd/psd_screen.cc);
   /// 0 turns the screen off.
   std::size_t screen_divisor = 4;
 };

@@ -1,4 +1,4 @@
-#include "verify/certificate_check.h"
+#include "verify/certificate/certificate_check.h"
 
 #include <chrono>
 #include <filesystem>
@@ -18,10 +18,10 @@
 #include "toeplitz/fir.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "toeplitz/toeplitz_gram.h"
-#include "verify/c1_check.h"
-#include "verify/column_gram.h"
-#include "verify/dual_check.h"
-#include "verify/verdict_text.h"
+#include "verify/certificate/c1_check.h"
+#include "verify/certificate/column_gram.h"
+#include "verify/certificate/dual_check.h"
+#include "verify/certificate/verdict_text.h"
 
 namespace lpvid {
 namespace {
@@ -155,7 +155,7 @@ PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>&
                  " (exact comparison of rationals)");
   details << "; (C2) holds: ||d||^2 = " << approx_text(dd) << " <= n*ny*dmax2 = " << approx_text(bound);
 
-  // 6. (C1), exactly (verify/c1_check.h). A failure is an exact NOT_PSD decision.
+  // 6. (C1), exactly (verify/certificate/c1_check.h). A failure is an exact NOT_PSD decision.
   const C1Outcome c1 = c.form == CertificateForm::kDelta
                            ? check_c1_delta_form(c.taps, c.horizon, ny, nz, c.delta2)
                            : check_c1_w_form(c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)

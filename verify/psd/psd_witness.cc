@@ -1,4 +1,4 @@
-/// The integer matrix L·M and exact witness checks (verify/psd_internal.h).
+/// The integer matrix L·M and exact witness checks (verify/psd/psd_internal.h).
 /// The witness checks read M itself, row by row: a δ² = 1e−5000 on the
 /// diagonal makes L·M a matrix of 5000-digit integers (and a second copy).
 
@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "verify/psd_internal.h"
+#include "verify/psd/psd_internal.h"
 
 namespace lpvid::psd_detail {
 

@@ -42,7 +42,7 @@
 ///            "taps": [[h_0 row-major (ny·nz)], …, [h_{L−1}]],   // dyadic rationals
 ///            "t": t > 0, "mu": μ > 0, "u_exponent": e, "x": x > 0, "u_floor": γ ≥ 0}
 /// (Y1 rebuilt by the verifier from U = round(μ(t·I − T Tᵀ)⁻¹·2^−e)·2^e:
-/// verify/path_dual.h).
+/// verify/certificate/path_dual.h).
 ///
 /// Every number is exact text (JSON number or string with a decimal or p/q).
 /// Form "delta" (signal mode only) carries the causal FIR Δ of the Poolla
@@ -57,7 +57,7 @@
 #include "model/lpv_model.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/uncertainty_toeplitz.h"
-#include "verify/path_dual.h"
+#include "verify/certificate/path_dual.h"
 
 namespace lpvid {
 
@@ -88,7 +88,7 @@ inline bool is_dual_claim(CertificateClaim c) {
 struct DualPoint {
   long horizon = 0;  ///< L
   Mat<Rational> Y1;  ///< L·(ny+nz) square, symmetric (form "dual_delta")
-  PathDualRecipe path;  ///< form "dual_delta_path": Y1 is rebuilt from it (verify/path_dual.h)
+  PathDualRecipe path;  ///< form "dual_delta_path": Y1 is rebuilt from it (verify/certificate/path_dual.h)
   Mat<Rational> g;   ///< n × ny
   Rational sigma;    ///< σ > 0
 };
