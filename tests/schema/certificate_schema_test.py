@@ -36,7 +36,7 @@ with open(os.path.join(source, "docs", "certificate.schema.json"), encoding="utf
     schema = json.load(f)
 jsonschema.Draft202012Validator.check_schema(schema)
 validator = jsonschema.Draft202012Validator(schema)
-with open(os.path.join(source, "verify", "certificate_file.h"), encoding="utf-8") as f:
+with open(os.path.join(source, "verify", "certificate", "certificate_file.h"), encoding="utf-8") as f:
     version = re.search(r'kCertificateFormat = "([^"]+)"', f.read()).group(1)
 check(schema["properties"]["format"]["const"] == version and schema["$id"].endswith(version),
       f"schema format const and $id name {version}, the version the reader accepts")
