@@ -19,7 +19,9 @@
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "examples/paper_example1.h"
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
+#include "data/data_reference.h"
 #include "identify/identify.h"
 
 using namespace lpvid;
@@ -79,8 +81,7 @@ int main(int argc, char** argv) {
         Vec<Rational> p(res.p.size());
         for (Eigen::Index i = 0; i < p.size(); ++i) p(i) = round_to_digits(res.p(i), 12);
         CertifyOptions co;
-        co.certificate_path = (dir / "table.cert.json").string();
-        co.data_path = data;
+        co.data = read_data_table(data).reference;
         const CertifiedBounds b = certify_fixed_model(apply_parameters(mq, res.layout, p), eq, co, *solver);
         ok[iterate] = b.verified;
         out[iterate][0] = b.delta;

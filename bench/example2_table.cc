@@ -27,7 +27,9 @@
 #include "data/csv_writer.h"
 #include "examples/rigid_body_3x3.h"
 #include "fit/local_lpv.h"
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
+#include "data/data_reference.h"
 #include "identify/identify.h"
 #include "model/simulate.h"
 
@@ -163,8 +165,7 @@ int main(int argc, char** argv) {
   // Certifies a model without unknowns and prints its row.
   auto certify_row = [&](const char* name, const LpvModel<Rational>& model, const char* paper, double t_ident) {
     CertifyOptions co;
-    co.certificate_path = (dir / "table.cert.json").string();
-    co.data_path = data;
+    co.data = read_data_table(data).reference;
     co.lower_end = false;
     co.progress = [](const std::string& line) { std::fprintf(stderr, "[example2_table]   %s\n", line.c_str()); };
     const auto t0 = std::chrono::steady_clock::now();

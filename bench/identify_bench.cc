@@ -19,7 +19,9 @@
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "examples/random_stream.h"
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
+#include "data/data_reference.h"
 #include "identify/identify.h"
 #include "model/simulate.h"
 
@@ -141,8 +143,7 @@ int main(int argc, char** argv) {
           CertifyOptions co;
           co.max_taps = taps;
           co.delta_norm = DeltaNorm::kKyp;
-          co.certificate_path = (dir / "bench.cert.json").string();
-          co.data_path = data;
+          co.data = read_data_table(data).reference;
           const LpvModel<Rational> fixed = apply_parameters(mq, res.layout, p);
           const auto t1 = std::chrono::steady_clock::now();
           CertifiedBounds cb;

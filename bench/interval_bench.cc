@@ -25,7 +25,9 @@
 #include "data/csv_writer.h"
 #include "examples/paper_example1.h"
 #include "examples/random_stream.h"
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
+#include "data/data_reference.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
@@ -134,12 +136,13 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   co.objective.kind = BoundObjective::Kind::kMinDmax;
   co.objective.delta = delta;
   co.fixed_delta_text = double_to_text(delta);
-  co.data_path = data;
-  co.certificate_path = (dir / (tag + ".interval.json")).string();
+  co.data = read_data_table(data).reference;
+  const std::string upper_file = (dir / (tag + ".interval.json")).string();
   co.progress = [tag](const std::string& stage) { std::fprintf(stderr, "  [%s] %s\n", tag.c_str(), stage.c_str()); };
   auto t0 = std::chrono::steady_clock::now();
   const CertifiedBounds b = certify_fixed_model(model, exp, co, *solver);
   row.certify = seconds_since(t0);
+  const CertificateFiles files = write_certificates(b, upper_file);
   row.horizon = b.horizon;
   row.gap = relative_gap(b);
   std::fprintf(stderr, "  (n = %ld: solve %.1f s, upper end built and checked %.1f s, lower end %.1f s, total %.1f s)\n",
@@ -147,17 +150,17 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   if (!b.verified) std::fprintf(stderr, "  (n = %ld: no upper end: %s)\n", static_cast<long>(exp.n()), b.reason.c_str());
   if (!b.lower.verified) std::fprintf(stderr, "  (n = %ld: no lower end: %s)\n", static_cast<long>(exp.n()), b.lower.reason.c_str());
   t0 = std::chrono::steady_clock::now();
-  row.upper_ok = b.verified && check_certificate_file(co.certificate_path).holds ? "yes" : "NO";
+  row.upper_ok = b.verified && check_certificate_file(files.certificate).holds ? "yes" : "NO";
   row.verify_upper = seconds_since(t0);
   if (b.lower.verified && b.lower.verifier_details.find("compact dual form not used") != std::string::npos)
     std::fprintf(stderr, "  (n = %ld: %s)\n", static_cast<long>(exp.n()), b.lower.verifier_details.c_str());
   if (b.lower.verified) {
     t0 = std::chrono::steady_clock::now();
-    row.lower_ok = check_certificate_file(b.lower.certificate).holds ? "yes" : "NO";
+    row.lower_ok = check_certificate_file(files.lower).holds ? "yes" : "NO";
     row.verify_lower = seconds_since(t0);
-    row.kb_lower = kilobytes(b.lower.certificate);
+    row.kb_lower = kilobytes(files.lower);
   }
-  if (b.verified) row.kb_upper = kilobytes(co.certificate_path);
+  if (b.verified) row.kb_upper = kilobytes(files.certificate);
   if (!b.lower.verified) return row;
   // Invalidation below the certified lower end.
   const double dmax = 0.9 * std::sqrt(nearest_double(b.lower.value));
@@ -165,17 +168,17 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   io.objective.kind = BoundObjective::Kind::kFeasibility;
   io.objective.dmax = dmax;
   io.fixed_dmax_text = double_to_text(dmax);
-  io.certificate_path = (dir / (tag + ".invalid.json")).string();
   t0 = std::chrono::steady_clock::now();
   const CertifiedBounds v = certify_fixed_model(model, exp, io, *solver);
   row.invalidate = seconds_since(t0);
+  const std::string invalid_file = write_certificates(v, (dir / (tag + ".invalid.json")).string()).certificate;
   row.verdict = v.invalidated ? "invalidated" : v.verified ? "CONSISTENT?" : "undecided";
   if (!v.invalidated) std::fprintf(stderr, "  (n = %ld, dmax = %g: %s)\n", static_cast<long>(exp.n()), dmax, v.reason.c_str());
   if (v.invalidated) {
     t0 = std::chrono::steady_clock::now();
-    if (!check_certificate_file(io.certificate_path).holds) row.verdict = "NOT CHECKED";
+    if (!check_certificate_file(invalid_file).holds) row.verdict = "NOT CHECKED";
     row.verify_invalid = seconds_since(t0);
-    row.kb_invalid = kilobytes(io.certificate_path);
+    row.kb_invalid = kilobytes(invalid_file);
   }
   return row;
 }

@@ -11,7 +11,9 @@
 #include "core/input_error.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
+#include "data/data_reference.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
 #include "verify/certificate/certificate_check.h"
@@ -26,12 +28,13 @@ int main(int argc, char** argv) {
     using lpvid::Rational;
     const auto model = lpvid::read_model_file<Rational>(dir + "/true_model.json");
     lpvid::CertifyOptions options;  // minimise 0.5·δ² + 0.5·d_max²
-    options.data_path = dir + "/noise_free_n40.csv";
-    options.certificate_path = out;
+    const lpvid::DataTable data = lpvid::read_data_table(dir + "/noise_free_n40.csv");
+    options.data = data.reference;  // the certificate names this file and its sha256
     options.lower_end = false;  // only the primal certificate
-    const auto exp = lpvid::make_experiment<Rational>(lpvid::read_csv(options.data_path), model.columns);
+    const auto exp = lpvid::make_experiment<Rational>(data.table, model.columns);
     const auto solver = lpvid::make_solver("csdp");
     const lpvid::CertifiedBounds b = lpvid::certify_fixed_model(model, exp, options, *solver);
+    lpvid::write_certificates(b, out);  // certification computes in memory; the files are the caller's
     std::cout << "certify_fixed_model: " << (b.verified ? "verified" : "not verified: " + b.reason) << ", delta <= "
               << b.delta << ", dmax <= " << b.dmax << "\n";
 

@@ -2,15 +2,10 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
 
 #include "core/decimal_rounding.h"
-#include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
-#include "core/sha256.h"
-#include "data/csv_reader.h"
 #include "lmi/delta_form_barrier.h"
 #include "lmi/delta_form_lmi.h"
 #include "lmi/delta_form_solve.h"
@@ -25,12 +20,6 @@
 
 namespace lpvid {
 
-std::string lower_certificate_path(const std::string& certificate_path) {
-  namespace fs = std::filesystem;
-  fs::path p(certificate_path);
-  return (p.parent_path() / (p.stem().string() + ".lower.json")).string();
-}
-
 namespace {
 
 /// Largest singular value² of the block Toeplitz T_Δ (L blocks, K taps).
@@ -42,13 +31,18 @@ double toeplitz_norm2(const Mat<double>& taps, Eigen::Index horizon, Eigen::Inde
   return std::max(0.0, es.eigenvalues().maxCoeff());
 }
 
+/// Step 6: the certificate through its JSON text and back, checked again by
+/// the verifier's core (what a file would carry is what was checked).
+CertificateVerdict round_trip_check(const Certificate& c, const Experiment<Rational>& exp) {
+  return check_certificate(parse_certificate(certificate_json(c), "the certificate (in memory)"), exp);
+}
+
 /// Steps 5–6, shared by both forms: δ² with the smallest margin that passes
-/// the exact check, then write the file and check it again from the file.
+/// the exact check, then the round trip.
 template <typename Norm2>
-void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o, const std::string& solver_name,
-                        CertifiedBounds& out) {
-  namespace fs = std::filesystem;
-  const std::string cert_dir = set_data_reference(c, o, o.certificate_path);
+void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 norm2_fn, const CertifyOptions& o,
+                        const std::string& solver_name, CertifiedBounds& out) {
+  set_data_reference(c, o.data);
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
   c.info["solver"] = solver_name;
@@ -75,7 +69,7 @@ void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o,
       c.delta2 = round_up_to_digits(exact_rational_of_double(norm2 * (1.0 + margin) + 1e-300), 12);
     }
     c.info["delta2_margin"] = margin;
-    v = check_certificate(c, cert_dir);
+    v = check_certificate(c, exp);
     if (v.holds || o.objective.delta_fixed()) break;
   }
   out.margin = margin;
@@ -83,17 +77,17 @@ void finish_certificate(Certificate& c, Norm2 norm2_fn, const CertifyOptions& o,
     out.reason = "exact check failed: " + v.reason;
     return;
   }
-  write_certificate(o.certificate_path, c);
   const auto t1 = std::chrono::steady_clock::now();
-  const CertificateVerdict again = check_certificate_file(o.certificate_path);
+  const CertificateVerdict again = round_trip_check(c, exp);
   out.verify_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   out.verified = again.holds;
-  out.reason = again.holds ? "" : "the written certificate failed: " + again.reason;
+  out.reason = again.holds ? "" : "the certificate failed after its JSON round trip: " + again.reason;
   out.verifier_details = again.details;
   out.delta2 = c.delta2;
   out.dmax2 = c.dmax2;
   out.delta = sqrt_up(c.delta2);
   out.dmax = sqrt_up(c.dmax2);
+  if (again.holds) out.certificate = c;
 }
 
 /// d_max² of the certificate: the fixed one (which must hold exactly) or
@@ -122,7 +116,7 @@ Rational squared_norm(const Mat<Rational>& m) {
 }
 
 /// Steps 3–6 for floating taps (K × ny·nz) on the given horizon.
-void certify_taps(const LpvModel<Rational>& model, const Simulation<Rational>& sim, const Mat<Rational>& r,
+void certify_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const Simulation<Rational>& sim, const Mat<Rational>& r,
                   const Mat<double>& taps, Eigen::Index horizon, const CertifyOptions& o,
                   const std::string& solver_name, CertifiedBounds& out) {
   const Eigen::Index n = r.rows(), ny = model.ny, nz = model.nz();
@@ -154,7 +148,7 @@ void certify_taps(const LpvModel<Rational>& model, const Simulation<Rational>& s
   const Mat<Rational> w = apply_fir(c.taps, sim.z, ny, c.horizon);
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - w)), Rational(static_cast<long>(n * ny)), o, out)) return;
 
-  finish_certificate(c, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver_name, out);
+  finish_certificate(c, exp, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver_name, out);
 }
 
 /// The exact signals every certification starts from: the data with the
@@ -167,9 +161,7 @@ struct ExactSignals {
   Eigen::Index n = 0, horizon = 0;
 };
 
-ExactSignals exact_signals(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
-                           const std::string& certificate_path) {
-  if (certificate_path.empty()) throw InputError("certify: no certificate path given");
+ExactSignals exact_signals(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in) {
   ExactSignals s;
   s.exp = with_state_scheduling(model, exp_in);
   s.sim = simulate(model, s.exp);
@@ -180,19 +172,6 @@ ExactSignals exact_signals(const LpvModel<Rational>& model, const Experiment<Rat
 }
 
 }  // namespace
-
-std::string set_data_reference(Certificate& c, const CertifyOptions& o, const std::string& certificate_path) {
-  namespace fs = std::filesystem;
-  c.data_names = o.data_names;
-  c.row_begin = o.row_begin;
-  c.row_end = o.row_end;
-  const fs::path cert_dir = fs::absolute(fs::path(certificate_path)).parent_path();
-  const fs::path data_abs = fs::absolute(fs::path(o.data_path));
-  c.data_file = fs::relative(data_abs, cert_dir).string();
-  if (c.data_file.empty()) c.data_file = data_abs.string();
-  c.data_sha256 = sha256_hex(read_text_file(o.data_path));
-  return cert_dir.string();
-}
 
 Rational objective_at(const BoundObjective& obj, const Rational& delta2, const Rational& dmax2) {
   switch (obj.kind) {
@@ -313,7 +292,7 @@ void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, Cert
   b.delta2_solver = sol.delta2;
   if (run.o.progress)
     run.o.progress("solved in " + double_to_text(std::round(sol.solve.seconds * 10) / 10) + " s; checking the upper end exactly");
-  certify_taps(run.model, run.exact.sim, run.exact.r, sol.taps, sol.horizon, run.o, run.solver.name(), b);
+  certify_taps(run.model, run.exact.exp, run.exact.sim, run.exact.r, sol.taps, sol.horizon, run.o, run.solver.name(), b);
   if (b.verified) b.upper = objective_at(run.o.objective, b.delta2, b.dmax2);
 }
 
@@ -321,11 +300,11 @@ void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, Cert
 void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, CertifiedBounds& out) {
   if (s.dual_c1.size() == 0) return;
   if (run.o.progress) run.o.progress("building and checking the lower end's dual certificate");
-  const DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, s, run.o, lower_certificate_path(run.o.certificate_path));
+  DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, s, run.o);
   if (d.verified && (!out.lower.verified || d.bound > out.lower.value)) {
     out.lower.verified = true;
     out.lower.value = d.bound;
-    out.lower.certificate = d.certificate_path;
+    out.lower.certificate = std::move(d.certificate);
     out.lower.verifier_details = d.verifier_details + (d.note.empty() ? "" : " (" + d.note + ")");
     out.lower.reason.clear();
   } else if (!out.lower.verified) {
@@ -357,11 +336,11 @@ void decide_fixed_bounds(const CertifyRun& run, const DeltaFormSolution& first, 
   }
   if (out.verified || full.solve.status != SolveStatus::kPrimalInfeasible || full.dual_c1.size() == 0) return;
   if (run.o.progress) run.o.progress("infeasible: building and checking the dual certificate of invalidation");
-  const DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, full, run.o, run.o.certificate_path);
+  DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, full, run.o);
   out.invalidated = d.verified;
   out.lower.seconds = d.seconds;
   out.lower.verifier_details = d.verifier_details;
-  out.lower.certificate = d.certificate_path;
+  if (d.verified) out.certificate = std::move(d.certificate);
   if (!d.verified) out.reason += "; no exact invalidation certificate: " + d.reason;
 }
 
@@ -398,7 +377,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
                                     const CertifyOptions& options, SdpSolver& solver) {
   const auto t0 = std::chrono::steady_clock::now();
   // 1. Exact signals, and their doubles once.
-  const ExactSignals es = exact_signals(model, exp_in, options.certificate_path);
+  const ExactSignals es = exact_signals(model, exp_in);
   if (es.horizon == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(es.sim.z));  // throws the usual InputError
   // A weighted objective stated on signals scaled to unit size (certify/
   // bound_scaling.h): the same program in original units with λ_orig.
@@ -431,7 +410,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
 CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                   const Mat<double>& taps, const CertifyOptions& o, const std::string& solver_name) {
   CertifiedBounds out;
-  const ExactSignals es = exact_signals(model, exp_in, o.certificate_path);
+  const ExactSignals es = exact_signals(model, exp_in);
   const Simulation<Rational>& sim = es.sim;
   const Mat<Rational>& r = es.r;
   const Eigen::Index horizon = es.horizon;
@@ -443,7 +422,7 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
   out.taps = used.rows();
   out.horizon = horizon;
   out.delta2_solver = toeplitz_norm2(used, horizon, model.ny, model.nz());
-  certify_taps(model, sim, r, used, horizon, o, solver_name, out);
+  certify_taps(model, es.exp, sim, r, used, horizon, o, solver_name, out);
   if (out.verified) out.upper = objective_at(o.objective, out.delta2, out.dmax2);
   return out;
 }
@@ -454,7 +433,7 @@ namespace lpvid {
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                           const CertifyOptions& o, SdpSolver& solver) {
   CertifiedBounds out;
-  const ExactSignals es = exact_signals(model, exp_in, o.certificate_path);
+  const ExactSignals es = exact_signals(model, exp_in);
   const Experiment<Rational>& exp = es.exp;
   const Simulation<Rational>& sim = es.sim;
   const Mat<Rational>& r = es.r;
@@ -484,7 +463,7 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
     for (Eigen::Index i = 0; i < ny; ++i) c.w(k, i) = round_to_digits(sol.w(k, i), o.digits);
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - c.w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
   out.delta2_solver = sol.delta2;
-  finish_certificate(c, [&] { return sol.delta2; }, o, solver.name(), out);
+  finish_certificate(c, exp, [&] { return sol.delta2; }, o, solver.name(), out);
   return out;
 }
 

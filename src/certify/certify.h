@@ -13,8 +13,11 @@
 ///  5. δ² := ‖T_Δ‖²_floating·(1 + margin) rounded up to 12 digits, margin
 ///     starting at 1e-9 and multiplied by 100 until the exact check passes
 ///     (at most 5 tries);
-///  6. the certificate is written and checked again from the file by the
-///     verifier (verify/certificate/certificate_check.h). `verified` is that verdict.
+///  6. the certificate goes through its JSON text and back and is checked
+///     again by the verifier's core (verify/certificate/certificate_check.h)
+///     on the exact experiment. `verified` is that verdict. Nothing is
+///     written here: the certificates are returned in CertifiedBounds, and
+///     the front end places them in files (certify/certificate_files.h).
 /// Then, in certify_fixed_model's stages: for an optimised bound the lower
 /// end from the dual (certify/dual_certify.h), with a full-horizon solve when
 /// a K-tap one leaves the gap above gap_target; for fixed bounds without a
@@ -26,12 +29,14 @@
 #include <vector>
 
 #include "core/scalar.h"
+#include "data/data_reference.h"
 #include "data/experiment.h"
 #include "certify/bound_scaling.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "verify/certificate/certificate_file.h"
 
 namespace lpvid {
 
@@ -49,16 +54,14 @@ struct CertifyOptions {
   int digits = 12;                       ///< significant digits of rounded taps
   long max_taps = 64;                    ///< K (0: the full horizon); see solve_delta_form
   DeltaNorm delta_norm = DeltaNorm::kToeplitz;
-  std::string certificate_path;          ///< where to write (required)
-  std::string data_path;                 ///< the data file the experiment came from
-  std::vector<std::string> data_names;   ///< headerless files only
-  long row_begin = 0, row_end = -1;      ///< the window of the data used
+  /// Where the experiment's rows came from (file, sha256, names, rows),
+  /// copied into every certificate; made where the data was read.
+  DataReference data;
   std::string fixed_delta_text, fixed_dmax_text;  ///< exact text of a fixed bound (CLI), if any
-  /// Also certify the lower end of the optimum (a dual certificate
-  /// of the full-horizon problem, written beside the certificate as
-  /// "<certificate stem>.lower.json"), and for fixed bounds, when no primal
-  /// certificate exists, try to certify "invalidated" (written at
-  /// certificate_path). Signal mode only.
+  /// Also certify the lower end of the optimum (a dual certificate of the
+  /// full-horizon problem: CertifiedBounds::lower), and for fixed bounds,
+  /// when no primal certificate exists, try to certify "invalidated"
+  /// (CertifiedBounds::certificate). Signal mode only.
   bool lower_end = true;
   /// If the certified interval's relative gap is above this after the
   /// K-tap solve and the horizon is at most full_horizon_limit, the
@@ -83,10 +86,6 @@ struct CertifyOptions {
   bool scale_signals = false;
 };
 
-/// Where the lower end's (dual) certificate is written: "<stem>.lower.json"
-/// beside `certificate_path` (a.cert.json → a.cert.lower.json).
-std::string lower_certificate_path(const std::string& certificate_path);
-
 /// The objective at (δ², d_max²), exactly: δ², d_max², λδ² + (1−λ)d_max² (λ
 /// read as the exact decimal of its shortest text), 0 for fixed bounds.
 Rational objective_at(const BoundObjective& objective, const Rational& delta2, const Rational& dmax2);
@@ -105,16 +104,19 @@ struct CertifiedBounds {
   double solve_seconds = 0, verify_seconds = 0;
   std::string verifier_details;
 
-  /// Fixed bounds only: an "invalidated" certificate was written at the
-  /// certificate path and checked exactly (then verified is false).
+  /// Fixed bounds only: an "invalidated" certificate was made and checked
+  /// exactly (then verified is false; it is `certificate`).
   bool invalidated = false;
+  /// The checked certificate: "consistent" when verified, "invalidated" when
+  /// invalidated; none otherwise.
+  std::optional<Certificate> certificate;
   /// The certified interval [lower, upper] of the objective (δ², d_max², or
   /// λδ² + (1−λ)d_max²; upper from the primal certificate, lower from the dual one).
   struct LowerEnd {
     bool verified = false;
     std::string reason;       ///< why there is no certified lower end
     Rational value;           ///< the certified lower end on the objective
-    std::string certificate;  ///< its certificate file
+    std::optional<Certificate> certificate;  ///< its checked certificate ("lower_bound")
     double seconds = 0;
     std::string verifier_details;
   } lower;
@@ -182,12 +184,6 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
 /// (certify_fixed_model_paper) for kPaper.
 CertifiedBounds certify_fixed(const LpvModel<Rational>& model, const Experiment<Rational>& exp, ToeplitzMode mode,
                               const CertifyOptions& options, SdpSolver& solver);
-
-struct Certificate;
-/// Fills the certificate's data reference (file relative to the certificate's
-/// folder, sha256 of its bytes, names, rows) from the options; returns the
-/// certificate's folder.
-std::string set_data_reference(Certificate& c, const CertifyOptions& o, const std::string& certificate_path);
 
 
 }  // namespace lpvid

@@ -116,22 +116,22 @@ Certificate dual_certificate(const LpvModel<Rational>& model, DualClaim claim, c
   return c;
 }
 
-/// Writes c, re-checks it from the file, fills `out` (removes a file that fails).
-void write_and_check(Certificate& c, const CertifyOptions& o, const std::string& path, const Rational& bound, DualOutcome& out) {
-  set_data_reference(c, o, path);
+/// Names the data in c, checks it after its JSON round trip (certify.h step
+/// 6) on the exact experiment, fills `out` (the certificate only when it holds).
+void check_and_keep(Certificate& c, const Experiment<Rational>& exp, const CertifyOptions& o, const Rational& bound,
+                    DualOutcome& out) {
+  set_data_reference(c, o.data);
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
-  write_certificate(path, c);
-  const CertificateVerdict v = check_certificate_file(path);
+  const CertificateVerdict v = check_certificate(parse_certificate(certificate_json(c), "the dual certificate (in memory)"), exp);
   out.verified = v.holds;
   out.verifier_details = v.details;
   out.bound = c.claim == CertificateClaim::kInvalidated ? bound : c.lower_bound;
   if (!v.holds) {
-    std::remove(path.c_str());
-    out.reason = "the written dual certificate failed the exact check: " + v.reason;
+    out.reason = "the dual certificate failed the exact check: " + v.reason;
     return;
   }
-  out.certificate_path = path;
+  out.certificate = std::move(c);
 }
 
 
@@ -228,7 +228,7 @@ std::optional<Mat<Rational>> with_psd_margin(const Mat<Rational>& Y1, Rational& 
 
 DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                const Simulation<Rational>& sim, const Mat<double>& Y1_in, const Mat<double>& Y2_in,
-                               const CertifyOptions& o, const std::string& path) {
+                               const CertifyOptions& o) {
   DualOutcome out;
   const auto done = outcome_closer(out);
   const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
@@ -273,7 +273,7 @@ DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment
   c.dual.sigma = sigma;
   c.info["psd_margin"] = nearest_double(eps_q);
   c.info["dual_scale"] = scale;
-  write_and_check(c, o, path, bound, out);
+  check_and_keep(c, exp, o, bound, out);
   return done(out.reason);
 }
 
@@ -320,8 +320,7 @@ std::string prove_floor(PathDualRecipe& recipe, const PathDualGrid& grid, const 
 /// the recipe is the point itself (taps, t, μ) with x = μ; g from Y2's first
 /// column on a decimal grid; the floor γ and x as in prove_floor.
 DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                              const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
-                              const std::string& path) {
+                              const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o) {
   DualOutcome out;
   const auto done = outcome_closer(out);
   const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
@@ -372,25 +371,24 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   c.info["x_over_mu"] = nearest_double(recipe.x / recipe.mu);
   c.info["u_floor_over_mu"] = nearest_double(recipe.floor / recipe.mu);
   c.dual.path = std::move(recipe);
-  write_and_check(c, o, path, bound, out);
+  check_and_keep(c, exp, o, bound, out);
   return done(out.reason);
 }
 
 }  // namespace
 
 DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                         const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
-                         const std::string& path) {
+                         const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o) {
   if (s.path_mu > 0 && !o.dense_dual) {
-    DualOutcome compact = certify_dual_path(model, exp, sim, s, o, path);
+    DualOutcome compact = certify_dual_path(model, exp, sim, s, o);
     if (compact.verified) return compact;
-    DualOutcome dense = certify_dual_dense(model, exp, sim, s.dual_c1, s.dual_c2, o, path);
+    DualOutcome dense = certify_dual_dense(model, exp, sim, s.dual_c1, s.dual_c2, o);
     dense.note = "compact dual form not used: " + compact.reason;
     if (!dense.verified) dense.reason = "compact form: " + compact.reason + "; dense form: " + dense.reason;
     dense.seconds += compact.seconds;
     return dense;
   }
-  return certify_dual_dense(model, exp, sim, s.dual_c1, s.dual_c2, o, path);
+  return certify_dual_dense(model, exp, sim, s.dual_c1, s.dual_c2, o);
 }
 
 }  // namespace lpvid

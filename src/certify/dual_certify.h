@@ -18,6 +18,7 @@
 ///  6. compute the bound exactly; write the certificate and check it again
 ///     from the file with the verifier.
 
+#include <optional>
 #include <string>
 
 #include "core/scalar.h"
@@ -31,12 +32,12 @@ namespace lpvid {
 
 /// A dual certificate's outcome.
 struct DualOutcome {
-  bool verified = false;         ///< the written certificate was checked exactly and holds
+  bool verified = false;         ///< the certificate was checked exactly and holds
   std::string reason;            ///< why not
   Rational bound;                ///< the claimed number: invalidation margin (> 0) or the lower end on the objective
   double seconds = 0;            ///< building + checking
   std::string verifier_details;
-  std::string certificate_path;  ///< written only when verified
+  std::optional<Certificate> certificate;  ///< only when verified
   std::string note;              ///< why the compact form was not used (when it was tried)
 };
 
@@ -47,11 +48,10 @@ struct DualOutcome {
 /// the dense form "dual_delta" when it fails or `o.dense_dual`.
 /// `objective` says which claim: kFeasibility → "invalidated" (the fixed δ,
 /// d_max are the exact texts of `o`), the others → "lower_bound" on the
-/// objective (δ², d_max² or λδ² + (1−λ)d_max²). `path` is where the
-/// certificate goes. Never throws for a failed construction (verified =
+/// objective (δ², d_max² or λδ² + (1−λ)d_max²). Nothing is written (the
+/// certificate is returned). Never throws for a failed construction (verified =
 /// false with the reason).
 DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                         const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o,
-                         const std::string& path);
+                         const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o);
 
 }  // namespace lpvid

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "model/simulate.h"
@@ -83,29 +84,37 @@ Theorem21Program theorem21_program(const LpvModel<Rational>& model, const Experi
   return out;
 }
 
-void export_theorem21_program(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                              const CertifyOptions& options, const std::string& sdpa_path) {
-  write_sdpa_with_sidecar(theorem21_program(model, exp, options).delta.program, sdpa_path);
+OutsideSolution read_outside_solution(const std::string& program_path, const std::string& solution_path,
+                                      SolutionFormat format, int exit_code) {
+  OutsideSolution out;
+  out.program = read_sdpa_file(program_path);
+  out.program_name = program_path;
+  out.solution_name = solution_path;
+  out.solution_text = read_text_file(solution_path);
+  out.format = format;
+  out.exit_code = exit_code;
+  return out;
 }
 
 CertifiedBounds certify_outside_solution(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                                         const CertifyOptions& options, const std::string& program_path,
-                                         const std::string& solution_path, SolutionFormat format, int exit_code) {
-  const LmiProgram file = read_sdpa_file(program_path);
+                                         const CertifyOptions& options, const OutsideSolution& outside) {
+  const LmiProgram& file = outside.program;
   if (about_value(file, "kind") != kDeltaFormKind)
-    throw InputError(program_path + ": not a Theorem 2.1 program written by lpvid (no '*lpvid-about kind " +
+    throw InputError(outside.program_name + ": not a Theorem 2.1 program written by lpvid (no '*lpvid-about kind " +
                      std::string(kDeltaFormKind) + "' line); write it with 'lpvid invalidate ... --write-sdpa'");
   const Theorem21Program expected = theorem21_program(model, exp, options);
   const std::string why = mismatch(file, expected.delta.program.compressed());
   if (!why.empty())
-    throw InputError(program_path + ": not the Theorem 2.1 program of this model, data and options (" + why +
+    throw InputError(outside.program_name + ": not the Theorem 2.1 program of this model, data and options (" + why +
                      "); give the same --model, --data, --rows, --delta/--dmax/--lambda and --max-taps as when it was written");
-  const SolveResult sol = format == SolutionFormat::kCsdp ? read_csdp_solution(solution_path, file, exit_code)
-                                                          : read_sdpa_result(solution_path, file, options.solver);
+  const SolveResult sol =
+      outside.format == SolutionFormat::kCsdp
+          ? parse_csdp_solution(outside.solution_text, outside.solution_name, file, outside.exit_code)
+          : parse_sdpa_result(outside.solution_text, outside.solution_name, file, options.solver);
   CertifiedBounds out;
   if (!has_solution(sol.status)) {
     out.solve_status = sol.status;
-    out.reason = solution_path + ": the outside solver's status is " + std::string(to_string(sol.status)) +
+    out.reason = outside.solution_name + ": the outside solver's status is " + std::string(to_string(sol.status)) +
                  (sol.message.empty() ? "" : " (" + sol.message + ")") + ": no solution to certify";
     return out;
   }

@@ -2,9 +2,11 @@
 /// Theorem 2.1 for a fixed model, solved by an outside SDP solver.
 /// The round trip, from the README:
 ///
-///     lpvid invalidate … --write-sdpa P.dat-s      export_theorem21_program: P.dat-s and P.dat-s.json
+///     lpvid invalidate … --write-sdpa P.dat-s      theorem21_program, written with its sidecar
+///                                                  (solvers/sdpa_sidecar.h): P.dat-s and P.dat-s.json
 ///     csdp P.dat-s P.sol                           any solver that reads SDPA sparse files
 ///     lpvid certify … --program P.dat-s --solution P.sol
+///                                                  read_outside_solution, then
 ///                                                  certify_outside_solution: a checked certificate
 ///
 /// The program is the Δ form of lmi/delta_form_lmi.h, exactly as
@@ -22,6 +24,8 @@
 #include "certify/certify.h"
 #include "lmi/delta_form_lmi.h"
 #include "model/lpv_model.h"
+#include "solvers/lmi_program.h"
+#include "solvers/sdp_solver.h"
 
 namespace lpvid {
 
@@ -38,24 +42,32 @@ struct Theorem21Program {
 Theorem21Program theorem21_program(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                    const CertifyOptions& options);
 
-/// Writes theorem21_program to `sdpa_path` with its sidecar (solvers/sdpa_sidecar.h).
-void export_theorem21_program(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                              const CertifyOptions& options, const std::string& sdpa_path);
-
 enum class SolutionFormat {
   kCsdp,  ///< the `csdp` program's solution file (sdpa_file.h: read_csdp_solution)
   kSdpa,  ///< the `sdpa` program's result file (read_sdpa_result; ask it for 17 digits)
 };
 
-/// Reads `program_path` (must be the program theorem21_program builds for
-/// these inputs — else InputError naming what differs) and the outside
-/// solver's `solution_path`, and certifies its taps (certify_with_taps).
-/// `exit_code` is the outside solver's exit status (CSDP's tells optimal,
-/// infeasible, …). Never throws for a solution that does not verify
-/// (verified = false with the reason); throws InputError for unreadable or
-/// mismatched files.
+/// An outside solver's answer as read from its files: the program it was
+/// given (as written) and the text of its solution file.
+struct OutsideSolution {
+  LmiProgram program;
+  std::string program_name, solution_name;  ///< for messages
+  std::string solution_text;
+  SolutionFormat format = SolutionFormat::kCsdp;
+  int exit_code = 0;  ///< the outside solver's exit status (CSDP's tells optimal, infeasible, …)
+};
+
+/// Reads the program file and the outside solver's solution file for it.
+/// Throws InputError for unreadable files.
+OutsideSolution read_outside_solution(const std::string& program_path, const std::string& solution_path,
+                                      SolutionFormat format, int exit_code);
+
+/// Certifies the outside solution's taps (certify_with_taps). The program
+/// must be the one theorem21_program builds for these inputs — else
+/// InputError naming what differs; then the solution is parsed for it
+/// (InputError naming file:line when it does not fit). Never throws for a
+/// solution that does not verify (verified = false with the reason).
 CertifiedBounds certify_outside_solution(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                                         const CertifyOptions& options, const std::string& program_path,
-                                         const std::string& solution_path, SolutionFormat format, int exit_code = 0);
+                                         const CertifyOptions& options, const OutsideSolution& outside);
 
 }  // namespace lpvid

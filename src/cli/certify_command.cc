@@ -26,13 +26,14 @@ int run_certify(CertifyArgs& a) {
     throw InputError("certify: --toeplitz paper has no Delta-form program; outside solutions are read for the signal mode only");
   c.solver = "outside (" + a.format + " solution file " + a.solution_path + ")";  // for the printed options
   print_options(c, in.objective, "certify");
-  const CertifyOptions co = certify_options(c, in.objective);
-  const CertifiedBounds b =
-      certify_outside_solution(in.model_q, in.exp_q, co, a.program_path, a.solution_path,
-                               a.format == "sdpa" ? SolutionFormat::kSdpa : SolutionFormat::kCsdp, a.exit_code);
+  const CertifyOptions co = certify_options(c, in);
+  const OutsideSolution outside = read_outside_solution(
+      a.program_path, a.solution_path, a.format == "sdpa" ? SolutionFormat::kSdpa : SolutionFormat::kCsdp, a.exit_code);
+  const CertifiedBounds b = certify_outside_solution(in.model_q, in.exp_q, co, outside);
+  const CertificateFiles files = write_certificates(b, certificate_path(c));
   std::cout << "\nTheorem 2.1 (Delta form) solved outside: " << a.solution_path << " for " << a.program_path << "\n"
-            << bounds_text(b, co.certificate_path);
-  nlohmann::ordered_json report = bounds_json(b, c.toeplitz, c.solver, co.certificate_path);
+            << bounds_text(b, files);
+  nlohmann::ordered_json report = bounds_json(b, c.toeplitz, c.solver, files);
   report["relaxation"] = "none (fixed model: Theorem 2.1 is an LMI)";
   report["program"] = a.program_path;
   report["solution"] = a.solution_path;

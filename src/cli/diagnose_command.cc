@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "core/file_io.h"
+#include "cli/certificate_names.h"
 #include "cli/commands.h"
 #include "cli/diagnose_output.h"
 #include "cli/inputs.h"
@@ -111,8 +112,9 @@ int run_diagnose(DiagnoseArgs& a) {
   const long file_offset = a.common.rows_text.empty() ? 0 : a.common.row_begin;
 
   // estimation (double + exact) and validation experiments
-  const TextTable table =
-      a.common.names.empty() ? read_table(a.common.data_path) : read_table(a.common.data_path, a.common.names);
+  const DataTable data =
+      a.common.names.empty() ? read_data_table(a.common.data_path) : read_data_table(a.common.data_path, a.common.names);
+  const TextTable& table = data.table;
   Experiment<Rational> est_q = make_experiment<Rational>(table, declared.columns);
   Experiment<double> est_d = make_experiment<double>(table, declared.columns);
   if (!a.common.rows_text.empty()) {
@@ -211,15 +213,19 @@ int run_diagnose(DiagnoseArgs& a) {
   o.test_warmup = warmup;
   o.windows = windows;
   o.max_windows = static_cast<size_t>(a.max_windows);
-  o.certify = certify_options(a.common, in.objective);  // rows: set per window
+  o.certify = certify_options(a.common, in);
+  o.certify.data = data.reference;  // the bytes est_q was parsed from; rows: set per window
   o.certify.progress = nullptr;  // windows run in parallel: diagnose prints its own progress
   // Many windows: the lower end comes from the K-tap solve's dual lifted to
   // the full horizon, without the extra full-horizon solve.
   o.certify.full_horizon_limit = 0;
   o.certify.lower_end = a.lower_ends;
-  o.certify.certificate_path = certificate_path(a.common);
   o.certify.scale_signals = true;  // λ on unit-RMS signals (certify/bound_scaling.h)
   o.file_row_offset = file_offset;
+  const std::string certificates = certificate_path(a.common);
+  o.on_bound = [&certificates](WindowBounds& w, size_t window, size_t windows, bool after) {
+    write_window_certificate(w, certificates, window, windows, after);
+  };
   // --write-sdpa numbers the programs it writes in solve order: sequential then.
   o.threads = a.common.write_sdpa.empty() ? static_cast<unsigned>(a.threads) : 1u;
   o.make_solver = [&a] { return make_solver_for_cli(a.common.solver, a.common.write_sdpa); };
@@ -227,8 +233,8 @@ int run_diagnose(DiagnoseArgs& a) {
   const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record
   progress("data read (" + std::to_string(est_d.n()) + " estimation rows); fitting the declared model" +
            (by_folds ? " on the whole record and on each fold's training rows" : ""));
-  const DiagnoseResult result =
-      diagnose(declared, est_d, est_q, by_folds ? no_selection : val_d, tests, o, *solver);
+  DiagnoseResult result = diagnose(declared, est_d, est_q, by_folds ? no_selection : val_d, tests, o, *solver);
+  write_diagnose_certificates(result, certificates);  // the Theorem 3.1 windows
 
   DiagnoseReportInputs ri;
   ri.result = &result;

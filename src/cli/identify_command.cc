@@ -57,7 +57,7 @@ int run_identify(IdentifyArgs& a) {
   opt.unknowns.x0 = a.free_x0;
   opt.unknowns.offset = !a.no_offset;
   opt.solver.verbose = a.common.verbose;
-  CertifyOptions co = certify_options(a.common, in.objective);
+  CertifyOptions co = certify_options(a.common, in);
   co.solver = opt.solver;
   auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
   const IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, *solver);
@@ -94,13 +94,14 @@ int run_identify(IdentifyArgs& a) {
   }
 
   const CertifiedBounds& b = id.bounds;
+  const CertificateFiles files = write_certificates(b, certificate_path(a.common));
   if (!id.taps_note.empty()) std::cout << "\n  the iterate's own Delta did not certify (" << id.taps_note << "); solved again\n";
 
   std::cout << "\nCertified bounds of the identified model (Theorem 2.1, Delta form, exact check)\n"
-            << bounds_text(b, co.certificate_path,
+            << bounds_text(b, files,
                            "for this theta: the lower end bounds the model with the identified theta fixed, not the "
                            "model class (another theta may do better)");
-  report = bounds_json(b, a.common.toeplitz, a.common.solver, co.certificate_path);
+  report = bounds_json(b, a.common.toeplitz, a.common.solver, files);
   report["method"] = a.method;
   report["relaxation"] = res.relaxation;
   report["iterations"] = static_cast<int>(res.iterates.size());
@@ -113,7 +114,7 @@ int run_identify(IdentifyArgs& a) {
   report["theta"] = theta_json(in.model_d, res.layout, id.fixed.value);
   report["samples"] = in.exp_q.n();
   if (in.objective.kind != BoundObjective::Kind::kFeasibility) {
-    report["interval"] = interval_json(b, in.objective);
+    report["interval"] = interval_json(b, in.objective, files);
     report["interval"]["scope"] = "the model with the identified theta fixed (not the model class)";
   }
   if (!a.model_out.empty()) {

@@ -112,7 +112,9 @@ Inputs load_inputs(const CommonOptions& o) {
   Inputs in;
   in.model_q = read_model_file<Rational>(o.model_path);
   in.model_d = read_model_file<double>(o.model_path);
-  const TextTable table = o.names.empty() ? read_table(o.data_path) : read_table(o.data_path, o.names);
+  const DataTable data = o.names.empty() ? read_data_table(o.data_path) : read_data_table(o.data_path, o.names);
+  const TextTable& table = data.table;
+  in.data = data.reference;
   in.exp_q = make_experiment<Rational>(table, in.model_q.columns);
   in.exp_d = make_experiment<double>(table, in.model_d.columns);
   CommonOptions& mo = const_cast<CommonOptions&>(o);
@@ -122,6 +124,7 @@ Inputs load_inputs(const CommonOptions& o) {
       throw InputError("--rows " + o.rows_text + ": the data has only " + std::to_string(in.exp_q.n()) + " rows");
     in.exp_q = select_rows(in.exp_q, o.row_begin, o.row_end);
     in.exp_d = select_rows(in.exp_d, o.row_begin, o.row_end);
+    in.data = in.data.rows(o.row_begin, o.row_end);
   }
   in.mode = toeplitz_mode_from_string(o.toeplitz);
   in.objective = make_objective(o);
@@ -138,9 +141,10 @@ void print_options(const CommonOptions& o, const BoundObjective& objective, cons
             << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny)\n";
 }
 
-CertifyOptions certify_options(const CommonOptions& c, const BoundObjective& objective) {
+CertifyOptions certify_options(const CommonOptions& c, const Inputs& in) {
   CertifyOptions co;
-  co.objective = objective;
+  co.objective = in.objective;
+  co.data = in.data;
   co.solver.verbose = c.verbose;
   co.max_taps = c.max_taps;
   co.dense_dual = c.dense_dual;
@@ -152,11 +156,6 @@ CertifyOptions certify_options(const CommonOptions& c, const BoundObjective& obj
     };
   }
   co.delta_norm = delta_norm_of(c);
-  co.certificate_path = certificate_path(c);
-  co.data_path = c.data_path;
-  co.data_names = c.names;
-  co.row_begin = c.rows_text.empty() ? 0 : c.row_begin;
-  co.row_end = c.rows_text.empty() ? -1 : c.row_end;
   co.fixed_delta_text = c.delta_text;
   co.fixed_dmax_text = c.dmax_text;
   return co;

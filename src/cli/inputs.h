@@ -12,6 +12,7 @@
 
 #include "data/experiment.h"
 #include "certify/certify.h"
+#include "data/data_reference.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
@@ -42,10 +43,6 @@ struct CommonOptions {
 /// --delta-norm as the enum of certify.h.
 DeltaNorm delta_norm_of(const CommonOptions& o);
 
-/// The certification options every command takes from the common options:
-/// objective, solver verbosity, --max-taps, --delta-norm, the data file,
-/// --names, --rows, the fixed bounds' exact text and the certificate path.
-CertifyOptions certify_options(const CommonOptions& o, const BoundObjective& objective);
 
 /// Registers the common options on a subcommand.
 void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds);
@@ -57,7 +54,13 @@ struct Inputs {
   LpvModel<Rational> model_q;
   ToeplitzMode mode = ToeplitzMode::kSignal;
   BoundObjective objective;
+  DataReference data;  ///< where exp_q's rows came from (file, sha256, --names, --rows)
 };
+
+/// The certification options every command takes from the common options and
+/// its inputs: objective, solver verbosity, --max-taps, --delta-norm, the data
+/// reference and the fixed bounds' exact text.
+CertifyOptions certify_options(const CommonOptions& o, const Inputs& in);
 
 /// Reads and checks everything (throws InputError with file/line/field).
 Inputs load_inputs(const CommonOptions& o);

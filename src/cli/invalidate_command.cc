@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "certify/certify.h"
 #include "certify/outside_solution.h"
+#include "solvers/sdpa_sidecar.h"
 #include "solvers/external_solvers.h"
 
 namespace lpvid::cli {
@@ -22,21 +23,22 @@ int run_invalidate(CommonOptions& c) {
   // `lpvid certify --solution` (certify/outside_solution.h).
   const bool export_program = !c.write_sdpa.empty() && in.mode == ToeplitzMode::kSignal;
   auto solver = make_solver_for_cli(c.solver, export_program ? "" : c.write_sdpa);
-  const CertifyOptions co = certify_options(c, in.objective);
+  const CertifyOptions co = certify_options(c, in);
   if (export_program) {
-    export_theorem21_program(in.model_q, in.exp_q, co, c.write_sdpa);
+    write_sdpa_with_sidecar(theorem21_program(in.model_q, in.exp_q, co).delta.program, c.write_sdpa);
     std::cout << "wrote the Theorem 2.1 program " << c.write_sdpa << " and its sidecar " << c.write_sdpa
               << ".json (scalings, variable meanings); solve it with e.g. 'csdp " << c.write_sdpa
               << " P.sol', then 'lpvid certify' with the same options and --program, --solution\n";
   }
   const CertifiedBounds b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
+  const CertificateFiles files = write_certificates(b, certificate_path(c));
   std::cout << "\nTheorem 2.1 (" << (in.mode == ToeplitzMode::kSignal ? "Delta form" : "w form, paper T_z")
             << "), the model as written: "
             << (in.model_q.correction.basis.empty() ? std::string("no correction")
                                                     : "the correction basis is ignored (theta = 0)")
             << ", x0 as in the model file\n"
-            << bounds_text(b, co.certificate_path);
-  nlohmann::ordered_json report = bounds_json(b, c.toeplitz, c.solver, co.certificate_path);
+            << bounds_text(b, files);
+  nlohmann::ordered_json report = bounds_json(b, c.toeplitz, c.solver, files);
   report["relaxation"] = "none (fixed model: Theorem 2.1 is an LMI)";
   report["model_as_written"] = "theta = 0 (any correction basis is ignored), x0 as in the model file";
   report["iterations"] = 1;
@@ -46,11 +48,11 @@ int run_invalidate(CommonOptions& c) {
     report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);
     if (outcome != CertifyOutcome::kVerified) report["status"] = to_string(outcome);
     if (outcome == CertifyOutcome::kInvalidated) {
-      report["certificate"] = co.certificate_path;
+      report["certificate"] = files.certificate;
       report["verified"] = true;
       std::cout << "  -> INVALIDATED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
                 << ": no causal LTI Delta with ||Delta||_inf <= delta and no noise with RMS <= dmax explain the data.\n"
-                << "     certificate " << co.certificate_path << " (claim \"invalidated\", a dual point of the full-horizon "
+                << "     certificate " << files.certificate << " (claim \"invalidated\", a dual point of the full-horizon "
                 << "problem), checked exactly: " << b.lower.verifier_details << "\n";
     }
     if (outcome == CertifyOutcome::kUndecided) {
@@ -58,7 +60,7 @@ int run_invalidate(CommonOptions& c) {
                 << ": neither a consistency nor an invalidation certificate passed the exact check\n";
     }
   } else {
-    report["interval"] = interval_json(b, in.objective);
+    report["interval"] = interval_json(b, in.objective, files);
   }
   write_json(c.report_path, report);
   return exit_code(outcome);

@@ -9,6 +9,7 @@
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "certify/certificate_files.h"
 #include "identify/fix_and_certify.h"
 #include "model/simulate.h"
 #include "oracle/answer.h"
@@ -37,7 +38,6 @@ CommonOptions task_options(const OracleTask& task, const fs::path& folder, const
   c.solver = solver;
   c.data_path = (folder / task.data).string();
   c.model_path = (folder / task.model).string();
-  c.certificate_path = (folder / "lpvid.cert.json").string();
   c.delta_text = task.delta;
   c.dmax_text = task.dmax;
   if (!task.lambda.empty()) c.lambda = double_from_text(task.lambda);
@@ -66,11 +66,11 @@ std::string claim_words(const OracleTask& task, const OracleAnswer& a) {
 /// values for the others). A failing witness leaves a "not_a_witness"
 /// certificate in the folder, checked again from the file.
 WitnessResult check_witness(const OracleTask& task, const OracleAnswer& a, const LpvModel<Rational>& model,
-                            const CertifyOptions& co, const fs::path& folder) {
+                            const Inputs& in, const fs::path& folder) {
   WitnessResult r;
   if (!a.witness) return r;
   Certificate c;
-  set_data_reference(c, co, (folder / "witness.json").string());
+  set_data_reference(c, in.data);
   c.model = model;
   c.mode = ToeplitzMode::kSignal;
   const Rational delta = task.delta.empty() ? *a.delta : rational_from_text(task.delta);
@@ -87,21 +87,21 @@ WitnessResult check_witness(const OracleTask& task, const OracleAnswer& a, const
   }
   c.info["tool"] = "lpvid oracle";
   c.info["meaning"] = "the outside implementation's witness, judged at its claimed values";
-  const CertificateVerdict holds = check_certificate(c, folder.string());
+  const CertificateVerdict holds = check_certificate(c, in.exp_q);
   if (holds.holds) {
     r.status = WitnessResult::kHolds;
     r.text = holds.details;
     return r;
   }
   c.claim = CertificateClaim::kNotAWitness;
-  const CertificateVerdict fails = check_certificate(c, folder.string());
+  const CertificateVerdict fails = check_certificate(c, in.exp_q);
   if (!fails.holds) {
     r.status = WitnessResult::kMalformed;
     r.text = holds.reason;
     return r;
   }
   r.certificate = (folder / "witness.not_a_witness.json").string();
-  write_certificate(r.certificate, c);
+  write_certificate_at(c, r.certificate);
   r.status = WitnessResult::kFails;
   r.text = holds.reason;
   return r;
@@ -114,14 +114,13 @@ void identify_reference(const Inputs& in, const CommonOptions& c, const fs::path
   IdentifyOptions opt;
   opt.objective = in.objective;
   opt.iterate = true;
-  CertifyOptions co = certify_options(c, in.objective);
-  co.certificate_path = (folder / "lpvid.identify.cert.json").string();
+  CertifyOptions co = certify_options(c, in);
   co.lower_end = false;
   const IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, solver);
   if (!id.bounds.verified) return;
   ref.identified_verified = true;
   ref.identified = id.bounds.dmax2;
-  ref.identified_certificate = co.certificate_path;
+  ref.identified_certificate = write_certificates(id.bounds, (folder / "lpvid.identify.cert.json").string()).certificate;
 }
 
 }  // namespace
@@ -151,7 +150,7 @@ CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptio
   auto outside = std::async(std::launch::async, run_shell_command, command, o.case_timeout, rep.outside_log);
   const auto started = std::chrono::steady_clock::now();
   auto solver = make_solver_for_cli(c.solver, "");
-  const CertifyOptions co = certify_options(c, in.objective);
+  const CertifyOptions co = certify_options(c, in);
   const bool identify = task.kind == TaskKind::kIdentify;
   ReferenceResult identified;
   CertifiedBounds b;
@@ -186,8 +185,8 @@ CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptio
     b = certify_fixed(judged, in.exp_q, in.mode, co, *solver);
     rep.lpvid_seconds += seconds_since(again);
   }
-  const WitnessResult witness = check_witness(task, answer, judged, co, folder);
-  ReferenceResult ref = reference_of(b, in.objective, co.certificate_path);
+  const WitnessResult witness = check_witness(task, answer, judged, in, folder);
+  ReferenceResult ref = reference_of(b, in.objective, write_certificates(b, (folder / "lpvid.cert.json").string()));
   ref.identified_verified = identified.identified_verified;
   ref.identified = identified.identified;
   ref.identified_certificate = identified.identified_certificate;

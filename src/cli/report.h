@@ -7,6 +7,7 @@
 
 #include "core/exit_codes.h"
 #include "identify/affine_residual.h"
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
@@ -29,7 +30,7 @@ int exit_code(CertifyOutcome outcome);
 /// The common fields: status, delta, dmax (only when verified), the exact
 /// δ²/d_max², noise_normalisation, toeplitz_mode, solver, certificate, verified.
 nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& toeplitz_mode,
-                                   const std::string& solver, const std::string& certificate);
+                                   const std::string& solver, const CertificateFiles& files);
 
 /// θ (the correction matrices) by basis term, φ and x0, from parameters p.
 nlohmann::ordered_json theta_json(const LpvModel<double>& model, const ParameterLayout& layout, const Vec<double>& p);
@@ -40,12 +41,12 @@ void write_json(const std::string& path, const nlohmann::ordered_json& j);
 /// The certified interval of the objective (the upper end from a primal
 /// certificate, the lower end from a dual one): lower, upper, relative_gap,
 /// lower_verified, upper_verified, the lower end's certificate.
-nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObjective& objective);
+nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObjective& objective, const CertificateFiles& files);
 
 /// Readable lines for the bounds ("delta <= ... (verified)").
 /// `scope`, when not empty, says what the interval's lower end is a bound
 /// FOR (identify: the model with the identified θ fixed, not the class).
-std::string bounds_text(const CertifiedBounds& b, const std::string& certificate, const std::string& scope = "");
+std::string bounds_text(const CertifiedBounds& b, const CertificateFiles& files, const std::string& scope = "");
 
 /// A table cell of the tradeoff and select-basis tables: x with 6
 /// significant digits, "-" for a negative x (not computed).

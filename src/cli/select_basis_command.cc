@@ -2,11 +2,11 @@
 // grow the correction basis until a model is consistent at the given bounds,
 // then prune it. The rules are in identify/basis_selection.h.
 #include <cstdio>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 
+#include "cli/certificate_names.h"
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
@@ -86,15 +86,16 @@ int run_select(SelectArgs& a) {
   o.unknowns.x0 = a.free_x0;
   o.unknowns.offset = !a.no_offset;
   o.solver.verbose = c.verbose;
-  o.certify = certify_options(c, in.objective);  // objective, bounds and certificate path: set per step
+  o.certify = certify_options(c, in);  // objective and bounds: set per step
   const std::string final_cert = certificate_path(c);
-  o.certificate_stem = stem_of(final_cert, {".cert.json", ".json"});
+  const std::string stem = stem_of(final_cert, {".cert.json", ".json"});
   const Table table(std::max<size_t>(16, std::min<size_t>(60, basis_text(order, in.model_d.scheduling).size())));
   table.header();
   o.on_step = [&](const BasisStep& s) { table.row(s); };
 
   auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
-  const BasisSelectionResult r = select_basis(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
+  BasisSelectionResult r = select_basis(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
+  write_step_certificates(r, stem);
 
   std::cout << "\n  consistent  = a certificate at delta = " << c.delta_text << ", dmax = " << c.dmax_text
             << " passed the exact verifier (delta, dmax columns)\n"
@@ -114,13 +115,12 @@ int run_select(SelectArgs& a) {
   for (const BasisStep& s : r.steps) total_solves += s.solves;
   if (r.found) {
     const BasisStep& f = r.steps[static_cast<size_t>(r.final_step)];
-    namespace fs = std::filesystem;
-    if (f.certificate != final_cert) fs::copy_file(f.certificate, final_cert, fs::copy_options::overwrite_existing);
+    const CertificateFiles files = write_certificates(f.bounds, final_cert);
     std::cout << "\nSelected basis: " << f.basis_text << " (step " << f.index << ")\n"
-              << bounds_text(f.bounds, final_cert,
+              << bounds_text(f.bounds, files,
                              "for this theta: the lower end bounds the model with the selected theta fixed, not the "
                              "model class");
-    report = bounds_json(f.bounds, c.toeplitz, c.solver, final_cert);
+    report = bounds_json(f.bounds, c.toeplitz, c.solver, files);
     report["relaxation"] = f.relaxation;
   } else {
     std::cout << "\nNo basis up to degree " << a.max_degree << " gives a model consistent with the data at delta = "

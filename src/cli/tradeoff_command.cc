@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/certificate_names.h"
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
@@ -73,8 +74,8 @@ int run_tradeoff(TradeoffArgs& a) {
   o.unknowns.x0 = a.free_x0;
   o.unknowns.offset = !a.no_offset;
   o.solver.verbose = c.verbose;
-  o.certify = certify_options(c, in.objective);  // objective, bounds and certificate path: set per step
-  o.certificate_stem = stem_of(certificate_path(c), {".cert.json", ".json"});
+  o.certify = certify_options(c, in);  // the objective and bounds: set per step
+  const std::string stem = stem_of(certificate_path(c), {".cert.json", ".json"});
   std::cout << std::left << std::setw(9) << "lambda" << std::setw(13) << "delta" << std::setw(13) << "dmax"
             << std::setw(10) << "verified" << std::setw(13) << "delta_relax" << std::setw(13) << "dmax_relax"
             << std::setw(7) << "solves" << "time[s]\n";
@@ -90,7 +91,8 @@ int run_tradeoff(TradeoffArgs& a) {
               << std::flush;
   };
   auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
-  const std::vector<TradeoffPoint> pts = tradeoff_curve(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
+  std::vector<TradeoffPoint> pts = tradeoff_curve(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
+  write_tradeoff_certificates(pts, stem);
 
   std::cout << "\n  delta, dmax  = certified (the exact verifier accepted <stem>.lambda<k>.cert.json)\n"
             << "  *_relax      = the identification relaxation's own values (solver)\n";

@@ -18,19 +18,7 @@ bool DiagnoseResult::verified() const {
   return all;
 }
 
-std::string diagnose_certificate_path(const std::string& certificate_path, size_t window, size_t windows, bool after) {
-  const size_t dot = certificate_path.rfind(".json");
-  const std::string stem = dot == std::string::npos ? certificate_path : certificate_path.substr(0, dot);
-  const std::string tag = windows == 1 ? "" : ".w" + std::to_string(window + 1);
-  return stem + tag + (after ? ".after.json" : ".before.json");
-}
-
 namespace {
-
-std::string theorem31_certificate_path(const std::string& certificate_path, bool after) {
-  const std::string p = diagnose_certificate_path(certificate_path, 0, 1, after);
-  return p.substr(0, p.size() - 5) + ".thm31.json";
-}
 
 void check_options(const Experiment<double>& est_d, const Experiment<Rational>& est_q,
                    const Experiment<double>& selection, const std::vector<Experiment<double>>& tests,
@@ -133,26 +121,25 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   parallel_for(2 * windows.size(), threads, [&](size_t job) {
     const size_t i = job / 2;
     const bool after = job % 2 == 1;
-    CertifyOptions wo = options.certify;
-    wo.certificate_path = diagnose_certificate_path(options.certify.certificate_path, i, windows.size(), after);
+    const CertifyOptions& wo = options.certify;
     auto own = threads > 1 ? options.make_solver() : nullptr;
     WindowBounds& w = (after ? out.after : out.before)[i];
     w = certify_window(after ? out.after_model : out.before_model, est_d, est_q, windows[i].first, windows[i].second,
                        options.file_row_offset, wo, own ? *own : solver);
+    if (options.on_bound) options.on_bound(w, i, windows.size(), after);
     if (options.ranking.progress) {
       const std::lock_guard<std::mutex> lock(report);
       options.ranking.progress("bounds (Theorem 2.1), " + std::to_string(++done) + " of " +
                                std::to_string(2 * windows.size()) + ": window " + std::to_string(i + 1) + " " +
                                (after ? "after" : "before") + ": " +
-                               (w.bounds.verified ? "verified, " + w.certificate : "NOT verified (" + w.bounds.reason + ")"));
+                               (w.bounds.verified ? "verified" + (w.certificate.empty() ? std::string() : ", " + w.certificate)
+                                                   : "NOT verified (" + w.bounds.reason + ")"));
     }
   });
   if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
-  CertifyOptions co = options.certify;
-  co.certificate_path = theorem31_certificate_path(options.certify.certificate_path, false);
+  const CertifyOptions& co = options.certify;
   out.before_id = identify_on_window(out.before_model, est_d, est_q, windows[0].first, windows[0].second,
                                      options.file_row_offset, co, solver);
-  co.certificate_path = theorem31_certificate_path(options.certify.certificate_path, true);
   out.after_id = identify_on_window(out.after_model, est_d, est_q, windows[0].first, windows[0].second,
                                     options.file_row_offset, co, solver);
 

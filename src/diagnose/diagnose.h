@@ -47,12 +47,16 @@ struct DiagnoseOptions {
   size_t max_windows = 0;
   /// Options of every certificate (lower_end: also a dual certificate of the
   /// lower end per window, ".lower.json", 60 MB at 200 SISO rows; off by
-  /// default in `lpvid diagnose`, whose report states the upper ends).
-  /// `certificate_path` is the stem's file:
-  /// "<stem>.json" gives <stem>.before.json, <stem>.after.json (".w<i>"
-  /// before the side when there are several windows) and
-  /// <stem>.before.thm31.json, <stem>.after.thm31.json.
+  /// default in `lpvid diagnose`, whose report states the upper ends). The
+  /// certificates stay in the result (WindowBounds::bounds); the front end
+  /// names and writes them.
   CertifyOptions certify;
+  /// Called from the certifying job's thread as soon as a window's bound is
+  /// certified (`window` of `windows`, before or after): a front end writes
+  /// its certificates then and names the file in w.certificate (which the
+  /// progress line then shows), so that files appear as the run goes. Unset:
+  /// nothing is written.
+  std::function<void(WindowBounds& w, size_t window, size_t windows, bool after)> on_bound;
   long file_row_offset = 0;  ///< data-file row of estimation sample 0 (certificates name file rows)
   /// Windows certified at once; > 1 needs `make_solver` (one backend per
   /// job). Results do not depend on it.
@@ -100,9 +104,6 @@ struct DiagnoseResult {
   /// Every window's bound, before and after, verified exactly.
   bool verified() const;
 };
-
-/// The certificate file of one window and side (see DiagnoseOptions::certify).
-std::string diagnose_certificate_path(const std::string& certificate_path, size_t window, size_t windows, bool after);
 
 /// Runs steps 1–4. `est_q` is the exact copy of `est_d` (the same rows);
 /// `tests` may be empty; each test set is scored once, separately (a

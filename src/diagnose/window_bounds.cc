@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
 #include "core/rms.h"
@@ -53,17 +52,11 @@ WindowBounds certify_window(const LpvModel<double>& model, const Experiment<doub
   const Simulation<double> sim = simulate(model, est_d);
   const Vec<double> xb = model.nx > 0 ? Vec<double>(sim.x.row(begin).transpose()) : Vec<double>();
   w.model = exact_model(model, xb);
-  options.row_begin = w.file_begin;
-  options.row_end = w.file_end;
+  options.data.row_begin = w.file_begin;
+  options.data.row_end = w.file_end;
   w.bounds = certify_fixed_model(w.model, select_rows(est_q, begin, end), options, solver);
-  name_certificate(w, options.certificate_path);
   judge_informative(w, est_d.y.middleRows(begin, end - begin));
   return w;
-}
-
-void name_certificate(WindowBounds& w, const std::string& path) {
-  std::error_code ec;
-  w.certificate = w.bounds.verified && !path.empty() && std::filesystem::is_regular_file(path, ec) ? path : "";
 }
 
 void judge_informative(WindowBounds& w, const Mat<double>& y) {

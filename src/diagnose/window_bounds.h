@@ -26,9 +26,9 @@ struct WindowBounds {
   long file_begin = 0, file_end = 0;  ///< the same rows of the data file
   CertifiedBounds bounds;
   LpvModel<Rational> model;           ///< the exact model that was certified
-  /// Its certificate file; empty unless the bound was verified AND the file
-  /// exists (a bound stopped by the watchdog or refused by the exact check is
-  /// reported with its reason, never with a file name): name_certificate.
+  /// The file the front end wrote bounds.certificate to; empty unless the
+  /// bound was verified (a bound stopped by the watchdog or refused by the
+  /// exact check is reported with its reason, never with a file name).
   std::string certificate;
   /// A verified bound can still say nothing. The best CONSTANT model
   /// (ŷ = each output's mean on the window, Δ = 0) already meets
@@ -43,10 +43,6 @@ struct WindowBounds {
   std::string note;
 };
 
-/// Sets w.certificate to `path` if the bound is verified and `path` exists,
-/// else to "" (then the report shows the reason instead of a file).
-void name_certificate(WindowBounds& w, const std::string& path);
-
 /// Sets rms_output, informative and note from the bounds and the window's
 /// measured output `y` (n × ny).
 void judge_informative(WindowBounds& w, const Mat<double>& y);
@@ -58,7 +54,7 @@ LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits = Cert
 LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0);
 
 /// Certifies `model` (fitted on `est_d` with x0 at sample 0) on est rows
-/// [begin, end). `options.data_path`, `data_names`, `certificate_path`,
+/// [begin, end). `options.data` (its rows set to the window's),
 /// `objective`, `solver`, `max_taps` are used as given; `file_row_offset`
 /// is the data-file row of estimation sample 0.
 WindowBounds certify_window(const LpvModel<double>& model, const Experiment<double>& est_d,

@@ -44,8 +44,8 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   out.bounds.file_begin = file_row_offset + static_cast<long>(begin);
   out.bounds.file_end = file_row_offset + static_cast<long>(end);
   CertifyOptions co = options;
-  co.row_begin = out.bounds.file_begin;
-  co.row_end = out.bounds.file_end;
+  co.data.row_begin = out.bounds.file_begin;
+  co.data.row_end = out.bounds.file_end;
   co.lower_end = false;  // the diagnose report states δ, d_max here, not the interval
   IdentifiedModel id = identify_and_certify(mq, md, wq, wd, io, co, solver);
   out.result = std::move(id.fit);
@@ -55,7 +55,6 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   }
   out.bounds.model = std::move(id.fixed.model);
   out.bounds.bounds = std::move(id.bounds);
-  name_certificate(out.bounds, options.certificate_path);
   judge_informative(out.bounds, wd.y);
   return out;
 }

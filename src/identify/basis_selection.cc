@@ -141,7 +141,7 @@ class Selector {
     return steps_.back();
   }
 
-  CertifyOptions certify_options(int index) const {
+  CertifyOptions certify_options() const {
     CertifyOptions co = o_.certify;
     co.objective.kind = BoundObjective::Kind::kFeasibility;
     co.objective.delta = o_.delta;
@@ -149,17 +149,15 @@ class Selector {
     co.fixed_delta_text = o_.delta_text;
     co.fixed_dmax_text = o_.dmax_text;
     co.solver = o_.solver;
-    co.certificate_path = o_.certificate_stem + ".step" + std::to_string(index) + ".cert.json";
     return co;
   }
 
   /// Sets the verdict from a certification of a fixed model.
-  void judge(BasisStep& s, const CertifiedBounds& b, const CertifyOptions& co, const std::string& what) {
+  void judge(BasisStep& s, const CertifiedBounds& b, const std::string& what) {
     s.bounds = b;
     ++s.solves;
     if (b.verified) {
       s.verdict = BasisVerdict::kConsistent;
-      s.certificate = co.certificate_path;
       s.detail = what + " is consistent at the given bounds: certificate verified exactly";
     } else if (b.solve_status == SolveStatus::kPrimalInfeasible) {
       s.verdict = BasisVerdict::kInvalidated;
@@ -174,11 +172,11 @@ class Selector {
   void solve(BasisStep& s) {
     const LpvModel<Rational> mq = with_correction_basis(mq_, s.basis);
     const LpvModel<double> md = with_correction_basis(md_, s.basis);
-    const CertifyOptions co = certify_options(s.index);
+    const CertifyOptions co = certify_options();
     const bool unknowns = !s.basis.empty() || (o_.unknowns.offset && unknown_offset_count(md) > 0) || o_.unknowns.x0;
     if (!unknowns) {
       s.relaxation = "none (fixed model: Theorem 2.1)";
-      judge(s, certify_fixed_model(mq, eq_, co, solver_), co, "S_I");
+      judge(s, certify_fixed_model(mq, eq_, co, solver_), "S_I");
       return;
     }
     IdentifyOptions io;
@@ -222,7 +220,7 @@ class Selector {
     const FixedParameters fp = fix_parameters(mq, res.layout, res.p, co.digits);
     s.p = fp.value;
     s.layout = res.layout;
-    judge(s, certify_fixed_model(fp.model, eq_, co, solver_), co, what);
+    judge(s, certify_fixed_model(fp.model, eq_, co, solver_), what);
   }
 
   const LpvModel<Rational>& mq_;
@@ -297,8 +295,6 @@ const char* to_string(BasisVerdict v) {
 BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                                   const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                   const BasisSelectionOptions& options, SdpSolver& solver) {
-  if (options.certify.data_path.empty())
-    throw InputError("select-basis: the data file path is needed for the certificates");
   if (!(options.delta >= 0) || !(options.dmax >= 0) || !std::isfinite(options.delta) || !std::isfinite(options.dmax))
     throw InputError("select-basis: delta and dmax must be finite and non-negative");
   if (options.max_degree < 0 || options.max_degree > kMaxMonomialPower)

@@ -46,8 +46,8 @@
 ///    (Example 1: even the full basis is rejected at δ = 0.05, d_max = 0.01),
 ///    so `iterate` is the useful mode there.
 ///  - Every "consistent" is backed by a certificate that the exact verifier
-///    accepted (CertifiedBounds::verified), written to
-///    <certificate_stem>.step<k>.cert.json. A model that was found but not
+///    accepted (CertifiedBounds::verified; the front end writes it, the CLI
+///    to <stem>.step<k>.cert.json). A model that was found but not
 ///    verified is "unverified" and never counts as consistent.
 ///  - Removal order: the most recently added term first (highest degree
 ///    first), one pass. One pass suffices if verdicts are monotone: if
@@ -98,7 +98,7 @@ struct BasisStep {
   BasisVerdict verdict = BasisVerdict::kUnverified;
   std::string detail;                ///< why this verdict, in words
   CertifiedBounds bounds;            ///< verified ⇒ exactly the given δ, d_max hold
-  std::string certificate;           ///< the written certificate (verified only)
+  std::string certificate;           ///< the file the front end wrote its certificate to (verified only)
   double dmax_relaxation = -1;       ///< iterate: smallest d_max at δ the relaxation reached (< 0: none)
   std::string relaxation;            ///< IdentifyResult::relaxation, or "none (fixed model)"
   int solves = 0;                    ///< SDP solves, certification included
@@ -119,10 +119,8 @@ struct BasisSelectionOptions {
   bool prune = true;                 ///< run the removal phase
   Unknowns unknowns;                 ///< offset / x0 (correction is always on)
   SolverOptions solver;
-  /// data_path, data_names, rows, max_taps, digits; objective, certificate
-  /// path and solver options are set per step.
+  /// data reference, max_taps, digits; objective and solver options are set per step.
   CertifyOptions certify;
-  std::string certificate_stem = "lpvid";  ///< step k → <stem>.step<k>.cert.json
   std::function<void(const BasisStep&)> on_step;  ///< progress (called after each step)
 };
 
@@ -136,7 +134,7 @@ struct BasisSelectionResult {
 
 /// Runs the algorithm. `model_q`/`model_d` and `exp_q`/`exp_d` are the same
 /// model and data read exactly and as doubles (cli/inputs.h). Throws
-/// InputError for bad input (e.g. no certificate data path).
+/// InputError for bad input.
 BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                                   const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                   const BasisSelectionOptions& options, SdpSolver& solver);

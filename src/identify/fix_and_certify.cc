@@ -1,7 +1,5 @@
 #include "identify/fix_and_certify.h"
 
-#include <filesystem>
-
 #include "core/decimal_rounding.h"
 
 namespace lpvid {
@@ -28,13 +26,8 @@ CertifiedBounds certify_identified(const LpvModel<Rational>& fixed, const Experi
       if (options.lower_end && options.objective.kind != BoundObjective::Kind::kFeasibility) {
         // The lower end: Theorem 2.1 for the same fixed model, whose dual
         // point is lifted and checked (certify_fixed_model); its own upper
-        // certificate is not the one reported, so it is written aside and removed.
-        CertifyOptions lo = options;
-        const std::filesystem::path cp(options.certificate_path);
-        lo.certificate_path = (cp.parent_path() / (cp.stem().string() + ".dual_solve.json")).string();
-        b.lower = certify_fixed_model(fixed, exp, lo, solver).lower;
-        std::error_code ec;
-        std::filesystem::remove(lo.certificate_path, ec);
+        // certificate is not the one reported (only its lower end is kept).
+        b.lower = certify_fixed_model(fixed, exp, options, solver).lower;
       }
       return b;
     }

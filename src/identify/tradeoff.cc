@@ -43,7 +43,6 @@ std::vector<double> default_lambda_grid() {
 std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                                           const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                           const TradeoffOptions& o, SdpSolver& solver) {
-  if (o.certify.data_path.empty()) throw InputError("tradeoff: the data file path is needed for the certificates");
   const std::vector<double> lambdas = o.lambdas.empty() ? default_lambda_grid() : o.lambdas;
   for (double l : lambdas)
     if (!(l >= 0.0 && l <= 1.0)) throw InputError("tradeoff: lambda " + lambda_text(l) + " is outside [0, 1]");
@@ -61,7 +60,6 @@ std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, con
     co.solver = o.solver;
     co.fixed_delta_text.clear();
     co.fixed_dmax_text.clear();
-    co.certificate_path = o.certificate_stem + ".lambda" + std::to_string(k + 1) + ".cert.json";
     LpvModel<Rational> fixed = model_q;
     bool have_model = true;
     if (unknowns) {
@@ -98,7 +96,6 @@ std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, con
     }
     if (have_model) {
       pt.bounds = certify_fixed_model(fixed, exp_q, co, solver);
-      if (pt.bounds.verified) pt.certificate = co.certificate_path;
     }
     pt.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.push_back(pt);

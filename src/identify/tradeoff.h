@@ -48,7 +48,7 @@ struct TradeoffPoint {
   int solves = 0;                                  ///< identification solves (certification not counted)
   double delta_solver = -1, dmax_solver = -1;      ///< the relaxation's values (< 0: none)
   CertifiedBounds bounds;                          ///< verified ⇒ delta, dmax are certified
-  std::string certificate;                         ///< written certificate (verified only)
+  std::string certificate;                         ///< the file the front end wrote it to (verified only)
   double seconds = 0;
   ParameterLayout layout;
   Vec<double> p;                                   ///< the rounded parameters that were certified
@@ -61,12 +61,12 @@ struct TradeoffOptions {
   double rel_tol = IdentifyOptions{}.rel_tol;
   Unknowns unknowns;
   SolverOptions solver;
-  CertifyOptions certify;            ///< data path etc.; objective and path are set per point
-  std::string certificate_stem = "lpvid";  ///< point k (1-based) → <stem>.lambda<k>.cert.json
+  CertifyOptions certify;            ///< data reference etc.; the objective is set per point
   std::function<void(const TradeoffPoint&)> on_point;
 };
 
-/// Sweeps λ. Throws InputError for a λ outside [0, 1] or a missing data path.
+/// Sweeps λ. Throws InputError for a λ outside [0, 1]. The certificates are
+/// in each point's bounds; nothing is written.
 std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                                           const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                           const TradeoffOptions& options, SdpSolver& solver);

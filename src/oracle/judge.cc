@@ -15,7 +15,8 @@ const char* to_string(OracleVerdict v) {
   return "?";
 }
 
-ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& objective, const std::string& certificate) {
+ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& objective, const CertificateFiles& files) {
+  const std::string& certificate = files.certificate;
   ReferenceResult r;
   r.outcome = outcome_of(b, objective);
   r.upper_verified = b.verified;
@@ -26,7 +27,7 @@ ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& obj
   if (b.lower.verified && objective.kind != BoundObjective::Kind::kFeasibility) {
     r.lower_verified = true;
     r.lower = b.lower.value;
-    r.lower_certificate = b.lower.certificate;
+    r.lower_certificate = files.lower;
   }
   if (r.outcome == CertifyOutcome::kInvalidated) r.invalidation_certificate = certificate;
   if (!b.verified) r.reason = b.reason;

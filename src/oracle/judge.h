@@ -31,6 +31,7 @@
 #include <string>
 
 #include "core/scalar.h"
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
 #include "oracle/answer.h"
 #include "oracle/task.h"
@@ -58,8 +59,9 @@ struct ReferenceResult {
   std::string reason;                    ///< why lpvid certified less than both ends
 };
 
-/// The reference of a task from lpvid's certified bounds.
-ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& objective, const std::string& certificate);
+/// The reference of a task from lpvid's certified bounds and the files its
+/// certificates were written to.
+ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& objective, const CertificateFiles& files);
 
 /// The exact check of the answer's witness at the claimed values.
 struct WitnessResult {

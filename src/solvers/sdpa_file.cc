@@ -313,8 +313,12 @@ LmiProgram read_sdpa_file(const std::string& path) {
 // --- solutions of outside solvers --------------------------------------------
 
 SolveResult read_csdp_solution(const std::string& path, const LmiProgram& program, int exit_code) {
+  return parse_csdp_solution(read_text_file(path), path, program, exit_code);
+}
+
+SolveResult parse_csdp_solution(const std::string& text, const std::string& path, const LmiProgram& program, int exit_code) {
   program.validate();
-  std::istringstream in = open_for_reading(path);
+  std::istringstream in(text);
   Lines lines(in, path);
   SolveResult r;
   r.backend = "csdp (command)";
@@ -363,8 +367,13 @@ SolveResult read_csdp_solution(const std::string& path, const LmiProgram& progra
 }
 
 SolveResult read_sdpa_result(const std::string& path, const LmiProgram& program, const SolverOptions& options) {
+  return parse_sdpa_result(read_text_file(path), path, program, options);
+}
+
+SolveResult parse_sdpa_result(const std::string& text, const std::string& path, const LmiProgram& program,
+                              const SolverOptions& options) {
   program.validate();
-  std::istringstream in = open_for_reading(path);
+  std::istringstream in(text);
   Lines lines(in, path);
   SolveResult r;
   r.backend = "sdpa (command)";

@@ -58,6 +58,8 @@ LmiProgram read_sdpa_file(const std::string& path);
 /// (−⟨F0, Y⟩), dual_blocks (always), backend "csdp (command)", message.
 /// Throws InputError naming file:line if the file does not fit `program`.
 SolveResult read_csdp_solution(const std::string& path, const LmiProgram& program, int exit_code);
+/// The same on the file's text (`name` for messages).
+SolveResult parse_csdp_solution(const std::string& text, const std::string& name, const LmiProgram& program, int exit_code);
 
 /// Reads the result file written by the `sdpa` command
 /// (`sdpa prob.dat-s prob.out`): "phase.value = …", "Iteration = …",
@@ -68,5 +70,8 @@ SolveResult read_csdp_solution(const std::string& path, const LmiProgram& progra
 /// objective (cᵀx), dual_objective (objValDual), iterations, backend
 /// "sdpa (command)", message. No dual_blocks.
 SolveResult read_sdpa_result(const std::string& path, const LmiProgram& program, const SolverOptions& options);
+/// The same on the file's text (`name` for messages).
+SolveResult parse_sdpa_result(const std::string& text, const std::string& name, const LmiProgram& program,
+                              const SolverOptions& options);
 
 }  // namespace lpvid

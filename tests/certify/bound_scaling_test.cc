@@ -63,10 +63,11 @@ Certified certify_file(const ScratchDir& dir, const std::string& tag, int decima
   const std::string data = dir.file(tag + ".csv");
   write_siso_csv(data, u, y, decimals);
   const LpvModel<Rational> m = parse_model_json<Rational>(siso_window_model_json(), "G");
-  CertifyOptions o = gen::certify_options(weighted_objective(), data, dir.file(tag + ".cert.json"));
+  CertifyOptions o = gen::certify_options(weighted_objective(), data);
   o.scale_signals = scale;
   auto solver = make_solver("csdp");
-  return {certify_fixed_model(m, read_siso_csv(data, m), o, *solver), o.certificate_path};
+  const std::string certificate = dir.file(tag + ".cert.json");
+  return {gen::written(certify_fixed_model(m, read_siso_csv(data, m), o, *solver), certificate), certificate};
 }
 
 TEST(BoundScaling, BoundsScaleWithTheDataExactlyAsDerived) {

@@ -78,7 +78,7 @@ RC_GTEST_PROP(CertificateProperty, DeltaFormPerturbationsBeyondTheMarginAreRejec
   write_experiment_csv(data, ic.model, ic.exp);
   auto solver = make_solver("csdp");
   const CertifiedBounds b =
-      certify_fixed_model(ic.model, ic.exp, certify_options(weighted_objective(0.5), data, dir.file("c.json")), *solver);
+      written(certify_fixed_model(ic.model, ic.exp, certify_options(weighted_objective(0.5), data), *solver), dir.file("c.json"));
   RC_LOG() << "certify: " << b.verified << " " << b.reason << " delta2 " << nearest_double(b.delta2) << " dmax2 "
            << nearest_double(b.dmax2) << " margin " << b.margin << "\n";
   RC_ASSERT(b.verified);
@@ -229,8 +229,8 @@ RC_GTEST_PROP(CertificateProperty, WFormPerturbationsAreRejected, ()) {
   const FixedSignals s = fixed_signals(ic.model, ic.exp);
   const PaperTz ptz = paper_tz(ic.model, ic.exp);
   const double cond = paper_condition(ptz);
-  const CertifiedBounds b = certify_fixed_model_paper(
-      ic.model, ic.exp, certify_options(min_delta_objective(fixed_dmax_for(s)), data, dir.file("c.json")), *solver);
+  const CertifiedBounds b = written(certify_fixed_model_paper(
+      ic.model, ic.exp, certify_options(min_delta_objective(fixed_dmax_for(s)), data), *solver), dir.file("c.json"));
   RC_LOG() << "cond(T_z) = " << cond << ", certify (paper): " << b.verified << " " << b.reason << " delta2 "
            << nearest_double(b.delta2) << " margin " << b.margin << "\n";
   RC_CLASSIFY(cond > kWellConditioned, "cond(T_z) > 1e3");
@@ -296,10 +296,10 @@ RC_GTEST_PROP(CertificateProperty, ToeplitzModesAgreeForLtiModels, ()) {
   auto solver = make_solver("csdp");
   const double dmax = fixed_dmax_for(fixed_signals(ic.model, ic.exp));
   const double cond = paper_condition(paper_tz(ic.model, ic.exp));
-  const CertifiedBounds sig = certify_fixed_model(
-      ic.model, ic.exp, certify_options(min_delta_objective(dmax), data, dir.file("signal.json"), 0), *solver);
-  const CertifiedBounds pap = certify_fixed_model_paper(
-      ic.model, ic.exp, certify_options(min_delta_objective(dmax), data, dir.file("paper.json")), *solver);
+  const CertifiedBounds sig = written(certify_fixed_model(
+      ic.model, ic.exp, certify_options(min_delta_objective(dmax), data, 0), *solver), dir.file("signal.json"));
+  const CertifiedBounds pap = written(certify_fixed_model_paper(
+      ic.model, ic.exp, certify_options(min_delta_objective(dmax), data), *solver), dir.file("paper.json"));
   const double a = nearest_double(sig.delta2), p = nearest_double(pap.delta2);
   const double as = sig.delta2_solver, ps = pap.delta2_solver;
   RC_LOG() << "ny = " << ic.model.ny << ", nz = " << ic.model.nz() << ", n = " << ic.exp.n() << ", cond(T_z) = " << cond
@@ -330,8 +330,8 @@ RC_GTEST_PROP(CertificateProperty, PaperModeZeroDeltaIsCertified, ()) {
   const std::string data = dir.file("data.csv");
   write_experiment_csv(data, ic.model, ic.exp);
   auto solver = make_solver("csdp");
-  const CertifiedBounds b = certify_fixed_model_paper(
-      ic.model, ic.exp, certify_options(min_dmax_objective(0.0), data, dir.file("c.json")), *solver);
+  const CertifiedBounds b = written(certify_fixed_model_paper(
+      ic.model, ic.exp, certify_options(min_dmax_objective(0.0), data), *solver), dir.file("c.json"));
   RC_LOG() << "paper, delta = 0: " << b.verified << " " << b.reason << "\n";
   RC_ASSERT(b.verified);
   RC_ASSERT(b.delta2 == Rational(0));
@@ -357,8 +357,8 @@ TEST(CertificateKnownIssue, DISABLED_PaperModeTinyFixedDeltaIsCertified) {
     ScratchDir dir("paper-tiny");
     const std::string data = dir.file("data.csv");
     write_experiment_csv(data, ic.model, ic.exp);
-    const CertifiedBounds b = certify_fixed_model_paper(
-        ic.model, ic.exp, certify_options(min_dmax_objective(1e-9 * ic.delta), data, dir.file("c.json")), *solver);
+    const CertifiedBounds b = written(certify_fixed_model_paper(
+        ic.model, ic.exp, certify_options(min_dmax_objective(1e-9 * ic.delta), data), *solver), dir.file("c.json"));
     EXPECT_TRUE(b.verified) << "seed " << seed << ": " << b.reason;
   }
 }

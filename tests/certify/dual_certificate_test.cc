@@ -52,7 +52,7 @@ RC_GTEST_PROP(DualCertificateProperty, InvalidatedAndConsistentByConstructionNev
 
   // Consistent by construction.
   const CertifiedBounds yes =
-      certify_fixed_model(ic.model, ic.exp, certify_options(feasibility_objective(ic.delta, ic.dmax), data, dir.file("yes.json")), *solver);
+      written(certify_fixed_model(ic.model, ic.exp, certify_options(feasibility_objective(ic.delta, ic.dmax), data), *solver), dir.file("yes.json"));
   RC_ASSERT(!yes.invalidated);
   if (yes.verified) RC_ASSERT(check_certificate_file(dir.file("yes.json")).holds);
 
@@ -62,9 +62,9 @@ RC_GTEST_PROP(DualCertificateProperty, InvalidatedAndConsistentByConstructionNev
   RC_PRE(nr > 1e-6 && nz > 1e-9);
   const double delta = nr / (4 * nz), dmax = nr / (2 * std::sqrt(static_cast<double>(s.r.size())));
   const std::string path = dir.file("no.json");
-  CertifyOptions no_options = certify_options(feasibility_objective(delta, dmax), data, path);
+  CertifyOptions no_options = certify_options(feasibility_objective(delta, dmax), data);
   no_options.dense_dual = *rc::gen::arbitrary<bool>();  // both forms of the dual certificate
-  const CertifiedBounds no = certify_fixed_model(ic.model, ic.exp, no_options, *solver);
+  const CertifiedBounds no = written(certify_fixed_model(ic.model, ic.exp, no_options, *solver), path);
   RC_ASSERT(!no.verified);
   RC_ASSERT(no.invalidated);
   const CertificateVerdict v = check_certificate_file(path);
@@ -134,7 +134,7 @@ RC_GTEST_PROP(DualCertificateProperty, LowerEndIsBelowUpperEndAndBelowTheTruth, 
                              : which == 1 ? min_dmax_objective(ic.delta)
                                           : min_delta_objective(ic.dmax);
   const std::string path = dir.file("c.json");
-  const CertifiedBounds b = certify_fixed_model(ic.model, ic.exp, certify_options(obj, data, path), *solver);
+  const CertifiedBounds b = written(certify_fixed_model(ic.model, ic.exp, certify_options(obj, data), *solver), path);
   RC_ASSERT(b.verified);
   RC_ASSERT(b.lower.verified);
   RC_ASSERT(b.lower.value <= b.upper);
@@ -144,11 +144,11 @@ RC_GTEST_PROP(DualCertificateProperty, LowerEndIsBelowUpperEndAndBelowTheTruth, 
   if (which == 1) RC_ASSERT(b.lower.value <= truth_dmax2);
   if (which == 2) RC_ASSERT(b.lower.value <= truth_delta2);
   if (which == 0) RC_ASSERT(b.lower.value <= (truth_delta2 + truth_dmax2) / 2);
-  const CertificateVerdict v = check_certificate_file(b.lower.certificate);
+  const CertificateVerdict v = check_certificate_file(lower_certificate_path(path));
   RC_ASSERT(v.holds);
   RC_ASSERT(v.claim_text.rfind("lower_bound", 0) == 0);
   // A claimed lower end above the primal certificate's value is false: rejected.
-  Certificate t = read_certificate(b.lower.certificate);
+  Certificate t = read_certificate(lower_certificate_path(path));
   t.lower_bound = b.upper * Rational(11, 10) + Rational(1) / Rational(1000000000000.0);
   RC_ASSERT(!check_tampered(dir, "t.json", t).holds);
 }
@@ -177,10 +177,10 @@ TEST(DualCertificate, DelayedDeltaIsConsistentWithDefaultOptions) {
   const std::string data = dir.file("data.csv");
   write_experiment_csv(data, ic.model, ic.exp);
   auto solver = make_solver("csdp");
-  CertifyOptions co = certify_options(feasibility_objective(0.5, 1e-4), data, dir.file("c.json"));
+  CertifyOptions co = certify_options(feasibility_objective(0.5, 1e-4), data);
   co.max_taps = CertifyOptions{}.max_taps;  // the library default (64)
   ASSERT_EQ(co.max_taps, 64);
-  const CertifiedBounds b = certify_fixed_model(ic.model, ic.exp, co, *solver);
+  const CertifiedBounds b = written(certify_fixed_model(ic.model, ic.exp, co, *solver), dir.file("c.json"));
   EXPECT_TRUE(b.verified) << b.reason;
   EXPECT_FALSE(b.invalidated);
   EXPECT_TRUE(check_certificate_file(dir.file("c.json")).holds);
@@ -188,7 +188,6 @@ TEST(DualCertificate, DelayedDeltaIsConsistentWithDefaultOptions) {
   CertifyOptions restricted = co;
   restricted.lower_end = false;
   restricted.structured = false;  // the SISO full-horizon solver would not restrict
-  restricted.certificate_path = dir.file("r.json");
   const CertifiedBounds r = certify_fixed_model(ic.model, ic.exp, restricted, *solver);
   EXPECT_FALSE(r.verified);
   EXPECT_FALSE(r.invalidated);
@@ -207,10 +206,10 @@ TEST(DualCertificate, KypWorksOnMimoExample1) {
   const std::string data = dir.file("data.csv");
   write_experiment_csv(data, model, exp);
   auto solver = make_solver("csdp");
-  CertifyOptions co = certify_options(weighted_objective(0.5), data, dir.file("c.json"));
+  CertifyOptions co = certify_options(weighted_objective(0.5), data);
   co.delta_norm = DeltaNorm::kKyp;
   co.max_taps = 16;
-  const CertifiedBounds b = certify_fixed_model(model, exp, co, *solver);
+  const CertifiedBounds b = written(certify_fixed_model(model, exp, co, *solver), dir.file("c.json"));
   ASSERT_TRUE(b.verified) << b.reason;
   EXPECT_TRUE(check_certificate_file(dir.file("c.json")).holds);
   ASSERT_TRUE(b.lower.verified) << b.lower.reason;

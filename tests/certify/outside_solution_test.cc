@@ -12,6 +12,7 @@
 
 #include "core/input_error.h"
 #include "data/csv_reader.h"
+#include "data/data_reference.h"
 #include "data/experiment_builder.h"
 #include "certify/outside_solution.h"
 #include "model/model_file.h"
@@ -34,8 +35,7 @@ struct OutsideSolution : ::testing::Test {
     o.objective.lambda = 0.5;
     o.max_taps = 6;
     o.lower_end = false;
-    o.data_path = gen::kExample1Fixtures + "noise_free_n40.csv";
-    o.certificate_path = dir.file("c.json");
+    o.data = read_data_table(gen::kExample1Fixtures + "noise_free_n40.csv").reference;
     return o;
   }
   /// The program at `p` and a CSDP solution file at `sol` whose y is all zeros.
@@ -55,7 +55,7 @@ struct OutsideSolution : ::testing::Test {
 
 TEST_F(OutsideSolution, ExportedProgramCarriesItsMeaningAndReadsBackUnchanged) {
   const std::string p = dir.file("p.dat-s");
-  export_theorem21_program(model, exp, options(), p);
+  write_sdpa_with_sidecar(theorem21_program(model, exp, options()).delta.program, p);
   const Theorem21Program built = theorem21_program(model, exp, options());
   const LmiProgram back = read_sdpa_file(p);
   EXPECT_EQ(back, built.delta.program.compressed());  // about lines and names included
@@ -74,13 +74,12 @@ TEST_F(OutsideSolution, ExportedProgramCarriesItsMeaningAndReadsBackUnchanged) {
 TEST_F(OutsideSolution, CsdpProgramAnswerCertifiesLikeTheLinkedSolver) {
   if (std::system("command -v csdp > /dev/null 2>&1") != 0) GTEST_SKIP() << "the csdp program is not installed";
   const std::string p = dir.file("p.dat-s"), sol = dir.file("p.sol");
-  export_theorem21_program(model, exp, options(), p);
+  write_sdpa_with_sidecar(theorem21_program(model, exp, options()).delta.program, p);
   ASSERT_EQ(csdp(p, sol), 0);
-  const CertifiedBounds outside = certify_outside_solution(model, exp, options(), p, sol, SolutionFormat::kCsdp, 0);
+  const CertifiedBounds outside = certify_outside_solution(model, exp, options(), read_outside_solution(p, sol, SolutionFormat::kCsdp, 0));
   ASSERT_TRUE(outside.verified) << outside.reason;
   // The same program solved by the linked CSDP library through the usual path.
   CertifyOptions own = options();
-  own.certificate_path = dir.file("own.json");
   own.structured = false;  // the K-tap SDP, as exported
   auto solver = make_solver("csdp");
   const CertifiedBounds linked = certify_fixed_model(model, exp, own, *solver);
@@ -94,7 +93,7 @@ TEST_F(OutsideSolution, ZeroTapsGiveTheResidualAsNoiseExactly) {
   // rounded up — whatever the solver, the certificate says only what holds.
   const std::string p = dir.file("p.dat-s"), sol = dir.file("zero.sol");
   write_zero_solution(p, sol);
-  const CertifiedBounds b = certify_outside_solution(model, exp, options(), p, sol, SolutionFormat::kCsdp, 0);
+  const CertifiedBounds b = certify_outside_solution(model, exp, options(), read_outside_solution(p, sol, SolutionFormat::kCsdp, 0));
   ASSERT_TRUE(b.verified) << b.reason;
   EXPECT_LT(nearest_double(b.delta2), 1e-100);  // ‖T_Δ‖ = 0; certify.cc keeps δ² a tiny positive number
   const Mat<Rational> r = exp.y - simulate(model, exp).output;
@@ -109,32 +108,32 @@ TEST_F(OutsideSolution, ZeroTapsGiveTheResidualAsNoiseExactly) {
 TEST_F(OutsideSolution, InfeasibleStatusIsNotCertified) {
   const std::string p = dir.file("p.dat-s"), sol = dir.file("zero.sol");
   write_zero_solution(p, sol);
-  const CertifiedBounds b = certify_outside_solution(model, exp, options(), p, sol, SolutionFormat::kCsdp, 1);
+  const CertifiedBounds b = certify_outside_solution(model, exp, options(), read_outside_solution(p, sol, SolutionFormat::kCsdp, 1));
   EXPECT_FALSE(b.verified);
   EXPECT_NE(b.reason.find("infeasible"), std::string::npos) << b.reason;
-  EXPECT_FALSE(std::filesystem::exists(options().certificate_path));
+  EXPECT_FALSE(b.certificate.has_value());
 }
 
 TEST_F(OutsideSolution, ProgramOfOtherDataOrOptionsIsRefused) {
   const std::string p = dir.file("p.dat-s"), sol = dir.file("p.sol");
-  export_theorem21_program(model, exp, options(), p);
+  write_sdpa_with_sidecar(theorem21_program(model, exp, options()).delta.program, p);
   std::ofstream(sol) << "0\n";
   CertifyOptions more = options();
   more.max_taps = 7;
   try {
-    (void)certify_outside_solution(model, exp, more, p, sol, SolutionFormat::kCsdp, 0);
+    (void)certify_outside_solution(model, exp, more, read_outside_solution(p, sol, SolutionFormat::kCsdp, 0));
     FAIL() << "a program with 6 taps was accepted for --max-taps 7";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("taps"), std::string::npos) << e.what();
   }
   Experiment<Rational> other = exp;
   other.y(5, 0) += Rational(1, 10);
-  EXPECT_THROW((void)certify_outside_solution(model, other, options(), p, sol, SolutionFormat::kCsdp, 0), InputError);
+  EXPECT_THROW((void)certify_outside_solution(model, other, options(), read_outside_solution(p, sol, SolutionFormat::kCsdp, 0)), InputError);
   // A program without lpvid's meaning lines.
   LmiProgram bare = theorem21_program(model, exp, options()).delta.program;
   bare.about.clear();
   write_sdpa_file(bare, p);
-  EXPECT_THROW((void)certify_outside_solution(model, exp, options(), p, sol, SolutionFormat::kCsdp, 0), InputError);
+  EXPECT_THROW((void)certify_outside_solution(model, exp, options(), read_outside_solution(p, sol, SolutionFormat::kCsdp, 0)), InputError);
 }
 
 }  // namespace

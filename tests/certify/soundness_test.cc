@@ -100,7 +100,7 @@ void assert_never_invalidated(const IdentCase& c) {
 
   // Minimal δ at d_max' = 1.01·d_max.
   const CertifiedBounds bd =
-      certify_fixed_model(c.model, exp, certify_options(min_delta_objective(1.01 * c.dmax), data, dir.file("d.json")), *solver);
+      written(certify_fixed_model(c.model, exp, certify_options(min_delta_objective(1.01 * c.dmax), data), *solver), dir.file("d.json"));
   RC_LOG() << "min delta: verified " << bd.verified << " (" << bd.reason << "), delta = " << bd.delta
            << " vs generating " << c.delta << ", margin " << bd.margin << "\n";
   RC_ASSERT(bd.verified);
@@ -109,7 +109,7 @@ void assert_never_invalidated(const IdentCase& c) {
 
   // Minimal d_max at δ' = 1.01·δ.
   const CertifiedBounds bn =
-      certify_fixed_model(c.model, exp, certify_options(min_dmax_objective(1.01 * c.delta), data, dir.file("n.json")), *solver);
+      written(certify_fixed_model(c.model, exp, certify_options(min_dmax_objective(1.01 * c.delta), data), *solver), dir.file("n.json"));
   RC_LOG() << "min dmax: verified " << bn.verified << " (" << bn.reason << "), dmax = " << bn.dmax
            << " vs 0.9 * generating " << 0.9 * c.dmax << "\n";
   RC_ASSERT(bn.verified);
@@ -151,8 +151,8 @@ RC_GTEST_PROP(InvalidationSoundness, NoiseOnlyDataIsConsistentWithZeroDelta, ())
   RC_ASSERT(v.holds);
 
   auto solver = make_solver("csdp");
-  const CertifiedBounds b = certify_fixed_model(
-      c.model, c.exp, certify_options(min_dmax_objective(0.0), data, dir.file("c.json")), *solver);
+  const CertifiedBounds b = written(certify_fixed_model(
+      c.model, c.exp, certify_options(min_dmax_objective(0.0), data), *solver), dir.file("c.json"));
   RC_LOG() << "min dmax at delta = 0: " << b.verified << " " << b.reason << " dmax " << b.dmax << "\n";
   RC_ASSERT(b.verified);
   RC_ASSERT(b.delta2 == Rational(0));
@@ -174,8 +174,8 @@ RC_GTEST_PROP(InvalidationSoundness, TinyFixedDeltaIsCertified, ()) {
   const std::string data = dir.file("data.csv");
   write_experiment_csv(data, c.model, c.exp);
   auto solver = make_solver("csdp");
-  const CertifiedBounds b = certify_fixed_model(
-      c.model, c.exp, certify_options(min_dmax_objective(delta), data, dir.file("c.json")), *solver);
+  const CertifiedBounds b = written(certify_fixed_model(
+      c.model, c.exp, certify_options(min_dmax_objective(delta), data), *solver), dir.file("c.json"));
   RC_LOG() << "delta = " << delta << ": " << b.verified << " " << b.reason << "\n";
   RC_ASSERT(b.verified);
 }

@@ -15,6 +15,8 @@
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
+#include "cli/certificate_names.h"
+#include "data/data_reference.h"
 #include "data/experiment_builder.h"
 #include "diagnose/diagnose.h"
 #include "fit/output_error_fit.h"
@@ -50,22 +52,21 @@ OffsetCase offset_case(const ScratchDir& dir) {
   return o;
 }
 
-DiagnoseOptions options(const OffsetCase& c, const ScratchDir& dir, const std::string& name) {
+DiagnoseOptions options(const OffsetCase& c) {
   DiagnoseOptions o;
   o.ranking.max_effects = 1;
   o.windows = {{0, 80}};
-  o.certify.data_path = c.data;
-  o.certify.certificate_path = dir.file(name + ".json");
+  o.certify.data = read_data_table(c.data).reference;
   o.certify.max_taps = 16;
   o.certify.full_horizon_limit = 0;
   return o;
 }
 
 TEST(Diagnose, CertificatePathsNameWindowAndSide) {
-  EXPECT_EQ(diagnose_certificate_path("d/c.json", 0, 1, false), "d/c.before.json");
-  EXPECT_EQ(diagnose_certificate_path("d/c.json", 0, 1, true), "d/c.after.json");
-  EXPECT_EQ(diagnose_certificate_path("d/c.json", 1, 3, true), "d/c.w2.after.json");
-  EXPECT_EQ(diagnose_certificate_path("d/c", 2, 3, false), "d/c.w3.before.json");
+  EXPECT_EQ(cli::diagnose_certificate_path("d/c.json", 0, 1, false), "d/c.before.json");
+  EXPECT_EQ(cli::diagnose_certificate_path("d/c.json", 0, 1, true), "d/c.after.json");
+  EXPECT_EQ(cli::diagnose_certificate_path("d/c.json", 1, 3, true), "d/c.w2.after.json");
+  EXPECT_EQ(cli::diagnose_certificate_path("d/c", 2, 3, false), "d/c.w3.before.json");
 }
 
 TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
@@ -73,7 +74,8 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   const OffsetCase c = offset_case(dir);
   auto solver = make_solver("csdp");
 
-  const DiagnoseResult r = diagnose(c.declared, c.est_d, c.est_q, c.selection, {c.test}, options(c, dir, "a"), *solver);
+  DiagnoseResult r = diagnose(c.declared, c.est_d, c.est_q, c.selection, {c.test}, options(c), *solver);
+  cli::write_diagnose_certificates(r, dir.file("a.json"));  // as lpvid diagnose names them
   ASSERT_EQ(r.rank.chosen.size(), 1u);
   EXPECT_EQ(r.rank.chosen.front().kind, "output_offset");
   // the reported parameter is the certified (rounded, written) model's, exactly
@@ -132,7 +134,7 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   Experiment<double> wrong = c.test;
   wrong.y *= 10.0;
   for (const std::vector<Experiment<double>>& t : {std::vector<Experiment<double>>{wrong, c.test}, std::vector<Experiment<double>>{}}) {
-    const DiagnoseResult s = diagnose(c.declared, c.est_d, c.est_q, c.selection, t, options(c, dir, "b"), *solver);
+    const DiagnoseResult s = diagnose(c.declared, c.est_d, c.est_q, c.selection, t, options(c), *solver);
     ASSERT_EQ(s.tests.size(), t.size());
     ASSERT_EQ(s.rank.chosen.size(), 1u);
     EXPECT_EQ(s.rank.chosen.front().label, r.rank.chosen.front().label);
@@ -153,13 +155,13 @@ TEST(Diagnose, BadOptionsAreRefusedBeforeAnyWork) {
   ScratchDir dir("diagnose-lib-bad");
   const OffsetCase c = offset_case(dir);
   auto solver = make_solver("csdp");
-  DiagnoseOptions o = options(c, dir, "x");
+  DiagnoseOptions o = options(c);
   o.windows = {{150, 250}};  // the estimation record has 200 rows
   EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {}, o, *solver), InputError);
-  o = options(c, dir, "x");
+  o = options(c);
   o.threads = 2;  // no solver factory
   EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {}, o, *solver), InputError);
-  o = options(c, dir, "x");
+  o = options(c);
   const Experiment<double> short_sel = select_rows(c.selection, 0, 6);
   EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, short_sel, {}, o, *solver), InputError);
   EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {c.test, short_sel}, o, *solver), InputError);

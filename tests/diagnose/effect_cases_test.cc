@@ -113,11 +113,11 @@ CertifiedTruth certify_truth(const EffectCase& c, const ScratchDir& dir, Eigen::
   const Experiment<Rational> est_q = read_experiment<Rational>(data, c.truth);
   const Experiment<double> est_d = read_experiment<double>(data, truth);
   CertifyOptions co;
-  co.data_path = data;
-  co.certificate_path = dir.file("cert.json");
+  co.data = read_data_table(data).reference;
   co.max_taps = 16;
   auto solver = make_solver("csdp");
-  return {certify_window(truth, est_d, est_q, begin, end, 0, co, *solver), co.certificate_path};
+  const WindowBounds w = certify_window(truth, est_d, est_q, begin, end, 0, co, *solver);
+  return {w, write_certificates(w.bounds, dir.file("cert.json")).certificate};
 }
 
 /// The after-model of the input_saturation case, certified on a window: the

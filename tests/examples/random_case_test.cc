@@ -103,9 +103,9 @@ TEST(RandomCase, SeedOneIsPinned) {
 CertifiedBounds certify_truth(const RandomCase& c, const ScratchDir& dir) {
   const std::string data = dir.file("data.csv");
   write_experiment_csv(data, c.truth, c.exp);
-  return certify_with_taps(c.truth, read_experiment(data, c.truth), c.taps,
-                           certify_options(feasibility_objective(c.delta, c.dmax), data, dir.file("truth.json")),
-                           "generating taps");
+  return written(certify_with_taps(c.truth, read_experiment(data, c.truth), c.taps,
+                           certify_options(feasibility_objective(c.delta, c.dmax), data),
+                           "generating taps"), dir.file("truth.json"));
 }
 
 void assert_truth_certified(const RandomCase& c) {

@@ -105,7 +105,7 @@ RC_GTEST_PROP(AlternatingProperty, EveryIterateCertifiesAndTheObjectiveNeverRise
     const LpvModel<Rational> fixed = fold_rounded(c.model, res.layout, it.p);
     const std::string cert = dir.file("it" + std::to_string(i) + ".json");
     const BoundObjective w = weighted_objective(lambda);
-    const CertifiedBounds b = certify_with_taps(fixed, exp_q, it.taps, certify_options(w, data, cert), "csdp");
+    const CertifiedBounds b = written(certify_with_taps(fixed, exp_q, it.taps, certify_options(w, data), "csdp"), cert);
     const double certified = w.value(nearest_double(b.delta2), nearest_double(b.dmax2));
     RC_LOG() << "  iterate " << i << ": objective " << it.objective << " (delta2 " << it.delta2 << ", dmax2 "
              << it.dmax2 << "), certified " << b.verified << " " << certified << " " << b.reason << "\n";
@@ -136,8 +136,8 @@ RC_GTEST_PROP(AlternatingProperty, FixedBoundsAreHonoured, ()) {
   IdentifyOptions io = alternating(0.5, 4);
   const IdentifyResult w = identify(convert_model<double>(c.model), exp, io, *solver);
   RC_ASSERT(has_solution(w.status));
-  const CertifiedBounds bw = certify_with_taps(fold_rounded(c.model, w.layout, w.p), exp_q, w.taps,
-                                               certify_options(io.objective, data, dir.file("w.json")), "csdp");
+  const CertifiedBounds bw = written(certify_with_taps(fold_rounded(c.model, w.layout, w.p), exp_q, w.taps,
+                                               certify_options(io.objective, data), "csdp"), dir.file("w.json"));
   RC_ASSERT(bw.verified);
 
   // minimise d_max at δ = the weighted result's δ
@@ -148,8 +148,8 @@ RC_GTEST_PROP(AlternatingProperty, FixedBoundsAreHonoured, ()) {
   for (size_t i = 0; i < f.iterates.size(); ++i) {
     const IterateRecord& it = f.iterates[i];
     if (!has_solution(it.status)) continue;
-    const CertifiedBounds b = certify_with_taps(fold_rounded(c.model, f.layout, it.p), exp_q, it.taps,
-                                                certify_options(io.objective, data, dir.file("f.json")), "csdp");
+    const CertifiedBounds b = written(certify_with_taps(fold_rounded(c.model, f.layout, it.p), exp_q, it.taps,
+                                                certify_options(io.objective, data), "csdp"), dir.file("f.json"));
     RC_LOG() << "  iterate " << i << ": dmax2 " << it.dmax2 << ", certified " << b.verified << " "
              << nearest_double(b.dmax2) << " " << b.reason << "\n";
     RC_ASSERT(b.verified);
@@ -219,7 +219,7 @@ TEST(AlternatingExample1, ReachesTheRoundingFloor) {
   ScratchDir dir("alt-example1");
   const LpvModel<Rational> fixed = fold_rounded(model_q, res.layout, res.p);
   const CertifiedBounds b =
-      certify_with_taps(fixed, exp_q, res.taps, certify_options(io.objective, data, dir.file("c.json")), "csdp");
+      written(certify_with_taps(fixed, exp_q, res.taps, certify_options(io.objective, data), "csdp"), dir.file("c.json"));
   ASSERT_TRUE(b.verified) << b.reason;
   std::cout << "[ example1 ] alternating: " << res.relaxation << ", certified delta = " << b.delta
             << ", dmax = " << b.dmax << "\n";

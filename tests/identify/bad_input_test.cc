@@ -58,7 +58,7 @@ RC_GTEST_PROP(IdentifyBadInput, ZeroInputIsIllPosed, ()) {
   RC_ASSERT(e1.find("ill-posed") != std::string::npos);
 
   const std::string e2 = input_error_of([&] {
-    certify_fixed_model(c.model, c.exp, certify_options(weighted_objective(0.5), data, dir.file("c.json")), *solver);
+    written(certify_fixed_model(c.model, c.exp, certify_options(weighted_objective(0.5), data), *solver), dir.file("c.json"));
   });
   RC_LOG() << "certify_fixed_model: " << e2 << "\n";
   RC_ASSERT(e2.find("ill-posed") != std::string::npos);
@@ -75,8 +75,8 @@ RC_GTEST_PROP(IdentifyBadInput, ZeroInputIsIllPosed, ()) {
       RC_ASSERT(e3.find("ill-posed") != std::string::npos);
     }
     const std::string e4 = input_error_of([&] {
-      certify_with_taps(c.model, c.exp, Mat<double>::Ones(2, c.model.ny * c.model.nz()),
-                        certify_options(weighted_objective(0.5), data, dir.file("c.json")), "csdp");
+      written(certify_with_taps(c.model, c.exp, Mat<double>::Ones(2, c.model.ny * c.model.nz()),
+                        certify_options(weighted_objective(0.5), data), "csdp"), dir.file("c.json"));
     });
     RC_LOG() << "certify_with_taps: " << e4 << "\n";
     RC_ASSERT(e4.find("ill-posed") != std::string::npos);
@@ -104,8 +104,8 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
   // 0.9·d_max·√(n·ny): with δ = 0 (w = 0) the noise bound must hold for r,
   // far above d_max' = 1e-3·d_max.
   const double tiny = 1e-3 * c.dmax;
-  const CertifiedBounds b = certify_fixed_model(
-      c.model, c.exp, certify_options(feasibility_objective(0.0, tiny), data, dir.file("c.json")), *solver);
+  const CertifiedBounds b = written(certify_fixed_model(
+      c.model, c.exp, certify_options(feasibility_objective(0.0, tiny), data), *solver), dir.file("c.json"));
   RC_LOG() << "certify: verified " << b.verified << ", reason: " << b.reason << ", status " << solve_status_text(b) << "\n";
   const FixedSignals s = fixed_signals(c.model, c.exp);
   RC_LOG() << "RMS(r) = " << rms(s.r) << ", fixed dmax = " << tiny << ", generating delta = " << c.delta << "\n";
@@ -145,8 +145,8 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
   RC_CLASSIFY(has_solution(r.status), "identify claims a model at (0, tiny)");
   if (has_solution(r.status)) {
     const LpvModel<Rational> fixed = fold_rounded(c.model, r.layout, r.p);
-    const CertifiedBounds bf = certify_fixed_model(
-        fixed, c.exp, certify_options(feasibility_objective(0.0, tiny), data, dir.file("f.json")), *solver);
+    const CertifiedBounds bf = written(certify_fixed_model(
+        fixed, c.exp, certify_options(feasibility_objective(0.0, tiny), data), *solver), dir.file("f.json"));
     RC_LOG() << "certify the identified model: " << bf.verified << " " << bf.reason << "\n";
     RC_ASSERT(!bf.verified);
     RC_ASSERT(!bf.reason.empty());

@@ -61,7 +61,7 @@ Outcome run(bool iterate, size_t basis_size, const std::string& tag) {
   const LpvModel<Rational> fixed = fold_rounded(model_q, out.ident.layout, out.ident.p);
   static ScratchDir dir("example1");
   const std::string cert = dir.file(tag + ".json");
-  out.bounds = certify_fixed_model(fixed, exp_q, certify_options(io.objective, data, cert, 64), *solver);
+  out.bounds = written(certify_fixed_model(fixed, exp_q, certify_options(io.objective, data, 64), *solver), cert);
   EXPECT_TRUE(out.bounds.verified) << tag << ": " << out.bounds.reason;
   EXPECT_TRUE(check_certificate_file(cert).holds) << tag;
   out.objective = io.objective.value(nearest_double(out.bounds.delta2), nearest_double(out.bounds.dmax2));

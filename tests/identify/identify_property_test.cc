@@ -148,7 +148,7 @@ RC_GTEST_PROP(IdentifyProperty, EveryIterateIsCertifiedAndTheObjectiveNeverRises
     const LpvModel<Rational> fixed = fold_rounded(c.model, res.layout, it.p);
     const std::string cert = dir.file("it" + std::to_string(i) + ".json");
     const CertifiedBounds b =
-        certify_fixed_model(fixed, c.exp, certify_options(weighted_objective(lambda), data, cert), *solver);
+        written(certify_fixed_model(fixed, c.exp, certify_options(weighted_objective(lambda), data), *solver), cert);
     const double certified = weighted_objective(lambda).value(nearest_double(b.delta2), nearest_double(b.dmax2));
     RC_LOG() << "  iterate " << i << " [" << to_string(it.status) << "]: objective " << it.objective << " (delta2 " << it.delta2 << ", dmax2 " << it.dmax2
              << "), certified " << b.verified << " " << certified << " " << b.reason << "\n";
@@ -205,7 +205,7 @@ RC_GTEST_PROP(IdentifyProperty, LtiModelEndToEnd, ()) {
   RC_ASSERT(res.p.size() == static_cast<Eigen::Index>(c.model.ny * (c.model.nx + c.model.nu)));
   const LpvModel<Rational> fixed = fold_rounded(c.model, res.layout, res.p);
   const CertifiedBounds b =
-      certify_fixed_model(fixed, exp_q, certify_options(weighted_objective(0.5), data, dir.file("c.json"), 64), *solver);
+      written(certify_fixed_model(fixed, exp_q, certify_options(weighted_objective(0.5), data, 64), *solver), dir.file("c.json"));
   RC_LOG() << "certified " << b.verified << " " << b.reason << " delta " << b.delta << " dmax " << b.dmax << "\n";
   RC_ASSERT(b.verified);
   const CertificateVerdict v = check_certificate_file(dir.file("c.json"));
@@ -219,7 +219,7 @@ RC_GTEST_PROP(IdentifyProperty, LtiModelEndToEnd, ()) {
   }
   // the identified model is never worse than the initial one (θ = 0 is feasible for the first relaxation)
   const CertifiedBounds b0 =
-      certify_fixed_model(c.model, exp_q, certify_options(weighted_objective(0.5), data, dir.file("c0.json"), 64), *solver);
+      written(certify_fixed_model(c.model, exp_q, certify_options(weighted_objective(0.5), data, 64), *solver), dir.file("c0.json"));
   RC_ASSERT(b0.verified);
   const BoundObjective w = weighted_objective(0.5);
   const double obj = w.value(nearest_double(b.delta2), nearest_double(b.dmax2));

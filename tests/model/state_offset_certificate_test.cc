@@ -93,7 +93,7 @@ TEST(StateOffsetCertificate, VerifiesExactlyAndMutationsAreRejected) {
   auto solver = make_solver("csdp");
   const std::string path = dir.file("c.json");
   const CertifiedBounds b =
-      certify_fixed_model(model, exp, gen::certify_options(gen::weighted_objective(0.5), data, path), *solver);
+      gen::written(certify_fixed_model(model, exp, gen::certify_options(gen::weighted_objective(0.5), data), *solver), path);
   ASSERT_TRUE(b.verified) << b.reason;
   std::cout << "certified delta = " << b.delta << ", dmax = " << b.dmax << ", margin " << b.margin << "\n";
   const CertificateVerdict ok = check_certificate_file(path);

@@ -18,9 +18,11 @@
 #include <set>
 
 #include "data/csv_reader.h"
+#include "data/data_reference.h"
 #include "data/csv_writer.h"
 #include "data/experiment_builder.h"
 #include "examples/paper_example1.h"
+#include "cli/certificate_names.h"
 #include "identify/basis_selection.h"
 #include "solvers/sdp_solver.h"
 #include "verify/certificate/certificate_check.h"
@@ -69,8 +71,7 @@ struct Example1Data {
     o.dmax = dmax;
     o.delta_text = dtext;
     o.dmax_text = mtext;
-    o.certify.data_path = csv;
-    o.certificate_stem = dir.file("sel");
+    o.certify.data = read_data_table(csv).reference;
     return o;
   }
 };
@@ -154,6 +155,12 @@ TEST(MonotonicityViolation, FindsAConsistentSubsetOfAnInvalidatedBasis) {
   EXPECT_EQ(monotonicity_violation({a, b}), "");  // adding terms may turn invalidated into consistent
 }
 
+/// The steps' certificates written as `lpvid select-basis` writes them.
+BasisSelectionResult with_files(BasisSelectionResult r, const std::string& stem) {
+  cli::write_step_certificates(r, stem);
+  return r;
+}
+
 /// Checks shared by the runs: steps well formed, consistent ⇔ verified
 /// certificate on disk accepted again by the verifier, monotone verdicts.
 void check_steps(const BasisSelectionResult& r) {
@@ -178,7 +185,8 @@ TEST(SelectBasis, Example1IteratedFindsTheMissingRho2Squared) {
   BasisSelectionOptions o = data.options(0.05, 0.01, "0.05", "0.01");
   o.iterate = true;
   auto solver = make_solver("csdp");
-  const BasisSelectionResult r = select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver);
+  const BasisSelectionResult r =
+      with_files(select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver), data.dir.file("sel"));
   for (const BasisStep& s : r.steps)
     std::cout << "  step " << s.index << " " << s.phase << " {" << s.basis_text << "} " << to_string(s.verdict)
               << (s.dmax_relaxation >= 0 ? "  dmax_relax = " + std::to_string(s.dmax_relaxation) : "") << "\n";
@@ -205,7 +213,8 @@ TEST(SelectBasis, Example1PaperRelaxationAtLooserBounds) {
   const Example1Data data(30);
   const BasisSelectionOptions o = data.options(0.05, 0.3, "0.05", "0.3");
   auto solver = make_solver("csdp");
-  const BasisSelectionResult r = select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver);
+  const BasisSelectionResult r =
+      with_files(select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver), data.dir.file("sel"));
   check_steps(r);
   ASSERT_TRUE(r.found);
   EXPECT_EQ(r.steps.front().verdict, BasisVerdict::kInvalidated);

@@ -12,7 +12,9 @@
 
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
+#include "certify/certificate_files.h"
 #include "data/csv_reader.h"
+#include "data/data_reference.h"
 #include "data/csv_writer.h"
 #include "data/experiment_builder.h"
 #include "examples/paper_example2.h"
@@ -107,11 +109,10 @@ TEST(Example2, IdentifiesTheOffsetAndCertifies) {
   const LpvModel<Rational> fixed = apply_parameters(mq, res.layout, pq);
   CertifyOptions co;
   co.objective = io.objective;
-  co.certificate_path = dir.file("ex2.cert.json");
-  co.data_path = csv;
+  co.data = read_data_table(csv).reference;
   const CertifiedBounds b = certify_fixed_model(fixed, xq, co, *solver);
   ASSERT_TRUE(b.verified) << b.reason;
-  EXPECT_TRUE(check_certificate_file(co.certificate_path).holds);
+  EXPECT_TRUE(check_certificate_file(write_certificates(b, dir.file("ex2.cert.json")).certificate).holds);
   EXPECT_LT(b.dmax, 1e-6);  // noise-free: the offset explains the output exactly
   EXPECT_LT(b.delta, 1e-3);
 }

@@ -18,7 +18,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli/certificate_names.h"
 #include "data/csv_reader.h"
+#include "data/data_reference.h"
 #include "data/csv_writer.h"
 #include "data/experiment_builder.h"
 #include "examples/paper_example1.h"
@@ -66,12 +68,12 @@ TEST(Tradeoff, Example1CurveIsMonotoneAndCertified) {
 
   TradeoffOptions o;
   o.lambdas = {1e-5, 1e-4, 1e-3, 1e-2, 0.1, 0.5};
-  o.certify.data_path = csv;
-  o.certificate_stem = dir.file("tr");
+  o.certify.data = read_data_table(csv).reference;
   int called = 0;
   o.on_point = [&](const TradeoffPoint&) { ++called; };
   auto solver = make_solver("csdp");
-  const std::vector<TradeoffPoint> pts = tradeoff_curve(mq, md, xq, xd, o, *solver);
+  std::vector<TradeoffPoint> pts = tradeoff_curve(mq, md, xq, xd, o, *solver);
+  cli::write_tradeoff_certificates(pts, dir.file("tr"));  // as lpvid tradeoff names them
   ASSERT_EQ(pts.size(), o.lambdas.size());
   EXPECT_EQ(called, static_cast<int>(pts.size()));
   for (const TradeoffPoint& p : pts) {

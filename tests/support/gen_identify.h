@@ -26,6 +26,8 @@
 #include "support/scratch_dir.h"
 #include "data/csv_reader.h"
 #include "data/csv_writer.h"
+#include "data/data_reference.h"
+#include "certify/certificate_files.h"
 #include "data/experiment.h"
 #include "data/experiment_builder.h"
 #include "examples/random_case.h"
@@ -127,15 +129,21 @@ inline LpvModel<Rational> fold_rounded(const LpvModel<Rational>& model, const Pa
   return apply_parameters(model, layout, q);
 }
 
-/// Certify options for a data file and a certificate path (full-horizon Δ by default).
-inline CertifyOptions certify_options(const BoundObjective& objective, const std::string& data_path,
-                                      const std::string& certificate_path, long max_taps = 0) {
+/// Certify options for a data file (its reference: file, sha256; full-horizon Δ by default).
+inline CertifyOptions certify_options(const BoundObjective& objective, const std::string& data_path, long max_taps = 0) {
   CertifyOptions o;
   o.objective = objective;
-  o.data_path = data_path;
-  o.certificate_path = certificate_path;
+  o.data = read_data_table(data_path).reference;
   o.max_taps = max_taps;
   return o;
+}
+
+/// What a front end does with a certification: its certificates written at
+/// `certificate_path` (certify/certificate_files.h), for the tests that read
+/// them back or hand them to the lpvid-verify program; returns `b`.
+inline CertifiedBounds written(CertifiedBounds b, const std::string& certificate_path) {
+  write_certificates(b, certificate_path);
+  return b;
 }
 
 inline BoundObjective weighted_objective(double lambda = 0.5) {

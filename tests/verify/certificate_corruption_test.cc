@@ -19,7 +19,9 @@
 
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
+#include "data/data_reference.h"
 #include "model/model_file.h"
 #include "support/fixtures.h"
 #include "support/gen_files.h"
@@ -44,11 +46,11 @@ struct Genuine {
     const Experiment<Rational> exp = make_experiment<Rational>(read_table(data), model.columns);
     CertifyOptions o;
     o.objective.kind = BoundObjective::Kind::kWeighted;
-    o.data_path = data;
-    o.certificate_path = cert;
+    o.data = read_data_table(data).reference;
     o.lower_end = false;
     auto solver = make_solver("csdp");
     const CertifiedBounds b = certify_fixed_model(model, exp, o, *solver);
+    write_certificates(b, cert);
     if (!b.verified) throw std::runtime_error("the genuine certificate did not verify: " + b.reason);
     std::ifstream in(cert, std::ios::binary);
     std::ostringstream s;

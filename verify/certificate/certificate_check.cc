@@ -43,7 +43,6 @@ struct PrimalCheck {
 PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>& exp, const Simulation<Rational>& sim,
                                std::ostringstream& details);
 CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c);
-CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir, const std::string& data_file);
 }  // namespace
 
 std::string certificate_data_path(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
@@ -58,32 +57,40 @@ std::string certificate_data_path(const Certificate& c, const std::string& certi
   return fs::exists(beside, ec) ? beside.string() : recorded.string();
 }
 
-CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
-  return with_claim(check_claim(c, certificate_dir, data_file), c);
+namespace {
+/// Steps 1–2 (the file layer): the data file's bytes against the
+/// certificate's sha256, then the exact rows it names, parsed from the same
+/// bytes that were hashed (a second read could see another file: swapping
+/// it between the reads passed a false claim).
+struct CertificateData {
+  std::string invalid;  ///< why the data does not fit the certificate (empty: it does)
+  std::string path;
+  Experiment<Rational> exp;
+};
+CertificateData certificate_data(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+  CertificateData out;
+  out.path = certificate_data_path(c, certificate_dir, data_file);
+  const std::string bytes = read_text_file(out.path);
+  const std::string hash = sha256_hex(bytes);
+  if (hash != c.data_sha256) {
+    out.invalid = "data file '" + out.path + "' has changed: sha256 " + hash + " differs from the certificate's " + c.data_sha256;
+    return out;
+  }
+  const TextTable table = c.data_names.empty() ? parse_table(bytes, out.path) : parse_table(bytes, out.path, c.data_names);
+  out.exp = make_experiment<Rational>(table, c.model.columns);
+  if (c.row_end >= 0) {
+    if (c.row_end > out.exp.n()) {
+      out.invalid = "data.rows ends at " + std::to_string(c.row_end) + " but the data has " + std::to_string(out.exp.n()) + " rows";
+      return out;
+    }
+    out.exp = select_rows(out.exp, c.row_begin, c.row_end);
+  }
+  return out;
 }
 
-namespace {
-CertificateVerdict check_claim(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
-  namespace fs = std::filesystem;
-  std::ostringstream details;
-  // 1. The data file and its hash (whichever file is read, the hash decides).
-  const fs::path data_path(certificate_data_path(c, certificate_dir, data_file));
-  const std::string bytes = read_text_file(data_path.string());
-  const std::string hash = sha256_hex(bytes);
-  if (hash != c.data_sha256)
-    return invalid_verdict("data file '" + data_path.string() + "' has changed: sha256 " + hash +
-                   " differs from the certificate's " + c.data_sha256);
-
-  // 2. Exact data, parsed from the same bytes that were hashed (a second read
-  // could see another file: swapping it between the reads passed a false claim)
-  const TextTable table = c.data_names.empty() ? parse_table(bytes, data_path.string())
-                                               : parse_table(bytes, data_path.string(), c.data_names);
-  Experiment<Rational> exp = make_experiment<Rational>(table, c.model.columns);
-  if (c.row_end >= 0) {
-    if (c.row_end > exp.n())
-      return invalid_verdict("data.rows ends at " + std::to_string(c.row_end) + " but the data has " + std::to_string(exp.n()) + " rows");
-    exp = select_rows(exp, c.row_begin, c.row_end);
-  }
+/// Steps 3–6 on the exact rows of the certificate's window; `details` starts
+/// with what the caller knows about the data's origin.
+CertificateVerdict check_claim(const Certificate& c, Experiment<Rational> exp, std::ostringstream& details) {
   // "@x<i>", "@sqrt(x<i>-c)", … scheduling: functions of the certified model's own exact state on these rows
   try {
     exp = with_state_scheduling(c.model, exp);
@@ -100,7 +107,7 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   // 3. Exact simulation.
   const Simulation<Rational> sim = simulate(c.model, exp);
   const Eigen::Index n = exp.n(), ny = c.model.ny, nz = c.model.nz();
-  details << "data " << data_path.string() << " (sha256 matches); n = " << n << ", ny = " << ny << ", nz = " << nz << ", toeplitz mode " << to_string(c.mode);
+  details << "n = " << n << ", ny = " << ny << ", nz = " << nz << ", toeplitz mode " << to_string(c.mode);
 
   if (is_dual_claim(c.claim)) return check_dual_claim(c, exp, sim, details.str());
   const PrimalCheck p = check_primal_point(c, exp, sim, details);
@@ -113,7 +120,23 @@ CertificateVerdict check_claim(const Certificate& c, const std::string& certific
   if (p.result != PrimalCheck::kHolds) return invalid_verdict(p.reason, details.str());
   return {true, "", p.text, "", ""};
 }
+}  // namespace
 
+CertificateVerdict check_certificate(const Certificate& c, const Experiment<Rational>& exp) {
+  std::ostringstream details;
+  details << "data in memory (" << exp.n() << " rows); ";
+  return with_claim(check_claim(c, exp, details), c);
+}
+
+CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+  const CertificateData data = certificate_data(c, certificate_dir, data_file);
+  if (!data.invalid.empty()) return invalid_verdict(data.invalid);
+  std::ostringstream details;
+  details << "data " << data.path << " (sha256 matches); ";
+  return with_claim(check_claim(c, data.exp, details), c);
+}
+
+namespace {
 /// Steps 4–6 for the primal point of a "consistent" or "not_a_witness" file.
 /// kMalformed: the point does not fit the data (sizes): no verdict on
 /// Theorem 2.1 either way. kConditionFails: a condition of Theorem 2.1 fails

@@ -23,6 +23,7 @@
 
 #include <string>
 
+#include "data/experiment.h"
 #include "verify/certificate/certificate_file.h"
 
 namespace lpvid {
@@ -50,9 +51,19 @@ struct CertificateVerdict {
 /// sha256 decides whether it is the data.
 std::string certificate_data_path(const Certificate& c, const std::string& certificate_dir, const std::string& data_file = "");
 
-/// Checks `c`; `certificate_dir` resolves a relative data path, `data_file`
-/// overrides it (certificate_data_path). Throws InputError for unreadable
-/// data (missing file, bad numbers): that is not a verdict.
+/// The verifier's core, steps 3–6 (and the dual claims): checks `c` on the
+/// exact rows it certifies — `exp` holds the window's u, y, ρ as read from the
+/// data text (the "@x<i>" scheduling columns, if any, are recomputed from the
+/// certified model). The data reference (file, sha256, rows) is not looked
+/// at: that is the file layer below. Certification runs this on the
+/// experiment it was given, before any file exists.
+CertificateVerdict check_certificate(const Certificate& c, const Experiment<Rational>& exp);
+
+/// The file layer, steps 1–2 then the core: the data file's bytes must hash to
+/// the certificate's sha256, its exact rows are parsed from those bytes and
+/// the recorded window selected. `certificate_dir` resolves a relative data
+/// path, `data_file` overrides it (certificate_data_path). Throws InputError
+/// for unreadable data (missing file, bad numbers): that is not a verdict.
 CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file = "");
 
 /// Reads the file and checks it.

@@ -1,5 +1,6 @@
 #include "verify/certificate/certificate_file.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -276,6 +277,23 @@ std::string certificate_json(const Certificate& c) {
 
 void write_certificate(const std::string& path, const Certificate& c) {
   write_text_file(path, certificate_json(c), "certificate");
+}
+
+void set_data_reference(Certificate& c, const DataReference& data) {
+  c.data_file = data.file;
+  c.data_sha256 = data.sha256;
+  c.data_names = data.names;
+  c.row_begin = data.row_begin;
+  c.row_end = data.row_end;
+}
+
+Certificate placed_at(Certificate c, const std::string& certificate_path) {
+  namespace fs = std::filesystem;
+  const fs::path cert_dir = fs::absolute(fs::path(certificate_path)).parent_path();
+  const fs::path data_abs = fs::absolute(fs::path(c.data_file));
+  c.data_file = fs::relative(data_abs, cert_dir).string();
+  if (c.data_file.empty()) c.data_file = data_abs.string();
+  return c;
 }
 
 }  // namespace lpvid

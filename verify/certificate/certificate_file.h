@@ -54,6 +54,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/scalar.h"
+#include "data/data_reference.h"
 #include "model/lpv_model.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/uncertainty_toeplitz.h"
@@ -123,6 +124,15 @@ Certificate parse_certificate(std::string_view text, const std::string& name);
 
 /// The JSON text of a certificate (exact numbers).
 std::string certificate_json(const Certificate& c);
+/// Writes the certificate as it is (its data file as recorded).
 void write_certificate(const std::string& path, const Certificate& c);
+
+/// Names the data in the certificate: file, sha256, names, rows of `data`
+/// (data/data_reference.h). The file stays as it was opened until the
+/// certificate is placed in a folder (placed_at).
+void set_data_reference(Certificate& c, const DataReference& data);
+/// The certificate as it is written at `certificate_path`: its data file
+/// relative to that file's folder (absolute when there is no relative path).
+Certificate placed_at(Certificate c, const std::string& certificate_path);
 
 }  // namespace lpvid
