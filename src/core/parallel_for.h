@@ -2,9 +2,13 @@
 /// Runs independent jobs on a few threads: the one place that starts worker
 /// threads for a loop over jobs. Its users:
 ///   - parallel_for: the bound windows and effect candidates of diagnose/
-///     (diagnose/diagnose.cc, diagnose/effect_ranking.cc);
-///   - default_thread_count: the default thread count of lpvid diagnose
-///     (cli/diagnose_command.cc).
+///     (diagnose/diagnose.cc, diagnose/effect_ranking.cc), and the chunks of
+///     rows of one Bareiss elimination step (verify/psd/psd_bareiss.cc);
+///   - parallel_for_with_scratch: the primes of the multi-modular PSD decision,
+///     one residue matrix per worker (verify/psd/psd_modular.cc);
+///   - default_thread_count: the default thread counts of lpvid diagnose
+///     (cli/diagnose_command.cc) and of the exact PSD decision
+///     (verify/psd/psd_internal.h, resolve_threads).
 ///
 /// Job i writes only its own result slot, so the results are in the same
 /// order, and the same numbers, as a sequential run: nothing a job computes
@@ -50,7 +54,8 @@ void parallel_for(std::size_t count, unsigned threads, const std::function<void(
 /// gets the scratch of the worker that runs job i, reused (not cleared) by
 /// that worker's later jobs and never seen by another worker at the same
 /// time. For working memory that should be allocated once per worker, not
-/// once per job. Same order, thread counts and exceptions as parallel_for.
+/// once per job (the residue matrices of verify/psd/psd_modular.cc). Same
+/// order, thread counts and exceptions as parallel_for.
 template <typename Scratch, typename Job>
 void parallel_for_with_scratch(std::size_t count, unsigned threads, Job&& job) {
   std::vector<Scratch> scratch(parallel_detail::worker_count(count, threads));

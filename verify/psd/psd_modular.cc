@@ -33,16 +33,15 @@
 #include <gmp.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
+#include "core/parallel_for.h"
 #include "verify/psd/psd_internal.h"
 #include "verify/psd/psd_modular_arith.h"
 
@@ -152,21 +151,6 @@ std::size_t hadamard_bits(const IntegerMatrix& A) {
   return bits;
 }
 
-/// Runs f(i, scratch) for i in [0, count) on `threads` workers.
-template <typename F>
-void parallel_for(std::size_t count, int threads, F&& f) {
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    std::vector<Word> scratch;
-    for (std::size_t i = next++; i < count; i = next++) f(i, scratch);
-  };
-  const int workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), count));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < workers; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-}
-
 class ModularElimination {
  public:
   ModularElimination(const Mat<Rational>& M, int threads, std::size_t max_primes)
@@ -201,7 +185,7 @@ class ModularElimination {
       std::vector<char> batch_ok(batch.size(), 0);
       std::vector<std::size_t> all(n);
       for (std::size_t i = 0; i < n; ++i) all[i] = i;
-      parallel_for(batch.size(), threads_, [&](std::size_t b, std::vector<Word>& a) {
+      parallel_for_with_scratch<std::vector<Word>>(batch.size(), workers(), [&](std::size_t b, std::vector<Word>& a) {
         const Word p = batch[b];
         ints_->fill(all, p, a);
         std::vector<Word> piv(r);
@@ -314,6 +298,9 @@ class ModularElimination {
     return out;
   }
 
+  /// The worker count of the parallel loops over primes (core/parallel_for.h).
+  unsigned workers() const { return static_cast<unsigned>(std::max(threads_, 1)); }
+
   /// The first `count` primes into *out; false (with why_) when they exceed
   /// max_primes_ or the primes in (2^31 − 2^24, 2^31): a Hadamard bound of
   /// `need_bits` bits can then not be certified by this path.
@@ -340,7 +327,7 @@ class ModularElimination {
     // residues[prime][target][0..K]: w entries 0..K−1 and Δ_K; plus S_ij·Δ_K.
     std::vector<std::vector<Word>> wres(primes_.size(), std::vector<Word>(T * (K + 1) + 1, 0));
     std::vector<char> ok(primes_.size(), 0);
-    parallel_for(primes_.size(), threads_, [&](std::size_t pi, std::vector<Word>& a) {
+    parallel_for_with_scratch<std::vector<Word>>(primes_.size(), workers(), [&](std::size_t pi, std::vector<Word>& a) {
       const Word p = primes_[pi];
       ints_->fill(rows, p, a);
       std::vector<Word> inv(K);
