@@ -3,7 +3,8 @@
 in this repository's style: a function's signature starts at column 0, or at
 column 2 inside a class, and its body ends with a `}` at the same column).
 Exits 1 when one is found. Run by ctest (CertifyPathFunctionLengths) on the
-certification path: src/certify and src/lmi.
+certification path, src/certify and src/lmi, and on the exact PSD decision,
+verify/psd.
 
     python3 scripts/function_lengths.py [--max 60] FOLDER...
 """

@@ -7,11 +7,11 @@
 #include <cstddef>
 #include <memory>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "core/number_text.h"
+#include "core/parallel_for.h"
 #include "verify/psd/psd_internal.h"
 
 namespace lpvid {
@@ -22,7 +22,8 @@ using psd_detail::IntegerMatrix;
 using psd_detail::reduced_witness;
 
 /// Runs f(lo, hi) on [begin, end) split into `threads` chunks of about equal
-/// work, row i costing (n − i) entries.
+/// work, row i costing (n − i) entries, the chunks at once through
+/// core/parallel_for.h (one worker per chunk).
 template <typename F>
 void for_rows_split(std::size_t begin, std::size_t end, std::size_t n, int threads, F&& f) {
   const std::size_t rows = end - begin;
@@ -45,11 +46,12 @@ void for_rows_split(std::size_t begin, std::size_t end, std::size_t n, int threa
     }
   }
   cut.push_back(end);
-  std::vector<std::thread> pool;
-  for (std::size_t c = 1; c + 1 < cut.size(); ++c)
-    if (cut[c] < cut[c + 1]) pool.emplace_back([&f, lo = cut[c], hi = cut[c + 1]] { f(lo, hi); });
-  f(cut[0], cut[1]);
-  for (auto& t : pool) t.join();
+  // The nonempty chunks (at most `threads`), one job each on core's workers.
+  std::vector<std::pair<std::size_t, std::size_t>> chunks;
+  for (std::size_t c = 0; c + 1 < cut.size(); ++c)
+    if (cut[c] < cut[c + 1]) chunks.emplace_back(cut[c], cut[c + 1]);
+  parallel_for(chunks.size(), static_cast<unsigned>(threads),
+               [&](std::size_t c) { f(chunks[c].first, chunks[c].second); });
 }
 
 // ---------------------------------------------------------------------------

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/number_text.h"
@@ -44,6 +45,134 @@ std::vector<Mpz> integer_vector_of_doubles(const Vec<double>& v) {
     mpz_mul_2exp(w[i].z, w[i].z, static_cast<mp_bitcnt_t>(expo[i] - emin));
   }
   return w;
+}
+
+/// M without its exactly zero rows (and, by symmetry, columns): they do not
+/// change PSD-ness, M is PSD iff M without them is. The filter sees the rest.
+struct NonzeroRows {
+  std::vector<Eigen::Index> keep;  // the nonzero rows of M, increasing
+  Eigen::Index first_zero = -1;    // the first zero row (−1: none)
+  Mat<Rational> reduced;           // M on `keep` when a row was removed (else empty)
+  std::string note;                // for the reason ("" when none was removed)
+
+  bool removed_any() const { return first_zero >= 0; }
+  /// The matrix the filter sees: `reduced`, or M itself.
+  const Mat<Rational>& matrix(const Mat<Rational>& M) const { return removed_any() ? reduced : M; }
+};
+
+/// Finds the zero rows of M and, when there are any, M without them.
+NonzeroRows nonzero_rows(const Mat<Rational>& M) {
+  const Eigen::Index n = M.rows();
+  NonzeroRows out;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    bool zero = true;
+    for (Eigen::Index j = 0; j < n && zero; ++j) zero = CGAL::is_zero(M(i, j));
+    if (!zero)
+      out.keep.push_back(i);
+    else if (out.first_zero < 0)
+      out.first_zero = i;
+  }
+  if (!out.removed_any()) return out;
+  const auto m = static_cast<Eigen::Index>(out.keep.size());
+  out.reduced.resize(m, m);
+  for (Eigen::Index a = 0; a < m; ++a)
+    for (Eigen::Index b = 0; b < m; ++b)
+      out.reduced(a, b) = M(out.keep[static_cast<std::size_t>(a)], out.keep[static_cast<std::size_t>(b)]);
+  out.note = " (after removing " + std::to_string(n - m) + " zero row(s)/column(s), the first at row " +
+             std::to_string(out.first_zero) + ")";
+  return out;
+}
+
+/// The floating filter on R after power-of-two balancing
+/// (verify/psd/power_of_two.h): when the diagonal spans many binary orders (a
+/// dual matrix in original units, say), the filter's absolute error terms
+/// would swamp the small rows; the exact congruence D·R·D with D = diag(2^k)
+/// keeps the inertia and puts the diagonal near 1.
+struct BalancedFilter {
+  std::vector<long> k;  // the exponents of D (empty: not balanced, D = I)
+  std::string note;     // for the reason ("" when not balanced)
+  PsdFilterResult f;    // on D·R·D; f.reason carries the note
+};
+
+/// Balances R when its diagonal asks for it, then runs the filter.
+BalancedFilter balanced_filter(const Mat<Rational>& R) {
+  BalancedFilter out;
+  out.k = diagonal_balance_exponents(R);
+  if (out.k.empty()) {
+    out.f = run_psd_filter(R);
+  } else {
+    out.note = " (after an exact power-of-two diagonal balancing)";
+    out.f = run_psd_filter(diagonal_congruence(R, out.k));
+  }
+  out.f.reason += out.note;
+  return out;
+}
+
+/// The filter's negative direction as an integer vector of M: rounded to
+/// `bits` bits of its largest entry (0: its exact binary value), back to R's
+/// coordinates (v_R = D·v_B), zeros at M's removed rows.
+std::vector<Mpz> integer_candidate(Eigen::Index n, const NonzeroRows& rows, const BalancedFilter& b, int bits) {
+  const Vec<double>& v = b.f.negative_direction;
+  const double vmax = v.cwiseAbs().maxCoeff();
+  std::vector<Mpz> w_reduced = bits == 0 ? integer_vector_of_doubles(v)
+                                         : integer_vector_of_doubles(
+                                               (v * (std::ldexp(1.0, bits) / vmax)).array().round().matrix().eval());
+  // back to R's coordinates: v_R = D·v_B, an exact shift per entry (kmin keeps the shifts ≥ 0)
+  if (!b.k.empty()) {
+    const long kmin = *std::min_element(b.k.begin(), b.k.end());
+    for (std::size_t a = 0; a < w_reduced.size(); ++a)
+      mpz_mul_2exp(w_reduced[a].z, w_reduced[a].z, static_cast<mp_bitcnt_t>(b.k[a] - kmin));
+  }
+  std::vector<Mpz> w(static_cast<std::size_t>(n));
+  for (std::size_t a = 0; a < rows.keep.size(); ++a)
+    mpz_swap(w[static_cast<std::size_t>(rows.keep[a])].z, w_reduced[a].z);
+  return w;
+}
+
+/// The filter's verdict PD (or PSD when zero rows were removed).
+PsdResult filter_proved_pd(const NonzeroRows& rows, const PsdFilterResult& f) {
+  PsdResult r;
+  r.verdict = rows.removed_any() ? PsdVerdict::kPositiveSemidefinite : PsdVerdict::kPositiveDefinite;
+  r.decided_by_filter = true;
+  r.method = PsdMethod::kFloatingFilter;
+  r.rank = static_cast<long>(rows.keep.size());
+  r.pivot_index = rows.first_zero;
+  r.reason = f.reason + rows.note;
+  return r;
+}
+
+/// NOT_PSD by a filter candidate: tries short integer roundings of the
+/// candidate first (readable witnesses), then its exact binary value; true
+/// with *out when one of them satisfies vᵀMv < 0, checked exactly.
+bool filter_witness(const Mat<Rational>& M, const NonzeroRows& rows, const BalancedFilter& b, PsdResult* out) {
+  for (int bits : {3, 10, 24, 0}) {
+    std::vector<Mpz> w = integer_candidate(M.rows(), rows, b, bits);
+    if (psd_detail::quadratic_form_sign(M, w) >= 0) continue;
+    PsdResult r;
+    r.verdict = PsdVerdict::kNotPsd;
+    r.decided_by_filter = true;
+    r.method = PsdMethod::kWitnessCheck;
+    r.pivot_index = rows.keep[static_cast<std::size_t>(b.f.failed_row)];
+    r.witness = psd_detail::reduced_witness(w);
+    r.reason = b.f.candidate_reason + b.note + " at row " + std::to_string(r.pivot_index) +
+               "; its direction v satisfies v'Mv < 0, checked in exact integer arithmetic";
+    *out = std::move(r);
+    return true;
+  }
+  return false;
+}
+
+/// The floating filter's decision with its exact witness check (M ≠ 0×0):
+/// true with *out when it proves PD (PSD) or finds a checked witness.
+bool decide_by_filter(const Mat<Rational>& M, PsdResult* out) {
+  const NonzeroRows rows = nonzero_rows(M);
+  const BalancedFilter b = balanced_filter(rows.matrix(M));
+  if (b.f.proved_pd) {
+    *out = filter_proved_pd(rows, b.f);
+    return true;
+  }
+  const auto m = static_cast<Eigen::Index>(rows.keep.size());
+  return b.f.negative_direction.size() == m && m > 0 && filter_witness(M, rows, b, out);
 }
 
 }  // namespace
@@ -97,89 +226,8 @@ PsdResult decide_psd_exact_limited(const Mat<Rational>& M, int threads, const Ex
 
 PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options) {
   require_symmetric(M);
-  const Eigen::Index n = M.rows();
-  if (options.use_filter && n > 0) {
-    // Rows (and, by symmetry, columns) that are exactly zero do not change
-    // PSD-ness: M is PSD iff M without them is. The filter sees the rest.
-    std::vector<Eigen::Index> keep;
-    Eigen::Index first_zero = -1;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      bool zero = true;
-      for (Eigen::Index j = 0; j < n && zero; ++j) zero = CGAL::is_zero(M(i, j));
-      if (!zero)
-        keep.push_back(i);
-      else if (first_zero < 0)
-        first_zero = i;
-    }
-    const auto m = static_cast<Eigen::Index>(keep.size());
-    Mat<Rational> reduced;
-    if (m < n) {
-      reduced.resize(m, m);
-      for (Eigen::Index a = 0; a < m; ++a)
-        for (Eigen::Index b = 0; b < m; ++b) reduced(a, b) = M(keep[static_cast<std::size_t>(a)], keep[static_cast<std::size_t>(b)]);
-    }
-    const Mat<Rational>& R = m < n ? reduced : M;
-    const std::string zero_note =
-        m < n ? " (after removing " + std::to_string(n - m) + " zero row(s)/column(s), the first at row " +
-                    std::to_string(first_zero) + ")"
-              : std::string();
-
-    // Power-of-two balancing (verify/psd/power_of_two.h): when the diagonal spans
-    // many binary orders (a dual matrix in original units, say), the filter's
-    // absolute error terms would swamp the small rows; the exact congruence
-    // D·R·D with D = diag(2^k) keeps the inertia and puts the diagonal near 1.
-    const std::vector<long> k = diagonal_balance_exponents(R);
-    const Mat<Rational> balanced = k.empty() ? Mat<Rational>() : diagonal_congruence(R, k);
-    const std::string balance_note = k.empty() ? std::string() : " (after an exact power-of-two diagonal balancing)";
-    PsdFilterResult f = run_psd_filter(k.empty() ? R : balanced);
-    f.reason += balance_note;
-    if (f.proved_pd) {
-      PsdResult r;
-      r.verdict = m < n ? PsdVerdict::kPositiveSemidefinite : PsdVerdict::kPositiveDefinite;
-      r.decided_by_filter = true;
-      r.method = PsdMethod::kFloatingFilter;
-      r.rank = m;
-      r.pivot_index = m < n ? first_zero : -1;
-      r.reason = f.reason + zero_note;
-      return r;
-    }
-    if (f.negative_direction.size() == m && m > 0) {
-      // Try short integer roundings of the candidate first (readable
-      // witnesses), then its exact binary value.
-      std::vector<Mpz> w;
-      bool found = false;
-      const double vmax = f.negative_direction.cwiseAbs().maxCoeff();
-      for (int bits : {3, 10, 24, 0}) {
-        std::vector<Mpz> w_reduced =
-            bits == 0 ? integer_vector_of_doubles(f.negative_direction)
-                      : integer_vector_of_doubles(
-                            (f.negative_direction * (std::ldexp(1.0, bits) / vmax)).array().round().matrix().eval());
-        // back to R's coordinates: v_R = D·v_B, an exact shift per entry (kmin keeps the shifts ≥ 0)
-        if (!k.empty()) {
-          const long kmin = *std::min_element(k.begin(), k.end());
-          for (std::size_t a = 0; a < w_reduced.size(); ++a)
-            mpz_mul_2exp(w_reduced[a].z, w_reduced[a].z, static_cast<mp_bitcnt_t>(k[a] - kmin));
-        }
-        w = std::vector<Mpz>(static_cast<std::size_t>(n));
-        for (std::size_t a = 0; a < keep.size(); ++a) mpz_swap(w[static_cast<std::size_t>(keep[a])].z, w_reduced[a].z);
-        if (psd_detail::quadratic_form_sign(M, w) < 0) {
-          found = true;
-          break;
-        }
-      }
-      if (found) {
-        PsdResult r;
-        r.verdict = PsdVerdict::kNotPsd;
-        r.decided_by_filter = true;
-        r.method = PsdMethod::kWitnessCheck;
-        r.pivot_index = keep[static_cast<std::size_t>(f.failed_row)];
-        r.witness = psd_detail::reduced_witness(w);
-        r.reason = f.candidate_reason + balance_note + " at row " + std::to_string(r.pivot_index) +
-                   "; its direction v satisfies v'Mv < 0, checked in exact integer arithmetic";
-        return r;
-      }
-    }
-  }
+  PsdResult r;
+  if (options.use_filter && M.rows() > 0 && decide_by_filter(M, &r)) return r;
   return decide_psd_exact(M, options.threads);
 }
 

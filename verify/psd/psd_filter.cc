@@ -1,11 +1,13 @@
 #include "verify/psd/psd_filter.h"
 
+#include <algorithm>
 #include <cfenv>
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include <gmp.h>
@@ -200,44 +202,58 @@ PsdFilterResult run_psd_filter_on_doubles(const Mat<double>& M) {
   return filter_matrix(M, [](double x) { return x; }, true, "an entry is not finite");
 }
 
-static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFilterResult out) {
-  const std::size_t n = A.n;
-  const Eigen::Index N = static_cast<Eigen::Index>(n);
-  // maxdiag, tr(A) exactly, max |A_ij|.
+namespace {
+
+/// What the theorem needs of A's entries: the largest diagonal entry, the
+/// largest |A_ij| and tr(A) exactly.
+struct FilterEntryScan {
   double maxdiag = 0, maxabs = 0;
-  Rational trace(0);
+  Rational trace{0};
+};
+
+/// maxdiag, tr(A) exactly, max |A_ij|; false at the first negative diagonal
+/// entry, with the reason and its direction e_i in *out.
+bool scan_filter_entries(const UpperMatrix& A, FilterEntryScan* scan, PsdFilterResult* out) {
+  const std::size_t n = A.n;
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i; j < n; ++j) maxabs = std::max(maxabs, std::fabs(A.at(i, j)));
+    for (std::size_t j = i; j < n; ++j) scan->maxabs = std::max(scan->maxabs, std::fabs(A.at(i, j)));
     const double d = A.at(i, i);
     if (d < 0) {
-      out.reason = "negative diagonal entry at row " + std::to_string(i);
-      out.failed_row = static_cast<long>(i);
-      Vec<double> v = Vec<double>::Zero(N);
+      out->reason = "negative diagonal entry at row " + std::to_string(i);
+      out->failed_row = static_cast<long>(i);
+      Vec<double> v = Vec<double>::Zero(static_cast<Eigen::Index>(n));
       v(static_cast<Eigen::Index>(i)) = 1;
-      out.negative_direction = v;
-      out.candidate_reason = "negative diagonal entry";
-      return out;
+      out->negative_direction = v;
+      out->candidate_reason = "negative diagonal entry";
+      return false;
     }
-    maxdiag = std::max(maxdiag, d);
-    trace += Rational(d);  // exact: every double is a dyadic rational
+    scan->maxdiag = std::max(scan->maxdiag, d);
+    scan->trace += Rational(d);  // exact: every double is a dyadic rational
   }
+  return true;
+}
 
-  // The constants of the theorem, exactly.
-  const Rational u = power_of_two(-53), eta = power_of_two(-1074), Nq(static_cast<long>(N));
+/// The constants of the theorem, exactly: the shift s = c + N·r with
+/// c = γ_{2(N+1)}/2·tr(A) + 4ηN(2(N+1) + maxdiag) and the radius r. False
+/// when N is too large for the error bound (4(N+1)u ≥ 1).
+bool filter_shift(std::size_t n, const FilterEntryScan& scan, bool exact_entries, Rational* shift) {
+  const Rational u = power_of_two(-53), eta = power_of_two(-1074), Nq(static_cast<long>(n));
   const Rational two_n1 = Rational(2) * (Nq + Rational(1));
-  if (!(Rational(2) * two_n1 * u < Rational(1))) {  // 4(N+1)u < 1
-    out.reason = "matrix too large for the error bound";
-    return out;
-  }
+  if (!(Rational(2) * two_n1 * u < Rational(1))) return false;  // 4(N+1)u < 1
   const Rational gamma = two_n1 * u / (Rational(1) - two_n1 * u);  // γ_{2(N+1)}
-  const Rational c = gamma / Rational(2) * trace + Rational(4) * eta * Nq * (two_n1 + Rational(maxdiag));
+  const Rational c =
+      gamma / Rational(2) * scan.trace + Rational(4) * eta * Nq * (two_n1 + Rational(scan.maxdiag));
   // Rad: the rounding of M to A (none when A is M itself, then only the η term is kept).
-  const Rational r = (exact_entries ? Rational(0) : Rational(2) * u * Rational(maxabs)) + Rational(2) * eta;
-  const Rational shift = c + Nq * r;
-  out.shift = nearest_double(shift);
+  const Rational r = (exact_entries ? Rational(0) : Rational(2) * u * Rational(scan.maxabs)) + Rational(2) * eta;
+  *shift = c + Nq * r;
+  return true;
+}
 
+/// Floating Cholesky of fl(M) − s·I (diagonal rounded down): PD when it
+/// completes. Else looks for a candidate direction with the unshifted matrix.
+PsdFilterResult filter_cholesky(const UpperMatrix& A, const Rational& shift, PsdFilterResult out) {
   UpperMatrix At = A;
-  for (std::size_t i = 0; i < n; ++i) At.at(i, i) = round_down(Rational(A.at(i, i)) - shift);
+  for (std::size_t i = 0; i < A.n; ++i) At.at(i, i) = round_down(Rational(A.at(i, i)) - shift);
 
   CholeskyRun shifted = floating_cholesky(At);
   std::ostringstream why;
@@ -262,6 +278,20 @@ static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFil
   }
   out.reason = why.str();
   return out;
+}
+
+}  // namespace
+
+static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFilterResult out) {
+  FilterEntryScan scan;
+  if (!scan_filter_entries(A, &scan, &out)) return out;
+  Rational shift;
+  if (!filter_shift(A.n, scan, exact_entries, &shift)) {
+    out.reason = "matrix too large for the error bound";
+    return out;
+  }
+  out.shift = nearest_double(shift);
+  return filter_cholesky(A, shift, std::move(out));
 }
 
 }  // namespace lpvid

@@ -6,11 +6,11 @@
 #include <cstddef>
 #include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
+#include "core/parallel_for.h"
 
 namespace lpvid::psd_detail {
 
@@ -38,11 +38,11 @@ Vec<Rational> reduced_witness(std::vector<Mpz>& w);
 /// Re-checks a witness exactly (wᵀMw < 0); a failure is a bug, never an answer.
 void check_witness(const Mat<Rational>& M, const std::vector<Mpz>& w);
 
-/// `threads` ≤ 0: the hardware concurrency (at most 8); else at most 64.
+/// `threads` ≤ 0: the hardware concurrency (core/parallel_for.h, at most 8);
+/// else at most 64.
 inline int resolve_threads(int threads) {
   if (threads > 0) return std::min(threads, 64);
-  const unsigned hw = std::thread::hardware_concurrency();
-  return static_cast<int>(std::clamp(hw, 1u, 8u));
+  return static_cast<int>(std::min(default_thread_count(), 8u));
 }
 
 /// Outcome of the multi-modular path: a result, or "undecided" with the

@@ -33,16 +33,15 @@
 #include <gmp.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
+#include "core/parallel_for.h"
 #include "verify/psd/psd_internal.h"
 #include "verify/psd/psd_modular_arith.h"
 
@@ -101,16 +100,36 @@ void modular_step(Word* a, std::size_t m, std::size_t k, Word inv, Word p) {
   }
 }
 
+/// The first K elimination steps on the m×m upper triangle `a` mod p, in
+/// logical order (no pivoting): the pivots into piv[0..K) and their inverses
+/// into inv[0..K). False when a pivot vanishes mod p (the prime is of no use).
+bool eliminate_leading_mod(std::vector<Word>& a, std::size_t m, std::size_t K, Word p, std::vector<Word>& piv,
+                           std::vector<Word>& inv) {
+  piv.assign(K, 0);
+  inv.assign(K, 0);
+  for (std::size_t k = 0; k < K; ++k) {
+    if (a[k * m + k] == 0 || !inv_mod(a[k * m + k], p, &inv[k])) return false;
+    piv[k] = a[k * m + k];
+    modular_step(a.data(), m, k, inv[k], p);
+  }
+  return true;
+}
+
+/// 0, 1, …, count − 1.
+std::vector<std::size_t> leading_rows(std::size_t count) {
+  std::vector<std::size_t> rows(count);
+  for (std::size_t i = 0; i < count; ++i) rows[i] = i;
+  return rows;
+}
+
 /// Step 1: pivot order and rank modulo p₀ (see the section comment).
 void choose_pivots_mod(const IntegerMatrix& A, Word p, std::vector<long>* perm, std::size_t* rank) {
   const std::size_t n = A.n;
   perm->resize(n);
   for (std::size_t i = 0; i < n; ++i) (*perm)[i] = static_cast<long>(i);
   LogicalInts ints(A, *perm);
-  std::vector<std::size_t> all(n);
-  for (std::size_t i = 0; i < n; ++i) all[i] = i;
   std::vector<Word> a;
-  ints.fill(all, p, a);
+  ints.fill(leading_rows(n), p, a);
   auto at = [&](std::size_t i, std::size_t j) -> Word& { return a[i * n + j]; };
   for (std::size_t k = 0; k < n; ++k) {
     std::size_t pos = n;
@@ -152,159 +171,53 @@ std::size_t hadamard_bits(const IntegerMatrix& A) {
   return bits;
 }
 
-/// Runs f(i, scratch) for i in [0, count) on `threads` workers.
-template <typename F>
-void parallel_for(std::size_t count, int threads, F&& f) {
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    std::vector<Word> scratch;
-    for (std::size_t i = next++; i < count; i = next++) f(i, scratch);
-  };
-  const int workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), count));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < workers; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+/// Step 4 for one target t mod p, on the m×m triangle `a` after K
+/// elimination steps (pivot inverses `inv`, Δ_K = `delta`): w[K + t] = Δ_K,
+/// w[0..K) = Δ_K·(−A₁₁⁻¹A₁ₜ) by back-substitution, the other entries 0.
+void back_substitute_mod(const std::vector<Word>& a, std::size_t m, std::size_t K, std::size_t t,
+                         const std::vector<Word>& inv, Word delta, Word p, std::vector<Word>& w) {
+  std::fill(w.begin(), w.end(), 0);
+  w[K + t] = delta;
+  for (std::size_t mm = K; mm-- > 0;) {
+    u128 s = 0;  // < m·2^62: cannot overflow
+    for (std::size_t j = mm + 1; j < m; ++j) s += static_cast<std::uint64_t>(a[mm * m + j]) * w[j];
+    const Word sp = static_cast<Word>(s % p);
+    w[mm] = mul_mod(sp == 0 ? 0 : p - sp, inv[mm], p);
+  }
 }
+
+/// The outcome of step 2 over all primes: the good primes (no pivot vanishes
+/// mod them), their pivots, and which entries of the remaining Schur block
+/// are ≠ 0 mod some good prime.
+struct PrimeEliminations {
+  std::vector<Word> primes;
+  std::vector<std::vector<Word>> pivots;  // per good prime
+  std::vector<char> nonzero;              // rest×rest, row-major
+};
 
 class ModularElimination {
  public:
   ModularElimination(const Mat<Rational>& M, int threads, std::size_t max_primes)
       : M_(M), A_(integer_matrix(M)), threads_(threads), max_primes_(max_primes) {}
 
+  /// Steps 1–3 of the section comment (step 4 when a witness is due).
   ModularOutcome run() {
-    const std::size_t n = A_->n;
     const std::size_t need_bits = hadamard_bits(*A_) + 3;  // P > 2H with margin
-    std::size_t count = need_bits / kPrimeBits + 1;
+    const std::size_t count = need_bits / kPrimeBits + 1;
     if (!take_primes(count, need_bits, &primes_)) return undecided();
     choose_pivots_mod(*A_, primes_[0], &perm_, &rank_);
     ints_ = std::make_unique<LogicalInts>(*A_, perm_);
-    const std::size_t r = rank_, rest = n - r;
-
-    // Step 2 over all primes (more primes if some were discarded).
-    std::vector<std::vector<Word>> pivots;  // per good prime
-    std::vector<Word> good;
-    std::vector<char> nonzero(rest * rest, 0);  // Schur block entry ≠ 0 mod some prime
-    std::mutex merge;
-    std::size_t first_unused = 0;
-    while (good.size() * kPrimeBits < need_bits) {
-      const std::size_t missing = (need_bits - good.size() * kPrimeBits + kPrimeBits - 1) / kPrimeBits;
-      if (first_unused + missing > count + 64) {
-        why_ = "more than 64 primes divide a pivot";  // absurd: let Bareiss decide
-        return undecided();
-      }
-      std::vector<Word> batch;
-      if (!take_primes(first_unused + missing, need_bits, &batch)) return undecided();
-      batch.erase(batch.begin(), batch.begin() + static_cast<std::ptrdiff_t>(first_unused));
-      first_unused += missing;
-      std::vector<std::vector<Word>> batch_pivots(batch.size());
-      std::vector<char> batch_ok(batch.size(), 0);
-      std::vector<std::size_t> all(n);
-      for (std::size_t i = 0; i < n; ++i) all[i] = i;
-      parallel_for(batch.size(), threads_, [&](std::size_t b, std::vector<Word>& a) {
-        const Word p = batch[b];
-        ints_->fill(all, p, a);
-        std::vector<Word> piv(r);
-        for (std::size_t k = 0; k < r; ++k) {
-          Word inv = 0;
-          if (a[k * n + k] == 0 || !inv_mod(a[k * n + k], p, &inv)) return;  // discard this prime
-          piv[k] = a[k * n + k];
-          modular_step(a.data(), n, k, inv, p);
-        }
-        std::vector<char> local(rest * rest, 0);
-        bool any = false;
-        for (std::size_t i = r; i < n; ++i)
-          for (std::size_t j = i; j < n; ++j)
-            if (a[i * n + j] != 0) local[(i - r) * rest + (j - r)] = any = true;
-        if (any) {
-          std::lock_guard<std::mutex> lock(merge);
-          for (std::size_t x = 0; x < local.size(); ++x) nonzero[x] |= local[x];
-        }
-        batch_pivots[b] = std::move(piv);
-        batch_ok[b] = 1;
-      });
-      for (std::size_t b = 0; b < batch.size(); ++b)
-        if (batch_ok[b]) {
-          good.push_back(batch[b]);
-          pivots.push_back(std::move(batch_pivots[b]));
-        }
-    }
-    primes_ = good;
+    PrimeEliminations runs;
+    if (!eliminate_mod_primes(need_bits, count, &runs)) return undecided();
+    primes_ = runs.primes;
     Crt crt(primes_);
     if (!crt.ok()) {
       why_ = "the CRT moduli are not coprime";  // never for distinct primes
       return undecided();
     }
-
-    // Step 3: leading principal minors Δ_k = Π_{t<k} pivot_t.
-    std::vector<Word> delta(primes_.size(), 1);
-    Mpz value;
-    PsdResult res;
-    res.method = PsdMethod::kExactLdlt;
-    for (std::size_t k = 0; k < r; ++k) {
-      for (std::size_t i = 0; i < primes_.size(); ++i) delta[i] = mul_mod(delta[i], pivots[i][k], primes_[i]);
-      crt.lift([&](std::size_t i) { return delta[i]; }, value.z);
-      if (mpz_sgn(value.z) < 0) {
-        // S_kk = Δ_{k+1}/Δ_k < 0 after k positive pivots.
-        res.verdict = PsdVerdict::kNotPsd;
-        res.step = static_cast<long>(k);
-        res.pivot_index = perm_[k];
-        res.reason = "exact LDL^T: after " + std::to_string(k) + " positive pivot(s) the pivot of row " +
-                     std::to_string(perm_[k]) + " is negative";
-        if (!witness(k, {k}, &res)) return undecided();
-        return {true, res, {}};
-      }
-    }
-    const std::string how = " (multi-modular: " + std::to_string(primes_.size()) + " primes of 31 bits, CRT)";
-    // Remaining Schur block.
-    bool any = false, any_diag = false;
-    for (std::size_t i = 0; i < rest; ++i) {
-      any_diag = any_diag || nonzero[i * rest + i];
-      for (std::size_t j = i; j < rest; ++j) any = any || nonzero[i * rest + j];
-    }
-    res.step = static_cast<long>(r);
-    if (!any) {
-      res.rank = static_cast<long>(r);
-      if (r == n) {
-        res.verdict = PsdVerdict::kPositiveDefinite;
-        res.reason = "exact LDL^T: all " + std::to_string(n) + " pivots are positive" + how;
-      } else {
-        res.verdict = PsdVerdict::kPositiveSemidefinite;
-        long first = perm_[r];
-        for (std::size_t i = r; i < n; ++i) first = std::min(first, perm_[i]);
-        res.pivot_index = first;
-        res.reason = "exact LDL^T: " + std::to_string(r) + " positive pivot(s), then the remaining " +
-                     std::to_string(rest) + "x" + std::to_string(rest) + " Schur complement is exactly zero (rank " +
-                     std::to_string(r) + " < n = " + std::to_string(n) + ")" + how;
-      }
-      return {true, res, {}};
-    }
-    if (any_diag) {
-      why_ = "the first prime divides a nonzero Schur diagonal";  // let Bareiss decide
-      return undecided();
-    }
-    // Zero diagonal, nonzero entry: smallest (original row, original column).
-    std::size_t bi = rest, bj = rest;
-    std::pair<long, long> best{-1, -1};
-    for (std::size_t i = 0; i < rest; ++i)
-      for (std::size_t j = i + 1; j < rest; ++j)
-        if (nonzero[i * rest + j]) {
-          std::pair<long, long> key{std::min(perm_[r + i], perm_[r + j]), std::max(perm_[r + i], perm_[r + j])};
-          if (bi == rest || key < best) {
-            best = key;
-            bi = i;
-            bj = j;
-          }
-        }
-    const std::size_t li = r + (perm_[r + bi] < perm_[r + bj] ? bi : bj);
-    const std::size_t lj = li == r + bi ? r + bj : r + bi;
-    res.verdict = PsdVerdict::kNotPsd;
-    res.pivot_index = perm_[li];
-    res.reason = "exact LDL^T: after " + std::to_string(r) + " positive pivot(s) the pivot of row " +
-                 std::to_string(perm_[li]) + " is 0 but its row is not (entry with row " + std::to_string(perm_[lj]) +
-                 "): the 2x2 principal minor [[0,b],[b,0]] with b != 0 is indefinite";
-    if (!witness(r, {std::min(li, lj), std::max(li, lj)}, &res, li)) return undecided();
-    return {true, res, {}};
+    const std::size_t k = first_negative_minor(crt, runs.pivots);
+    if (k < rank_) return negative_pivot(k);
+    return decide_schur_block(runs.nonzero);
   }
 
  private:
@@ -313,6 +226,9 @@ class ModularElimination {
     out.why = why_;
     return out;
   }
+
+  /// The worker count of the parallel loops over primes (core/parallel_for.h).
+  unsigned workers() const { return static_cast<unsigned>(std::max(threads_, 1)); }
 
   /// The first `count` primes into *out; false (with why_) when they exceed
   /// max_primes_ or the primes in (2^31 − 2^24, 2^31): a Hadamard bound of
@@ -329,41 +245,217 @@ class ModularElimination {
     return false;
   }
 
+  /// For every prime of `primes`, in parallel with one residue matrix per
+  /// worker (core/parallel_for.h): the upper triangle of the logical `rows`
+  /// mod p after K elimination steps, with its pivots and their inverses, to
+  /// use(index of the prime, triangle, pivots, inverses). A prime where one of
+  /// the K pivots vanishes is skipped (use is not called).
+  template <typename Use>
+  void eliminate_mod_each(const std::vector<Word>& primes, const std::vector<std::size_t>& rows, std::size_t K,
+                          Use&& use) const {
+    parallel_for_with_scratch<std::vector<Word>>(primes.size(), workers(), [&](std::size_t b, std::vector<Word>& a) {
+      const Word p = primes[b];
+      ints_->fill(rows, p, a);
+      std::vector<Word> piv, inv;
+      if (eliminate_leading_mod(a, rows.size(), K, p, piv, inv)) use(b, a, piv, inv);
+    });
+  }
+
+  /// Step 2 over all primes (more primes if some were discarded, in batches
+  /// of the primes still missing) until the good ones carry `need_bits`
+  /// bits. False (with why_) when the primes run out.
+  bool eliminate_mod_primes(std::size_t need_bits, std::size_t count, PrimeEliminations* runs) {
+    const std::size_t rest = A_->n - rank_;
+    runs->nonzero.assign(rest * rest, 0);
+    std::size_t first_unused = 0;
+    while (runs->primes.size() * kPrimeBits < need_bits) {
+      const std::size_t missing = (need_bits - runs->primes.size() * kPrimeBits + kPrimeBits - 1) / kPrimeBits;
+      if (first_unused + missing > count + 64) {
+        why_ = "more than 64 primes divide a pivot";  // absurd: let Bareiss decide
+        return false;
+      }
+      std::vector<Word> batch;
+      if (!take_primes(first_unused + missing, need_bits, &batch)) return false;
+      batch.erase(batch.begin(), batch.begin() + static_cast<std::ptrdiff_t>(first_unused));
+      first_unused += missing;
+      eliminate_batch(batch, runs);
+    }
+    return true;
+  }
+
+  /// Step 2 for one batch of primes, in parallel with one residue matrix per
+  /// worker: eliminate rank_ steps of A_π mod p (a prime where a pivot
+  /// vanishes is discarded), record the pivots and the Schur block entries
+  /// ≠ 0 mod p. The good primes are appended in the batch's order.
+  void eliminate_batch(const std::vector<Word>& batch, PrimeEliminations* runs) {
+    const std::size_t n = A_->n, r = rank_, rest = n - r;
+    std::vector<std::vector<Word>> batch_pivots(batch.size());
+    std::vector<char> batch_ok(batch.size(), 0);  // stays 0 for a discarded prime
+    std::mutex merge;
+    eliminate_mod_each(batch, leading_rows(n), r, [&](std::size_t b, const std::vector<Word>& a, std::vector<Word>& piv,
+                                                      const std::vector<Word>&) {
+      std::vector<char> local(rest * rest, 0);
+      bool any = false;
+      for (std::size_t i = r; i < n; ++i)
+        for (std::size_t j = i; j < n; ++j)
+          if (a[i * n + j] != 0) local[(i - r) * rest + (j - r)] = any = true;
+      if (any) {
+        std::lock_guard<std::mutex> lock(merge);
+        for (std::size_t x = 0; x < local.size(); ++x) runs->nonzero[x] |= local[x];
+      }
+      batch_pivots[b] = std::move(piv);
+      batch_ok[b] = 1;
+    });
+    for (std::size_t b = 0; b < batch.size(); ++b)
+      if (batch_ok[b]) {
+        runs->primes.push_back(batch[b]);
+        runs->pivots.push_back(std::move(batch_pivots[b]));
+      }
+  }
+
+  /// Step 3, the pivots: the first k < rank_ whose leading principal minor
+  /// Δ_{k+1} = Π_{t≤k} pivot_t, lifted, is negative; rank_ when none is.
+  std::size_t first_negative_minor(const Crt& crt, const std::vector<std::vector<Word>>& pivots) const {
+    std::vector<Word> delta(primes_.size(), 1);
+    Mpz value;
+    for (std::size_t k = 0; k < rank_; ++k) {
+      for (std::size_t i = 0; i < primes_.size(); ++i) delta[i] = mul_mod(delta[i], pivots[i][k], primes_[i]);
+      crt.lift([&](std::size_t i) { return delta[i]; }, value.z);
+      if (mpz_sgn(value.z) < 0) return k;
+    }
+    return rank_;
+  }
+
+  /// NOT_PSD at step k: S_kk = Δ_{k+1}/Δ_k < 0 after k positive pivots.
+  ModularOutcome negative_pivot(std::size_t k) {
+    PsdResult res;
+    res.method = PsdMethod::kExactLdlt;
+    res.verdict = PsdVerdict::kNotPsd;
+    res.step = static_cast<long>(k);
+    res.pivot_index = perm_[k];
+    res.reason = "exact LDL^T: after " + std::to_string(k) + " positive pivot(s) the pivot of row " +
+                 std::to_string(perm_[k]) + " is negative";
+    if (!witness(k, {k}, &res)) return undecided();
+    return {true, res, {}};
+  }
+
+  /// Step 3, the remaining Schur block after rank_ positive pivots: an entry
+  /// is exactly 0 iff it is 0 mod every prime (`nonzero` says which are not).
+  ModularOutcome decide_schur_block(const std::vector<char>& nonzero) {
+    const std::size_t rest = A_->n - rank_;
+    bool any = false, any_diag = false;
+    for (std::size_t i = 0; i < rest; ++i) {
+      any_diag = any_diag || nonzero[i * rest + i];
+      for (std::size_t j = i; j < rest; ++j) any = any || nonzero[i * rest + j];
+    }
+    if (!any) return {true, zero_schur_block(), {}};
+    if (any_diag) {
+      why_ = "the first prime divides a nonzero Schur diagonal";  // let Bareiss decide
+      return undecided();
+    }
+    return indefinite_pair(nonzero);
+  }
+
+  /// The Schur block is exactly zero: PD when rank_ = n, else PSD of rank rank_.
+  PsdResult zero_schur_block() const {
+    const std::size_t n = A_->n, r = rank_;
+    const std::string how = " (multi-modular: " + std::to_string(primes_.size()) + " primes of 31 bits, CRT)";
+    PsdResult res;
+    res.method = PsdMethod::kExactLdlt;
+    res.step = static_cast<long>(r);
+    res.rank = static_cast<long>(r);
+    if (r == n) {
+      res.verdict = PsdVerdict::kPositiveDefinite;
+      res.reason = "exact LDL^T: all " + std::to_string(n) + " pivots are positive" + how;
+      return res;
+    }
+    res.verdict = PsdVerdict::kPositiveSemidefinite;
+    long first = perm_[r];
+    for (std::size_t i = r; i < n; ++i) first = std::min(first, perm_[i]);
+    res.pivot_index = first;
+    res.reason = "exact LDL^T: " + std::to_string(r) + " positive pivot(s), then the remaining " +
+                 std::to_string(n - r) + "x" + std::to_string(n - r) + " Schur complement is exactly zero (rank " +
+                 std::to_string(r) + " < n = " + std::to_string(n) + ")" + how;
+    return res;
+  }
+
+  /// Zero Schur diagonal but a nonzero entry: NOT_PSD by the 2×2 minor of the
+  /// nonzero entry with the smallest (original row, original column).
+  ModularOutcome indefinite_pair(const std::vector<char>& nonzero) {
+    const std::size_t r = rank_, rest = A_->n - r;
+    std::size_t bi = rest, bj = rest;
+    std::pair<long, long> best{-1, -1};
+    for (std::size_t i = 0; i < rest; ++i)
+      for (std::size_t j = i + 1; j < rest; ++j)
+        if (nonzero[i * rest + j]) {
+          std::pair<long, long> key{std::min(perm_[r + i], perm_[r + j]), std::max(perm_[r + i], perm_[r + j])};
+          if (bi == rest || key < best) {
+            best = key;
+            bi = i;
+            bj = j;
+          }
+        }
+    const std::size_t li = r + (perm_[r + bi] < perm_[r + bj] ? bi : bj);
+    const std::size_t lj = li == r + bi ? r + bj : r + bi;
+    PsdResult res;
+    res.method = PsdMethod::kExactLdlt;
+    res.step = static_cast<long>(r);
+    res.verdict = PsdVerdict::kNotPsd;
+    res.pivot_index = perm_[li];
+    res.reason = "exact LDL^T: after " + std::to_string(r) + " positive pivot(s) the pivot of row " +
+                 std::to_string(perm_[li]) + " is 0 but its row is not (entry with row " + std::to_string(perm_[lj]) +
+                 "): the 2x2 principal minor [[0,b],[b,0]] with b != 0 is indefinite";
+    if (!witness(r, {std::min(li, lj), std::max(li, lj)}, &res, li)) return undecided();
+    return {true, res, {}};
+  }
+
   /// Step 4. K leading pivots; targets t (logical ≥ K, increasing). For one
   /// target: w = Δ_K·[−A₁₁⁻¹A₁ₜ; 1]. For two targets i = `first` and j:
   /// w = w(i) − sign(S_ij)·w(j). Fills res->witness (checked exactly).
   bool witness(std::size_t K, const std::vector<std::size_t>& targets, PsdResult* res, std::size_t first = 0) {
-    std::vector<std::size_t> rows;
-    for (std::size_t i = 0; i < K; ++i) rows.push_back(i);
-    for (std::size_t t : targets) rows.push_back(t);
+    std::vector<std::vector<Word>> wres;
+    if (!witness_residues(K, targets, &wres)) return false;
+    Crt crt(primes_);
+    std::vector<long> coef(targets.size(), 1);
+    if (targets.size() == 2) {
+      // x = e_first − sign(S_ij)·e_other
+      const long s = lifted_sign(crt, wres, 2 * (K + 1));
+      if (s == 0) {
+        why_ = "the off-diagonal Schur entry of the witness lifted to 0";
+        return false;
+      }
+      coef[targets[0] == first ? 1 : 0] = -s;
+    }
+    std::vector<Mpz> w = lifted_witness(crt, K, targets, wres, coef);
+    check_witness(M_, w);
+    res->witness = reduced_witness(w);
+    return true;
+  }
+
+  /// Step 4 mod every prime, in parallel with one residue matrix per worker:
+  /// (*wres)[prime][target·(K+1) + x] holds w entries x < K of that target's
+  /// vector and Δ_K at x = K; for two targets, S_ij·Δ_K follows at the end.
+  /// False (with why_) when a prime divides a pivot of the witness.
+  bool witness_residues(std::size_t K, const std::vector<std::size_t>& targets,
+                        std::vector<std::vector<Word>>* wres) {
+    std::vector<std::size_t> rows = leading_rows(K);
+    rows.insert(rows.end(), targets.begin(), targets.end());
     const std::size_t m = rows.size(), T = targets.size();
-    // residues[prime][target][0..K]: w entries 0..K−1 and Δ_K; plus S_ij·Δ_K.
-    std::vector<std::vector<Word>> wres(primes_.size(), std::vector<Word>(T * (K + 1) + 1, 0));
+    wres->assign(primes_.size(), std::vector<Word>(T * (K + 1) + 1, 0));
     std::vector<char> ok(primes_.size(), 0);
-    parallel_for(primes_.size(), threads_, [&](std::size_t pi, std::vector<Word>& a) {
+    eliminate_mod_each(primes_, rows, K, [&](std::size_t pi, const std::vector<Word>& a, std::vector<Word>& piv,
+                                             const std::vector<Word>& inv) {
       const Word p = primes_[pi];
-      ints_->fill(rows, p, a);
-      std::vector<Word> inv(K);
       Word delta = 1;
-      for (std::size_t k = 0; k < K; ++k) {
-        if (a[k * m + k] == 0 || !inv_mod(a[k * m + k], p, &inv[k])) return;
-        delta = mul_mod(delta, a[k * m + k], p);
-        modular_step(a.data(), m, k, inv[k], p);
-      }
+      for (const Word d : piv) delta = mul_mod(delta, d, p);
       std::vector<Word> w(m);
+      std::vector<Word>& out = (*wres)[pi];
       for (std::size_t t = 0; t < T; ++t) {
-        std::fill(w.begin(), w.end(), 0);
-        w[K + t] = delta;
-        for (std::size_t mm = K; mm-- > 0;) {
-          u128 s = 0;  // < m·2^62: cannot overflow
-          for (std::size_t j = mm + 1; j < m; ++j) s += static_cast<std::uint64_t>(a[mm * m + j]) * w[j];
-          const Word sp = static_cast<Word>(s % p);
-          w[mm] = mul_mod(sp == 0 ? 0 : p - sp, inv[mm], p);
-        }
-        for (std::size_t x = 0; x < K; ++x) wres[pi][t * (K + 1) + x] = w[x];
-        wres[pi][t * (K + 1) + K] = delta;
+        back_substitute_mod(a, m, K, t, inv, delta, p, w);
+        std::copy_n(w.begin(), K, out.begin() + static_cast<std::ptrdiff_t>(t * (K + 1)));
+        out[t * (K + 1) + K] = delta;
       }
-      if (T == 2) wres[pi][T * (K + 1)] = mul_mod(a[K * m + K + 1], delta, p);
+      if (T == 2) out[T * (K + 1)] = mul_mod(a[K * m + K + 1], delta, p);
       ok[pi] = 1;
     });
     for (char c : ok)
@@ -371,22 +463,23 @@ class ModularElimination {
         why_ = "a prime divides a pivot of the witness";
         return false;
       }
-    Crt crt(primes_);
-    // Integer witness on logical rows: Σ_t coef_t · w(t).
+    return true;
+  }
+
+  /// Sign of the integer whose residues stand at `index` of each prime's row.
+  static long lifted_sign(const Crt& crt, const std::vector<std::vector<Word>>& wres, std::size_t index) {
+    Mpz val;
+    crt.lift([&](std::size_t i) { return wres[i][index]; }, val.z);
+    return mpz_sgn(val.z);
+  }
+
+  /// The integer witness Σ_t coef_t · w(t), lifted on logical rows and
+  /// mapped back to the original order.
+  std::vector<Mpz> lifted_witness(const Crt& crt, std::size_t K, const std::vector<std::size_t>& targets,
+                                  const std::vector<std::vector<Word>>& wres, const std::vector<long>& coef) const {
     std::vector<Mpz> w_logical(A_->n);
     Mpz val;
-    std::vector<long> coef(T, 1);
-    if (T == 2) {
-      crt.lift([&](std::size_t i) { return wres[i][T * (K + 1)]; }, val.z);
-      const long s = mpz_sgn(val.z);
-      if (s == 0) {
-        why_ = "the off-diagonal Schur entry of the witness lifted to 0";
-        return false;
-      }
-      // x = e_first − sign(S_ij)·e_other
-      coef[targets[0] == first ? 1 : 0] = -s;
-    }
-    for (std::size_t t = 0; t < T; ++t) {
+    for (std::size_t t = 0; t < targets.size(); ++t) {
       for (std::size_t x = 0; x <= K; ++x) {
         crt.lift([&](std::size_t i) { return wres[i][t * (K + 1) + x]; }, val.z);
         const std::size_t logical = x < K ? x : targets[t];
@@ -398,9 +491,7 @@ class ModularElimination {
     }
     std::vector<Mpz> w(A_->n);
     for (std::size_t i = 0; i < A_->n; ++i) mpz_swap(w[static_cast<std::size_t>(perm_[i])].z, w_logical[i].z);
-    check_witness(M_, w);
-    res->witness = reduced_witness(w);
-    return true;
+    return w;
   }
 
   const Mat<Rational>& M_;
