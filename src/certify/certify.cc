@@ -404,6 +404,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   if (run.kyp && run.feasibility && !out.verified) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
   out.scales = scales;
   out.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.outcome = outcome_of(out, options.objective);
   return out;
 }
 
@@ -424,14 +425,17 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
   out.delta2_solver = toeplitz_norm2(used, horizon, model.ny, model.nz());
   certify_taps(model, es.exp, sim, r, used, horizon, o, solver_name, out);
   if (out.verified) out.upper = objective_at(o.objective, out.delta2, out.dmax2);
+  out.outcome = outcome_of(out, o.objective);
   return out;
 }
 }  // namespace lpvid
 
 namespace lpvid {
+namespace {
 
-CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
-                                          const CertifyOptions& o, SdpSolver& solver) {
+/// certify_fixed_model_paper without its outcome.
+CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in, const CertifyOptions& o,
+                               SdpSolver& solver) {
   CertifiedBounds out;
   const ExactSignals es = exact_signals(model, exp_in);
   const Experiment<Rational>& exp = es.exp;
@@ -464,6 +468,15 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - c.w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
   out.delta2_solver = sol.delta2;
   finish_certificate(c, exp, [&] { return sol.delta2; }, o, solver.name(), out);
+  return out;
+}
+
+}  // namespace
+
+CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
+                                          const CertifyOptions& o, SdpSolver& solver) {
+  CertifiedBounds out = certify_w_form(model, exp_in, o, solver);
+  out.outcome = outcome_of(out, o.objective);
   return out;
 }
 

@@ -90,7 +90,21 @@ struct CertifyOptions {
 /// read as the exact decimal of its shortest text), 0 for fixed bounds.
 Rational objective_at(const BoundObjective& objective, const Rational& delta2, const Rational& dmax2);
 
+/// How a certification ended (typed, so that callers never compare
+/// status strings). Decided in this order:
+enum class CertifyOutcome {
+  kVerified,      ///< a consistency certificate was made and checked exactly
+  kInvalidated,   ///< fixed bounds: an "invalidated" certificate was made and checked exactly
+  kUndecided,     ///< fixed bounds: neither certificate passed the exact check
+  kSolverFailed,  ///< the SDP backend failed (backend error, iteration limit): no bound
+  kNotVerified,   ///< the solver answered, but the exact check did not accept its bounds
+};
+const char* to_string(CertifyOutcome outcome);
+
 struct CertifiedBounds {
+  /// How it ended, decided once by the certifying function (outcome_of);
+  /// front ends map it to their exit codes.
+  CertifyOutcome outcome = CertifyOutcome::kNotVerified;
   bool verified = false;
   std::string reason;           ///< why not verified
   Rational delta2, dmax2;       ///< the certificate's values
@@ -139,17 +153,9 @@ CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<R
                                  const Simulation<Rational>& sim, const Experiment<Rational>& exp,
                                  SignalScales* scales = nullptr);
 
-/// How a certification ended (typed, so that callers never compare
-/// status strings). Decided in this order:
-enum class CertifyOutcome {
-  kVerified,      ///< a consistency certificate was written and checked exactly
-  kInvalidated,   ///< fixed bounds: an "invalidated" certificate was written and checked exactly
-  kUndecided,     ///< fixed bounds: neither certificate passed the exact check
-  kSolverFailed,  ///< the SDP backend failed (backend error, iteration limit): no bound
-  kNotVerified,   ///< the solver answered, but the exact check did not accept its bounds
-};
+/// The outcome of `b` for `objective`, in the order above (every certifying
+/// function stores it in CertifiedBounds::outcome).
 CertifyOutcome outcome_of(const CertifiedBounds& b, const BoundObjective& objective);
-const char* to_string(CertifyOutcome outcome);
 /// The status text of reports and certificates: the solve's status
 /// (to_string(SolveStatus)), or "given taps (no solve)".
 std::string solve_status_text(const CertifiedBounds& b);

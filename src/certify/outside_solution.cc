@@ -116,6 +116,7 @@ CertifiedBounds certify_outside_solution(const LpvModel<Rational>& model, const 
     out.solve_status = sol.status;
     out.reason = outside.solution_name + ": the outside solver's status is " + std::string(to_string(sol.status)) +
                  (sol.message.empty() ? "" : " (" + sol.message + ")") + ": no solution to certify";
+    out.outcome = outcome_of(out, options.objective);
     return out;
   }
   Mat<double> taps;
@@ -125,6 +126,7 @@ CertifiedBounds certify_outside_solution(const LpvModel<Rational>& model, const 
   out.solve_status = sol.status;
   out.delta2_solver = delta2;
   out.solve_seconds = sol.seconds;
+  out.outcome = outcome_of(out, options.objective);
   return out;
 }
 

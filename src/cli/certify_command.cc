@@ -38,7 +38,7 @@ int run_certify(CertifyArgs& a) {
   report["program"] = a.program_path;
   report["solution"] = a.solution_path;
   report["samples"] = in.exp_q.n();
-  const CertifyOutcome outcome = outcome_of(b, in.objective);
+  const CertifyOutcome outcome = b.outcome;
   if (in.objective.kind == BoundObjective::Kind::kFeasibility)
     report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);
   write_json(c.report_path, report);

@@ -255,7 +255,7 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.solver = a.common.solver;
   if (!a.model_out.empty()) write_model_file(a.model_out, result.after.front().model);
   print_and_write_diagnose_report(ri, a.common.report_path);
-  return result.verified() ? kExitOk : kExitNotVerified;
+  return exit_code(result.outcome());
 }
 
 }  // namespace

@@ -80,17 +80,15 @@ int run_identify(IdentifyArgs& a) {
     report["dmax"] = nullptr;
     report["message"] = res.message;
     write_json(a.common.report_path, report);
-    const bool infeasible = res.status == SolveStatus::kPrimalInfeasible;
     // The relaxation (and the alternating method) are restrictions of the
     // BMI: their infeasibility says nothing about the model class.
-    if (infeasible) {
+    if (id.outcome == CertifyOutcome::kUndecided) {
       report["status"] = "undecided";
       write_json(a.common.report_path, report);
       std::cout << "  -> UNDECIDED: the " << (opt.method == IdentifyMethod::kAlternating ? "alternating (local) method" : "relaxation")
                 << " found no consistent model at the given bounds; its infeasibility is not an invalidation of the model class\n";
-      return kExitUndecided;
     }
-    return kExitSolver;
+    return exit_code(id.outcome);
   }
 
   const CertifiedBounds& b = id.bounds;

@@ -43,7 +43,7 @@ int run_invalidate(CommonOptions& c) {
   report["model_as_written"] = "theta = 0 (any correction basis is ignored), x0 as in the model file";
   report["iterations"] = 1;
   report["samples"] = in.exp_q.n();
-  const CertifyOutcome outcome = outcome_of(b, in.objective);
+  const CertifyOutcome outcome = b.outcome;
   if (in.objective.kind == BoundObjective::Kind::kFeasibility) {
     report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);
     if (outcome != CertifyOutcome::kVerified) report["status"] = to_string(outcome);

@@ -18,6 +18,8 @@ bool DiagnoseResult::verified() const {
   return all;
 }
 
+CertifyOutcome DiagnoseResult::outcome() const { return verified() ? CertifyOutcome::kVerified : CertifyOutcome::kNotVerified; }
+
 namespace {
 
 void check_options(const Experiment<double>& est_d, const Experiment<Rational>& est_q,

@@ -103,6 +103,9 @@ struct DiagnoseResult {
   Mat<double> estimation_after;
   /// Every window's bound, before and after, verified exactly.
   bool verified() const;
+  /// kVerified when verified(), else kNotVerified (the report states each
+  /// window's own outcome and reason).
+  CertifyOutcome outcome() const;
 };
 
 /// Runs steps 1–4. `est_q` is the exact copy of `est_d` (the same rows);

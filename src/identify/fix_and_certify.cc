@@ -42,9 +42,13 @@ IdentifiedModel identify_and_certify(const LpvModel<Rational>& model_q, const Lp
                                      SdpSolver& solver) {
   IdentifiedModel out;
   out.fit = identify(model_d, exp_d, identify_options, solver);
-  if (!has_solution(out.fit.status)) return out;
+  if (!has_solution(out.fit.status)) {
+    out.outcome = out.fit.status == SolveStatus::kPrimalInfeasible ? CertifyOutcome::kUndecided : CertifyOutcome::kSolverFailed;
+    return out;
+  }
   out.fixed = fix_parameters(model_q, out.fit.layout, out.fit.p, certify_options.digits);
   out.bounds = certify_identified(out.fixed.model, exp_q, out.fit.taps, certify_options, solver, &out.taps_note);
+  out.outcome = out.bounds.outcome;
   return out;
 }
 

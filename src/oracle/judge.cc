@@ -18,7 +18,7 @@ const char* to_string(OracleVerdict v) {
 ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& objective, const CertificateFiles& files) {
   const std::string& certificate = files.certificate;
   ReferenceResult r;
-  r.outcome = outcome_of(b, objective);
+  r.outcome = outcome_of(b, objective);  // b may be empty (no claim to certify): decided here, not stored
   r.upper_verified = b.verified;
   if (b.verified) {
     r.upper = b.upper;

@@ -49,6 +49,7 @@ TEST(CertificateFiles, WrittenCertificatesPassTheFileLayer) {
   gen::ScratchDir dir("certificate_files");
   const CertifiedBounds b = certified(k, dir, gen::weighted_objective(0.5));
   ASSERT_TRUE(b.verified) << b.reason;
+  EXPECT_EQ(b.outcome, CertifyOutcome::kVerified);
   ASSERT_TRUE(b.certificate.has_value());
   ASSERT_TRUE(b.lower.verified) << b.lower.reason;
   ASSERT_TRUE(b.lower.certificate.has_value());
@@ -98,6 +99,7 @@ TEST(CertificateFiles, NoCertificateNoFile) {
   gen::ScratchDir dir("certificate_files_none");
   CertifiedBounds b;
   b.reason = "the solver stopped";
+  EXPECT_EQ(b.outcome, CertifyOutcome::kNotVerified);  // nothing certified: never "verified" by default
   const CertificateFiles files = write_certificates(b, dir.file("c.json"));
   EXPECT_TRUE(files.certificate.empty());
   EXPECT_TRUE(files.lower.empty());

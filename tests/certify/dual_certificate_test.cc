@@ -67,6 +67,7 @@ RC_GTEST_PROP(DualCertificateProperty, InvalidatedAndConsistentByConstructionNev
   const CertifiedBounds no = written(certify_fixed_model(ic.model, ic.exp, no_options, *solver), path);
   RC_ASSERT(!no.verified);
   RC_ASSERT(no.invalidated);
+  RC_ASSERT(no.outcome == CertifyOutcome::kInvalidated);
   const CertificateVerdict v = check_certificate_file(path);
   RC_ASSERT(v.holds);
   RC_ASSERT(v.claim_text == "invalidated");
