@@ -20,6 +20,7 @@
 #include "diagnose/bound_windows.h"
 #include "diagnose/diagnose.h"
 #include "diagnose/fold_plan.h"
+#include "diagnose/record_roles.h"
 #include "model/model_file.h"
 #include "solvers/external_solvers.h"
 
@@ -71,23 +72,37 @@ int benchmark_warmup(const std::string& name) {
 }
 
 /// Column map of the validation data: est column name → validation name.
-ColumnMap validation_map(const LpvModel<double>& declared, const LpvModel<double>& m,
-                         const std::vector<std::string>& renamed, const std::string& flag) {
-  if (renamed.empty()) return m.columns;
-  std::vector<std::string> from = declared.columns.u;
-  from.insert(from.end(), declared.columns.y.begin(), declared.columns.y.end());
-  if (renamed.size() != from.size())
-    throw InputError(flag + ": expected " + std::to_string(from.size()) +
-                     " names (the model's u columns then y columns), got " + std::to_string(renamed.size()));
-  auto rename = [&](const std::string& c) {
-    for (size_t i = 0; i < from.size(); ++i)
-      if (from[i] == c) return renamed[i];
-    return c;
+/// The records' roles as the options give them (diagnose/record_roles.h).
+RolePlan role_plan(const DiagnoseArgs& a, int warmup) {
+  RolePlan plan;
+  plan.data_path = a.common.data_path;
+  plan.names = a.common.names;
+  if (!a.common.rows_text.empty()) plan.rows = std::make_pair(a.common.row_begin, a.common.row_end);
+  const auto source = [](const std::string& path, const std::vector<std::string>& names,
+                         const std::vector<std::string>& columns, const std::string& rows, const std::string& role) {
+    RecordSource s{path, names, columns, std::nullopt, rows};
+    if (!rows.empty()) s.rows = parse_row_range(rows, "--" + role + "-rows");
+    return s;
   };
-  ColumnMap out = m.columns;
-  for (auto* v : {&out.u, &out.y, &out.rho})
-    for (auto& c : *v) c = rename(c);
-  return out;
+  const bool separate = !a.validation_path.empty() || !a.validation_columns.empty();
+  plan.selection = separate ? SelectionRole::kSeparate : a.folds >= 2 ? SelectionRole::kFolds : SelectionRole::kHoldout;
+  plan.folds = a.folds;
+  plan.warmup = warmup;
+  plan.holdout = a.holdout;
+  if (separate) plan.separate = source(a.validation_path, a.validation_names, a.validation_columns, a.validation_rows, "validation");
+  // the test sets: files x column sets, one of the two given once (or not at all)
+  const size_t n_paths = a.test_paths.size(), n_cols = a.test_columns.size();
+  if (n_paths > 1 && n_cols > 1)
+    throw InputError("--test is given " + std::to_string(n_paths) + " times and --test-columns " +
+                     std::to_string(n_cols) + " times: give several files with one column set, or one file with "
+                     "several column sets");
+  if (!a.test_rows.empty() && n_paths == 0 && n_cols == 0)
+    throw InputError("--test-rows needs a test set (--test or --test-columns)");
+  for (size_t t = 0; t < std::max(n_paths, n_cols); ++t)
+    plan.tests.push_back(source(n_paths == 0 ? std::string() : a.test_paths[std::min(t, n_paths - 1)], a.test_names,
+                                n_cols == 0 ? std::vector<std::string>() : a.test_columns[std::min(t, n_cols - 1)],
+                                a.test_rows, "test"));
+  return plan;
 }
 
 int run_diagnose(DiagnoseArgs& a) {
@@ -109,83 +124,18 @@ int run_diagnose(DiagnoseArgs& a) {
   Inputs in = load_inputs(a.common);
   LpvModel<double> declared = in.model_d;
   if (a.input_scheduling) declared = with_input_scheduling(declared);
-  const long file_offset = a.common.rows_text.empty() ? 0 : a.common.row_begin;
-
-  // estimation (double + exact) and validation experiments
-  const DataTable data =
-      a.common.names.empty() ? read_data_table(a.common.data_path) : read_data_table(a.common.data_path, a.common.names);
-  const TextTable& table = data.table;
-  Experiment<Rational> est_q = make_experiment<Rational>(table, declared.columns);
-  Experiment<double> est_d = make_experiment<double>(table, declared.columns);
-  if (!a.common.rows_text.empty()) {
-    est_q = select_rows(est_q, a.common.row_begin, a.common.row_end);
-    est_d = select_rows(est_d, a.common.row_begin, a.common.row_end);
-  }
-  Experiment<double> val_d;
-  std::string val_text;
-  std::vector<std::string> val_outputs;
-  const bool separate = !a.validation_path.empty() || !a.validation_columns.empty();
-  // Another data set in the roles of selection or test: a file (or --data)
-  // with the model's columns renamed, optionally a window of rows.
-  const auto load_other = [&](const std::string& path, const std::vector<std::string>& names,
-                              const std::vector<std::string>& columns, const std::string& rows, const std::string& role,
-                              std::string& text, std::vector<std::string>& outputs) {
-    const std::string vp = path.empty() ? a.common.data_path : path;
-    const std::vector<std::string>& vn = path.empty() ? a.common.names : names;
-    const TextTable vt = vn.empty() ? read_table(vp) : read_table(vp, vn);
-    const ColumnMap vcols = validation_map(in.model_d, declared, columns, "--" + role + "-columns");
-    Experiment<double> d = make_experiment<double>(vt, vcols);
-    outputs = vcols.y;
-    text = vp;
-    if (!columns.empty()) {
-      text += " columns ";
-      for (size_t i = 0; i < columns.size(); ++i) text += (i ? "," : "") + columns[i];
-    }
-    if (!rows.empty()) {
-      const auto [b, e] = parse_row_range(rows, "--" + role + "-rows");
-      if (e > d.n()) throw InputError("--" + role + "-rows: the " + role + " data has " + std::to_string(d.n()) + " rows");
-      d = select_rows(d, b, e);
-      text += " rows " + rows;
-    }
-    return d;
-  };
-  const bool by_folds = !separate && a.folds >= 2;
-  if (by_folds) {
-    // every estimation row is fitted and held out in turn (diagnose/fold_plan.h);
-    // the last block is what the report's residual analysis and plots show
-    const std::vector<FoldBlock> blocks = blocked_folds(est_d.n(), a.folds, warmup);
-    val_d = select_rows(est_d, blocks.back().first, blocks.back().last);
-    val_text = a.common.data_path + " rows " + std::to_string(file_offset + blocks.back().first) + ":" +
-               std::to_string(file_offset + blocks.back().last);
-  } else if (separate) {
-    val_d = load_other(a.validation_path, a.validation_names, a.validation_columns, a.validation_rows, "validation",
-                       val_text, val_outputs);
-  } else {
-    const Eigen::Index n = est_d.n();
-    const Eigen::Index cut = holdout_cut(n, a.holdout);
-    val_d = select_rows(est_d, cut, n);
-    est_d = select_rows(est_d, 0, cut);
-    est_q = select_rows(est_q, 0, cut);
-    val_text = a.common.data_path + " rows " + std::to_string(file_offset + cut) + ":" + std::to_string(file_offset + n) +
-               " (held out: the last " + std::to_string(n - cut) + " samples, not used to fit)";
-  }
-  // the test sets: files x column sets, one of the two given once (or not at all)
+  // the records in their roles: estimation (fit), selection, tests
+  const RolePlan plan = role_plan(a, warmup);
+  RoleRecords roles = load_role_records(plan, declared, in.model_d);
+  const long file_offset = roles.file_offset;
+  const bool by_folds = plan.selection == SelectionRole::kFolds;
+  Experiment<Rational>& est_q = roles.est_q;
+  Experiment<double>& est_d = roles.est_d;
   std::vector<Experiment<double>> tests;
   std::vector<std::string> test_texts;
-  const size_t n_paths = a.test_paths.size(), n_cols = a.test_columns.size();
-  if (n_paths > 1 && n_cols > 1)
-    throw InputError("--test is given " + std::to_string(n_paths) + " times and --test-columns " +
-                     std::to_string(n_cols) + " times: give several files with one column set, or one file with "
-                     "several column sets");
-  if (!a.test_rows.empty() && n_paths == 0 && n_cols == 0)
-    throw InputError("--test-rows needs a test set (--test or --test-columns)");
-  for (size_t t = 0; t < std::max(n_paths, n_cols); ++t) {
-    std::string text;
-    std::vector<std::string> outputs;
-    tests.push_back(load_other(n_paths == 0 ? std::string() : a.test_paths[std::min(t, n_paths - 1)], a.test_names,
-                               n_cols == 0 ? std::vector<std::string>() : a.test_columns[std::min(t, n_cols - 1)],
-                               a.test_rows, "test", text, outputs));
-    test_texts.push_back(text);
+  for (const RoleRecord& t : roles.tests) {
+    tests.push_back(t.exp);
+    test_texts.push_back(t.text);
   }
 
   // verified bounds before and after, on the bound windows of the estimation data
@@ -214,7 +164,7 @@ int run_diagnose(DiagnoseArgs& a) {
   o.windows = windows;
   o.max_windows = static_cast<size_t>(a.max_windows);
   o.certify = certify_options(a.common, in);
-  o.certify.data = data.reference;  // the bytes est_q was parsed from; rows: set per window
+  o.certify.data = roles.data;  // the bytes est_q was parsed from; rows: set per window
   o.certify.progress = nullptr;  // windows run in parallel: diagnose prints its own progress
   // Many windows: the lower end comes from the K-tap solve's dual lifted to
   // the full horizon, without the extra full-horizon solve.
@@ -233,15 +183,14 @@ int run_diagnose(DiagnoseArgs& a) {
   const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record
   progress("data read (" + std::to_string(est_d.n()) + " estimation rows); fitting the declared model" +
            (by_folds ? " on the whole record and on each fold's training rows" : ""));
-  DiagnoseResult result = diagnose(declared, est_d, est_q, by_folds ? no_selection : val_d, tests, o, *solver);
+  DiagnoseResult result = diagnose(declared, est_d, est_q, by_folds ? no_selection : roles.selection.exp, tests, o, *solver);
   write_diagnose_certificates(result, certificates);  // the Theorem 3.1 windows
 
   DiagnoseReportInputs ri;
   ri.result = &result;
   ri.command_line_data = a.common.data_path;
-  ri.validation = val_text;
-  ri.estimation = a.common.data_path + " rows " + std::to_string(file_offset) + ":" + std::to_string(file_offset + est_d.n()) +
-                  " (fit: every model and candidate)";
+  ri.validation = roles.selection.text;
+  ri.estimation = roles.estimation_text;
   ri.test_sources = test_texts;
   ri.est = &est_d;
   ri.tests = &tests;
@@ -249,7 +198,7 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.fold_warmup = warmup;
   ri.test_warmup = warmup;
   ri.file_row_offset = file_offset;
-  ri.validation_outputs = val_outputs;
+  ri.validation_outputs = roles.selection.outputs;
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;
   ri.solver = a.common.solver;

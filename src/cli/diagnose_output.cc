@@ -440,24 +440,16 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
       list(path, plot_record(rp, path));
     }
     // the fitted static maps of the after model (model/static_blocks.h), over the estimation record's range
-    const auto range_of = [](const Mat<double>& m) {
-      const double lo = m.minCoeff(), hi = m.maxCoeff(), pad = 0.1 * std::max(hi - lo, 1e-12);
-      return std::pair<double, double>{lo - pad, hi + pad};
-    };
     const StaticBlocks<double>& st = res.after_model.statics;
-    if (!st.input.is_identity()) {
-      const auto [lo, hi] = range_of(in.est->u);
+    if (res.input_map_range) {
       const std::string path = d + "input_map.png";
-      list(path, plot_static_map(st.input, lo, hi, "Fitted static input map u' = g_in(u) (" + std::string(to_string(st.input.kind)) + ")",
+      list(path, plot_static_map(st.input, res.input_map_range->lo, res.input_map_range->hi,
+                                 "Fitted static input map u' = g_in(u) (" + std::string(to_string(st.input.kind)) + ")",
                                  "u, the measured input", "u', what the LPV part sees", path));
     }
-    if (st.has_output()) {
-      // g_out's argument v = ŷ + Φ along the estimation record (the model's own x0)
-      const Simulation<double> sim = simulate(res.after_model, *in.est);
-      const Mat<double> v = sim.yhat + sim.offset;
-      const auto [lo, hi] = range_of(v.allFinite() ? v : in.est->y);
+    if (res.output_map_range) {
       const std::string path = d + "output_map.png";
-      list(path, plot_static_map(st.output, lo, hi,
+      list(path, plot_static_map(st.output, res.output_map_range->lo, res.output_map_range->hi,
                                  "Fitted static output map y = g_out(v) (" + std::string(to_string(st.output.kind)) +
                                      "), over the range of v on the estimation record",
                                  "v = yhat + Phi, the LPV part's output", "y = g_out(v)", path));
@@ -477,8 +469,8 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
         tp.u = e.u;
         tp.y = e.y;
         tp.warmup = res.tests[t].before.warmup;
-        warmup_score(res.before_model, e, tp.warmup, &tp.yhat_before);
-        warmup_score(res.after_model, e, tp.warmup, &tp.yhat_after);
+        tp.yhat_before = res.tests[t].y_before;
+        tp.yhat_after = res.tests[t].y_after;
         if (!tp.yhat_before.allFinite() || !tp.yhat_after.allFinite()) continue;
         tp.dmax_after = all_verified ? dmax_after : 0.0;
         tp.input_columns = res.before_model.columns.u;

@@ -8,6 +8,7 @@
 #include "core/parallel_for.h"
 #include "data/experiment_builder.h"
 #include "fit/output_error_fit.h"
+#include "model/simulate.h"
 
 namespace lpvid {
 
@@ -17,6 +18,27 @@ bool DiagnoseResult::verified() const {
     for (const WindowBounds& w : *side) all = all && w.bounds.verified;
   return all;
 }
+
+namespace {
+
+/// [min, max] of m padded by 10 % of its width.
+MapRange padded_range(const Mat<double>& m) {
+  const double lo = m.minCoeff(), hi = m.maxCoeff(), pad = 0.1 * std::max(hi - lo, 1e-12);
+  return {lo - pad, hi + pad};
+}
+
+/// DiagnoseResult::input_map_range, output_map_range.
+void set_map_ranges(DiagnoseResult& out, const Experiment<double>& est_d) {
+  const StaticBlocks<double>& st = out.after_model.statics;
+  if (!st.input.is_identity()) out.input_map_range = padded_range(est_d.u);
+  if (st.has_output()) {
+    const Simulation<double> sim = simulate(out.after_model, est_d);
+    const Mat<double> v = sim.yhat + sim.offset;  // g_out's argument along the estimation record
+    out.output_map_range = padded_range(v.allFinite() ? v : est_d.y);
+  }
+}
+
+}  // namespace
 
 CertifyOutcome DiagnoseResult::outcome() const { return verified() ? CertifyOutcome::kVerified : CertifyOutcome::kNotVerified; }
 
@@ -149,14 +171,15 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   for (const Experiment<double>& test : tests) {
     TestScore t;
     t.samples = test.n();
-    t.before = warmup_score(out.before_model, test, options.test_warmup);
-    t.after = warmup_score(out.after_model, test, options.test_warmup);
+    t.before = warmup_score(out.before_model, test, options.test_warmup, &t.y_before);
+    t.after = warmup_score(out.after_model, test, options.test_warmup, &t.y_after);
     out.tests.push_back(t);
   }
   // 5. what the report shows beside the numbers above
   out.shown = shown_record(out, est_d, selection, options);
   for (const RankingRound& rr : out.rank.rounds) out.estimation_shares.push_back(estimation_shares(rr, est_d));
   validation_rms(out.after_model, est_d, out.shown.init_samples, &out.estimation_after);
+  set_map_ranges(out, est_d);
   if (!out.estimation_after.allFinite()) out.estimation_after.resize(0, 0);
   return out;
 }

@@ -72,6 +72,13 @@ struct DiagnoseOptions {
 struct TestScore {
   Eigen::Index samples = 0;
   FreeRunScore before, after;
+  Mat<double> y_before, y_after;  ///< the two models' free runs on the test record (x0 from its warm-up)
+};
+
+/// An interval of a static map's argument: where the report draws the
+/// fitted map (the estimation record's range, padded by 10 %).
+struct MapRange {
+  double lo = 0, hi = 0;
 };
 
 /// The record the report analyses the residual on: the selection record, or
@@ -101,6 +108,10 @@ struct DiagnoseResult {
   std::vector<std::vector<double>> estimation_shares;
   /// The after model's free run on the estimation record (empty if not finite).
   Mat<double> estimation_after;
+  /// The after model's static maps are drawn over these ranges (set when
+  /// the map is not the identity): u on the estimation record; v = ŷ + Φ
+  /// along it (the model's own x0; y's range when v is not finite).
+  std::optional<MapRange> input_map_range, output_map_range;
   /// Every window's bound, before and after, verified exactly.
   bool verified() const;
   /// kVerified when verified(), else kNotVerified (the report states each
