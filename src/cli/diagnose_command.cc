@@ -163,14 +163,9 @@ int run_diagnose(DiagnoseArgs& a) {
   o.test_warmup = warmup;
   o.windows = windows;
   o.max_windows = static_cast<size_t>(a.max_windows);
-  o.certify = certify_options(a.common, in);
+  o.certify = diagnose_policy(certify_options(a.common, in));
   o.certify.data = roles.data;  // the bytes est_q was parsed from; rows: set per window
-  o.certify.progress = nullptr;  // windows run in parallel: diagnose prints its own progress
-  // Many windows: the lower end comes from the K-tap solve's dual lifted to
-  // the full horizon, without the extra full-horizon solve.
-  o.certify.full_horizon_limit = 0;
   o.certify.lower_end = a.lower_ends;
-  o.certify.scale_signals = true;  // λ on unit-RMS signals (certify/bound_scaling.h)
   o.file_row_offset = file_offset;
   const std::string certificates = certificate_path(a.common);
   o.on_bound = [&certificates](WindowBounds& w, size_t window, size_t windows, bool after) {

@@ -40,6 +40,14 @@ void set_map_ranges(DiagnoseResult& out, const Experiment<double>& est_d) {
 
 }  // namespace
 
+CertifyOptions diagnose_policy(CertifyOptions base) {
+  base.lower_end = false;
+  base.full_horizon_limit = 0;
+  base.scale_signals = true;
+  base.progress = nullptr;
+  return base;
+}
+
 CertifyOutcome DiagnoseResult::outcome() const { return verified() ? CertifyOutcome::kVerified : CertifyOutcome::kNotVerified; }
 
 namespace {

@@ -36,6 +36,15 @@
 
 namespace lpvid {
 
+/// `base` with the certification policy of diagnose: no lower ends (a dual
+/// certificate per window is about 60 MB at 200 SISO rows, and the report
+/// states the upper ends); with many windows, no extra full-horizon solve
+/// (full_horizon_limit 0: a lower end, when asked for, comes from the K-tap
+/// solve's dual lifted to the full horizon); the weighted objective on
+/// unit-RMS signals (scale_signals, certify/bound_scaling.h); no per-stage
+/// progress (windows run in parallel; diagnose reports each window).
+CertifyOptions diagnose_policy(CertifyOptions base);
+
 struct DiagnoseOptions {
   RankingOptions ranking;
   /// Windows of the estimation record on which the bounds are certified;
@@ -45,12 +54,10 @@ struct DiagnoseOptions {
   /// record, first and last kept); 0: all. A 10 000-sample record has 50
   /// default windows.
   size_t max_windows = 0;
-  /// Options of every certificate (lower_end: also a dual certificate of the
-  /// lower end per window, ".lower.json", 60 MB at 200 SISO rows; off by
-  /// default in `lpvid diagnose`, whose report states the upper ends). The
-  /// certificates stay in the result (WindowBounds::bounds); the front end
-  /// names and writes them.
-  CertifyOptions certify;
+  /// Options of every certificate, with diagnose's policy (diagnose_policy)
+  /// by default. The certificates stay in the result (WindowBounds::bounds);
+  /// the front end names and writes them.
+  CertifyOptions certify = diagnose_policy(CertifyOptions{});
   /// Called from the certifying job's thread as soon as a window's bound is
   /// certified (`window` of `windows`, before or after): a front end writes
   /// its certificates then and names the file in w.certificate (which the
