@@ -54,16 +54,9 @@ void write_case_folder(const std::string& folder, const GeneratedCase& c) {
   std::error_code ec;
   fs::create_directories(folder, ec);
   if (ec) throw IoError("cannot create the case folder '" + folder + "': " + ec.message());
-  const LpvModel<Rational>& m = c.random.model;
-  const Experiment<Rational>& e = c.random.exp;
-  std::vector<TextColumn> cols;
-  for (size_t j = 0; j < m.columns.u.size(); ++j) cols.push_back({m.columns.u[j], column_text(e.u, static_cast<Eigen::Index>(j))});
-  for (size_t j = 0; j < m.columns.y.size(); ++j) cols.push_back({m.columns.y[j], column_text(e.y, static_cast<Eigen::Index>(j))});
-  for (size_t j = 0; j < m.columns.rho.size(); ++j)
-    cols.push_back({m.columns.rho[j], column_text(e.rho, static_cast<Eigen::Index>(j))});
   const fs::path dir(folder);
-  write_csv((dir / c.task.data).string(), cols);
-  write_model_file((dir / c.task.model).string(), m);
+  write_csv((dir / c.task.data).string(), experiment_columns(c.random.model.columns, c.random.exp));
+  write_model_file((dir / c.task.model).string(), c.random.model);
   write_model_file((dir / "truth.json").string(), c.random.truth);
   write_text_file((dir / "task.json").string(), task_json(c.task), "task");
 }

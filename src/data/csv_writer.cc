@@ -41,4 +41,15 @@ std::vector<std::string> column_text(const Mat<double>& m, Eigen::Index j) {
   return out;
 }
 
+std::vector<TextColumn> experiment_columns(const ColumnMap& columns, const Experiment<Rational>& e) {
+  std::vector<TextColumn> cols;
+  const auto add = [&cols](const std::vector<std::string>& names, const Mat<Rational>& m) {
+    for (size_t j = 0; j < names.size(); ++j) cols.push_back({names[j], column_text(m, static_cast<Eigen::Index>(j))});
+  };
+  add(columns.u, e.u);
+  add(columns.y, e.y);
+  add(columns.rho, e.rho);
+  return cols;
+}
+
 }  // namespace lpvid

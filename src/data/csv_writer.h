@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "core/scalar.h"
+#include "data/column_map.h"
+#include "data/experiment.h"
 
 namespace lpvid {
 
@@ -23,5 +25,9 @@ std::string csv_text(const std::vector<TextColumn>& columns);
 /// it terminates, else p/q); shortest round-trip text (double).
 std::vector<std::string> column_text(const Mat<Rational>& m, Eigen::Index j);
 std::vector<std::string> column_text(const Mat<double>& m, Eigen::Index j);
+
+/// The columns of an exact experiment under the names of `columns`: u, then
+/// y, then ρ, each in exact text (what a data file of that model holds).
+std::vector<TextColumn> experiment_columns(const ColumnMap& columns, const Experiment<Rational>& e);
 
 }  // namespace lpvid

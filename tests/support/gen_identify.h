@@ -104,12 +104,7 @@ T sample(const rc::Gen<T>& g, uint64_t seed, int size = 50) {
 
 /// Writes u, y, ρ under the model's column names (exact decimal text).
 inline void write_experiment_csv(const std::string& path, const LpvModel<Rational>& model, const Experiment<Rational>& e) {
-  std::vector<TextColumn> cols;
-  for (size_t j = 0; j < model.columns.u.size(); ++j) cols.push_back({model.columns.u[j], column_text(e.u, static_cast<Eigen::Index>(j))});
-  for (size_t j = 0; j < model.columns.y.size(); ++j) cols.push_back({model.columns.y[j], column_text(e.y, static_cast<Eigen::Index>(j))});
-  for (size_t j = 0; j < model.columns.rho.size(); ++j)
-    cols.push_back({model.columns.rho[j], column_text(e.rho, static_cast<Eigen::Index>(j))});
-  write_csv(path, cols);
+  write_csv(path, experiment_columns(model.columns, e));
 }
 
 /// Reads a data file for a model, as the CLI does (exact or nearest double).
