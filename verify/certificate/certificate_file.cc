@@ -14,9 +14,8 @@
 namespace lpvid {
 namespace {
 
-/// The dual claims' fields (certificate_file.h).
-void parse_dual_claim(const JsonNode& root, const std::string& file, const std::string& claim, Certificate& c) {
-  c.claim = claim == "invalidated" ? CertificateClaim::kInvalidated : CertificateClaim::kLowerBound;
+/// A dual claim's form and objective (which bound it claims).
+void parse_dual_form(const JsonNode& root, const std::string& file, Certificate& c) {
   for (const char* key : {"delta_taps", "delta_horizon", "w"})
     if (const JsonNode* n = root.find(key)) throw_input_error(file, n->line, key, "dual claims do not carry this key");
   const std::string form = string_member(root, "form", file, "");
@@ -35,6 +34,10 @@ void parse_dual_claim(const JsonNode& root, const std::string& file, const std::
     throw_input_error(file, objective_node.line, "objective",
                       invalidated ? "the claim \"invalidated\" needs objective \"feasibility\""
                                   : "a lower bound needs objective \"min_delta\", \"min_dmax\" or \"weighted\"");
+}
+
+/// The values the objective fixes (δ², d_max², λ) and the claimed lower end.
+void parse_dual_values(const JsonNode& root, const std::string& file, Certificate& c) {
   const bool delta_fixed = c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDmax2;
   const bool dmax_fixed = c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDelta2;
   const auto fixed = [&](const char* key, bool wanted, Rational& out) {
@@ -49,53 +52,42 @@ void parse_dual_claim(const JsonNode& root, const std::string& file, const std::
   fixed("lambda", c.objective == DualClaim::kWeighted, c.lambda);
   if (c.objective == DualClaim::kWeighted && c.lambda > 1)
     throw_input_error(file, member(root, "lambda", file, "").line, "lambda", "must be in [0, 1]");
-  if (invalidated) {
+  if (c.claim == CertificateClaim::kInvalidated) {
     if (const JsonNode* n = root.find("lower_bound"))
       throw_input_error(file, n->line, "lower_bound", "the claim \"invalidated\" carries no lower_bound");
   } else {
     c.lower_bound = number_from_json<Rational>(member(root, "lower_bound", file, ""), file, "lower_bound");
   }
-  const JsonNode& dual = member(root, "dual", file, "");
-  if (!dual.is_object()) throw_input_error(file, dual.line, "dual", "expected an object");
-  const bool path = c.form == CertificateForm::kDualDeltaPath;
-  for (const auto& [key, value] : dual.members) {
-    const bool common = key == "horizon" || key == "sigma" || key == "g";
-    const bool own = path ? (key == "taps" || key == "t" || key == "mu" || key == "u_exponent" || key == "x" || key == "u_floor")
-                          : key == "Y1";
-    if (!common && !own) throw_input_error(file, value.line, "dual." + key, "unknown key for form \"" + form + "\"");
-  }
-  const JsonNode& horizon = member(dual, "horizon", file, "dual");
-  c.dual.horizon = integer_member(horizon, file, "dual.horizon");
-  if (c.dual.horizon < 1) throw_input_error(file, horizon.line, "dual.horizon", "must be at least 1");
-  c.dual.sigma = number_from_json<Rational>(member(dual, "sigma", file, "dual"), file, "dual.sigma");
-  const Eigen::Index ny = c.model.ny, nz = c.model.nz();
-  c.dual.g = matrix_member(member(dual, "g", file, "dual"), file, "dual.g", ny);
-  if (path) {
-    PathDualRecipe& p = c.dual.path;
-    const JsonNode& taps = member(dual, "taps", file, "dual");
-    p.taps = matrix_member(taps, file, "dual.taps", ny * nz);
-    if (p.taps.rows() != c.dual.horizon)
-      throw_input_error(file, taps.line, "dual.taps", "expected " + std::to_string(c.dual.horizon) + " rows (the horizon)");
-    const auto positive = [&](const char* key, Rational& out, bool strictly) {
-      const JsonNode& n = member(dual, key, file, "dual");
-      out = number_from_json<Rational>(n, file, std::string("dual.") + key);
-      if (strictly ? !(out > 0) : out < 0)
-        throw_input_error(file, n.line, std::string("dual.") + key, strictly ? "must be > 0" : "must be >= 0");
-    };
-    positive("t", p.t, true);
-    positive("mu", p.mu, true);
-    positive("x", p.x, true);
-    positive("u_floor", p.floor, false);
-    const JsonNode& e = member(dual, "u_exponent", file, "dual");
-    const Rational ev = number_from_json<Rational>(e, file, "dual.u_exponent");
-    if (mpz_cmp_ui(mpq_denref(ev.mpq()), 1) != 0 || ev < Rational(-4000) || ev > Rational(4000))
-      throw_input_error(file, e.line, "dual.u_exponent", "must be an integer in [-4000, 4000]");
-    p.u_exponent = mpz_get_si(mpq_numref(ev.mpq()));
-    return;
-  }
-  // Y1: upper-triangle rows, row i holds columns i … P−1.
+}
+
+/// Form "dual_delta_path": the recipe Y1 is rebuilt from (verify/certificate/path_dual.h).
+void parse_path_recipe(const JsonNode& dual, const std::string& file, Certificate& c) {
+  PathDualRecipe& p = c.dual.path;
+  const JsonNode& taps = member(dual, "taps", file, "dual");
+  p.taps = matrix_member(taps, file, "dual.taps", c.model.ny * c.model.nz());
+  if (p.taps.rows() != c.dual.horizon)
+    throw_input_error(file, taps.line, "dual.taps", "expected " + std::to_string(c.dual.horizon) + " rows (the horizon)");
+  const auto positive = [&](const char* key, Rational& out, bool strictly) {
+    const JsonNode& n = member(dual, key, file, "dual");
+    out = number_from_json<Rational>(n, file, std::string("dual.") + key);
+    if (strictly ? !(out > 0) : out < 0)
+      throw_input_error(file, n.line, std::string("dual.") + key, strictly ? "must be > 0" : "must be >= 0");
+  };
+  positive("t", p.t, true);
+  positive("mu", p.mu, true);
+  positive("x", p.x, true);
+  positive("u_floor", p.floor, false);
+  const JsonNode& e = member(dual, "u_exponent", file, "dual");
+  const Rational ev = number_from_json<Rational>(e, file, "dual.u_exponent");
+  if (mpz_cmp_ui(mpq_denref(ev.mpq()), 1) != 0 || ev < Rational(-4000) || ev > Rational(4000))
+    throw_input_error(file, e.line, "dual.u_exponent", "must be an integer in [-4000, 4000]");
+  p.u_exponent = mpz_get_si(mpq_numref(ev.mpq()));
+}
+
+/// Form "dual_delta": Y1 as upper-triangle rows, row i holds columns i … P−1.
+void parse_dense_y1(const JsonNode& dual, const std::string& file, Certificate& c) {
   const JsonNode& y1 = member(dual, "Y1", file, "dual");
-  const long P = c.dual.horizon * static_cast<long>(ny + nz);
+  const long P = c.dual.horizon * static_cast<long>(c.model.ny + c.model.nz());
   if (!y1.is_array() || static_cast<long>(y1.items.size()) != P)
     throw_input_error(file, y1.line, "dual.Y1",
                       "expected " + std::to_string(P) + " upper-triangle rows (horizon*(ny+nz))");
@@ -114,24 +106,38 @@ void parse_dual_claim(const JsonNode& root, const std::string& file, const std::
   }
 }
 
-}  // namespace
-
-const char* to_string(CertificateClaim c) {
-  switch (c) {
-    case CertificateClaim::kConsistent:
-      return "consistent";
-    case CertificateClaim::kInvalidated:
-      return "invalidated";
-    case CertificateClaim::kLowerBound:
-      return "lower_bound";
-    case CertificateClaim::kNotAWitness:
-      return "not_a_witness";
+/// The dual point: horizon, σ, g, then the form's own fields.
+void parse_dual_point(const JsonNode& root, const std::string& file, Certificate& c) {
+  const JsonNode& dual = member(root, "dual", file, "");
+  if (!dual.is_object()) throw_input_error(file, dual.line, "dual", "expected an object");
+  const bool path = c.form == CertificateForm::kDualDeltaPath;
+  for (const auto& [key, value] : dual.members) {
+    const bool common = key == "horizon" || key == "sigma" || key == "g";
+    const bool own = path ? (key == "taps" || key == "t" || key == "mu" || key == "u_exponent" || key == "x" || key == "u_floor")
+                          : key == "Y1";
+    if (!common && !own)
+      throw_input_error(file, value.line, "dual." + key,
+                        std::string("unknown key for form \"") + (path ? "dual_delta_path" : "dual_delta") + "\"");
   }
-  return "?";
+  const JsonNode& horizon = member(dual, "horizon", file, "dual");
+  c.dual.horizon = integer_member(horizon, file, "dual.horizon");
+  if (c.dual.horizon < 1) throw_input_error(file, horizon.line, "dual.horizon", "must be at least 1");
+  c.dual.sigma = number_from_json<Rational>(member(dual, "sigma", file, "dual"), file, "dual.sigma");
+  c.dual.g = matrix_member(member(dual, "g", file, "dual"), file, "dual.g", c.model.ny);
+  if (path) parse_path_recipe(dual, file, c);
+  else parse_dense_y1(dual, file, c);
 }
 
-Certificate parse_certificate(std::string_view text, const std::string& file) {
-  const JsonNode root = parse_exact_json(text, file);
+/// The dual claims' fields (certificate_file.h).
+void parse_dual_claim(const JsonNode& root, const std::string& file, const std::string& claim, Certificate& c) {
+  c.claim = claim == "invalidated" ? CertificateClaim::kInvalidated : CertificateClaim::kLowerBound;
+  parse_dual_form(root, file, c);
+  parse_dual_values(root, file, c);
+  parse_dual_point(root, file, c);
+}
+
+/// The top level: known keys only, the format, the claim (returned) and the noise normalisation.
+std::string parse_header(const JsonNode& root, const std::string& file) {
   if (!root.is_object()) throw_input_error(file, root.line, "", "a certificate is a JSON object");
   static const std::vector<std::string> allowed = {"format", "claim", "data", "model", "toeplitz_mode",
                                                    "noise_normalisation", "delta2", "dmax2", "form",
@@ -148,8 +154,11 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
                       "expected \"consistent\", \"invalidated\", \"lower_bound\" or \"not_a_witness\"");
   if (string_member(root, "noise_normalisation", file, "") != "rms")
     throw_input_error(file, root.line, "noise_normalisation", "expected \"rms\" (||d||^2 <= n*ny*dmax^2)");
+  return claim;
+}
 
-  Certificate c;
+/// "data": file, sha256, names, rows.
+void parse_data_reference(const JsonNode& root, const std::string& file, Certificate& c) {
   const JsonNode& data = member(root, "data", file, "");
   if (!data.is_object()) throw_input_error(file, data.line, "data", "expected an object");
   c.data_file = string_member(data, "file", file, "data");
@@ -168,13 +177,10 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
     c.row_end = integer_member(rows->items[1], file, "data.rows[1]");
     if (c.row_end <= c.row_begin) throw_input_error(file, rows->line, "data.rows", "empty window");
   }
-  c.model = model_from_json<Rational>(member(root, "model", file, ""), file, "model");
-  c.mode = toeplitz_mode_from_string(string_member(root, "toeplitz_mode", file, ""));
-  if (claim == "invalidated" || claim == "lower_bound") {
-    parse_dual_claim(root, file, claim, c);
-    return c;
-  }
-  if (claim == "not_a_witness") c.claim = CertificateClaim::kNotAWitness;
+}
+
+/// A primal point ("consistent", "not_a_witness"): δ², d_max² and the Δ taps or w.
+void parse_primal_point(const JsonNode& root, const std::string& file, Certificate& c) {
   for (const char* key : {"objective", "lambda", "lower_bound", "dual"})
     if (const JsonNode* n = root.find(key)) throw_input_error(file, n->line, key, "only dual claims carry this key");
   c.delta2 = number_from_json<Rational>(member(root, "delta2", file, ""), file, "delta2");
@@ -197,6 +203,37 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
   } else {
     throw_input_error(file, member(root, "form", file, "").line, "form", "expected \"delta\" or \"w\"");
   }
+}
+
+}  // namespace
+
+const char* to_string(CertificateClaim c) {
+  switch (c) {
+    case CertificateClaim::kConsistent:
+      return "consistent";
+    case CertificateClaim::kInvalidated:
+      return "invalidated";
+    case CertificateClaim::kLowerBound:
+      return "lower_bound";
+    case CertificateClaim::kNotAWitness:
+      return "not_a_witness";
+  }
+  return "?";
+}
+
+Certificate parse_certificate(std::string_view text, const std::string& file) {
+  const JsonNode root = parse_exact_json(text, file);
+  const std::string claim = parse_header(root, file);
+  Certificate c;
+  parse_data_reference(root, file, c);
+  c.model = model_from_json<Rational>(member(root, "model", file, ""), file, "model");
+  c.mode = toeplitz_mode_from_string(string_member(root, "toeplitz_mode", file, ""));
+  if (claim == "invalidated" || claim == "lower_bound") {
+    parse_dual_claim(root, file, claim, c);
+    return c;
+  }
+  if (claim == "not_a_witness") c.claim = CertificateClaim::kNotAWitness;
+  parse_primal_point(root, file, c);
   return c;
 }
 
