@@ -115,36 +115,27 @@ ShownRecord shown_record(const DiagnoseResult& out, const Experiment<double>& es
 
 }  // namespace
 
-DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_d,
-                        const Experiment<Rational>& est_q, const Experiment<double>& selection,
-                        const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options,
-                        SdpSolver& solver) {
-  const std::vector<RowWindow> windows =
-      spread_windows(options.windows.empty() ? default_bound_windows(est_q.n()) : options.windows, options.max_windows);
-  check_options(est_d, est_q, selection, tests, options, windows);
-  if (options.ranking.progress) {  // what the certification at the end will cost, said before any work
-    const BoundCost cost = estimate_bound_cost(windows, declared.ny, declared.nz(), options.certify.lower_end);
-    char buf[400];
-    std::snprintf(buf, sizeof buf,
-                  "bounds at the end: %zu windows x (before, after), expected roughly %.0f s and %.1f MB of "
-                  "certificates%s (--max-windows N caps the windows%s)",
-                  windows.size(), cost.seconds, cost.megabytes,
-                  options.certify.lower_end ? " with the lower ends' dual certificates" : "",
-                  options.certify.lower_end ? "; without --lower-ends no dual certificates are written" : "");
-    options.ranking.progress(buf);
-  }
+namespace {
 
-  // 1. effects: fitted on the estimation data, chosen on the selection data
-  DiagnoseResult out;
-  out.rank = rank_effects(declared, est_d, selection, options.ranking);
-  // 2. the numbers the certificates state
-  out.before_model = round_fitted_model(out.rank.before);
-  out.after_model = round_fitted_model(out.rank.after);
-  restate_parameters(out.rank, out.after_model);  // the report's values are the certified model's
-  out.before_model.signal_info = out.after_model.signal_info = declared.signal_info;  // fits build new models
+/// What the certification at the end will cost, said before any work.
+void announce_bound_cost(const std::vector<RowWindow>& windows, const LpvModel<double>& declared, const DiagnoseOptions& options) {
+  if (!options.ranking.progress) return;
+  const BoundCost cost = estimate_bound_cost(windows, declared.ny, declared.nz(), options.certify.lower_end);
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "bounds at the end: %zu windows x (before, after), expected roughly %.0f s and %.1f MB of "
+                "certificates%s (--max-windows N caps the windows%s)",
+                windows.size(), cost.seconds, cost.megabytes,
+                options.certify.lower_end ? " with the lower ends' dual certificates" : "",
+                options.certify.lower_end ? "; without --lower-ends no dual certificates are written" : "");
+  options.ranking.progress(buf);
+}
 
-  // 3. Theorem 2.1 on every window, before and after: one independent job each
-  // (core/parallel_for.h); SDP solves serialise inside (solvers/sdp_solver.cc).
+/// Step 3: Theorem 2.1 on every window, before and after: one independent
+/// job each (core/parallel_for.h); SDP solves serialise inside
+/// (solvers/sdp_solver.cc).
+void certify_windows(DiagnoseResult& out, const std::vector<RowWindow>& windows, const Experiment<double>& est_d,
+                     const Experiment<Rational>& est_q, const DiagnoseOptions& options, SdpSolver& solver) {
   out.before.resize(windows.size());
   out.after.resize(windows.size());
   const unsigned threads = options.make_solver ? std::max(1u, options.threads) : 1u;
@@ -153,11 +144,10 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   parallel_for(2 * windows.size(), threads, [&](size_t job) {
     const size_t i = job / 2;
     const bool after = job % 2 == 1;
-    const CertifyOptions& wo = options.certify;
     auto own = threads > 1 ? options.make_solver() : nullptr;
     WindowBounds& w = (after ? out.after : out.before)[i];
     w = certify_window(after ? out.after_model : out.before_model, est_d, est_q, windows[i].first, windows[i].second,
-                       options.file_row_offset, wo, own ? *own : solver);
+                       options.file_row_offset, options.certify, own ? *own : solver);
     if (options.on_bound) options.on_bound(w, i, windows.size(), after);
     if (options.ranking.progress) {
       const std::lock_guard<std::mutex> lock(report);
@@ -168,14 +158,10 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
                                                    : "NOT verified (" + w.bounds.reason + ")"));
     }
   });
-  if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
-  const CertifyOptions& co = options.certify;
-  out.before_id = identify_on_window(out.before_model, est_d, est_q, windows[0].first, windows[0].second,
-                                     options.file_row_offset, co, solver);
-  out.after_id = identify_on_window(out.after_model, est_d, est_q, windows[0].first, windows[0].second,
-                                    options.file_row_offset, co, solver);
+}
 
-  // 4. the test role, scored once per test set, after everything above was chosen
+/// Step 4: the test role, scored once per test set, after everything else was chosen.
+void score_tests(DiagnoseResult& out, const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options) {
   for (const Experiment<double>& test : tests) {
     TestScore t;
     t.samples = test.n();
@@ -183,6 +169,37 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
     t.after = warmup_score(out.after_model, test, options.test_warmup, &t.y_after);
     out.tests.push_back(t);
   }
+}
+
+}  // namespace
+
+DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_d,
+                        const Experiment<Rational>& est_q, const Experiment<double>& selection,
+                        const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options,
+                        SdpSolver& solver) {
+  const std::vector<RowWindow> windows =
+      spread_windows(options.windows.empty() ? default_bound_windows(est_q.n()) : options.windows, options.max_windows);
+  check_options(est_d, est_q, selection, tests, options, windows);
+  announce_bound_cost(windows, declared, options);
+
+  // 1. effects: fitted on the estimation data, chosen on the selection data
+  DiagnoseResult out;
+  out.rank = rank_effects(declared, est_d, selection, options.ranking);
+  // 2. the numbers the certificates state
+  out.before_model = round_fitted_model(out.rank.before);
+  out.after_model = round_fitted_model(out.rank.after);
+  restate_parameters(out.rank, out.after_model);  // the report's values are the certified model's
+  out.before_model.signal_info = out.after_model.signal_info = declared.signal_info;  // fits build new models
+
+  // 3. Theorem 2.1 on every window; Theorem 3.1 on the first
+  certify_windows(out, windows, est_d, est_q, options, solver);
+  if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
+  out.before_id = identify_on_window(out.before_model, est_d, est_q, windows[0].first, windows[0].second,
+                                     options.file_row_offset, options.certify, solver);
+  out.after_id = identify_on_window(out.after_model, est_d, est_q, windows[0].first, windows[0].second,
+                                    options.file_row_offset, options.certify, solver);
+  // 4. the test role
+  score_tests(out, tests, options);
   // 5. what the report shows beside the numbers above
   out.shown = shown_record(out, est_d, selection, options);
   for (const RankingRound& rr : out.rank.rounds) out.estimation_shares.push_back(estimation_shares(rr, est_d));

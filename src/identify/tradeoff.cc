@@ -40,6 +40,45 @@ std::vector<double> default_lambda_grid() {
   return g;
 }
 
+namespace {
+
+/// The point's identification at λ (Theorem 3.1, relaxed or iterated): the
+/// relaxation's values and the model with the rounded θ folded in; false
+/// (with the reason in pt.bounds) when no iterate solved.
+bool identify_point(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d, const Experiment<double>& exp_d,
+                    const TradeoffOptions& o, const BoundObjective& obj, int digits, SdpSolver& solver, TradeoffPoint& pt,
+                    LpvModel<Rational>& fixed) {
+  IdentifyOptions io;
+  io.objective = obj;
+  io.iterate = o.iterate;
+  io.max_iterations = o.max_iterations;
+  io.rel_tol = o.rel_tol;
+  io.unknowns = o.unknowns;
+  io.solver = o.solver;
+  const IdentifyResult res = identify(model_d, exp_d, io, solver);
+  pt.status = res.status;
+  pt.relaxation = res.relaxation;
+  pt.solves = static_cast<int>(res.iterates.size());
+  if (res.iterates.empty() || !has_solution(res.iterates.front().status)) {
+    pt.bounds.reason = std::string("the identification solve ended with status ") + to_string(res.status) +
+                       (res.message.empty() ? "" : ": " + res.message);
+    return false;
+  }
+  // The accepted iterate is the one with the smallest objective.
+  const IterateRecord* best = nullptr;
+  for (const IterateRecord& it : res.iterates)
+    if (has_solution(it.status) && (!best || it.objective < best->objective)) best = &it;
+  pt.delta_solver = std::sqrt(std::max(0.0, best->delta2));
+  pt.dmax_solver = std::sqrt(std::max(0.0, best->dmax2));
+  FixedParameters fp = fix_parameters(model_q, res.layout, res.p, digits);
+  pt.p = fp.value;
+  pt.layout = res.layout;
+  fixed = std::move(fp.model);
+  return true;
+}
+
+}  // namespace
+
 std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                                           const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                           const TradeoffOptions& o, SdpSolver& solver) {
@@ -63,40 +102,12 @@ std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, con
     LpvModel<Rational> fixed = model_q;
     bool have_model = true;
     if (unknowns) {
-      IdentifyOptions io;
-      io.objective = obj;
-      io.iterate = o.iterate;
-      io.max_iterations = o.max_iterations;
-      io.rel_tol = o.rel_tol;
-      io.unknowns = o.unknowns;
-      io.solver = o.solver;
-      const IdentifyResult res = identify(model_d, exp_d, io, solver);
-      pt.status = res.status;
-      pt.relaxation = res.relaxation;
-      pt.solves = static_cast<int>(res.iterates.size());
-      have_model = !res.iterates.empty() && has_solution(res.iterates.front().status);
-      if (have_model) {
-        // The accepted iterate is the one with the smallest objective.
-        const IterateRecord* best = nullptr;
-        for (const IterateRecord& it : res.iterates)
-          if (has_solution(it.status) && (!best || it.objective < best->objective)) best = &it;
-        pt.delta_solver = std::sqrt(std::max(0.0, best->delta2));
-        pt.dmax_solver = std::sqrt(std::max(0.0, best->dmax2));
-        FixedParameters fp = fix_parameters(model_q, res.layout, res.p, co.digits);
-        pt.p = fp.value;
-        pt.layout = res.layout;
-        fixed = std::move(fp.model);
-      } else {
-        pt.bounds.reason = std::string("the identification solve ended with status ") + to_string(res.status) +
-                           (res.message.empty() ? "" : ": " + res.message);
-      }
+      have_model = identify_point(model_q, model_d, exp_d, o, obj, co.digits, solver, pt, fixed);
     } else {
       pt.status = SolveStatus::kOptimal;
       pt.relaxation = "none (fixed model: Theorem 2.1)";
     }
-    if (have_model) {
-      pt.bounds = certify_fixed_model(fixed, exp_q, co, solver);
-    }
+    if (have_model) pt.bounds = certify_fixed_model(fixed, exp_q, co, solver);
     pt.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.push_back(pt);
     if (o.on_point) o.on_point(out.back());
