@@ -64,6 +64,40 @@ Vec<double> alternating_parameter_step(const AffineResidual<double>& a, const Ma
   return p;
 }
 
+namespace {
+
+/// The Δ step: Theorem 2.1 at the fixed model p (KYP form, K taps), jointly
+/// with the parameters that do not move z (their span E; the p step
+/// recovers them: it minimises over all p, so it does at least as well).
+/// Sets the record's status, taps and δ², and the result's status and message.
+IterateRecord delta_step(const AffineResidual<double>& a, const Vec<double>& p, const Mat<double>& E,
+                         const BoundObjective& inner, const IdentifyOptions& options, SdpSolver& solver,
+                         IdentifyResult& out) {
+  const DeltaKypSolution ds = solve_delta_kyp(unstack_rows(a.z(p), a.nz), unstack_rows(a.r(p), a.ny), inner, solver,
+                                              options.solver, options.taps, E);
+  IterateRecord rec;
+  rec.status = ds.solve.status;
+  out.status = ds.solve.status;
+  out.message = ds.solve.message;
+  if (!has_solution(ds.solve.status)) return rec;
+  rec.taps = ds.taps;
+  rec.delta2 = ds.delta2;
+  return rec;
+}
+
+/// A fixed (δ, d_max): the accepted iterate's d_max must reach the given
+/// one; otherwise "infeasible" for this local method (never an invalidation).
+void judge_given_dmax(const BoundObjective& objective, const IterateRecord& accepted, IdentifyResult& out) {
+  const double given = objective.dmax * objective.dmax;
+  if (accepted.dmax2 > given) {
+    out.status = SolveStatus::kPrimalInfeasible;
+    out.message = "alternating descent found no parameters with dmax <= the given bound at the given delta (a "
+                  "local method: this does not invalidate the model class)";
+  }
+}
+
+}  // namespace
+
 IdentifyResult identify_alternating(const LpvModel<double>& model, const Experiment<double>& exp_in,
                                     const IdentifyOptions& options, SdpSolver& solver) {
   const Experiment<double> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
@@ -86,17 +120,9 @@ IdentifyResult identify_alternating(const LpvModel<double>& model, const Experim
   IterateRecord accepted;
   for (int it = 0; it < std::max(1, options.max_iterations); ++it) {
     const auto start = std::chrono::steady_clock::now();
-    // Δ step: Theorem 2.1 at the fixed model p (KYP form, K taps), jointly with
-    // the parameters that do not move z (their span E; the p step below
-    // recovers them: it minimises over all p, so it does at least as well).
-    const DeltaKypSolution ds = solve_delta_kyp(unstack_rows(a.z(p), a.nz), unstack_rows(a.r(p), a.ny), inner,
-                                                solver, options.solver, options.taps, E);
-    IterateRecord rec;
+    IterateRecord rec = delta_step(a, p, E, inner, options, solver, out);
     rec.index = it;
-    rec.status = ds.solve.status;
-    out.status = ds.solve.status;
-    out.message = ds.solve.message;
-    if (!has_solution(ds.solve.status)) {
+    if (!has_solution(rec.status)) {
       rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       out.iterates.push_back(rec);
       if (!have) {
@@ -107,9 +133,7 @@ IdentifyResult identify_alternating(const LpvModel<double>& model, const Experim
       break;  // keep the last good iterate
     }
     // p step: least squares with Δ fixed.
-    rec.p = alternating_parameter_step(a, ds.taps, &dmax2);
-    rec.taps = ds.taps;
-    rec.delta2 = ds.delta2;
+    rec.p = alternating_parameter_step(a, rec.taps, &dmax2);
     rec.dmax2 = dmax2;
     rec.objective = inner.value(rec.delta2, rec.dmax2);
     rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -126,14 +150,7 @@ IdentifyResult identify_alternating(const LpvModel<double>& model, const Experim
   out.status = accepted.status;
   out.relaxation = "alternating Delta/theta descent (" + std::to_string(out.iterates.size()) + " Delta steps, " +
                    std::to_string(options.taps) + " taps, KYP)";
-  if (feasibility) {
-    const double given = options.objective.dmax * options.objective.dmax;
-    if (accepted.dmax2 > given) {
-      out.status = SolveStatus::kPrimalInfeasible;
-      out.message = "alternating descent found no parameters with dmax <= the given bound at the given delta (a "
-                    "local method: this does not invalidate the model class)";
-    }
-  }
+  if (feasibility) judge_given_dmax(options.objective, accepted, out);
   return out;
 }
 
