@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""Lists the functions longer than a limit in the given folders (C++ sources
-in this repository's style: a function's signature starts at column 0, or at
-column 2 inside a class, and its body ends with a `}` at the same column).
-Exits 1 when one is found. Run by ctest (CertifyPathFunctionLengths) on the
-certification path, src/certify and src/lmi, and on the exact PSD decision,
-verify/psd.
+"""Lists the functions longer than a limit in the given folders or files (C++
+sources in this repository's style: a function's signature starts at column
+0, or at column 2 inside a class, and its body ends with a `}` at the same
+column). Exits 1 when one is found, 2 when a path does not exist. Run by
+ctest (CertifyPathFunctionLengths) on the certification path, src/certify
+and src/lmi, and on the verifier, verify/.
 
-    python3 scripts/function_lengths.py [--max 60] FOLDER...
+    python3 scripts/function_lengths.py [--max 60] FOLDER_OR_FILE...
 """
 import os
 import re
@@ -46,16 +46,21 @@ def main(argv):
         limit = int(argv[1])
         argv = argv[2:]
     found = 0
-    for folder in argv:
-        for root, _, files in os.walk(folder):
-            for name in sorted(files):
-                if not name.endswith((".cc", ".h")):
-                    continue
-                path = os.path.join(root, name)
-                for first, length, signature in functions(path):
-                    if length > limit:
-                        found += 1
-                        print(f"{path}:{first}: {length} lines: {signature[:90]}")
+    for given in argv:
+        if os.path.isfile(given):
+            paths = [given]
+        elif os.path.isdir(given):
+            paths = [os.path.join(root, name) for root, _, files in os.walk(given) for name in sorted(files)]
+        else:
+            print(f"function_lengths: {given}: no such file or folder")
+            return 2
+        for path in paths:
+            if not path.endswith((".cc", ".h")):
+                continue
+            for first, length, signature in functions(path):
+                if length > limit:
+                    found += 1
+                    print(f"{path}:{first}: {length} lines: {signature[:90]}")
     print(f"function_lengths: {found} function(s) above {limit} lines in {', '.join(argv)}")
     return 1 if found else 0
 

@@ -30,6 +30,87 @@ void add_correction_names(std::vector<std::string>& names, const std::vector<Mon
 
 }  // namespace
 
+namespace {
+
+/// Column blocks of Jr (= ∂ŷ/∂p) and Jz, in parameter order.
+template <typename T>
+struct JacobianBlocks {
+  std::vector<Mat<T>> jy, jz;
+  void add(Mat<T> y, Mat<T> z) {
+    jy.push_back(std::move(y));
+    jz.push_back(std::move(z));
+  }
+};
+
+/// θ of the correction S_C(ρ) (eq. 10): C and D, and C1, D1 for the general structure.
+template <typename T>
+void add_correction_blocks(const LpvModel<T>& model, const Experiment<T>& exp, const Simulation<T>& sim,
+                           AffineResidual<T>& a, JacobianBlocks<T>& blocks) {
+  const bool multiplicative = model.uncertainty.structure == UncertaintyStructure::kMultiplicative;
+  const Mat<T> J = output_jacobian(model, exp, sim);
+  a.layout.n_theta_out = J.cols();
+  blocks.add(J, multiplicative ? Mat<T>(model.uncertainty.weight * J) : Mat<T>(Mat<T>::Zero(a.n * a.nz, J.cols())));
+  add_correction_names(a.names, model.correction.basis, model.scheduling, model.ny, model.nx, model.nu, "C", "D");
+  if (model.uncertainty.structure != UncertaintyStructure::kGeneral) return;
+  const Mat<T> J1 = correction_jacobian(model, exp, sim, a.nz);
+  a.layout.n_theta_unc = J1.cols();
+  blocks.add(Mat<T>::Zero(a.n * a.ny, J1.cols()), J1);
+  add_correction_names(a.names, model.correction.basis, model.scheduling, a.nz, model.nx, model.nu, "C1", "D1");
+}
+
+/// φ of the output offset Φ(ρ).
+template <typename T>
+void add_offset_block(const LpvModel<T>& model, const Experiment<T>& exp, AffineResidual<T>& a, JacobianBlocks<T>& blocks) {
+  const Mat<T> J = offset_jacobian(model, exp);
+  a.layout.n_phi = J.cols();
+  blocks.add(J, Mat<T>::Zero(a.n * a.nz, J.cols()));
+  for (size_t j = 0; j < model.offset.basis.size(); ++j)
+    for (int r = 0; r < model.ny; ++r)
+      a.names.push_back("phi[" + model.offset.basis[j].text(model.scheduling) + "](" + std::to_string(r + 1) + ")");
+}
+
+/// x0: the response of ŷ and z to each initial state.
+template <typename T>
+void add_x0_block(const LpvModel<T>& model, const Experiment<T>& exp, const Simulation<T>& sim, AffineResidual<T>& a,
+                  JacobianBlocks<T>& blocks) {
+  Mat<T> Jy(a.n * a.ny, model.nx), Jz1(a.n * a.nz, model.nx);
+  if (has_state_offset(model)) {
+    // With a state offset E(ρ) the response to x0 is not linear
+    // (E acts from x = 0, and "@sqrt(x<i>-c)" columns follow x): column c is
+    // the secant sim(x0 + e_c) − sim(x0) along the actual input. Only the
+    // identification's objective is approximate; the certificate checks the
+    // folded model (x0 + p_x0) by its exact simulation.
+    const Vec<T> base = model.x0.size() == model.nx ? model.x0 : Vec<T>(Vec<T>::Zero(model.nx));
+    for (int c = 0; c < model.nx; ++c) {
+      LpvModel<T> m1 = model;
+      m1.x0 = base;
+      m1.x0(c) += T(1);
+      const Simulation<T> s = simulate(m1, exp);
+      Jy.col(c) = stack_rows(Mat<T>(s.yhat - sim.yhat));
+      Jz1.col(c) = stack_rows(Mat<T>(s.z - sim.z));
+    }
+  } else {
+    // The response to x0 with zero input: column c is the simulation from e_c.
+    Experiment<T> free = exp;
+    free.u.setZero();
+    LpvModel<T> m0 = model;
+    m0.offset.values.clear();
+    m0.statics = StaticBlocks<T>{};  // zero u' (g_in(0) need not be 0)
+    for (int c = 0; c < model.nx; ++c) {
+      m0.x0 = Vec<T>::Zero(model.nx);
+      m0.x0(c) = T(1);
+      const Simulation<T> s = simulate(m0, free);
+      Jy.col(c) = stack_rows(s.yhat);
+      Jz1.col(c) = stack_rows(s.z);
+    }
+  }
+  for (int c = 0; c < model.nx; ++c) a.names.push_back("x0(" + std::to_string(c + 1) + ")");
+  a.layout.n_x0 = model.nx;
+  blocks.add(Jy, Jz1);
+}
+
+}  // namespace
+
 template <typename T>
 AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experiment<T>& exp, const Unknowns& unknowns) {
   const Simulation<T> sim = simulate(model, exp);
@@ -49,79 +130,19 @@ AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experime
   a.z0 = stack_rows(sim.z);
   a.r0 = stack_rows(Mat<T>(exp.y - sim.output));
 
-  const bool multiplicative = model.uncertainty.structure == UncertaintyStructure::kMultiplicative;
-  const bool general = model.uncertainty.structure == UncertaintyStructure::kGeneral;
-  std::vector<Mat<T>> jy, jz;  // column blocks of Jr (= ∂ŷ/∂p) and Jz
-
-  if (unknowns.correction && !model.correction.basis.empty()) {
-    const Mat<T> J = output_jacobian(model, exp, sim);
-    a.layout.n_theta_out = J.cols();
-    jy.push_back(J);
-    jz.push_back(multiplicative ? Mat<T>(model.uncertainty.weight * J) : Mat<T>(Mat<T>::Zero(a.n * a.nz, J.cols())));
-    add_correction_names(a.names, model.correction.basis, model.scheduling, model.ny, model.nx, model.nu, "C", "D");
-    if (general) {
-      const Mat<T> J1 = correction_jacobian(model, exp, sim, a.nz);
-      a.layout.n_theta_unc = J1.cols();
-      jy.push_back(Mat<T>::Zero(a.n * a.ny, J1.cols()));
-      jz.push_back(J1);
-      add_correction_names(a.names, model.correction.basis, model.scheduling, a.nz, model.nx, model.nu, "C1", "D1");
-    }
-  }
-  if (has_unknown_offset(model, unknowns)) {
-    const Mat<T> J = offset_jacobian(model, exp);
-    a.layout.n_phi = J.cols();
-    jy.push_back(J);
-    jz.push_back(Mat<T>::Zero(a.n * a.nz, J.cols()));
-    for (size_t j = 0; j < model.offset.basis.size(); ++j)
-      for (int r = 0; r < model.ny; ++r)
-        a.names.push_back("phi[" + model.offset.basis[j].text(model.scheduling) + "](" + std::to_string(r + 1) + ")");
-  }
-  if (unknowns.x0 && model.nx > 0) {
-    Mat<T> Jy(a.n * a.ny, model.nx), Jz1(a.n * a.nz, model.nx);
-    if (has_state_offset(model)) {
-      // With a state offset E(ρ) the response to x0 is not linear
-      // (E acts from x = 0, and "@sqrt(x<i>-c)" columns follow x): column c is
-      // the secant sim(x0 + e_c) − sim(x0) along the actual input. Only the
-      // identification's objective is approximate; the certificate checks the
-      // folded model (x0 + p_x0) by its exact simulation.
-      const Vec<T> base = model.x0.size() == model.nx ? model.x0 : Vec<T>(Vec<T>::Zero(model.nx));
-      for (int c = 0; c < model.nx; ++c) {
-        LpvModel<T> m1 = model;
-        m1.x0 = base;
-        m1.x0(c) += T(1);
-        const Simulation<T> s = simulate(m1, exp);
-        Jy.col(c) = stack_rows(Mat<T>(s.yhat - sim.yhat));
-        Jz1.col(c) = stack_rows(Mat<T>(s.z - sim.z));
-      }
-    } else {
-      // The response to x0 with zero input: column c is the simulation from e_c.
-      Experiment<T> free = exp;
-      free.u.setZero();
-      LpvModel<T> m0 = model;
-      m0.offset.values.clear();
-      m0.statics = StaticBlocks<T>{};  // zero u' (g_in(0) need not be 0)
-      for (int c = 0; c < model.nx; ++c) {
-        m0.x0 = Vec<T>::Zero(model.nx);
-        m0.x0(c) = T(1);
-        const Simulation<T> s = simulate(m0, free);
-        Jy.col(c) = stack_rows(s.yhat);
-        Jz1.col(c) = stack_rows(s.z);
-      }
-    }
-    for (int c = 0; c < model.nx; ++c) a.names.push_back("x0(" + std::to_string(c + 1) + ")");
-    a.layout.n_x0 = model.nx;
-    jy.push_back(Jy);
-    jz.push_back(Jz1);
-  }
+  JacobianBlocks<T> blocks;
+  if (unknowns.correction && !model.correction.basis.empty()) add_correction_blocks(model, exp, sim, a, blocks);
+  if (has_unknown_offset(model, unknowns)) add_offset_block(model, exp, a, blocks);
+  if (unknowns.x0 && model.nx > 0) add_x0_block(model, exp, sim, a, blocks);
   Eigen::Index P = 0;
-  for (const auto& b : jy) P += b.cols();
+  for (const auto& b : blocks.jy) P += b.cols();
   a.Jr = Mat<T>::Zero(a.n * a.ny, P);
   a.Jz = Mat<T>::Zero(a.n * a.nz, P);
   Eigen::Index col = 0;
-  for (size_t b = 0; b < jy.size(); ++b) {
-    a.Jr.middleCols(col, jy[b].cols()) = jy[b];
-    a.Jz.middleCols(col, jz[b].cols()) = jz[b];
-    col += jy[b].cols();
+  for (size_t b = 0; b < blocks.jy.size(); ++b) {
+    a.Jr.middleCols(col, blocks.jy[b].cols()) = blocks.jy[b];
+    a.Jz.middleCols(col, blocks.jz[b].cols()) = blocks.jz[b];
+    col += blocks.jy[b].cols();
   }
   return a;
 }
