@@ -130,6 +130,8 @@ int run_identify(IdentifyArgs& a) {
               << a.model_out << "' re-certifies it)\n";
   }
   write_json(a.common.report_path, report);
+  // Not exit_code(id.outcome): an "invalidated" or "undecided" certification
+  // here is about the identified theta only, never the model class.
   return b.verified ? kExitOk : kExitNotVerified;
 }
 
