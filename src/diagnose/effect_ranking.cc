@@ -53,6 +53,79 @@ void new_terms_json(const ParamMatrix<double>& fitted, const ParamMatrix<double>
   }
 }
 
+/// The scheduling variables `introduced` has beyond `previous`, with their
+/// columns in `fitted` (name -> column).
+ojson new_scheduling_json(const LpvModel<double>& fitted, const LpvModel<double>& introduced,
+                          const LpvModel<double>& previous) {
+  ojson s = ojson::object();
+  for (size_t i = previous.scheduling.size(); i < introduced.scheduling.size() && i < fitted.scheduling.size(); ++i)
+    s[fitted.scheduling[i]] = fitted.columns.rho[i];
+  return s;
+}
+
+/// effect_parameters of a basis_term effect: its new term, where it enters,
+/// and the scheduling variables it added.
+void basis_term_parameters(const LpvModel<double>& fitted, const LpvModel<double>& introduced,
+                           const LpvModel<double>& previous, ojson& j) {
+  new_terms_json(fitted.C, introduced.C, previous.C, "C", fitted.scheduling, j);
+  new_terms_json(fitted.D, introduced.D, previous.D, "D", fitted.scheduling, j);
+  new_terms_json(fitted.B, introduced.B, previous.B, "B", fitted.scheduling, j);
+  new_terms_json(fitted.A, introduced.A, previous.A, "A", fitted.scheduling, j);
+  j["enters"] = j.contains("A")   ? "A (the state equation: x+ = (A + f(rho) A_f) x + B u, rho the model's own state)"
+                : j.contains("B") ? "B (the state equation: x+ = A x + (B + f(rho) B_f) u)"
+                                  : "C, D (output correction S_C, eq. 10)";
+  if (introduced.scheduling.size() > previous.scheduling.size())
+    j["new_scheduling"] = new_scheduling_json(fitted, introduced, previous);
+}
+
+/// effect_parameters of an output offset (output_offset, abs_value): the
+/// offset's values phi and basis.
+void offset_parameters(const LpvModel<double>& fitted, ojson& j) {
+  ojson phi = ojson::array();
+  for (const auto& v : fitted.offset.values) phi.push_back(matrix_json(v.transpose()).front());
+  j["phi"] = std::move(phi);
+  ojson basis = ojson::array();
+  for (const Monomial& h : fitted.offset.basis) basis.push_back(h.text(fitted.scheduling));
+  j["basis"] = std::move(basis);
+}
+
+/// A static map's kind and parameters.
+ojson static_map_json(const StaticMap<double>& g) {
+  ojson m = ojson::object();
+  m["map"] = to_string(g.kind);
+  if (g.kind == StaticKind::kSaturation || g.kind == StaticKind::kDeadZone) {
+    m["lower"] = g.lower;
+    m["upper"] = g.upper;
+  }
+  if (g.kind == StaticKind::kPolynomial) m["coefficients"] = g.coefficients;
+  if (g.kind == StaticKind::kPiecewiseLinear) {
+    m["knots"] = g.knots;
+    m["values"] = g.coefficients;
+  }
+  return m;
+}
+
+/// effect_parameters of a state_nonlinearity effect.
+void state_nonlinearity_parameters(const std::string& label, const LpvModel<double>& fitted,
+                                   const LpvModel<double>& introduced, const LpvModel<double>& previous, ojson& j) {
+  // x+ = A x + B u + E(ρ): the function column(s) and e
+  j["new_scheduling"] = new_scheduling_json(fitted, introduced, previous);
+  ojson terms = ojson::array();
+  for (size_t t = 0; t < introduced.state_offset.basis.size() && t < fitted.state_offset.basis.size() &&
+                     t < fitted.state_offset.values.size();
+       ++t)
+    terms.push_back({{"basis", fitted.state_offset.basis[t].text(fitted.scheduling)},
+                     {"e", matrix_json(fitted.state_offset.values[t].transpose()).front()}});
+  j["state_offset"] = std::move(terms);
+  j["enters"] = "the state equation: x+ = A x + B u + sum_j h_j(rho) e_j (model field state_offset)";
+  if (label.rfind("store cascade", 0) == 0) {  // the linear part was replaced: its new matrices too
+    for (const auto& [name, pm] : {std::pair<const char*, const ParamMatrix<double>*>{"A", &fitted.A}, {"B", &fitted.B},
+                                   {"C", &fitted.C}, {"D", &fitted.D}})
+      for (const auto& t : pm->terms)
+        if (t.basis.degree() == 0) j[name] = matrix_json(t.value);
+  }
+}
+
 /// The fit with the lowest RMS among `fits` (finite false if none is finite).
 FitResult lowest_rms(const std::vector<FitResult>& fits) {
   FitResult best;
@@ -333,6 +406,140 @@ void set_explained(RankingRound& r) {
                    [](const ScoredCandidate& a, const ScoredCandidate& b) { return a.score < b.score; });
 }
 
+/// Fold mode's state between rounds: the current model on the whole record
+/// and, per fold, the training rows and the current model fitted on them.
+struct FoldChain {
+  LpvModel<double> current;
+  double current_est = 0;
+  FoldFigures current_folds;  // set in round 1 (the declared structure re-fitted per fold)
+  std::vector<Experiment<double>> training;   ///< [t]: fold t's training rows
+  std::vector<LpvModel<double>> current_fold;  ///< [t]: fold t's current model
+};
+
+/// The chain before round 1: res.before on the whole record, and the
+/// declared unknowns fitted on each fold's training rows.
+FoldChain start_fold_chain(const LpvModel<double>& declared, const Experiment<double>& est, const RankingResult& res,
+                           const FitOptions& fit) {
+  FoldChain c;
+  c.current = res.before;
+  c.current_est = res.before_estimation;
+  // the current model of each fold, fitted on that fold's training rows only:
+  // the chain of models a fold would have chosen without its held-out block
+  const size_t k = res.fold_blocks.size();
+  c.training.resize(k);
+  c.current_fold.resize(k);
+  for (size_t t = 0; t < k; ++t) {
+    const FoldBlock rows = training_rows(est.n(), res.fold_blocks, t);
+    c.training[t] = select_rows(est, rows.first, rows.last);
+    const FitResult f = fit_declared(declared, c.training[t], fit);
+    c.current_fold[t] = f.finite ? f.model : res.before;
+  }
+  return c;
+}
+
+/// The no-effect candidate on `m`: its refit_slots, no new effect.
+EffectCandidate no_effect_candidate(const LpvModel<double>& m) {
+  EffectCandidate c;
+  c.kind = "none";
+  c.starts = {m};
+  c.slots = refit_slots(m);
+  return c;
+}
+
+/// One round of fold mode: the candidates the families point into (filled
+/// in place, so the pointers stay valid), the families in fit_families' job
+/// order (the no-effect reference, then each candidate) and their labels.
+struct FoldRound {
+  std::vector<EffectCandidate> cands;                    ///< on the current model, whole record
+  std::vector<std::vector<EffectCandidate>> fold_cands;  ///< [t]: on fold t's current model
+  EffectCandidate refit;
+  std::vector<EffectCandidate> fold_refit;
+  std::vector<FamilyFit> families;
+  std::vector<std::string> labels;
+};
+
+/// Fills `fr` for the chain's current models: each candidate of the whole
+/// record with the same effect of each fold (match_candidates).
+void fold_round_families(const FoldChain& chain, const Experiment<double>& est, const RankingOptions& o, FoldRound& fr) {
+  const size_t k = chain.training.size();
+  fr.cands = round_candidates(chain.current, est, o);
+  fr.fold_cands.resize(k);
+  parallel_for(k, o.threads,
+               [&](size_t t) { fr.fold_cands[t] = round_candidates(chain.current_fold[t], chain.training[t], o); });
+  std::vector<std::vector<const EffectCandidate*>> matched(k);  // [t][i]
+  for (size_t t = 0; t < k; ++t) matched[t] = match_candidates(fr.cands, fr.fold_cands[t]);
+  // the no-effect reference: the same freedom, no new effect
+  fr.refit = no_effect_candidate(chain.current);
+  fr.fold_refit.resize(k);
+  std::vector<const EffectCandidate*> refit_per_fold(k);
+  for (size_t t = 0; t < k; ++t) {
+    fr.fold_refit[t] = no_effect_candidate(chain.current_fold[t]);
+    refit_per_fold[t] = &fr.fold_refit[t];
+  }
+  fr.families = {candidate_family(fr.refit, refit_per_fold, o)};
+  fr.labels = {"no new effect"};
+  for (size_t i = 0; i < fr.cands.size(); ++i) {
+    std::vector<const EffectCandidate*> per_fold(k);
+    for (size_t t = 0; t < k; ++t) per_fold[t] = matched[t][i];
+    fr.families.push_back(candidate_family(fr.cands[i], per_fold, o));
+    fr.labels.push_back(fr.cands[i].label);
+  }
+}
+
+/// The round's no-effect figures and its reference folds (what a candidate
+/// must beat); round 1 also sets the "before" figures and the chain's folds.
+void set_fold_reference(RankingRound& r, const FoldFigures& refit_folds, int round, FoldFigures& current_folds,
+                        RankingResult& res) {
+  r.refit_validation = refit_folds.total_rms();
+  // round 1: the declared model's own figures are not held out (its A, B may
+  // have been fitted on these rows), so the reference is its structure re-fitted
+  // on each fold; later rounds: the better of that and the chosen model's folds
+  r.reference_folds = round == 0 || refit_folds.total_rms() < current_folds.total_rms() ? refit_folds : current_folds;
+  if (round == 0) {
+    res.before_folds = refit_folds;
+    res.before_validation = refit_folds.total_rms();
+    r.current_validation = res.before_validation;
+    current_folds = refit_folds;
+  }
+  r.reference_validation = r.reference_folds.total_rms();
+}
+
+/// Scores each candidate from its family (fitted[i + 1]), ranks them, and
+/// sets r.chosen.
+void rank_fold_round(RankingRound& r, const std::vector<EffectCandidate>& cands,
+                     const std::vector<FoldedFamily>& fitted, const LpvModel<double>& current,
+                     const RankingOptions& o) {
+  for (size_t i = 0; i < cands.size(); ++i) {
+    r.ranked.push_back(scored_from_family(cands[i], fitted[i + 1], current, o.joint_dynamics));
+    r.ranked.back().folds_won = folds_won(r.ranked.back().folds, r.reference_folds);
+    r.ranked.back().family = i + 1;
+  }
+  set_explained(r);
+  // the best-scored candidate that passes the rule of fold_plan.h
+  for (size_t i = 0; i < r.ranked.size(); ++i)
+    if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain)) {
+      r.chosen = static_cast<int>(i);
+      break;
+    }
+}
+
+/// The round's chosen candidate becomes the chain's current model, on the
+/// whole record and on each fold, and is appended to res.chosen.
+void carry_fold_choice(const RankingRound& r, const std::vector<FoldedFamily>& fitted, FoldChain& chain,
+                       RankingResult& res) {
+  const ScoredCandidate& c = r.ranked[static_cast<size_t>(r.chosen)];
+  chain.current = c.model;
+  chain.current_est = c.rms_estimation;
+  chain.current_folds = c.folds;
+  // each fold carries its own fit of the chosen effect into the next round
+  // (a fold whose fit failed keeps its model: its next candidates will not
+  // match, and it counts as lost for every one of them)
+  const FoldedFamily& f = fitted[c.family];
+  for (size_t t = 0; t < chain.current_fold.size(); ++t)
+    if (f.per_fold[t].finite) chain.current_fold[t] = f.per_fold[t].model;
+  res.chosen.push_back(c);
+}
+
 /// Fold mode (val empty): see the header.
 RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Experiment<double>& est,
                                     const RankingOptions& o) {
@@ -343,99 +550,27 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
   const FitResult before = fit_declared(declared, est, o.fit);
   res.before = before.model;
   res.before_estimation = before.rms;
-  LpvModel<double> current = res.before;
-  double current_est = res.before_estimation;
-  FoldFigures current_folds;  // set in round 1 (the declared structure re-fitted per fold)
-  // the current model of each fold, fitted on that fold's training rows only:
-  // the chain of models a fold would have chosen without its held-out block
-  const size_t k = res.fold_blocks.size();
-  std::vector<Experiment<double>> training(k);
-  std::vector<LpvModel<double>> current_fold(k);
-  for (size_t t = 0; t < k; ++t) {
-    const FoldBlock rows = training_rows(est.n(), res.fold_blocks, t);
-    training[t] = select_rows(est, rows.first, rows.last);
-    const FitResult f = fit_declared(declared, training[t], o.fit);
-    current_fold[t] = f.finite ? f.model : res.before;
-  }
+  FoldChain chain = start_fold_chain(declared, est, res, o.fit);
   for (int round = 0; round < o.max_effects; ++round) {
     RankingRound r;
-    r.current = current;
-    r.current_validation = current_folds.total_rms();
-    const std::vector<EffectCandidate> cands = round_candidates(current, est, o);
-    std::vector<std::vector<EffectCandidate>> fold_cands(k);
-    parallel_for(k, o.threads, [&](size_t t) { fold_cands[t] = round_candidates(current_fold[t], training[t], o); });
-    std::vector<std::vector<const EffectCandidate*>> matched(k);  // [t][i]
-    for (size_t t = 0; t < k; ++t) matched[t] = match_candidates(cands, fold_cands[t]);
-    // the no-effect reference: the same freedom, no new effect
-    EffectCandidate refit;
-    refit.kind = "none";
-    refit.starts = {current};
-    refit.slots = refit_slots(current);
-    std::vector<EffectCandidate> fold_refit(k);
-    std::vector<const EffectCandidate*> refit_per_fold(k);
-    for (size_t t = 0; t < k; ++t) {
-      fold_refit[t].kind = "none";
-      fold_refit[t].starts = {current_fold[t]};
-      fold_refit[t].slots = refit_slots(current_fold[t]);
-      refit_per_fold[t] = &fold_refit[t];
-    }
-    std::vector<FamilyFit> families{candidate_family(refit, refit_per_fold, o)};
-    std::vector<std::string> labels{"no new effect"};
-    for (size_t i = 0; i < cands.size(); ++i) {
-      std::vector<const EffectCandidate*> per_fold(k);
-      for (size_t t = 0; t < k; ++t) per_fold[t] = matched[t][i];
-      families.push_back(candidate_family(cands[i], per_fold, o));
-      labels.push_back(cands[i].label);
-    }
+    r.current = chain.current;
+    r.current_validation = chain.current_folds.total_rms();
+    FoldRound fr;
+    fold_round_families(chain, est, o, fr);
     const std::vector<FoldedFamily> fitted =
-        fit_families(families, labels, "round " + std::to_string(round + 1), est, res.fold_blocks, o);
-    const FoldFigures& refit_folds = fitted[0].figures;
-    r.refit_validation = refit_folds.total_rms();
-    // round 1: the declared model's own figures are not held out (its A, B may
-    // have been fitted on these rows), so the reference is its structure re-fitted
-    // on each fold; later rounds: the better of that and the chosen model's folds
-    r.reference_folds = round == 0 || refit_folds.total_rms() < current_folds.total_rms() ? refit_folds : current_folds;
-    if (round == 0) {
-      res.before_folds = refit_folds;
-      res.before_validation = refit_folds.total_rms();
-      r.current_validation = res.before_validation;
-      current_folds = refit_folds;
-    }
-    r.reference_validation = r.reference_folds.total_rms();
-    for (size_t i = 0; i < cands.size(); ++i) {
-      r.ranked.push_back(scored_from_family(cands[i], fitted[i + 1], current, o.joint_dynamics));
-      r.ranked.back().folds_won = folds_won(r.ranked.back().folds, r.reference_folds);
-      r.ranked.back().family = i + 1;
-    }
-    set_explained(r);
-    // the best-scored candidate that passes the rule of fold_plan.h
-    for (size_t i = 0; i < r.ranked.size(); ++i)
-      if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain)) {
-        r.chosen = static_cast<int>(i);
-        break;
-      }
-    if (r.chosen >= 0) {
-      const ScoredCandidate& c = r.ranked[static_cast<size_t>(r.chosen)];
-      current = c.model;
-      current_est = c.rms_estimation;
-      current_folds = c.folds;
-      // each fold carries its own fit of the chosen effect into the next round
-      // (a fold whose fit failed keeps its model: its next candidates will not
-      // match, and it counts as lost for every one of them)
-      const FoldedFamily& f = fitted[c.family];
-      for (size_t t = 0; t < k; ++t)
-        if (f.per_fold[t].finite) current_fold[t] = f.per_fold[t].model;
-      res.chosen.push_back(c);
-    }
+        fit_families(fr.families, fr.labels, "round " + std::to_string(round + 1), est, res.fold_blocks, o);
+    set_fold_reference(r, fitted[0].figures, round, chain.current_folds, res);
+    rank_fold_round(r, fr.cands, fitted, chain.current, o);
+    if (r.chosen >= 0) carry_fold_choice(r, fitted, chain, res);
     const bool stop = r.chosen < 0;
     res.rounds.push_back(std::move(r));
     if (stop) break;
   }
-  res.after = current;
+  res.after = chain.current;
   restate_parameters(res, res.after);
-  res.after_estimation = current_est;
-  res.after_folds = current_folds;
-  res.after_validation = current_folds.total_rms();
+  res.after_estimation = chain.current_est;
+  res.after_folds = chain.current_folds;
+  res.after_validation = chain.current_folds.total_rms();
   return res;
 }
 
@@ -558,67 +693,17 @@ ojson effect_parameters(const std::string& kind, const std::string& label, const
   ojson j = ojson::object();
   const LpvModel<double>& introduced = introduced_by ? *introduced_by : fitted;
   if (kind == "basis_term") {
-    new_terms_json(fitted.C, introduced.C, previous.C, "C", fitted.scheduling, j);
-    new_terms_json(fitted.D, introduced.D, previous.D, "D", fitted.scheduling, j);
-    new_terms_json(fitted.B, introduced.B, previous.B, "B", fitted.scheduling, j);
-    new_terms_json(fitted.A, introduced.A, previous.A, "A", fitted.scheduling, j);
-    j["enters"] = j.contains("A")   ? "A (the state equation: x+ = (A + f(rho) A_f) x + B u, rho the model's own state)"
-                  : j.contains("B") ? "B (the state equation: x+ = A x + (B + f(rho) B_f) u)"
-                                    : "C, D (output correction S_C, eq. 10)";
-    if (introduced.scheduling.size() > previous.scheduling.size()) {
-      ojson s = ojson::object();
-      for (size_t i = previous.scheduling.size(); i < introduced.scheduling.size() && i < fitted.scheduling.size(); ++i)
-        s[fitted.scheduling[i]] = fitted.columns.rho[i];
-      j["new_scheduling"] = std::move(s);
-    }
+    basis_term_parameters(fitted, introduced, previous, j);
   } else if (kind == "output_offset" || kind == "abs_value") {
-    ojson phi = ojson::array();
-    for (const auto& v : fitted.offset.values) phi.push_back(matrix_json(v.transpose()).front());
-    j["phi"] = std::move(phi);
-    ojson basis = ojson::array();
-    for (const Monomial& h : fitted.offset.basis) basis.push_back(h.text(fitted.scheduling));
-    j["basis"] = std::move(basis);
+    offset_parameters(fitted, j);
   }
-  const auto map_json = [&](const StaticMap<double>& g) {
-    ojson m = ojson::object();
-    m["map"] = to_string(g.kind);
-    if (g.kind == StaticKind::kSaturation || g.kind == StaticKind::kDeadZone) {
-      m["lower"] = g.lower;
-      m["upper"] = g.upper;
-    }
-    if (g.kind == StaticKind::kPolynomial) m["coefficients"] = g.coefficients;
-    if (g.kind == StaticKind::kPiecewiseLinear) {
-      m["knots"] = g.knots;
-      m["values"] = g.coefficients;
-    }
-    return m;
-  };
   if (kind == "input_saturation" || kind == "dead_zone" || kind == "input_polynomial")
-    j["input_map"] = map_json(fitted.statics.input);
+    j["input_map"] = static_map_json(fitted.statics.input);
   if (kind == "output_saturation" || kind == "abs_value" || kind == "output_polynomial" ||
       kind == "output_piecewise_linear")
-    j["output_map"] = map_json(fitted.statics.output);
+    j["output_map"] = static_map_json(fitted.statics.output);
   if (kind == "input_delay") j["delay_samples"] = fitted.statics.input_delay;
-  if (kind == "state_nonlinearity") {  // x+ = A x + B u + E(ρ): the function column(s) and e
-    ojson cols = ojson::object();
-    for (size_t i = previous.scheduling.size(); i < introduced.scheduling.size() && i < fitted.scheduling.size(); ++i)
-      cols[fitted.scheduling[i]] = fitted.columns.rho[i];
-    j["new_scheduling"] = std::move(cols);
-    ojson terms = ojson::array();
-    for (size_t t = 0; t < introduced.state_offset.basis.size() && t < fitted.state_offset.basis.size() &&
-                       t < fitted.state_offset.values.size();
-         ++t)
-      terms.push_back({{"basis", fitted.state_offset.basis[t].text(fitted.scheduling)},
-                       {"e", matrix_json(fitted.state_offset.values[t].transpose()).front()}});
-    j["state_offset"] = std::move(terms);
-    j["enters"] = "the state equation: x+ = A x + B u + sum_j h_j(rho) e_j (model field state_offset)";
-    if (label.rfind("store cascade", 0) == 0) {  // the linear part was replaced: its new matrices too
-      for (const auto& [name, pm] : {std::pair<const char*, const ParamMatrix<double>*>{"A", &fitted.A}, {"B", &fitted.B},
-                                     {"C", &fitted.C}, {"D", &fitted.D}})
-        for (const auto& t : pm->terms)
-          if (t.basis.degree() == 0) j[name] = matrix_json(t.value);
-    }
-  }
+  if (kind == "state_nonlinearity") state_nonlinearity_parameters(label, fitted, introduced, previous, j);
   j["label"] = label;
   return j;
 }
