@@ -3,8 +3,8 @@
 sources in this repository's style: a function's signature starts at column
 0, or at column 2 inside a class, and its body ends with a `}` at the same
 column). Exits 1 when one is found, 2 when a path does not exist. Run by
-ctest (CertifyPathFunctionLengths) on the certification path, src/certify
-and src/lmi, and on the verifier, verify/.
+ctest (CertifyPathFunctionLengths) on the certification path (src/certify,
+src/lmi, src/identify), the verifier (verify/) and src/diagnose.
 
     python3 scripts/function_lengths.py [--max 60] FOLDER_OR_FILE...
 """
