@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/jobs_plan.h"
+#include "cli/jobs_window_check.h"
 #include "cli/report.h"
 #include "core/decimal_rounding.h"
 #include "core/file_io.h"
@@ -19,7 +20,6 @@
 #include "diagnose/bound_windows.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
-#include "verify/certificate/certificate_check.h"
 
 namespace lpvid::cli {
 namespace {
@@ -30,16 +30,6 @@ struct PlanArgs {
   long window = kDefaultWindowLength, min_last = kDefaultMinLastWindow;
   std::string dir, lpvid;
 };
-
-std::string objective_kind(const BoundObjective& o) {
-  switch (o.kind) {
-    case BoundObjective::Kind::kMinDmax: return "min_dmax";
-    case BoundObjective::Kind::kMinDelta: return "min_delta";
-    case BoundObjective::Kind::kFeasibility: return "feasibility";
-    case BoundObjective::Kind::kWeighted: break;
-  }
-  return "weighted";
-}
 
 std::string window_name(int k, const char* suffix) {
   char buf[32];
@@ -80,7 +70,9 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
   plan.data_sha256 = sha256_hex(read_text_file(c.data_path));
   plan.data_names = c.names;
   plan.model_path = fs::absolute(c.model_path).lexically_normal().string();
-  plan.objective = objective_kind(in.objective);
+  plan.model_sha256 = sha256_hex(read_text_file(c.model_path));
+  plan.toeplitz = c.toeplitz;
+  plan.objective = objective_name(in.objective.kind);
   plan.delta_text = c.delta_text;
   plan.dmax_text = c.dmax_text;
   plan.lambda_text = c.lambda ? double_to_text(*c.lambda) : "";
@@ -109,7 +101,10 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
     w.certificate = window_name(w.index, ".cert.json");
     w.report = window_name(w.index, ".report.json");
     LpvModel<Rational> m = in.model_q;
-    for (Eigen::Index i = 0; i < m.x0.size(); ++i) m.x0(i) = round_to_digits(sim.x(b, i), 12);
+    for (Eigen::Index i = 0; i < m.x0.size(); ++i) {
+      m.x0(i) = round_to_digits(sim.x(b, i), 12);
+      w.x0.push_back(rational_to_text(m.x0(i)));
+    }
     write_model_file((dir / w.model).string(), m);
     w.command = shell_quote(program) + " invalidate --quiet --data " + shell_quote(plan.data_path) + " --rows " +
                 std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + " --model " +
@@ -138,94 +133,27 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
   return kExitOk;
 }
 
-/// What merge found for one window.
+/// One window of the plan and what merge found for it.
 struct Merged {
   JobWindow w;
-  std::string status = "missing";  ///< verified, invalidated, missing, refused
-  std::string reason;
-  Rational delta2, dmax2, upper, lower;
-  bool has_lower = false;
-  std::string x0;
+  WindowResult r;
 };
-
-/// The model without x0 as JSON (a window's model must be the planned one
-/// apart from its declared initial state).
-std::string without_x0(LpvModel<Rational> m) {
-  m.x0.setZero();
-  return write_model_json(m);
-}
-
-/// Reads, matches against the plan and checks one certificate; "" when it
-/// holds, the reason otherwise.
-std::string check_window_certificate(const JobPlan& plan, const JobWindow& w, const std::string& path,
-                                     const std::string& planned_model, Certificate& c) {
-  try {
-    c = read_certificate(path);
-  } catch (const InputError& e) {
-    return std::string("unreadable: ") + e.what();
-  }
-  if (c.data_sha256 != plan.data_sha256) return "made from other data (sha256 " + c.data_sha256 + ")";
-  if (c.row_begin != w.file_begin || c.row_end != w.file_end)
-    return "certifies rows " + std::to_string(c.row_begin) + ":" + std::to_string(c.row_end) + ", not the window's";
-  if (without_x0(c.model) != planned_model) return "certifies another model than the planned one";
-  const CertificateVerdict v = check_certificate(c, fs::path(path).parent_path().string());
-  return v.holds ? "" : "the exact check refused it: " + v.reason;
-}
-
-/// The plan's objective (the kind as objective_kind writes it).
-BoundObjective objective_of(const JobPlan& plan) {
-  BoundObjective o;
-  o.kind = plan.objective == "min_dmax"      ? BoundObjective::Kind::kMinDmax
-           : plan.objective == "min_delta"   ? BoundObjective::Kind::kMinDelta
-           : plan.objective == "feasibility" ? BoundObjective::Kind::kFeasibility
-                                             : BoundObjective::Kind::kWeighted;
-  if (!plan.lambda_text.empty()) o.lambda = double_from_text(plan.lambda_text);
-  return o;
-}
 
 int run_merge(const std::string& dir_text, std::string report_path, bool quiet) {
   const JobPlan plan = read_plan(dir_text);
   const fs::path dir(dir_text);
   if (sha256_hex(read_text_file(plan.data_path)) != plan.data_sha256)
     throw InputError(plan.data_path + ": the data changed since the plan was made (sha256 differs)");
-  const std::string planned_model = without_x0(read_model_file<Rational>(plan.model_path));
-  const BoundObjective objective = objective_of(plan);
+  if (sha256_hex(read_text_file(plan.model_path)) != plan.model_sha256)
+    throw InputError(plan.model_path + ": the model changed since the plan was made (sha256 differs)");
+  const LpvModel<Rational> planned_model = read_model_file<Rational>(plan.model_path);
+  const PlannedClaim planned = planned_claim(plan);
   const auto started = std::chrono::steady_clock::now();
   auto last = started;
   std::vector<Merged> rows;
   for (const JobWindow& w : plan.windows) {
-    Merged m;
-    m.w = w;
-    const std::string cert = (dir / w.certificate).string();
-    if (fs::is_regular_file(cert)) {
-      Certificate c;
-      m.reason = check_window_certificate(plan, w, cert, planned_model, c);
-      if (m.reason.empty()) {
-        m.status = c.claim == CertificateClaim::kInvalidated ? "invalidated" : "verified";
-        m.delta2 = c.delta2;
-        m.dmax2 = c.dmax2;
-        m.upper = objective_at(objective, c.delta2, c.dmax2);
-        for (Eigen::Index i = 0; i < c.model.x0.size(); ++i) m.x0 += (i ? " " : "") + rational_to_text(c.model.x0(i));
-        if (c.claim == CertificateClaim::kLowerBound) m.status = "refused", m.reason = "a lower-bound certificate in place of the upper end";
-        if (c.claim == CertificateClaim::kNotAWitness) m.status = "refused", m.reason = "a not_a_witness certificate in place of the upper end";
-      } else {
-        m.status = "refused";
-      }
-      const std::string low = lower_certificate_path(cert);
-      if (m.status == "verified" && plan.objective != "feasibility" && fs::is_regular_file(low)) {
-        Certificate cl;
-        const std::string why = check_window_certificate(plan, w, low, planned_model, cl);
-        if (why.empty() && cl.claim == CertificateClaim::kLowerBound) {
-          m.has_lower = true;
-          m.lower = cl.lower_bound;
-        } else {
-          m.reason = "lower end not counted: " + (why.empty() ? std::string("not a lower-bound claim") : why);
-        }
-      }
-    } else {
-      m.reason = "no certificate (the job did not run, failed, or found no verified bound; see " + w.report + ")";
-    }
-    rows.push_back(m);
+    const LpvModel<Rational> model = window_model(planned_model, w);
+    rows.push_back({w, judge_window(planned, w, model, (dir / w.certificate).string(), plan.data_path)});
     const auto now = std::chrono::steady_clock::now();
     if (!quiet && (std::chrono::duration<double>(now - last).count() > 2.0 || rows.size() == plan.windows.size())) {
       std::fprintf(stderr, "[jobs merge %6.1f s] checked %zu of %zu windows\n",
@@ -240,34 +168,34 @@ int run_merge(const std::string& dir_text, std::string report_path, bool quiet) 
   bool any_lower = false;
   nlohmann::ordered_json windows = nlohmann::ordered_json::array();
   for (const Merged& m : rows) {
-    nlohmann::ordered_json j = {{"index", m.w.index}, {"rows", {m.w.file_begin, m.w.file_end}}, {"status", m.status}};
-    if (m.status == "verified") {
+    nlohmann::ordered_json j = {{"index", m.w.index}, {"rows", {m.w.file_begin, m.w.file_end}}, {"status", to_string(m.r.status)}};
+    if (m.r.status == WindowStatus::kVerified) {
       ++verified;
       const long n = m.w.file_end - m.w.file_begin;
       samples += n;
-      weighted_dmax2 += Rational(n) * m.dmax2;
-      if (m.upper > worst_upper) worst_upper = m.upper;
-      if (m.dmax2 > worst_dmax2) worst_dmax2 = m.dmax2;
-      if (m.delta2 > worst_delta2) worst_delta2 = m.delta2;
-      j["delta2_exact"] = rational_to_text(m.delta2);
-      j["dmax2_exact"] = rational_to_text(m.dmax2);
-      j["delta"] = upper_sqrt_text(m.delta2);
-      j["dmax"] = upper_sqrt_text(m.dmax2);
-      if (plan.objective != "feasibility") j["upper_exact"] = rational_to_text(m.upper);
-      if (m.has_lower) {
-        j["lower_exact"] = rational_to_text(m.lower);
-        if (!any_lower || m.lower > best_lower) best_lower = m.lower;
+      weighted_dmax2 += Rational(n) * m.r.dmax2;
+      if (m.r.upper > worst_upper) worst_upper = m.r.upper;
+      if (m.r.dmax2 > worst_dmax2) worst_dmax2 = m.r.dmax2;
+      if (m.r.delta2 > worst_delta2) worst_delta2 = m.r.delta2;
+      j["delta2_exact"] = rational_to_text(m.r.delta2);
+      j["dmax2_exact"] = rational_to_text(m.r.dmax2);
+      j["delta"] = upper_sqrt_text(m.r.delta2);
+      j["dmax"] = upper_sqrt_text(m.r.dmax2);
+      if (plan.objective != "feasibility") j["upper_exact"] = rational_to_text(m.r.upper);
+      if (m.r.has_lower) {
+        j["lower_exact"] = rational_to_text(m.r.lower);
+        if (!any_lower || m.r.lower > best_lower) best_lower = m.r.lower;
         any_lower = true;
       }
-      j["x0"] = m.x0;
-    } else if (m.status == "invalidated") {
+      j["x0"] = m.r.x0;
+    } else if (m.r.status == WindowStatus::kInvalidated) {
       ++invalidated;
-    } else if (m.status == "missing") {
+    } else if (m.r.status == WindowStatus::kMissing) {
       ++missing;
     } else {
       ++refused;
     }
-    if (!m.reason.empty()) j["reason"] = m.reason;
+    if (!m.r.reason.empty()) j["reason"] = m.r.reason;
     j["certificate"] = m.w.certificate;
     windows.push_back(j);
   }
@@ -279,16 +207,16 @@ int run_merge(const std::string& dir_text, std::string report_path, bool quiet) 
   std::printf("%6s %15s  %-11s %12s %12s  %s\n", "window", "rows", "status", "delta <=", "dmax <=", "note");
   size_t shown = 0, shown_ok = 0, shown_other = 0;
   for (const Merged& m : rows) {
-    const bool good = m.status == "verified";
+    const bool good = m.r.status == WindowStatus::kVerified;
     const bool show = rows.size() <= 40 || (good ? shown_ok < 10 : shown_other < 30);
     if (!show) continue;
     ++shown;
     ++(good ? shown_ok : shown_other);
     const std::string span = std::to_string(m.w.file_begin) + ":" + std::to_string(m.w.file_end);
-    const bool ok = m.status == "verified";
-    std::printf("%6d %15s  %-11s %12s %12s  %s\n", m.w.index, span.c_str(), m.status.c_str(),
-                ok ? upper_sqrt_text(m.delta2).c_str() : "-", ok ? upper_sqrt_text(m.dmax2).c_str() : "-",
-                m.reason.c_str());
+    const bool ok = m.r.status == WindowStatus::kVerified;
+    std::printf("%6d %15s  %-11s %12s %12s  %s\n", m.w.index, span.c_str(), to_string(m.r.status),
+                ok ? upper_sqrt_text(m.r.delta2).c_str() : "-", ok ? upper_sqrt_text(m.r.dmax2).c_str() : "-",
+                m.r.reason.c_str());
   }
   if (shown < rows.size()) std::printf("   ... %zu more window(s) in the report\n", rows.size() - shown);
   std::printf("verified %zu, invalidated %zu, missing %zu, refused %zu (of %zu)\n", verified, invalidated, missing,
@@ -357,7 +285,7 @@ Runner add_jobs_command(CLI::App& app) {
   auto merge_dir = std::make_shared<std::string>();
   auto merge_report = std::make_shared<std::string>();
   auto merge_quiet = std::make_shared<bool>(false);
-  CLI::App* m = jobs->add_subcommand("merge", "Re-check every window's certificate exactly and assemble the report");
+  CLI::App* m = jobs->add_subcommand("merge", "Compare every window's certificate with the plan, re-check it exactly, assemble the report");
   m->add_option("--dir", *merge_dir, "the folder of 'lpvid jobs plan'")->required();
   m->add_option("--report", *merge_report, "where to write the merged report (default <dir>/merged.json)");
   m->add_flag("--quiet", *merge_quiet, "no progress lines on stderr");

@@ -4,6 +4,7 @@
 
 #include "core/file_io.h"
 #include "core/input_error.h"
+#include "core/number_text.h"
 
 namespace lpvid::cli {
 
@@ -11,8 +12,9 @@ nlohmann::ordered_json plan_json(const JobPlan& p) {
   nlohmann::ordered_json j;
   j["format"] = kJobsFormat;
   j["data"] = {{"path", p.data_path}, {"sha256", p.data_sha256}, {"names", p.data_names}};
-  j["model"] = {{"path", p.model_path}};
+  j["model"] = {{"path", p.model_path}, {"sha256", p.model_sha256}};
   j["objective"] = {{"kind", p.objective}, {"delta", p.delta_text}, {"dmax", p.dmax_text}, {"lambda", p.lambda_text}};
+  j["toeplitz"] = p.toeplitz;
   j["window"] = p.window;
   j["min_last"] = p.min_last;
   j["windows"] = nlohmann::ordered_json::array();
@@ -22,6 +24,7 @@ nlohmann::ordered_json plan_json(const JobPlan& p) {
                             {"model", w.model},
                             {"certificate", w.certificate},
                             {"report", w.report},
+                            {"x0", w.x0},
                             {"command", w.command}});
   return j;
 }
@@ -51,7 +54,16 @@ JobPlan read_plan(const std::string& dir) {
   p.data_path = text_of(data, "path", "data.");
   p.data_sha256 = text_of(data, "sha256", "data.");
   for (const auto& name : field(data, "names", "data.")) p.data_names.push_back(name.get<std::string>());
-  p.model_path = text_of(field(j, "model", ""), "path", "model.");
+  // a plan of an older lpvid (no model hash, toeplitz mode or window x0)
+  // cannot say what its jobs must certify
+  const std::string again = " (a plan of an older lpvid: run 'lpvid jobs plan' again)";
+  const nlohmann::json& model = field(j, "model", "");
+  if (!j.contains("toeplitz") || !model.is_object() || !model.contains("sha256"))
+    throw InputError(path + ": toeplitz, model.sha256: missing" + again);
+  p.model_path = text_of(model, "path", "model.");
+  p.model_sha256 = text_of(model, "sha256", "model.");
+  p.toeplitz = text_of(j, "toeplitz", "");
+  if (p.toeplitz != "signal" && p.toeplitz != "paper") throw InputError(path + ": toeplitz: expected \"signal\" or \"paper\"");
   const nlohmann::json& obj = field(j, "objective", "");
   p.objective = text_of(obj, "kind", "objective.");
   p.delta_text = text_of(obj, "delta", "objective.");
@@ -76,6 +88,14 @@ JobPlan read_plan(const std::string& dir) {
     jw.certificate = text_of(w, "certificate", where);
     jw.report = text_of(w, "report", where);
     jw.command = text_of(w, "command", where);
+    if (!w.contains("x0")) throw InputError(path + ": " + where + "x0: missing" + again);
+    const nlohmann::json& x0 = w.at("x0");
+    if (!x0.is_array()) throw InputError(path + ": " + where + "x0: expected an array of exact numbers as text");
+    for (const auto& v : x0) {
+      if (!v.is_string() || number_text_problem(v.get<std::string>()))
+        throw InputError(path + ": " + where + "x0: expected exact numbers as text");
+      jw.x0.push_back(v.get<std::string>());
+    }
     p.windows.push_back(jw);
   }
   return p;

@@ -2,8 +2,9 @@
 /// A long record past one machine: its windows are independent Theorem 2.1
 /// problems, so `lpvid jobs plan` writes one `lpvid invalidate` command per
 /// window (a job list any batch engine runs: GNU parallel, xargs -P, a Slurm
-/// job array, an MPI launcher) and `lpvid jobs merge` re-checks every
-/// certificate exactly and assembles the report.
+/// job array, an MPI launcher) and `lpvid jobs merge` compares every
+/// certificate with the plan (cli/jobs_window_check.h), re-checks it
+/// exactly and assembles the report.
 ///
 /// A window [b, e) of the record is certified for the model with its state
 /// at b: the model's own state, simulated from its x0 over the record
@@ -28,6 +29,9 @@ struct JobWindow {
   long file_begin = 0, file_end = 0;  ///< rows of the data file, [begin, end)
   std::string model, certificate, report;
   std::string command;  ///< the job's shell command line
+  /// The window's initial state as exact text (the x0 its model file
+  /// declares): merge compares every certificate's x0 with it.
+  std::vector<std::string> x0;
 };
 
 /// The plan: what `merge` needs to judge the certificates it finds.
@@ -36,6 +40,8 @@ struct JobPlan {
   std::string data_sha256;
   std::vector<std::string> data_names;
   std::string model_path;    ///< absolute (the model the windows derive from)
+  std::string model_sha256;  ///< of the model file's bytes when planned
+  std::string toeplitz;      ///< "signal" or "paper", as the jobs run
   std::string objective;     ///< min_dmax, min_delta, weighted or feasibility
   std::string delta_text, dmax_text, lambda_text;  ///< as given
   long window = 0, min_last = 0;

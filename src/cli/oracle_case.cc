@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <future>
+#include <map>
 
 #include "cli/inputs.h"
 #include "core/file_io.h"
@@ -123,28 +124,77 @@ void identify_reference(const Inputs& in, const CommonOptions& c, const fs::path
   ref.identified_certificate = write_certificates(id.bounds, (folder / "lpvid.identify.cert.json").string()).certificate;
 }
 
+using CaseFiles = std::map<std::string, std::string>;
+
+/// Writes every file into `folder` (created; emptied first when `fresh`).
+void write_case_files(const CaseFiles& files, const fs::path& folder, bool fresh) {
+  std::error_code ec;
+  if (fresh) fs::remove_all(folder, ec);
+  fs::create_directories(folder, ec);
+  if (!fs::is_directory(folder)) throw IoError("cannot create the case folder '" + folder.string() + "'");
+  for (const auto& [name, text] : files) write_text_file((folder / name).string(), text, "case file");
+}
+
+/// The files of `folder` whose bytes are not those of `files` (a removed or
+/// unreadable one included), as "a, b"; "" when none.
+std::string changed_files(const CaseFiles& files, const fs::path& folder) {
+  std::string changed;
+  for (const auto& [name, text] : files) {
+    bool same = false;
+    try {
+      same = read_text_file((folder / name).string()) == text;
+    } catch (const std::runtime_error&) {
+    }
+    if (!same) changed += (changed.empty() ? "" : ", ") + (folder / name).string();
+  }
+  return changed;
+}
+
 }  // namespace
 
-CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptions& o) {
-  const fs::path folder = fs::absolute(folder_text);
+CaseCopy read_case_copy(const std::string& folder_text) {
+  const fs::path folder = fs::absolute(folder_text).lexically_normal();
   const std::string task_path = (folder / "task.json").string();
-  const OracleTask task = parse_task(read_text_file(task_path), task_path);
-  CommonOptions c = task_options(task, folder, o.solver);
+  OracleTask task = parse_task(read_text_file(task_path), task_path);
+  CaseCopy copy;
+  copy.name = folder.has_filename() ? folder.filename().string() : folder.parent_path().filename().string();
+  copy.files["data.csv"] = read_text_file((folder / task.data).string());
+  copy.files["model.json"] = read_text_file((folder / task.model).string());
+  task.data = "data.csv";
+  task.model = "model.json";
+  copy.files["task.json"] = task_json(task);
+  return copy;
+}
+
+CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
+  const fs::path work = fs::absolute(o.work).lexically_normal();
+  const fs::path mine = work / (copy.name + ".lpvid"), theirs = work / copy.name;
+  // the task as the command sees it names the run's tolerance (the judge
+  // takes it from the command line, never from this file)
+  CaseFiles files = copy.files;
+  OracleTask task = parse_task(files.at("task.json"), (mine / "task.json").string());
+  task.tolerance = o.tolerance.relative;
+  files["task.json"] = task_json(task);
+  write_case_files(files, mine, false);
+  CommonOptions c = task_options(task, mine, o.solver);
   const Inputs in = load_inputs(c);
 
   CaseReport rep;
-  rep.name = folder.filename().string();
-  rep.folder = folder.string();
+  rep.name = copy.name;
+  rep.folder = theirs.string();
   rep.kind = task.kind;
   rep.n = static_cast<long>(in.exp_q.n());
   rep.nu = in.model_q.nu;
   rep.ny = in.model_q.ny;
-  const std::string out = (folder / "answer.json").string();
-  std::error_code ec;
-  fs::remove(out, ec);
-  rep.outside_log = (folder / "outside.log").string();
-  const std::string command = substitute_placeholders(
-      o.command, {{"data", c.data_path}, {"model", c.model_path}, {"task", task_path}, {"out", out}, {"dir", folder.string()}});
+  // the command's copy, fresh, created just before it runs
+  write_case_files(files, theirs, true);
+  const std::string out = (theirs / "answer.json").string();
+  rep.outside_log = (theirs / "outside.log").string();
+  const std::string command = substitute_placeholders(o.command, {{"data", (theirs / "data.csv").string()},
+                                                                  {"model", (theirs / "model.json").string()},
+                                                                  {"task", (theirs / "task.json").string()},
+                                                                  {"out", out},
+                                                                  {"dir", theirs.string()}});
 
   // The outside command runs while lpvid certifies the same task.
   auto outside = std::async(std::launch::async, run_shell_command, command, o.case_timeout, rep.outside_log);
@@ -154,19 +204,23 @@ CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptio
   const bool identify = task.kind == TaskKind::kIdentify;
   ReferenceResult identified;
   CertifiedBounds b;
-  if (identify) identify_reference(in, c, folder, *solver, identified);
+  if (identify) identify_reference(in, c, mine, *solver, identified);
   else b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
   rep.lpvid_seconds = seconds_since(started);
   const CommandRun run = outside.get();
   rep.outside_seconds = run.seconds;
   rep.outside_exit = run.exit_code;
 
-  const auto error = [&rep](const std::string& why) {
+  const auto error = [&rep](const std::string& why, OracleVerdict v = OracleVerdict::kError) {
     rep.claim = "-";
-    rep.judgement.verdict = OracleVerdict::kError;
+    rep.judgement.verdict = v;
     rep.judgement.reason = why;
     return rep;
   };
+  const std::string changed = changed_files(files, theirs) + changed_files(files, mine);
+  if (!changed.empty())
+    return error("the command changed the case's inputs while it ran (" + changed + "); its answer is not judged",
+                 OracleVerdict::kTampered);
   if (!run.started) return error("the command did not start: " + run.error);
   if (run.timed_out) return error("the command ran past the case time limit of " + double_to_text(o.case_timeout) + " s");
   if (run.exit_code != 0) return error("the command exited with code " + std::to_string(run.exit_code) + " (log " + rep.outside_log + ")");
@@ -185,15 +239,15 @@ CaseReport run_oracle_case(const std::string& folder_text, const OracleCaseOptio
     b = certify_fixed(judged, in.exp_q, in.mode, co, *solver);
     rep.lpvid_seconds += seconds_since(again);
   }
-  const WitnessResult witness = check_witness(task, answer, judged, in, folder);
-  ReferenceResult ref = reference_of(b, in.objective, write_certificates(b, (folder / "lpvid.cert.json").string()));
+  const WitnessResult witness = check_witness(task, answer, judged, in, mine);
+  ReferenceResult ref = reference_of(b, in.objective, write_certificates(b, (mine / "lpvid.cert.json").string()));
   ref.identified_verified = identified.identified_verified;
   ref.identified = identified.identified;
   ref.identified_certificate = identified.identified_certificate;
-  rep.judgement = judge(task, answer, ref, witness);
+  rep.judgement = judge(task, answer, ref, witness, o.tolerance);
 
   // A refutation's evidence is checked once more, from its file, by the verifier.
-  if (rep.judgement.verdict == OracleVerdict::kRefuted) {
+  if (rep.judgement.verdict == OracleVerdict::kRefuted || rep.judgement.verdict == OracleVerdict::kBadWitness) {
     const CertificateVerdict v = check_certificate_file(rep.judgement.evidence);
     rep.evidence_check = v.holds ? v.claim_text : "invalid: " + v.reason;
     if (!v.holds) {

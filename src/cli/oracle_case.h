@@ -1,24 +1,50 @@
 #pragma once
-/// One case of `lpvid oracle`: its folder (data.csv, model.json, task.json),
-/// the outside command run on it, lpvid's own certification of the same
-/// task, the exact check of the answer's witness, and the verdict
-/// (oracle/judge.h) with its evidence re-checked from the file.
+/// One case of `lpvid oracle`: lpvid's own copy of its inputs, the outside
+/// command run on a fresh copy, lpvid's own certification of the same task,
+/// the exact check of the answer's witness, and the verdict (oracle/judge.h)
+/// with its evidence re-checked from the file.
+///
+/// The command under test never touches what it is judged on. lpvid reads
+/// every case into memory (CaseCopy) before any command runs; just before a
+/// case's command starts, lpvid writes
+///   <work>/<case>.lpvid/  lpvid's copy (task.json, data.csv, model.json),
+///                         its certificates and any not_a_witness file;
+///   <work>/<case>/        the command's copy ({dir}, {data}, {model},
+///                         {task}), emptied first, where it writes {out};
+/// lpvid certifies from its own copy, and after the command ends both
+/// copies are compared byte for byte with the memory: a changed input makes
+/// the case "tampered" (an error of the command, never a verdict on its
+/// answer).
 
+#include <map>
 #include <string>
 
+#include "oracle/judge.h"
 #include "oracle/oracle_report.h"
 
 namespace lpvid::cli {
 
-struct OracleCaseOptions {
-  std::string command;          ///< the outside command template (oracle/outside_command.h)
-  double case_timeout = 120;    ///< seconds for the outside command
-  std::string solver = "csdp";  ///< lpvid's own solver
+/// lpvid's copy of a case: its name and the bytes of task.json, data.csv and
+/// model.json (the task naming "data.csv" and "model.json").
+struct CaseCopy {
+  std::string name;
+  std::map<std::string, std::string> files;
 };
 
-/// Runs and judges the case in `folder` (which holds task.json). Throws
-/// InputError when the case itself is unreadable (a bad case is not an
-/// outside error).
-CaseReport run_oracle_case(const std::string& folder, const OracleCaseOptions& options);
+/// Reads the case in `folder`: task.json and the data and model it names.
+/// Throws InputError when the case itself is unreadable (a bad case is not
+/// an outside error).
+CaseCopy read_case_copy(const std::string& folder);
+
+struct OracleCaseOptions {
+  std::string command;          ///< the outside command template (oracle/outside_command.h)
+  std::string work = "oracle-run";  ///< the folder of both copies of every case
+  double case_timeout = 120;    ///< seconds for the outside command
+  std::string solver = "csdp";  ///< lpvid's own solver
+  JudgeTolerance tolerance;     ///< from the command line only
+};
+
+/// Runs and judges one case (copies written as above).
+CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& options);
 
 }  // namespace lpvid::cli

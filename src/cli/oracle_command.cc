@@ -2,6 +2,7 @@
 // certified ones, case by case (oracle/judge.h for the rules).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -23,35 +24,46 @@ namespace fs = std::filesystem;
 struct OracleArgs {
   int cases = 20;
   uint64_t seed = 1;
-  std::string cases_dir, work = "oracle-run", report, junit;
+  std::string cases_dir, report, junit;
   double run_timeout = 0;
   bool strict = false, quiet = false;
   OracleCaseOptions run;
   RandomCaseFlags random;
 };
 
-/// The case folders to judge: the given ones (every sub-folder with a
-/// task.json, in name order), or N random cases written under --work.
-std::vector<std::string> case_folders(const OracleArgs& a) {
-  std::vector<std::string> out;
-  if (!a.cases_dir.empty()) {
-    if (!fs::is_directory(a.cases_dir)) throw InputError("--cases-dir: '" + a.cases_dir + "' is not a folder");
-    for (const auto& e : fs::directory_iterator(a.cases_dir))
-      if (e.is_directory() && fs::is_regular_file(e.path() / "task.json")) out.push_back(e.path().string());
-    std::sort(out.begin(), out.end());
-    if (out.empty()) throw InputError("--cases-dir: no sub-folder of '" + a.cases_dir + "' holds a task.json");
-    return out;
-  }
-  if (a.cases < 1) throw InputError("--cases: at least 1");
-  const RandomTaskOptions options = random_task_options(a.random);
-  for (int i = 0; i < a.cases; ++i) {
-    char name[32];
-    std::snprintf(name, sizeof name, "case-%04d", i + 1);
-    const std::string folder = (fs::path(a.work) / name).string();
-    write_case_folder(folder, random_oracle_case(a.seed + static_cast<uint64_t>(i), options));
-    out.push_back(folder);
-  }
+/// The given cases (every sub-folder of --cases-dir with a task.json, in
+/// name order; lpvid's copies of an earlier run, "<case>.lpvid", left out),
+/// each read into memory now, before any outside command runs.
+std::vector<CaseCopy> given_cases(const std::string& cases_dir) {
+  if (!fs::is_directory(cases_dir)) throw InputError("--cases-dir: '" + cases_dir + "' is not a folder");
+  std::vector<std::string> folders;
+  for (const auto& e : fs::directory_iterator(cases_dir))
+    if (e.is_directory() && e.path().extension() != ".lpvid" && fs::is_regular_file(e.path() / "task.json"))
+      folders.push_back(e.path().string());
+  std::sort(folders.begin(), folders.end());
+  if (folders.empty()) throw InputError("--cases-dir: no sub-folder of '" + cases_dir + "' holds a task.json");
+  std::vector<CaseCopy> out;
+  for (const std::string& f : folders) out.push_back(read_case_copy(f));
   return out;
+}
+
+/// Random case i (0-based), made just before it runs: written into lpvid's
+/// own folder for it (with the generating system, truth.json) and read back.
+std::string random_case_name(size_t i) {
+  char name[32];
+  std::snprintf(name, sizeof name, "case-%04zu", i + 1);
+  return name;
+}
+
+CaseCopy random_case(const OracleArgs& a, const RandomTaskOptions& options, size_t i) {
+  const std::string name = random_case_name(i);
+  const std::string mine = (fs::path(a.run.work) / (name + ".lpvid")).string();
+  std::error_code ec;
+  fs::remove_all(mine, ec);
+  write_case_folder(mine, random_oracle_case(a.seed + static_cast<uint64_t>(i), options));
+  CaseCopy copy = read_case_copy(mine);
+  copy.name = name;
+  return copy;
 }
 
 int run_oracle(const OracleArgs& a) {
@@ -59,23 +71,30 @@ int run_oracle(const OracleArgs& a) {
   check_output_file(a.junit, "JUnit report");
   const auto started = std::chrono::steady_clock::now();
   const auto elapsed = [&started] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
-  const std::vector<std::string> folders = case_folders(a);
+  const JudgeTolerance& tol = a.run.tolerance;
+  if (!(tol.relative >= 0) || !std::isfinite(tol.relative)) throw InputError("--tolerance: must be a number >= 0");
+  if (!(tol.absolute >= 0) || !std::isfinite(tol.absolute)) throw InputError("--abs-tolerance: must be a number >= 0");
+  const bool given = !a.cases_dir.empty();
+  if (!given && a.cases < 1) throw InputError("--cases: at least 1");
+  const std::vector<CaseCopy> copies = given ? given_cases(a.cases_dir) : std::vector<CaseCopy>();
+  const RandomTaskOptions options = given ? RandomTaskOptions() : random_task_options(a.random);
+  const size_t count = given ? copies.size() : static_cast<size_t>(a.cases);
   std::vector<CaseReport> reports;
-  for (size_t i = 0; i < folders.size(); ++i) {
+  for (size_t i = 0; i < count; ++i) {
     if (a.run_timeout > 0 && elapsed() > a.run_timeout) {
       CaseReport skipped;
-      skipped.name = fs::path(folders[i]).filename().string();
-      skipped.folder = folders[i];
+      skipped.name = given ? copies[i].name : random_case_name(i);
+      skipped.folder = (fs::path(a.run.work) / skipped.name).string();
       skipped.claim = "-";
       skipped.judgement.verdict = OracleVerdict::kError;
       skipped.judgement.reason = "not run: the run time limit (--timeout) was reached";
       reports.push_back(skipped);
       continue;
     }
-    reports.push_back(run_oracle_case(folders[i], a.run));
+    reports.push_back(run_oracle_case(given ? copies[i] : random_case(a, options, i), a.run));
     const CaseReport& r = reports.back();
     if (!a.quiet)
-      std::fprintf(stderr, "[oracle %7.1f s] case %zu/%zu %s (%s, n=%ld, %dx%d): %s%s%s\n", elapsed(), i + 1, folders.size(),
+      std::fprintf(stderr, "[oracle %7.1f s] case %zu/%zu %s (%s, n=%ld, %dx%d): %s%s%s\n", elapsed(), i + 1, count,
                    r.name.c_str(), to_string(r.kind), r.n, r.ny, r.nu, to_string(r.judgement.verdict),
                    r.judgement.evidence.empty() || r.judgement.verdict != OracleVerdict::kRefuted ? "" : ", certificate ",
                    r.judgement.verdict == OracleVerdict::kRefuted ? r.judgement.evidence.c_str() : "");
@@ -90,8 +109,8 @@ int run_oracle(const OracleArgs& a) {
   write_json(a.report, oracle_report_json(reports, a.run.command, seconds, a.strict));
   if (!a.junit.empty()) write_text_file(a.junit, junit_xml(reports, seconds, a.strict), "JUnit report");
   const OracleTotals t = totals_of(reports);
-  if (t.refuted > 0) return kExitInvalidated;
-  if (t.error > 0 || (a.strict && t.suboptimal > 0)) return kExitSolver;
+  if (t.refuted + t.bad_witness > 0) return kExitInvalidated;
+  if (t.error + t.tampered > 0 || (a.strict && t.suboptimal > 0)) return kExitSolver;
   return kExitOk;
 }
 
@@ -110,23 +129,31 @@ Runner add_oracle_command(CLI::App& app) {
   cmd->add_option("--cases", a->cases, "number of random cases (20)");
   cmd->add_option("--seed", a->seed, "seed of the first random case; case i uses seed + i - 1 (1)");
   cmd->add_option("--cases-dir", a->cases_dir, "judge the given cases instead: every sub-folder holding a task.json");
-  cmd->add_option("--work", a->work, "folder for the random cases, answers, logs and certificates (oracle-run)");
+  cmd->add_option("--work", a->run.work,
+                  "folder for the cases' copies: <case>/ the command's (answer, log), <case>.lpvid/ lpvid's (certificates) "
+                  "(oracle-run)");
   cmd->add_option("--report", a->report, "JSON report to write");
   cmd->add_option("--junit", a->junit, "JUnit XML file to write (one testcase per case)");
   cmd->add_option("--case-timeout", a->run.case_timeout, "seconds the outside command may take per case (120)");
   cmd->add_option("--timeout", a->run_timeout, "seconds for the whole run; later cases are not started (0: none)");
   cmd->add_option("--solver", a->run.solver, "lpvid's own SDP solver (csdp)");
+  cmd->add_option("--abs-tolerance", a->run.tolerance.absolute,
+                  "absolute slack on the objective before an answer is 'suboptimal', beside --tolerance (1e-9)");
   cmd->add_flag("--strict", a->strict, "suboptimal answers fail the run too (exit 3, JUnit failures)");
   cmd->add_flag("--quiet", a->quiet, "no progress lines on stderr");
   add_random_case_flags(*cmd, a->random);
   cmd->callback([cmd, a] {
     if (!a->cases_dir.empty())
       for (const char* name : {"--cases", "--seed", "--siso", "--lti", "--min-n", "--max-n", "--leading-zeros", "--max-delay",
-                               "--static-blocks", "--kinds", "--tolerance"})
+                               "--static-blocks", "--kinds"})
         if (cmd->count(name) > 0)
           throw CLI::ValidationError(name, "shapes random cases; with --cases-dir the given task files decide");
   });
-  return [cmd, a] { return cmd->parsed() ? run_oracle(*a) : -1; };
+  return [cmd, a] {
+    if (!cmd->parsed()) return -1;
+    a->run.tolerance.relative = a->random.tolerance;  // --tolerance judges; it is also written to the tasks
+    return run_oracle(*a);
+  };
 }
 
 }  // namespace lpvid::cli

@@ -8,9 +8,11 @@ const char* to_string(OracleVerdict v) {
   switch (v) {
     case OracleVerdict::kConfirmed: return "confirmed";
     case OracleVerdict::kRefuted: return "refuted";
+    case OracleVerdict::kBadWitness: return "bad_witness";
     case OracleVerdict::kSuboptimal: return "suboptimal";
     case OracleVerdict::kUndecided: return "undecided";
     case OracleVerdict::kError: return "error";
+    case OracleVerdict::kTampered: return "tampered";
   }
   return "?";
 }
@@ -47,7 +49,14 @@ Judgement verdict(OracleVerdict v, std::string reason, std::string evidence = ""
   return j;
 }
 
-Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const ReferenceResult& ref, const WitnessResult& wit) {
+Judgement bad_witness(const WitnessResult& wit, const std::string& claim) {
+  return verdict(OracleVerdict::kBadWitness,
+                 claim + " is not shown false, but the witness fails the exact check at the claimed values: " + wit.text,
+                 wit.certificate);
+}
+
+Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const ReferenceResult& ref, const WitnessResult& wit,
+                      const JudgeTolerance& tol) {
   const Rational zero(0);
   const Rational J = objective_at(objective_of(task), a.delta ? *a.delta * *a.delta : zero, a.dmax ? *a.dmax * *a.dmax : zero);
   const std::string name = task.kind == TaskKind::kMinDelta ? "delta^2" : task.kind == TaskKind::kWeighted ? "objective" : "dmax^2";
@@ -56,23 +65,22 @@ Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const Refer
     j.claimed = J;
     return j;
   };
-  if (wit.status == WitnessResult::kFails)
-    return with_claim(verdict(OracleVerdict::kRefuted, "the witness fails the exact check at the claimed values: " + wit.text, wit.certificate));
   if (ref.lower_verified && J < ref.lower)
     return with_claim(verdict(OracleVerdict::kRefuted,
                               claim + " is below lpvid's certified lower end " + approx(ref.lower) + " (dual certificate)",
                               ref.lower_certificate));
-  const Rational slack = Rational(1) + rational_from_text(double_to_text(task.tolerance));
-  if (ref.upper_verified && J > ref.upper * slack)
-    return with_claim(verdict(OracleVerdict::kSuboptimal,
-                              claim + " is above lpvid's certified upper end " + approx(ref.upper) + " by more than the tolerance " +
-                                  double_to_text(task.tolerance),
+  if (wit.status == WitnessResult::kFails) return with_claim(bad_witness(wit, claim));
+  const Rational slack = Rational(1) + rational_from_text(double_to_text(tol.relative));
+  const Rational floor = rational_from_text(double_to_text(tol.absolute));
+  const std::string by_more = " by more than the tolerance " + double_to_text(tol.relative) + " (relative) + " +
+                              double_to_text(tol.absolute) + " (absolute)";
+  if (ref.upper_verified && J > ref.upper * slack + floor)
+    return with_claim(verdict(OracleVerdict::kSuboptimal, claim + " is above lpvid's certified upper end " + approx(ref.upper) + by_more,
                               ref.upper_certificate));
-  if (ref.identified_verified && J > ref.identified * slack)
+  if (ref.identified_verified && J > ref.identified * slack + floor)
     return with_claim(verdict(OracleVerdict::kSuboptimal,
                               claim + " is above the d_max^2 = " + approx(ref.identified) +
-                                  " of lpvid's own identified and certified model by more than the tolerance " +
-                                  double_to_text(task.tolerance),
+                                  " of lpvid's own identified and certified model" + by_more,
                               ref.identified_certificate));
   const bool witnessed = wit.status == WitnessResult::kHolds;
   const std::string interval = "[" + (ref.lower_verified ? approx(ref.lower) : std::string("?")) + ", " +
@@ -91,16 +99,16 @@ Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const Refer
 }
 
 Judgement judge_decision(const OracleAnswer& a, const ReferenceResult& ref, const WitnessResult& wit) {
-  if (wit.status == WitnessResult::kFails)
-    return verdict(OracleVerdict::kRefuted, "the witness fails the exact check: " + wit.text, wit.certificate);
   const bool says_consistent = a.verdict == "consistent";
+  if (ref.outcome == CertifyOutcome::kVerified && !says_consistent)
+    return verdict(OracleVerdict::kRefuted, "claimed invalidated, but lpvid certifies consistent", ref.upper_certificate);
+  if (ref.outcome == CertifyOutcome::kInvalidated && says_consistent)
+    return verdict(OracleVerdict::kRefuted, "claimed consistent, but lpvid certifies invalidated", ref.invalidation_certificate);
+  if (wit.status == WitnessResult::kFails) return bad_witness(wit, std::string("claimed ") + a.verdict);
   if (ref.outcome == CertifyOutcome::kVerified)
-    return says_consistent ? verdict(OracleVerdict::kConfirmed, "consistent, as lpvid certifies", ref.upper_certificate)
-                           : verdict(OracleVerdict::kRefuted, "claimed invalidated, but lpvid certifies consistent", ref.upper_certificate);
+    return verdict(OracleVerdict::kConfirmed, "consistent, as lpvid certifies", ref.upper_certificate);
   if (ref.outcome == CertifyOutcome::kInvalidated)
-    return says_consistent
-               ? verdict(OracleVerdict::kRefuted, "claimed consistent, but lpvid certifies invalidated", ref.invalidation_certificate)
-               : verdict(OracleVerdict::kConfirmed, "invalidated, as lpvid certifies", ref.invalidation_certificate);
+    return verdict(OracleVerdict::kConfirmed, "invalidated, as lpvid certifies", ref.invalidation_certificate);
   if (wit.status == WitnessResult::kHolds) return verdict(OracleVerdict::kConfirmed, "consistent: the witness holds exactly");
   return verdict(OracleVerdict::kUndecided, std::string("claimed ") + a.verdict + "; lpvid could not certify either way (" +
                                                 to_string(ref.outcome) + (ref.reason.empty() ? "" : ": " + ref.reason) + ")");
@@ -108,10 +116,11 @@ Judgement judge_decision(const OracleAnswer& a, const ReferenceResult& ref, cons
 
 }  // namespace
 
-Judgement judge(const OracleTask& task, const OracleAnswer& answer, const ReferenceResult& ref, const WitnessResult& witness) {
+Judgement judge(const OracleTask& task, const OracleAnswer& answer, const ReferenceResult& ref, const WitnessResult& witness,
+                const JudgeTolerance& tolerance) {
   if (answer.failed) return verdict(OracleVerdict::kError, "the implementation reported failure" + (answer.message.empty() ? "" : ": " + answer.message));
   if (witness.status == WitnessResult::kMalformed) return verdict(OracleVerdict::kError, "malformed witness: " + witness.text);
-  return task.kind == TaskKind::kDecide ? judge_decision(answer, ref, witness) : judge_bound(task, answer, ref, witness);
+  return task.kind == TaskKind::kDecide ? judge_decision(answer, ref, witness) : judge_bound(task, answer, ref, witness, tolerance);
 }
 
 }  // namespace lpvid

@@ -6,22 +6,28 @@
 /// checks a witness, when the answer has one, exactly at the claimed values.
 ///
 ///  - refuted: the claim is impossible, with a certificate lpvid-verify
-///    accepts: a claimed optimum J < L (the lower-end certificate), a verdict
-///    contradicting lpvid's certified one (lpvid's certificate), a witness
-///    that fails the exact check (a "not_a_witness" certificate);
-///  - suboptimal: J > U·(1 + tolerance) (lpvid's primal certificate shows a
-///    better value); identify: also J above lpvid's own identified and
-///    certified d_max² by more than the tolerance;
-///  - confirmed: L ≤ J ≤ U·(1 + tolerance) with both ends certified; or a
-///    witness that holds exactly at the claimed values (J is attained; it
-///    may even be below lpvid's own U); or J ≥ U (attained by lpvid's
+///    accepts: a claimed optimum J < L (the lower-end certificate), or a
+///    verdict contradicting lpvid's certified one (lpvid's certificate);
+///  - bad_witness: the claim is not shown false, but the witness attached to
+///    it fails the exact check at the claimed values (a "not_a_witness"
+///    certificate): the answer's proof is wrong, not necessarily its number;
+///  - suboptimal: J > U·(1 + tolerance) + floor (lpvid's primal certificate
+///    shows a better value); identify: also J above lpvid's own identified
+///    and certified d_max² by more than that;
+///  - confirmed: L ≤ J ≤ U·(1 + tolerance) + floor with both ends certified;
+///    or a witness that holds exactly at the claimed values (J is attained;
+///    it may even be below lpvid's own U); or J ≥ U (attained by lpvid's
 ///    certificate); or a verdict equal to lpvid's certified one;
 ///  - undecided: lpvid could not certify enough to decide (never counted as
 ///    an outside error);
 ///  - error: no usable answer (the command failed, timed out, or wrote a
-///    malformed answer or witness).
+///    malformed answer or witness);
+///  - tampered: the command changed the case's inputs (its own copy or
+///    lpvid's) while it ran; nothing it answered is judged
+///    (set by the case runner, cli/oracle_case.h).
 /// J is the task's objective at the claim: d_max² (min_dmax, identify), δ²
-/// (min_delta), λδ² + (1−λ)d_max² (weighted); the tolerance is relative to it.
+/// (min_delta), λδ² + (1−λ)d_max² (weighted). The tolerance comes from the
+/// oracle's command line, never from a file the command under test can edit.
 /// identify: the claim (θ, d_max) is judged as the fixed model with θ folded
 /// in; [L, U] is that model's certified interval, so a refutation proves
 /// that THIS θ cannot explain the data with the claimed d_max at δ (Theorem
@@ -38,10 +44,20 @@
 
 namespace lpvid {
 
-enum class OracleVerdict { kConfirmed, kRefuted, kSuboptimal, kUndecided, kError };
+enum class OracleVerdict { kConfirmed, kRefuted, kBadWitness, kSuboptimal, kUndecided, kError, kTampered };
 
-/// "confirmed", "refuted", "suboptimal", "undecided", "error".
+/// "confirmed", "refuted", "bad_witness", "suboptimal", "undecided", "error", "tampered".
 const char* to_string(OracleVerdict v);
+
+/// How much worse than lpvid's certified upper end U an optimum may be and
+/// still be confirmed: J ≤ U·(1 + relative) + absolute. The absolute floor
+/// keeps a correct answer to a zero optimum (a solver's 1e-11 against
+/// lpvid's 1e-26) from being called suboptimal; it is in the objective's own
+/// units (d_max², δ² or the weighted sum).
+struct JudgeTolerance {
+  double relative = 0.01;
+  double absolute = 1e-9;
+};
 
 /// What lpvid certified for the task (from CertifiedBounds).
 struct ReferenceResult {
@@ -78,6 +94,6 @@ struct Judgement {
 };
 
 Judgement judge(const OracleTask& task, const OracleAnswer& answer, const ReferenceResult& ref,
-                const WitnessResult& witness);
+                const WitnessResult& witness, const JudgeTolerance& tolerance = {});
 
 }  // namespace lpvid

@@ -13,9 +13,11 @@ OracleTotals totals_of(const std::vector<CaseReport>& cases) {
     switch (c.judgement.verdict) {
       case OracleVerdict::kConfirmed: ++t.confirmed; break;
       case OracleVerdict::kRefuted: ++t.refuted; break;
+      case OracleVerdict::kBadWitness: ++t.bad_witness; break;
       case OracleVerdict::kSuboptimal: ++t.suboptimal; break;
       case OracleVerdict::kUndecided: ++t.undecided; break;
       case OracleVerdict::kError: ++t.error; break;
+      case OracleVerdict::kTampered: ++t.tampered; break;
     }
   }
   return t;
@@ -54,8 +56,9 @@ std::string xml_escape(const std::string& s) {
 
 std::string totals_text(const OracleTotals& t) {
   return std::to_string(t.total()) + " cases: " + std::to_string(t.confirmed) + " confirmed, " + std::to_string(t.refuted) +
-         " refuted, " + std::to_string(t.suboptimal) + " suboptimal, " + std::to_string(t.undecided) + " undecided, " +
-         std::to_string(t.error) + " error";
+         " refuted, " + std::to_string(t.bad_witness) + " bad_witness, " + std::to_string(t.suboptimal) + " suboptimal, " +
+         std::to_string(t.undecided) + " undecided, " + std::to_string(t.error) + " error, " + std::to_string(t.tampered) +
+         " tampered";
 }
 
 }  // namespace
@@ -86,8 +89,9 @@ nlohmann::ordered_json oracle_report_json(const std::vector<CaseReport>& cases, 
   j["seconds"] = seconds;
   j["strict"] = strict;
   const OracleTotals t = totals_of(cases);
-  j["totals"] = {{"cases", t.total()},         {"confirmed", t.confirmed}, {"refuted", t.refuted},
-                 {"suboptimal", t.suboptimal}, {"undecided", t.undecided}, {"error", t.error}};
+  j["totals"] = {{"cases", t.total()},           {"confirmed", t.confirmed},   {"refuted", t.refuted},
+                 {"bad_witness", t.bad_witness}, {"suboptimal", t.suboptimal}, {"undecided", t.undecided},
+                 {"error", t.error},             {"tampered", t.tampered}};
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const CaseReport& c : cases) {
     nlohmann::ordered_json e;
@@ -117,13 +121,13 @@ nlohmann::ordered_json oracle_report_json(const std::vector<CaseReport>& cases, 
 
 std::string junit_xml(const std::vector<CaseReport>& cases, double seconds, bool strict) {
   const OracleTotals t = totals_of(cases);
+  const int failures = t.refuted + t.bad_witness + (strict ? t.suboptimal : 0), errors = t.error + t.tampered;
   std::ostringstream o;
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-    << "<testsuites name=\"lpvid oracle\" tests=\"" << t.total() << "\" failures=\""
-    << t.refuted + (strict ? t.suboptimal : 0) << "\" errors=\"" << t.error << "\" skipped=\"" << t.undecided
-    << "\" time=\"" << fixed(seconds, 3) << "\">\n"
-    << "  <testsuite name=\"lpvid-oracle\" tests=\"" << t.total() << "\" failures=\""
-    << t.refuted + (strict ? t.suboptimal : 0) << "\" errors=\"" << t.error << "\" skipped=\"" << t.undecided
+    << "<testsuites name=\"lpvid oracle\" tests=\"" << t.total() << "\" failures=\"" << failures << "\" errors=\"" << errors
+    << "\" skipped=\"" << t.undecided << "\" time=\"" << fixed(seconds, 3) << "\">\n"
+    << "  <testsuite name=\"lpvid-oracle\" tests=\"" << t.total() << "\" failures=\"" << failures << "\" errors=\"" << errors
+    << "\" skipped=\"" << t.undecided
     << "\" time=\"" << fixed(seconds, 3) << "\">\n";
   for (const CaseReport& c : cases) {
     const std::string check = c.evidence_check.empty() ? "" : " (lpvid-verify: " + c.evidence_check + ")";
@@ -133,8 +137,9 @@ std::string junit_xml(const std::vector<CaseReport>& cases, double seconds, bool
       << fixed(c.outside_seconds, 3) << "\">\n";
     switch (c.judgement.verdict) {
       case OracleVerdict::kRefuted:
-        o << "      <failure type=\"refuted\" message=\"" << xml_escape(c.judgement.reason) << "\">" << xml_escape(detail)
-          << "</failure>\n";
+      case OracleVerdict::kBadWitness:
+        o << "      <failure type=\"" << to_string(c.judgement.verdict) << "\" message=\"" << xml_escape(c.judgement.reason)
+          << "\">" << xml_escape(detail) << "</failure>\n";
         break;
       case OracleVerdict::kSuboptimal:
         if (strict)
@@ -144,7 +149,9 @@ std::string junit_xml(const std::vector<CaseReport>& cases, double seconds, bool
           o << "      <system-out>suboptimal: " << xml_escape(detail) << "</system-out>\n";
         break;
       case OracleVerdict::kError:
-        o << "      <error type=\"no answer\" message=\"" << xml_escape(c.judgement.reason) << "\">" << xml_escape(detail)
+      case OracleVerdict::kTampered:
+        o << "      <error type=\"" << (c.judgement.verdict == OracleVerdict::kError ? "no answer" : "tampered")
+          << "\" message=\"" << xml_escape(c.judgement.reason) << "\">" << xml_escape(detail)
           << "\nlog: " << xml_escape(c.outside_log) << "</error>\n";
         break;
       case OracleVerdict::kUndecided:

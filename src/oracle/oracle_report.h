@@ -1,8 +1,9 @@
 #pragma once
 /// What `lpvid oracle` shows and writes about a run: the per-case table on
 /// the terminal, the JSON report, and a JUnit XML file so that the outside
-/// project's CI lists every case (refuted → failure, no answer → error,
-/// undecided → skipped; suboptimal → failure only with --strict).
+/// project's CI lists every case (refuted, bad_witness → failure; no
+/// answer, tampered inputs → error; undecided → skipped; suboptimal →
+/// failure only with --strict).
 
 #include <string>
 #include <vector>
@@ -29,8 +30,8 @@ struct CaseReport {
 };
 
 struct OracleTotals {
-  int confirmed = 0, refuted = 0, suboptimal = 0, undecided = 0, error = 0;
-  int total() const { return confirmed + refuted + suboptimal + undecided + error; }
+  int confirmed = 0, refuted = 0, bad_witness = 0, suboptimal = 0, undecided = 0, error = 0, tampered = 0;
+  int total() const { return confirmed + refuted + bad_witness + suboptimal + undecided + error + tampered; }
 };
 OracleTotals totals_of(const std::vector<CaseReport>& cases);
 

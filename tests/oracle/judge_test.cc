@@ -1,20 +1,21 @@
 // The oracle's judging rules (oracle/judge.h) on hand-made references: each
 // verdict at and across its boundary, in exact arithmetic (J, L, U are
-// rationals; the tolerance is relative on the objective).
+// rationals; the tolerance is relative on the objective, with an absolute
+// floor, and comes from the caller, never from the task).
 #include <gtest/gtest.h>
 
 #include <optional>
 
+#include "core/number_text.h"
 #include "oracle/judge.h"
 
 namespace lpvid {
 namespace {
 
-OracleTask min_dmax_task(double tolerance = 0.01) {
+OracleTask min_dmax_task() {
   OracleTask t;
   t.kind = TaskKind::kMinDmax;
   t.delta = "0.1";
-  t.tolerance = tolerance;
   return t;
 }
 
@@ -68,7 +69,27 @@ TEST(OracleJudge, WithoutALowerEndATooGoodClaimIsUndecidedNeverRefuted) {
   // a claim at or above U is attained: lpvid's certificate holds there
   // 0.23² = 0.0529: above U·1.01 = 0.0505 (suboptimal), within U·1.5 and ≥ U (attained: confirmed)
   EXPECT_EQ(judge(min_dmax_task(), claims_dmax(Rational(23, 100)), ref, {}).verdict, OracleVerdict::kSuboptimal);
-  EXPECT_EQ(judge(min_dmax_task(0.5), claims_dmax(Rational(23, 100)), ref, {}).verdict, OracleVerdict::kConfirmed);
+  EXPECT_EQ(judge(min_dmax_task(), claims_dmax(Rational(23, 100)), ref, {}, {0.5, 0}).verdict, OracleVerdict::kConfirmed);
+}
+
+TEST(OracleJudge, TheToleranceIsTheCallersNotTheTasks) {
+  // a task file saying 1e9 (written by the program under test) changes nothing
+  OracleTask task = min_dmax_task();
+  task.tolerance = 1e9;
+  const ReferenceResult ref = interval(Rational(4, 100), Rational(5, 100));
+  EXPECT_EQ(judge(task, claims_dmax(Rational(1)), ref, {}).verdict, OracleVerdict::kSuboptimal);
+  EXPECT_EQ(judge(task, claims_dmax(Rational(1)), ref, {}, {1e9, 0}).verdict, OracleVerdict::kConfirmed);
+}
+
+TEST(OracleJudge, AnAbsoluteFloorKeepsACorrectAnswerToAZeroOptimumConfirmed) {
+  // lpvid certifies d_max² ∈ [0, 1e-26]; a peer's solver stops at d_max² = 1e-11
+  const ReferenceResult ref = interval(Rational(0), rational_from_text("1e-26"));
+  const Rational dmax_1e11 = rational_from_text("3.16228e-6");  // squared ≈ 1.0000014e-11
+  EXPECT_EQ(judge(min_dmax_task(), claims_dmax(dmax_1e11), ref, {}, {0.01, 0}).verdict, OracleVerdict::kSuboptimal);
+  EXPECT_EQ(judge(min_dmax_task(), claims_dmax(dmax_1e11), ref, {}).verdict, OracleVerdict::kConfirmed);
+  // the default floor is 1e-9 on the objective: 3.1623e-5² ≈ 1.00001e-9 is past it, 3.1622e-5² ≈ 0.99995e-9 is not
+  EXPECT_EQ(judge(min_dmax_task(), claims_dmax(rational_from_text("3.1623e-5")), ref, {}).verdict, OracleVerdict::kSuboptimal);
+  EXPECT_EQ(judge(min_dmax_task(), claims_dmax(rational_from_text("3.1622e-5")), ref, {}).verdict, OracleVerdict::kConfirmed);
 }
 
 TEST(OracleJudge, AWitnessDecidesFirst) {
@@ -76,9 +97,14 @@ TEST(OracleJudge, AWitnessDecidesFirst) {
   WitnessResult fails;
   fails.status = WitnessResult::kFails;
   fails.certificate = "witness.not_a_witness.json";
+  // the claim 0.22² = 0.0484 is in [L, U]: right, but its witness is not
   const Judgement j = judge(min_dmax_task(), claims_dmax(Rational(22, 100)), ref, fails);
-  EXPECT_EQ(j.verdict, OracleVerdict::kRefuted);
+  EXPECT_EQ(j.verdict, OracleVerdict::kBadWitness);
   EXPECT_EQ(j.evidence, "witness.not_a_witness.json");
+  // a claim below L is refuted by the lower end, whatever its witness
+  const Judgement false_claim = judge(min_dmax_task(), claims_dmax(Rational(1, 10)), ref, fails);
+  EXPECT_EQ(false_claim.verdict, OracleVerdict::kRefuted);
+  EXPECT_EQ(false_claim.evidence, "lower.json");
   WitnessResult malformed;
   malformed.status = WitnessResult::kMalformed;
   EXPECT_EQ(judge(min_dmax_task(), claims_dmax(Rational(22, 100)), ref, malformed).verdict, OracleVerdict::kError);
@@ -114,6 +140,13 @@ TEST(OracleJudge, AVerdictIsJudgedAgainstLpvidsCertifiedOne) {
   EXPECT_EQ(judge(task, says_consistent, consistent, {}).verdict, OracleVerdict::kConfirmed);
   EXPECT_EQ(judge(task, says_invalidated, invalidated, {}).verdict, OracleVerdict::kConfirmed);
   EXPECT_EQ(judge(task, says_invalidated, undecided, {}).verdict, OracleVerdict::kUndecided);
+  // a failing witness: the claim is still refuted when it is false, else only its witness is bad
+  WitnessResult fails;
+  fails.status = WitnessResult::kFails;
+  fails.certificate = "witness.not_a_witness.json";
+  EXPECT_EQ(judge(task, says_consistent, invalidated, fails).verdict, OracleVerdict::kRefuted);
+  EXPECT_EQ(judge(task, says_consistent, consistent, fails).verdict, OracleVerdict::kBadWitness);
+  EXPECT_EQ(judge(task, says_consistent, undecided, fails).verdict, OracleVerdict::kBadWitness);
   OracleAnswer failed;
   failed.failed = true;
   EXPECT_EQ(judge(task, failed, consistent, {}).verdict, OracleVerdict::kError);

@@ -1,0 +1,84 @@
+#pragma once
+/// `lpvid jobs merge` trusts no job: a window counts only with certificates
+/// that claim exactly what the plan asks for that window and pass the exact
+/// check on the plan's data. Compared, as typed values:
+///
+///  - the data (sha256) and the rows [begin, end) of the window;
+///  - the Toeplitz mode the jobs run in;
+///  - the model, INCLUDING the x0 the plan declared for the window (a job
+///    that edits its model file's x0 certifies another claim);
+///  - the claim kind: "consistent" (any objective) or "invalidated" (only
+///    when the plan fixes both δ and d_max); a lower-end or not_a_witness
+///    file in place of the window's certificate is refused;
+///  - the fixed values, exactly: δ² (objective min_dmax, feasibility), d_max²
+///    (min_delta, feasibility); a certificate at other values (a larger δ
+///    making a window consistent, a smaller d_max invalidating it) is refused;
+///  - the lower end (<certificate>.lower.json, when present): a lower bound on
+///    the plan's objective — d_max² at the planned δ² (min_dmax), δ² at the
+///    planned d_max² (min_delta), λδ² + (1−λ)d_max² at the planned λ
+///    (weighted) — and no lower end at all when the plan fixes both.
+/// Anything else refuses the whole window, with the reason. A certificate
+/// that cannot be read (a broken link, not a file, bad JSON) refuses its
+/// window only; a window with no certificate file is "missing".
+
+#include <optional>
+#include <string>
+
+#include "cli/jobs_plan.h"
+#include "core/scalar.h"
+#include "lmi/bound_objective.h"
+#include "model/lpv_model.h"
+#include "toeplitz/uncertainty_toeplitz.h"
+#include "verify/certificate/certificate_file.h"
+
+namespace lpvid::cli {
+
+/// What the plan fixes for every window's certificates, exact.
+struct PlannedClaim {
+  std::string data_sha256;
+  ToeplitzMode mode = ToeplitzMode::kSignal;
+  BoundObjective::Kind objective = BoundObjective::Kind::kWeighted;
+  std::optional<Rational> delta2, dmax2;  ///< the fixed ones
+  Rational lambda;                        ///< weighted
+};
+PlannedClaim planned_claim(const JobPlan& plan);
+
+/// The plan's kind name for an objective ("min_dmax", …) and back (throws
+/// InputError for an unknown name).
+const char* objective_name(BoundObjective::Kind kind);
+BoundObjective::Kind objective_kind_of(const std::string& name);
+
+/// The model a window's certificates must carry: the plan's model with the
+/// window's declared x0 (throws InputError when x0 has the wrong size).
+LpvModel<Rational> window_model(const LpvModel<Rational>& planned, const JobWindow& w);
+
+/// Which file of a window is judged.
+enum class WindowFile { kCertificate, kLowerEnd };
+
+/// Why `c` is not the certificate the plan asks for in window `w` ("" when
+/// it is). Compares values only; the exact check is judge_window's.
+std::string plan_mismatch(const PlannedClaim& plan, const JobWindow& w, const LpvModel<Rational>& model,
+                          const Certificate& c, WindowFile file);
+
+enum class WindowStatus { kVerified, kInvalidated, kMissing, kRefused };
+/// "verified", "invalidated", "missing", "refused".
+const char* to_string(WindowStatus s);
+
+/// What merge found for one window.
+struct WindowResult {
+  WindowStatus status = WindowStatus::kMissing;
+  std::string reason;             ///< refused, missing: why; else a note
+  Rational delta2, dmax2, upper;  ///< verified
+  bool has_lower = false;
+  Rational lower;                 ///< the certified lower end of the objective
+  std::string x0;                 ///< the window's x0, exact texts separated by spaces
+};
+
+/// Reads, compares with the plan and checks exactly (on `data_path`, the
+/// plan's data) the certificate of window `w` at `certificate_path` and its
+/// lower end beside it. Never throws for a job's file: an unreadable one
+/// refuses the window.
+WindowResult judge_window(const PlannedClaim& plan, const JobWindow& w, const LpvModel<Rational>& model,
+                          const std::string& certificate_path, const std::string& data_path);
+
+}  // namespace lpvid::cli
