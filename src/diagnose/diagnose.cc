@@ -6,6 +6,7 @@
 
 #include "core/input_error.h"
 #include "core/parallel_for.h"
+#include "diagnose/effect_reading.h"
 #include "data/experiment_builder.h"
 #include "fit/output_error_fit.h"
 #include "model/simulate.h"
@@ -160,6 +161,29 @@ void certify_windows(DiagnoseResult& out, const std::vector<RowWindow>& windows,
   });
 }
 
+/// Step 3, its optional part: Theorem 3.1 on the first window. A failure here
+/// is this stage's failure, reported as such; the effects, the window bounds
+/// (and their certificates) and the test scores stand.
+WindowIdentification optional_identification(const LpvModel<double>& model, const Experiment<double>& est_d,
+                                             const Experiment<Rational>& est_q, const RowWindow& window,
+                                             const DiagnoseOptions& options, SdpSolver& solver) {
+  try {
+    return identify_on_window(model, est_d, est_q, window.first, window.second, options.file_row_offset,
+                              options.certify, solver);
+  } catch (const std::exception& e) {
+    WindowIdentification failed;
+    failed.applicable = true;
+    failed.failed = std::string("the optional Theorem 3.1 stage failed: ") + e.what();
+    failed.bounds.begin = window.first;
+    failed.bounds.end = window.second;
+    failed.bounds.file_begin = options.file_row_offset + static_cast<long>(window.first);
+    failed.bounds.file_end = options.file_row_offset + static_cast<long>(window.second);
+    failed.bounds.bounds.reason = failed.failed;
+    if (options.ranking.progress) options.ranking.progress(failed.failed + " (the diagnosis stands)");
+    return failed;
+  }
+}
+
 /// Step 4: the test role, scored once per test set, after everything else was chosen.
 void score_tests(DiagnoseResult& out, const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options) {
   for (const Experiment<double>& test : tests) {
@@ -189,15 +213,14 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   out.before_model = round_fitted_model(out.rank.before);
   out.after_model = round_fitted_model(out.rank.after);
   restate_parameters(out.rank, out.after_model);  // the report's values are the certified model's
+  read_effects(out.rank, est_d);                   // what the fitted parameters make each effect
   out.before_model.signal_info = out.after_model.signal_info = declared.signal_info;  // fits build new models
 
   // 3. Theorem 2.1 on every window; Theorem 3.1 on the first
   certify_windows(out, windows, est_d, est_q, options, solver);
   if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
-  out.before_id = identify_on_window(out.before_model, est_d, est_q, windows[0].first, windows[0].second,
-                                     options.file_row_offset, options.certify, solver);
-  out.after_id = identify_on_window(out.after_model, est_d, est_q, windows[0].first, windows[0].second,
-                                    options.file_row_offset, options.certify, solver);
+  out.before_id = optional_identification(out.before_model, est_d, est_q, windows[0], options, solver);
+  out.after_id = optional_identification(out.after_model, est_d, est_q, windows[0], options, solver);
   // 4. the test role
   score_tests(out, tests, options);
   // 5. what the report shows beside the numbers above

@@ -21,6 +21,9 @@ namespace lpvid {
 struct WindowIdentification {
   bool applicable = false;
   std::string why_not;
+  /// Set when the stage threw (a solver or numeric failure): the reason, in
+  /// words. diagnose() keeps every finished result and reports this one.
+  std::string failed;
   std::vector<std::string> basis;  ///< the correction basis (texts)
   IdentifyResult result;
   WindowBounds bounds;             ///< the identified model's certified bounds on the window
