@@ -161,29 +161,6 @@ void certify_windows(DiagnoseResult& out, const std::vector<RowWindow>& windows,
   });
 }
 
-/// Step 3, its optional part: Theorem 3.1 on the first window. A failure here
-/// is this stage's failure, reported as such; the effects, the window bounds
-/// (and their certificates) and the test scores stand.
-WindowIdentification optional_identification(const LpvModel<double>& model, const Experiment<double>& est_d,
-                                             const Experiment<Rational>& est_q, const RowWindow& window,
-                                             const DiagnoseOptions& options, SdpSolver& solver) {
-  try {
-    return identify_on_window(model, est_d, est_q, window.first, window.second, options.file_row_offset,
-                              options.certify, solver);
-  } catch (const std::exception& e) {
-    WindowIdentification failed;
-    failed.applicable = true;
-    failed.failed = std::string("the optional Theorem 3.1 stage failed: ") + e.what();
-    failed.bounds.begin = window.first;
-    failed.bounds.end = window.second;
-    failed.bounds.file_begin = options.file_row_offset + static_cast<long>(window.first);
-    failed.bounds.file_end = options.file_row_offset + static_cast<long>(window.second);
-    failed.bounds.bounds.reason = failed.failed;
-    if (options.ranking.progress) options.ranking.progress(failed.failed + " (the diagnosis stands)");
-    return failed;
-  }
-}
-
 /// Step 4: the test role, scored once per test set, after everything else was chosen.
 void score_tests(DiagnoseResult& out, const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options) {
   for (const Experiment<double>& test : tests) {
@@ -219,8 +196,12 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   // 3. Theorem 2.1 on every window; Theorem 3.1 on the first
   certify_windows(out, windows, est_d, est_q, options, solver);
   if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
-  out.before_id = optional_identification(out.before_model, est_d, est_q, windows[0], options, solver);
-  out.after_id = optional_identification(out.after_model, est_d, est_q, windows[0], options, solver);
+  // optional: a failure here is this stage's (WindowIdentification::failed); every result above stands
+  for (auto [model, id] : {std::pair{&out.before_model, &out.before_id}, std::pair{&out.after_model, &out.after_id}}) {
+    *id = try_identify_on_window(*model, est_d, est_q, windows[0].first, windows[0].second, options.file_row_offset,
+                                 options.certify, solver);
+    if (!id->failed.empty() && options.ranking.progress) options.ranking.progress(id->failed + " (the diagnosis stands)");
+  }
   // 4. the test role
   score_tests(out, tests, options);
   // 5. what the report shows beside the numbers above
