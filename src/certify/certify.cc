@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/decimal_rounding.h"
+#include "core/finite_check.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "lmi/delta_form_barrier.h"
@@ -379,10 +380,13 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   // 1. Exact signals, and their doubles once.
   const ExactSignals es = exact_signals(model, exp_in);
   if (es.horizon == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(es.sim.z));  // throws the usual InputError
+  DeltaFormSignals doubles{nearest_double(es.sim.z), nearest_double(es.r)};
+  check_finite_signal(doubles.z, "certification (Theorem 2.1)", "the model's uncertainty channel z, in double precision");
+  check_finite_signal(doubles.r, "certification (Theorem 2.1)", "the residual r = y - yhat, in double precision");
   // A weighted objective stated on signals scaled to unit size (certify/
   // bound_scaling.h): the same program in original units with λ_orig.
   SignalScales scales;
-  CertifyRun run{model, es, {nearest_double(es.sim.z), nearest_double(es.r)}, in_original_units(options, model, es.sim, es.exp, &scales),
+  CertifyRun run{model, es, std::move(doubles), in_original_units(options, model, es.sim, es.exp, &scales),
                  BoundObjective{}, solver};
   run.objective = solver_objective(run.o.objective);
   run.kyp = run.o.delta_norm == DeltaNorm::kKyp;

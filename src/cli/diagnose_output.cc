@@ -90,6 +90,7 @@ ojson identification_json(const WindowIdentification& id) {
   }
   const CertifiedBounds& b = id.bounds.bounds;
   j["method"] = "alternating Delta/theta (Theorem 3.1; iterates feasible for the true BMI)";
+  j["failed"] = id.failed.empty() ? ojson(nullptr) : ojson(id.failed);
   j["basis"] = id.basis;
   j["unknowns"] = "C_i, D_i of the basis on top of the fitted values, x0";
   j["file_rows"] = {id.bounds.file_begin, id.bounds.file_end};
@@ -123,6 +124,7 @@ std::string uninformative_mark(const WindowBounds& w) {
 
 std::string identification_line(const WindowIdentification& id) {
   if (!id.applicable) return "not applicable: " + id.why_not;
+  if (!id.failed.empty()) return id.failed + " (the results above stand)";
   const CertifiedBounds& b = id.bounds.bounds;
   std::string basis;
   for (const auto& f : id.basis) basis += (basis.empty() ? "" : ", ") + f;
@@ -168,6 +170,7 @@ std::string start_choice_text(const StartChoice& s) {
 ojson candidate_json(const ScoredCandidate& c) {
   return {{"kind", c.kind},
           {"label", c.label},
+          {"fitted_as", c.reading.empty() ? ojson(nullptr) : ojson(c.reading)},
           {"effect_parameters", c.effect_parameters},
           {"rms_estimation", finite_or_null(c.rms_estimation)},
           {"rms_validation", finite_or_null(c.rms_validation)},
@@ -270,6 +273,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
                     num(c.rms_estimation).c_str(), (num(100 * shares[k], 3) + "%").c_str(), c.effect_parameters,
                     c.label.c_str(), static_cast<int>(k) == rr.chosen ? "   <- chosen" : "");
       std::cout << line;
+      if (!c.reading.empty()) std::cout << "        fitted: " << c.reading << "\n";
       if (in.folds)
         std::cout << "        folds " << folds_text(c.folds) << "  (wins " << c.folds_won << " of " << c.folds.sse.size()
                   << (c.joint ? "; A, B re-fitted" : "") << start_choice_text(c.start) << ")\n";
@@ -298,7 +302,9 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
 
   std::cout << "\neffects added: ";
   if (r.chosen.empty()) std::cout << "none";
-  for (size_t i = 0; i < r.chosen.size(); ++i) std::cout << (i ? ", " : "") << r.chosen[i].label;
+  for (size_t i = 0; i < r.chosen.size(); ++i)
+    std::cout << (i ? ", " : "") << r.chosen[i].label
+              << (r.chosen[i].reading.empty() ? "" : " (fitted: " + r.chosen[i].reading + ")");
   std::cout << "\n\n              RMS estimation  " << (in.folds ? "RMS held-out  " : "RMS validation") << "  bounds\n"
             << "  before      " << num(r.before_estimation) << std::string(16 - std::min<size_t>(15, num(r.before_estimation).size()), ' ')
             << num(r.before_validation) << std::string(16 - std::min<size_t>(15, num(r.before_validation).size()), ' ')

@@ -94,6 +94,9 @@ struct StartChoice {
 
 struct ScoredCandidate {
   std::string kind, label;
+  /// What the fitted parameters make the effect on the estimation record
+  /// when the label overstates it (diagnose/effect_reading.h); empty otherwise.
+  std::string reading;
   int effect_parameters = 0;
   double rms_estimation = 0, rms_validation = 0, explained = 0, score = 0;
   LpvModel<double> model;          ///< fitted on estimation data (x0 of the estimation record)

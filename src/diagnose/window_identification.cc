@@ -59,4 +59,22 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   return out;
 }
 
+WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
+                                            const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
+                                            long file_row_offset, const CertifyOptions& options, SdpSolver& solver) {
+  try {
+    return identify_on_window(fitted, est_d, est_q, begin, end, file_row_offset, options, solver);
+  } catch (const std::exception& e) {
+    WindowIdentification failed;
+    failed.applicable = true;
+    failed.failed = std::string("the optional Theorem 3.1 stage failed: ") + e.what();
+    failed.bounds.begin = begin;
+    failed.bounds.end = end;
+    failed.bounds.file_begin = file_row_offset + static_cast<long>(begin);
+    failed.bounds.file_end = file_row_offset + static_cast<long>(end);
+    failed.bounds.bounds.reason = failed.failed;
+    return failed;
+  }
+}
+
 }  // namespace lpvid

@@ -21,6 +21,9 @@ namespace lpvid {
 struct WindowIdentification {
   bool applicable = false;
   std::string why_not;
+  /// Set when the stage threw (a solver or numeric failure): the reason, in
+  /// words. diagnose() keeps every finished result and reports this one.
+  std::string failed;
   std::vector<std::string> basis;  ///< the correction basis (texts)
   IdentifyResult result;
   WindowBounds bounds;             ///< the identified model's certified bounds on the window
@@ -29,5 +32,12 @@ struct WindowIdentification {
 WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
                                         const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
                                         long file_row_offset, const CertifyOptions& options, SdpSolver& solver);
+
+/// identify_on_window, as an optional stage: an exception (a diverging free
+/// run, a solver or numeric failure) becomes `failed` = "the optional Theorem
+/// 3.1 stage failed: <reason>" instead of ending the caller's work.
+WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
+                                            const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
+                                            long file_row_offset, const CertifyOptions& options, SdpSolver& solver);
 
 }  // namespace lpvid

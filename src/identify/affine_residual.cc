@@ -1,5 +1,9 @@
 #include "identify/affine_residual.h"
 
+#include <type_traits>
+
+#include "core/finite_check.h"
+
 #include <stdexcept>
 
 #include "core/input_error.h"
@@ -143,6 +147,13 @@ AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experime
     a.Jr.middleCols(col, blocks.jy[b].cols()) = blocks.jy[b];
     a.Jz.middleCols(col, blocks.jz[b].cols()) = blocks.jz[b];
     col += blocks.jy[b].cols();
+  }
+  if constexpr (std::is_same_v<T, double>) {  // what the identification's solvers will see
+    const char* stage = "identification (Theorem 3.1: z and r affine in the unknowns)";
+    check_finite_signal(a.z0, stage, "the model's uncertainty channel z");
+    check_finite_signal(a.r0, stage, "the residual r = y - yhat");
+    check_finite_signal(a.Jz, stage, "the sensitivity of z to the unknowns");
+    check_finite_signal(a.Jr, stage, "the sensitivity of r to the unknowns");
   }
   return a;
 }

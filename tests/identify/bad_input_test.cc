@@ -156,3 +156,49 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
 
 }  // namespace
 }  // namespace lpvid
+
+namespace lpvid {
+namespace {
+
+// A model whose free run diverges along the data (A = 1000·I: the state
+// grows like 1000^k and leaves double precision after about 103 samples):
+// the double signals are not finite. No solver may see them: certification
+// and identification stop with an InputError naming their stage (no
+// "cost -nan" from inside a solver), and no certificate is written.
+RC_GTEST_PROP(IdentifyBadInput, DivergingFreeRunStopsBeforeTheSolver, ()) {
+  IdentCaseOptions o;
+  o.model.allow_general = true;
+  o.model.max_correction = 2;
+  o.min_n = 120;
+  o.max_n = 130;
+  IdentCase c = *ident_case(o);
+  RC_PRE(c.model.nx > 0);
+  c.model.A = ParamMatrix<Rational>(c.model.nx, c.model.nx);
+  c.model.A.add(constant_monomial(c.model.scheduling.size()),
+                Mat<Rational>(Mat<Rational>::Identity(c.model.nx, c.model.nx) * Rational(1000)));
+  ScratchDir dir("diverging");
+  const std::string data = dir.file("data.csv");
+  write_experiment_csv(data, c.model, c.exp);
+  auto solver = make_solver("csdp");
+  const std::string e1 = input_error_of([&] {
+    written(certify_fixed_model(c.model, c.exp, certify_options(weighted_objective(0.5), data), *solver), dir.file("c.json"));
+  });
+  RC_LOG() << "certify_fixed_model: " << e1 << "\n";
+  RC_ASSERT(e1.find("certification (Theorem 2.1)") != std::string::npos);
+  RC_ASSERT(e1.find("no solver was called") != std::string::npos);
+  RC_ASSERT(!std::filesystem::exists(dir.file("c.json")));
+  if (!c.model.correction.basis.empty()) {
+    const Experiment<double> exp = read_experiment(data, convert_model<double>(c.model));
+    for (IdentifyMethod method : {IdentifyMethod::kRelaxation, IdentifyMethod::kAlternating}) {
+      IdentifyOptions io;
+      io.method = method;
+      const std::string e2 = input_error_of([&] { identify(convert_model<double>(c.model), exp, io, *solver); });
+      RC_LOG() << "identify: " << e2 << "\n";
+      RC_ASSERT(e2.find("Theorem 3.1") != std::string::npos);
+      RC_ASSERT(e2.find("no solver was called") != std::string::npos);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lpvid
