@@ -1,27 +1,29 @@
-// `diagnose` on the real measurements (read in place from ../shared/data;
-// skipped when absent, e.g. on a machine without the benchmark files):
-//  - cascaded tanks, with the benchmark's protocol: the linear model
-//    and every candidate are fitted on Est rows 0:716, the order and the
-//    effects are chosen on Est rows 716:1024, and Val is scored once at the
-//    end; the benchmark's figure (free-run RMS on Val, x0 from the first 5 Val
-//    samples) must be below the published linear reference 0.7574 V, below
-//    the starting model's and below 0.45 V (the goal: the top of the
-//    published nonlinear models' range);
+// `diagnose` on the real measurements, read in place from $LPVID_DATA or
+// ../shared/data beside the repository; each test skips itself, saying so,
+// when its file is absent (e.g. in CI, which has no measured data):
+//  - cascaded tanks: the README's figure, by the README's commands (below);
 //  - dryer (linear with a transport delay): no nonlinear effect may be added.
-// The thresholds are the benchmark's published numbers, not our output.
+#include <cstdlib>
 #include <filesystem>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "diagnose/effect_ranking.h"
 #include "fit/linear_fit.h"
+#include "support/cli_runner.h"
 
 namespace lpvid {
 namespace {
 
-const std::string kData = LPVID_SOURCE_DIR "/../shared/data/";
+/// The folder holding cascaded-tanks/ and dryer/ (with a trailing slash).
+std::string data_dir() {
+  const char* env = std::getenv("LPVID_DATA");
+  const std::string d = env && *env ? env : LPVID_SOURCE_DIR "/../shared/data";
+  return d + "/";
+}
 
 struct Split {
   Experiment<double> est, val;
@@ -38,36 +40,61 @@ RankingResult diagnose(const Split& s, int degree) {
                       with_input_scheduling(s.val, linear, declared), o);
 }
 
-TEST(MeasuredData, CascadedTanksBeatsTheLinearReference) {
-  const std::string f = kData + "cascaded-tanks/dataBenchmark.csv";
-  if (!std::filesystem::exists(f)) GTEST_SKIP() << f << " not present";
-  const TextTable t = read_table(f);
-  const ColumnMap cols{{"uEst"}, {"yEst"}, {}};
-  const Experiment<double> est_all = make_experiment<double>(t, cols);
-  const Experiment<double> test = make_experiment<double>(t, ColumnMap{{"uVal"}, {"yVal"}, {}});
-  const Eigen::Index cut = 716;  // estimation rows 0:716, selection rows 716:1024
-  const Experiment<double> est = select_rows(est_all, 0, cut), sel = select_rows(est_all, cut, est_all.n());
-  // the order and fit as `fit-linear --rows 0:716 --validation-rows 716:1024 --order auto` choose them
-  const LpvModel<double> linear = choose_order(est, sel, cols, 5, true, 5).fit.model;
-  const LpvModel<double> declared = with_input_scheduling(linear);
-  RankingOptions o;
-  o.candidates.max_degree = 3;
-  const RankingResult r = rank_effects(declared, with_input_scheduling(est, linear, declared),
-                                       with_input_scheduling(sel, linear, declared), o);
-  // The test role, once.
-  const Experiment<double> test_s = with_input_scheduling(test, linear, declared);
-  const double before = validation_rms(r.before, test_s, 5), after = validation_rms(r.after, test_s, 5);
-  ASSERT_FALSE(r.chosen.empty());
-  EXPECT_LT(after, 0.7574);
-  EXPECT_LT(after, before);
-  EXPECT_LT(after, 0.45);  // the goal: inside the published nonlinear models' range (0.34-0.45 V)
-  RecordProperty("tanks_test_rms_before", std::to_string(before));
-  RecordProperty("tanks_test_rms_after", std::to_string(after));
+// The README's tanks figure, as `scripts/demo.sh` computes it: the built
+// `lpvid` runs the demo's two commands (fit-linear on uEst/yEst rows 0:716,
+// order chosen on 716:1024, offset; diagnose with 4 blocked folds of rows
+// 0:1024, warm-up 50, degree 3, uVal/yVal scored once). One difference:
+// --max-windows 1 certifies one bound window instead of five; the windows
+// come after the ranking and the test score, which do not depend on them.
+// Long (about 5 minutes on 2 idle cores, the ranking's 3 rounds of 165 fits):
+// hence "Long" in its name (ctest -E Long leaves it out).
+//
+// Pinned: the README's figures (section "What the demo shows"), measured
+// 2026-11-27 on commit 49ca732. Tolerance: the README prints the test RMS
+// to 4 digits (0.4195 V) and the fit to 0.1 %; the figure is deterministic
+// for a build (the ranking's results do not depend on --threads or load), so
+// the tolerance is the printed rounding, one unit in the last digit (1e-4 V,
+// 0.1 %). It does not cover a change of the fits' local minima: the store
+// cascade's 27-start fits land in different basins when the arithmetic
+// changes in its last bits (the README's earlier 0.2881 V was not
+// reproduced by the same commit built on this machine), and such a change
+// must fail here and be re-measured in the README.
+// The figures the README states (section "What the demo shows").
+constexpr double kTanksTestRms = 0.4195, kTanksTestFit = 80.2;
+const char* const kTanksFirstEffect =
+    "state_nonlinearity hinge of the upstream level x1 (feeds x2), states in cascade form: e*max(x - c, 0) "
+    "(overflow at level c)";
+
+struct MeasuredDataCli : gen::CliRunner {};
+
+TEST_F(MeasuredDataCli, LongTanksDemoFigureAsTheReadme) {
+  const std::string f = data_dir() + "cascaded-tanks/dataBenchmark.csv";
+  if (!std::filesystem::exists(f)) GTEST_SKIP() << f << " not present (set LPVID_DATA to the folder holding cascaded-tanks/)";
+  gen::CliRunner& run = *this;
+  const std::string linear = run.file("tanks_linear.json"), report = run.file("tanks.report.json");
+  ASSERT_EQ(run.run("fit-linear", "--data " + f + " --u uEst --y yEst --rows 0:716 --order auto --offset "
+                                   "--validation-rows 716:1024 --sample-time 4 --unit uEst=V --unit yEst=V --out " + linear),
+            0)
+      << run.output();
+  const int code = run.run("diagnose", "--data " + f + " --model " + linear +
+                                           " --benchmark cascaded-tanks --test-columns uVal,yVal --degree 3"
+                                           " --max-windows 1 --report " + report);
+  ASSERT_TRUE(code == 0 || code == 4) << run.output();  // 4: a bound not verified; the figures stand
+  const nlohmann::json r = gen::CliRunner::read_json(report);
+  const nlohmann::json& t = r.at("test");
+  EXPECT_NEAR(t.at("rms_before").get<double>(), 0.6936, 1e-4);
+  EXPECT_NEAR(t.at("fit_percent_before").get<double>(), 67.3, 0.1);
+  EXPECT_NEAR(t.at("rms_after").get<double>(), kTanksTestRms, 1e-4);
+  EXPECT_NEAR(t.at("fit_percent_after").get<double>(), kTanksTestFit, 0.1);
+  ASSERT_FALSE(r.at("effects").empty());
+  EXPECT_EQ(r.at("effects")[0].at("label").get<std::string>(), kTanksFirstEffect);
+  // the published best linear approximation, an outside reference
+  EXPECT_LT(t.at("rms_after").get<double>(), 0.7574);
 }
 
 TEST(MeasuredData, DryerGetsNoInventedEffect) {
-  const std::string f = kData + "dryer/dryer.dat";
-  if (!std::filesystem::exists(f)) GTEST_SKIP() << f << " not present";
+  const std::string f = data_dir() + "dryer/dryer.dat";
+  if (!std::filesystem::exists(f)) GTEST_SKIP() << f << " not present (set LPVID_DATA)";
   const TextTable t = read_table(f, std::vector<std::string>{"u", "y"});
   Split s;
   s.cols = {{"u"}, {"y"}, {}};
