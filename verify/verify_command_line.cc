@@ -6,6 +6,8 @@
 //   lpvid-verify certificate C.json
 //       consistent (exit 0), invalid: <reason> (exit 1), malformed (exit 2), read failure (exit 6).
 //   Limits on inputs (core/limits.h): --max-file-mb, --max-digits, --max-degree, --max-samples.
+//   Limits on work (verify/psd/work_limits.h): --max-dual-order, --max-exact-work; beyond
+//   them exit 8, nothing decided.
 //
 // Each subcommand is registered by one add_*_subcommand function below and
 // run by the dispatch in run_lpvid_verify(). Usage errors exit with 2 (like
@@ -23,6 +25,7 @@
 #include "core/limit_options.h"
 #include "verify/certificate/certificate_check.h"
 #include "verify/psd/psd_command.h"
+#include "verify/psd/work_limits.h"
 
 namespace {
 
@@ -39,7 +42,8 @@ CLI::App* add_psd_subcommand(CLI::App& app, PsdArgs& args) {
                 "skip the floating-point filter; decide by exact LDL^T only");
   psd->add_option("--threads", args.options.threads, "threads for the exact elimination (0: all cores, max 8)")
       ->check(CLI::Range(0, 64));
-  psd->footer("Exit status: 0 PD or PSD, 1 NOT_PSD, 2 missing/invalid/non-symmetric/too large input, 6 read failure.");
+  psd->footer("Exit status: 0 PD or PSD, 1 NOT_PSD, 2 missing/invalid/non-symmetric/too large input, 6 read failure, "
+              "8 the exact path would exceed --max-exact-work (not decided).");
   return psd;
 }
 
@@ -53,9 +57,38 @@ CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
   c->add_option("--data", args.data,
                 "the data file to read instead of the recorded path (its sha256 must still match); without it a "
                 "missing recorded path falls back to the file of the same name beside the certificate");
-  c->footer("Exit status: 0 consistent, 1 invalid (with the reason), 2 missing/malformed/too large input, 6 read failure.");
+  c->footer("Exit status: 0 the claim holds, 1 invalid (with the reason), 2 missing/malformed/too large input, 6 read "
+            "failure, 8 the check would exceed --max-dual-order or --max-exact-work (not decided).");
   return c;
 }
+
+/// The work limits as options (given before or after the subcommand).
+void add_work_limit_options(CLI::App& app) {
+  lpvid::VerifyWorkLimits& l = lpvid::verify_work_limits();
+  app.add_option("--max-dual-order", l.max_dual_order,
+                 "largest order L*ny of the matrix U a compact dual certificate makes the verifier rebuild "
+                 "(floating inversion, O(order^3); default " + std::to_string(lpvid::kDefaultMaxDualOrder) + ")")
+      ->check(CLI::Range(1L, 1000000L));
+  app.add_option("--max-exact-work", l.max_exact_work,
+                 "most modular operations of one exact elimination, estimated before it starts (default " +
+                     std::to_string(static_cast<long long>(lpvid::kDefaultMaxExactWork)) + ")")
+      ->check(CLI::PositiveNumber);
+}
+
+/// Puts the caller's work limits back when a run ends (the Python module
+/// runs lpvid-verify and lpvid in one process; the library runs unlimited).
+class WorkLimitsRestorer {
+ public:
+  WorkLimitsRestorer() : saved_(lpvid::verify_work_limits()) {
+    lpvid::verify_work_limits() = {lpvid::kDefaultMaxDualOrder, lpvid::kDefaultMaxExactWork};
+  }
+  ~WorkLimitsRestorer() { lpvid::verify_work_limits() = saved_; }
+  WorkLimitsRestorer(const WorkLimitsRestorer&) = delete;
+  WorkLimitsRestorer& operator=(const WorkLimitsRestorer&) = delete;
+
+ private:
+  lpvid::VerifyWorkLimits saved_;
+};
 
 }  // namespace
 
@@ -64,10 +97,12 @@ namespace lpvid {
 int run_lpvid_verify(const std::vector<std::string>& args, const std::string& program) {
   // A previous call in the same process may have changed the limits.
   input_limits() = InputLimits{};
+  const WorkLimitsRestorer work_limits;  // lpvid-verify's defaults for this run
   CLI::App app{"lpvid-verify: exact verifier for lpvid (no floating-point answer is trusted)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("lpvid-verify ") + LPVID_VERSION);
   add_limit_options(app);
+  add_work_limit_options(app);
 
   PsdArgs psd_args;
   CLI::App* psd = add_psd_subcommand(app, psd_args);

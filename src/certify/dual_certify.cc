@@ -294,26 +294,66 @@ PathDualRecipe path_recipe(const DeltaFormSolution& s, double scale) {
   return recipe;
 }
 
-/// The floor γ = ‖E‖_F²/x (rounded up), with the filter proving U − 2γ·I ≻ 0
-/// (twice what the verifier needs: a verifier compiled elsewhere rounds U_d
-/// in other last bits). x costs x·L·nz in tr V, so it starts at the
-/// smallest value the spectrum allows: λ_min(U) ≥ μ/t (t·I − TTᵀ ⪯ t·I), so
+/// What a verifier's rebuild of U may change (docs/dual_certificates.md,
+/// "Portable acceptance"): any U' with ‖U' − U‖₂ ≤ η = kPathDualRebuildTolerance·‖U‖_∞
+/// (‖U‖_∞ ≥ ‖U‖₂) moves ‖E‖_F by at most η·‖T‖_F (E is the orthogonal
+/// projection of the residual, R' − R = Ω(DT)), tr U by P·η and β by
+/// 3η·‖T‖_F² (tr TᵀDT and 2⟨T, DT⟩). Doubles, rounded up by a relative 10⁻⁹.
+struct RebuildMargin {
+  double eta = 0;     ///< bound on ‖U' − U‖₂
+  double t_frob = 0;  ///< ‖T‖_F
+  double E_shift() const { return eta * t_frob; }
+  double beta_shift() const { return 3 * eta * t_frob * t_frob; }
+};
+
+RebuildMargin rebuild_margin(const PathDualRecipe& recipe, const PathDualGrid& grid) {
+  RebuildMargin m;
+  const double up = 1 + 1e-9;
+  const double row_max = grid.U.size() ? grid.U.cwiseAbs().rowwise().sum().maxCoeff() : 0.0;
+  m.eta = kPathDualRebuildTolerance * std::ldexp(row_max, static_cast<int>(recipe.u_exponent)) * up;
+  const Eigen::Index L = recipe.taps.rows();
+  double frob2 = 0;
+  for (Eigen::Index l = 0; l < L; ++l)
+    frob2 += static_cast<double>(L - l) * nearest_double(recipe.taps.row(l)).squaredNorm();
+  m.t_frob = std::sqrt(frob2) * up;
+  return m;
+}
+
+/// The floor γ with x·γ ≥ (‖E‖_F + η‖T‖_F)² (rounded up), with the filter
+/// proving U − (2γ + 2η)·I ≻ 0: twice the verifier's floor and twice what a
+/// rebuild within η moves the spectrum, so that another compiler's or BLAS's
+/// U still passes. x costs x·L·nz in tr V, so it starts at the smallest value
+/// the spectrum allows: λ_min(U) ≥ μ/t (t·I − TTᵀ ⪯ t·I), so
 /// x = max(μ, 4·‖E‖²·t/μ) keeps 2γ ≤ λ_min(U)/2; it doubles while the filter
 /// cannot prove it. E depends on neither x nor σ. Empty when proved; else why not.
-std::string prove_floor(PathDualRecipe& recipe, const PathDualGrid& grid, const Rational& E_norm2) {
-  const Rational from_spectrum = Rational(4) * E_norm2 * recipe.t / recipe.mu;
+std::string prove_floor(PathDualRecipe& recipe, const PathDualGrid& grid, const Rational& E_norm2, const RebuildMargin& m) {
+  const double E_far = (std::sqrt(nearest_double(E_norm2)) * (1 + 1e-9) + m.E_shift()) * (1 + 1e-9);
+  const Rational target = std::max(E_norm2, exact_rational_of_double(E_far * E_far * (1 + 1e-9)));
+  const Rational from_spectrum = Rational(4) * target * recipe.t / recipe.mu;
   if (from_spectrum > recipe.x) recipe.x = exact_rational_of_double(nearest_double(from_spectrum) * (1 + 1e-12));
+  const Rational eta = exact_rational_of_double(m.eta);
   std::string why;
   for (int attempt = 0; attempt < 24; ++attempt) {
-    recipe.floor = round_up_to_digits(E_norm2 / recipe.x, 2);
+    recipe.floor = round_up_to_digits(target / recipe.x, 2);
     PathDualRecipe doubled = recipe;
-    doubled.floor = recipe.floor * Rational(2);
+    doubled.floor = (recipe.floor + eta) * Rational(2);
     const PsdResult psd = path_dual_psd(doubled, grid.U, false);
     if (psd.verdict != PsdVerdict::kNotPsd) return "";
     why = psd.reason;
     recipe.x = recipe.x * Rational(2);
   }
-  return "U - 2*u_floor*I is not proved positive definite even with x = " + double_to_text(nearest_double(recipe.x)) + " (" + why + ")";
+  return "U - 2*(u_floor + eta)*I is not proved positive definite even with x = " + double_to_text(nearest_double(recipe.x)) +
+         " (" + why + ")";
+}
+
+/// The bound any rebuild within the margin still reaches: β lowered and
+/// tr U raised by what the rebuild may move them (dual_bound is increasing in
+/// β and non-increasing in tr U where it is positive).
+Rational rebuilt_bound(DualTerms<Rational> terms, const RebuildMargin& m, Eigen::Index P, DualClaim claim,
+                       const FixedValues& fixed) {
+  terms.beta -= exact_rational_of_double(m.beta_shift());
+  terms.trace_U += exact_rational_of_double(static_cast<double>(P) * m.eta);
+  return dual_bound(terms, claim, fixed.delta2, fixed.dmax2, fixed.lambda);
 }
 
 /// The compact form (verify/certificate/path_dual.h) from a barrier's central-path point:
@@ -347,7 +387,8 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   if (!sums.problem.empty()) return done(sums.problem);
   const Mat<Rational> C = fir_adjoint(gs.g, sim.z, L);
   PathDualValue v = path_dual_value(recipe, sums, C, gs.g, Rational(1), r, ny, nz);
-  if (const std::string why = prove_floor(recipe, grid, v.E_norm2); !why.empty()) return done(why);
+  const RebuildMargin margin = rebuild_margin(recipe, grid);
+  if (const std::string why = prove_floor(recipe, grid, v.E_norm2, margin); !why.empty()) return done(why);
   v = path_dual_value(recipe, sums, C, gs.g, Rational(1), r, ny, nz);
 
   // σ (β(σ = 1) = −(tr V + ‖g‖² + 2gᵀr) gives tr V), then the bound exactly.
@@ -357,12 +398,14 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   if (!(sigma > 0)) return done("no positive sigma");
   v = path_dual_value(recipe, sums, C, gs.g, sigma, r, ny, nz);
   const Rational bound = dual_bound(v.terms, claim, fixed.delta2, fixed.dmax2, fixed.lambda);
-  if (claim == DualClaim::kInvalidated && !(bound > 0))
-    return done("the compact dual point does not prove infeasibility (margin " + double_to_text(nearest_double(bound)) + ")");
-  // The claimed lower end 10⁻⁹ (relative) below the bound: a verifier built
-  // elsewhere rebuilds U with other last bits.
+  // What a verifier built elsewhere, with U in other last bits, still reaches.
+  const Rational portable = rebuilt_bound(v.terms, margin, L * ny, claim, fixed);
+  if (claim == DualClaim::kInvalidated && !(portable > 0))
+    return done("the compact dual point does not prove infeasibility (margin " + double_to_text(nearest_double(bound)) +
+                ", " + double_to_text(nearest_double(portable)) + " for a rebuild of U within the stated tolerance)");
+  // The claimed lower end: that, and 10⁻⁹ (relative) below the bound.
   const Rational slack = bound > 0 ? bound * power_of_ten(-9) : Rational(0);
-  Certificate c = dual_certificate(model, claim, fixed, bound - slack, 12);
+  Certificate c = dual_certificate(model, claim, fixed, std::min(portable, bound - slack), 12);
   c.form = CertificateForm::kDualDeltaPath;
   c.dual.horizon = L;
   c.dual.g = std::move(gs.g);
@@ -370,6 +413,7 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   c.info["dual_scale"] = scale;
   c.info["x_over_mu"] = nearest_double(recipe.x / recipe.mu);
   c.info["u_floor_over_mu"] = nearest_double(recipe.floor / recipe.mu);
+  c.info["rebuild_tolerance"] = kPathDualRebuildTolerance;
   c.dual.path = std::move(recipe);
   check_and_keep(c, exp, o, bound, out);
   return done(out.reason);

@@ -30,6 +30,12 @@
 
 namespace lpvid {
 
+/// The relative change of the compact dual's U (‖U' − U‖₂ ≤ this·‖U‖₂) that
+/// a compact certificate is built to survive: a verifier compiled elsewhere
+/// (another compiler, SIMD width or BLAS) rebuilds U in floating point with
+/// other last bits (docs/dual_certificates.md, "Portable acceptance").
+inline constexpr double kPathDualRebuildTolerance = 0x1.0p-30;
+
 /// A dual certificate's outcome.
 struct DualOutcome {
   bool verified = false;         ///< the certificate was checked exactly and holds

@@ -126,10 +126,11 @@ std::string interval_quantity(BoundObjective::Kind k) {
 nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObjective& objective, const CertificateFiles& files) {
   nlohmann::ordered_json j;
   j["of"] = interval_quantity(objective.kind);
-  j["upper"] = b.verified ? nlohmann::ordered_json(nearest_double(b.upper)) : nlohmann::ordered_json(nullptr);
+  // printed = certified: the upper end rounded up, the lower end down (core/decimal_rounding.h)
+  j["upper"] = b.verified ? nlohmann::ordered_json(double_up(b.upper)) : nlohmann::ordered_json(nullptr);
   j["upper_verified"] = b.verified;
   if (b.verified) j["upper_exact"] = exact_decimal_or_fraction(b.upper);
-  j["lower"] = b.lower.verified ? nlohmann::ordered_json(nearest_double(b.lower.value)) : nlohmann::ordered_json(nullptr);
+  j["lower"] = b.lower.verified ? nlohmann::ordered_json(double_down(b.lower.value)) : nlohmann::ordered_json(nullptr);
   j["lower_verified"] = b.lower.verified;
   if (b.lower.verified) j["lower_exact"] = exact_decimal_or_fraction(b.lower.value);
   const double gap = relative_gap(b);

@@ -1,5 +1,6 @@
 #include "core/decimal_rounding.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -67,6 +68,15 @@ Rational round_down_to_digits(const Rational& q, int digits) {
   if (q == 0) return Rational(0);
   return q > 0 ? round_directed(q, digits, false) : -round_directed(-q, digits, true);
 }
+
+double double_up(const Rational& q) {
+  double d = nearest_double(q);
+  if (d == -INFINITY) return -DBL_MAX;
+  if (std::isfinite(d) && Rational(d) < q) d = std::nextafter(d, INFINITY);
+  return d;
+}
+
+double double_down(const Rational& q) { return -double_up(-q); }
 
 double sqrt_up(const Rational& q) {
   double s = std::sqrt(nearest_double(q));

@@ -17,6 +17,11 @@ Rational round_to_digits(double x, int digits);
 Rational round_up_to_digits(const Rational& q, int digits);
 /// The largest decimal with `digits` significant digits that is ≤ q.
 Rational round_down_to_digits(const Rational& q, int digits);
+/// The smallest double ≥ q and the largest double ≤ q (the ends of a certified
+/// interval in a JSON report: printed = certified, as for the text below).
+/// ±∞ only when no finite double lies on that side of q.
+double double_up(const Rational& q);
+double double_down(const Rational& q);
 /// √q rounded up to a double (for display only).
 double sqrt_up(const Rational& q);
 /// √q rounded down to a double (q ≥ 0; for display only).

@@ -79,10 +79,14 @@ TEST_F(HostileInput, NumbersLongerThanTheDigitLimitAreRejected) {
   const std::string big = with_field(cert, "delta2", "1e4000", "big.json");
   EXPECT_EQ(run_program(verify_exe, "--max-digits 4000 certificate " + big), 2);
   EXPECT_TRUE(has("4001 digits")) << output();
-  // Within the limit the number reaches the exact check: a larger δ² than
-  // needed is still a true claim (the Δ form is balanced by a power of two,
-  // so 1e4000 costs no more than 1).
-  EXPECT_EQ(run_program(verify_exe, "certificate " + big), 0) << output();
+  // Within the digit limit but beyond the range of a double, a number is
+  // malformed wherever it stands (exit 2, its field named)...
+  EXPECT_EQ(run_program(verify_exe, "certificate " + big), 2) << output();
+  EXPECT_TRUE(has("delta2") && has("range of a double")) << output();
+  // ...within it, it reaches the exact check: a larger δ² than needed is
+  // still a true claim (the Δ form is balanced by a power of two, so 1e300
+  // costs no more than 1).
+  EXPECT_EQ(run_program(verify_exe, "certificate " + with_field(cert, "delta2", "1e300", "large.json")), 0) << output();
   // A δ² of 1e-200 is far below what the data need: the claim is false.
   EXPECT_EQ(run_program(verify_exe, "certificate " + with_field(cert, "delta2", "1e-200", "small.json")), 1) << output();
   // So is δ² = 1/10^5000 (5001 digits, within the limit): decided, not left

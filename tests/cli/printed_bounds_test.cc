@@ -5,12 +5,14 @@
 // report (the interval's exact ends).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "cli/report.h"
 #include "core/number_text.h"
 #include "support/cli_runner.h"
 #include "support/fixtures.h"
@@ -48,7 +50,30 @@ TEST_F(PrintedBounds, UpperEndsUpLowerEndsDown) {
     ASSERT_TRUE(std::regex_search(out, m, std::regex(R"(interval\s+\[([0-9.eE+-]+), ([0-9.eE+-]+)\])"))) << out;
     EXPECT_LE(rational_from_text(m[1].str()), rational_from_text(iv["lower_exact"].get<std::string>())) << out;
     EXPECT_GE(rational_from_text(m[2].str()), rational_from_text(iv["upper_exact"].get<std::string>())) << out;
+    // the JSON numbers too (doubles, directed like the text)
+    EXPECT_LE(Rational(iv["lower"].get<double>()), rational_from_text(iv["lower_exact"].get<std::string>())) << iv;
   }
+  EXPECT_GE(Rational(iv["upper"].get<double>()), rational_from_text(iv["upper_exact"].get<std::string>())) << iv;
+}
+
+// The report's interval ends as JSON numbers: the nearest double of 1/3 is
+// below it and that of 1/10 above it, so a nearest rounding would put both
+// ends on the wrong side; directed, the upper end is the smallest double
+// >= 1/3 and the lower end the largest <= 1/10.
+TEST(PrintedBoundsJson, TheIntervalEndsAreRoundedOutwards) {
+  CertifiedBounds b;
+  b.verified = true;
+  b.upper = Rational(1, 3);
+  b.lower.verified = true;
+  b.lower.value = Rational(1, 10);
+  BoundObjective objective;
+  objective.kind = BoundObjective::Kind::kMinDmax;
+  const nlohmann::ordered_json j = cli::interval_json(b, objective, CertificateFiles{"c.json", "c.lower.json"});
+  const double upper = j["upper"].get<double>(), lower = j["lower"].get<double>();
+  EXPECT_GE(Rational(upper), b.upper);
+  EXPECT_LT(Rational(std::nextafter(upper, 0.0)), b.upper);
+  EXPECT_LE(Rational(lower), b.lower.value);
+  EXPECT_GT(Rational(std::nextafter(lower, 1.0)), b.lower.value);
 }
 
 TEST_F(PrintedBounds, TheVerifierEchoesTheExactClaimAndRoundsTheLowerEndDown) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <cfloat>
 #include <cmath>
 
 #include "core/decimal_rounding.h"
@@ -96,6 +97,30 @@ RC_GTEST_PROP(DecimalRoundingProperty, PrintedEndsAreOnTheSafeSide, ()) {
 
 // The case of the report: a certified 0.0095480146 printed to the nearest
 // with 6 digits was 0.00954801, below what was proved.
+// double_up / double_down: the neighbouring doubles bracket q exactly.
+RC_GTEST_PROP(DecimalRoundingProperty, DirectedDoublesBracketTheValue, ()) {
+  const long p = *rc::gen::inRange<long>(-1000000000, 1000000000);
+  const long q = *rc::gen::inRange<long>(1, 1000000000);
+  const int e = *rc::gen::inRange(-1100, 1100);
+  const Rational x = Rational(p) / Rational(q) * (e >= 0 ? naive_power_of_ten(e / 4) : Rational(1) / naive_power_of_ten(-e / 4));
+  const double up = double_up(x), down = double_down(x);
+  RC_ASSERT(std::isfinite(up) && std::isfinite(down));
+  RC_ASSERT(Rational(up) >= x);
+  RC_ASSERT(Rational(std::nextafter(up, -INFINITY)) < x);
+  RC_ASSERT(Rational(down) <= x);
+  RC_ASSERT(Rational(std::nextafter(down, INFINITY)) > x);
+}
+
+TEST(DecimalRounding, DirectedDoublesBeyondTheRange) {
+  const Rational huge = naive_power_of_ten(400);
+  EXPECT_EQ(double_up(huge), INFINITY);
+  EXPECT_EQ(double_down(huge), DBL_MAX);
+  EXPECT_EQ(double_up(-huge), -DBL_MAX);
+  EXPECT_EQ(double_down(-huge), -INFINITY);
+  EXPECT_EQ(double_up(Rational(1, 3)), std::nextafter(1.0 / 3, 1.0));
+  EXPECT_EQ(double_down(Rational(1, 3)), 1.0 / 3);
+}
+
 TEST(DecimalRounding, TheReportedCaseRoundsUp) {
   const Rational certified = rational_from_text("0.0095480146");
   EXPECT_EQ(upper_text(certified), "0.00954802");

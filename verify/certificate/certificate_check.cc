@@ -22,6 +22,7 @@
 #include "verify/certificate/column_gram.h"
 #include "verify/certificate/dual_check.h"
 #include "verify/certificate/verdict_text.h"
+#include "verify/psd/work_limits.h"
 
 namespace lpvid {
 namespace {
@@ -122,13 +123,23 @@ CertificateVerdict check_claim(const Certificate& c, Experiment<Rational> exp, s
 }
 }  // namespace
 
+namespace {
+/// The stated size against the work limits, before the data are read
+/// (a stated horizon that is not the data's is refused later anyway).
+void require_work_limits(const Certificate& c) {
+  if (c.form == CertificateForm::kDualDeltaPath) require_dual_order(c.dual.horizon * static_cast<long>(c.model.ny));
+}
+}  // namespace
+
 CertificateVerdict check_certificate(const Certificate& c, const Experiment<Rational>& exp) {
+  require_work_limits(c);
   std::ostringstream details;
   details << "data in memory (" << exp.n() << " rows); ";
   return with_claim(check_claim(c, exp, details), c);
 }
 
 CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+  require_work_limits(c);
   const CertificateData data = certificate_data(c, certificate_dir, data_file);
   if (!data.invalid.empty()) return invalid_verdict(data.invalid);
   std::ostringstream details;
@@ -256,6 +267,9 @@ int run_certificate_command(const std::string& path, std::ostream& out, std::ost
   } catch (const IoError& e) {
     err << "lpvid-verify: " << e.what() << "\n";
     return kExitIo;
+  } catch (const WorkLimitError& e) {
+    err << "lpvid-verify: not checked: " << path << ": " << e.what() << "\n";
+    return kExitWorkLimit;
   } catch (const std::bad_alloc&) {
     err << "lpvid-verify: out of memory while checking '" << path << "'\n";
     return kExitBadInput;

@@ -10,6 +10,7 @@
 #include "model/model_file.h"
 #include "model/json_members.h"
 #include "model/model_json_tree.h"
+#include "verify/certificate/number_range.h"
 
 namespace lpvid {
 namespace {
@@ -223,6 +224,7 @@ const char* to_string(CertificateClaim c) {
 
 Certificate parse_certificate(std::string_view text, const std::string& file) {
   const JsonNode root = parse_exact_json(text, file);
+  require_double_range(root, file);
   const std::string claim = parse_header(root, file);
   Certificate c;
   parse_data_reference(root, file, c);

@@ -8,6 +8,7 @@
 #include "verify/psd/exact_psd.h"
 #include "verify/certificate/path_dual.h"
 #include "verify/certificate/verdict_text.h"
+#include "verify/psd/work_limits.h"
 
 namespace lpvid {
 namespace {
@@ -28,16 +29,24 @@ std::string bound_problem(const Certificate& c, const Rational& bound, std::ostr
 }
 
 /// Steps 6–8 for the compact form (verify/certificate/path_dual.h): the point is rebuilt
-/// from its recipe; the dual equality holds by the construction of E; what is
-/// checked is ‖E‖_F² ≤ x·γ, the bound, and U − γ·I ⪰ 0.
+/// from its recipe, then checked on that grid matrix.
 CertificateVerdict check_path_dual(const Certificate& c, const Simulation<Rational>& sim, const Mat<Rational>& r,
                                    Eigen::Index L, std::string details) {
-  const Eigen::Index ny = c.model.ny, nz = c.model.nz();
   const PathDualRecipe& p = c.dual.path;
   if (p.taps.rows() != L) return invalid_verdict("dual.taps has " + std::to_string(p.taps.rows()) + " rows, not the horizon", details);
-  const PathDualGrid grid = path_dual_grid(p, ny, nz);
+  require_dual_order(static_cast<long>(L * c.model.ny));  // before the O((L·ny)³) floating rebuild
+  const PathDualGrid grid = path_dual_grid(p, c.model.ny, c.model.nz());
   if (!grid.problem.empty()) return invalid_verdict("the dual recipe gives no point: " + grid.problem, details);
-  const PathDualSums sums = path_dual_sums(p, grid.U, ny, nz);
+  return check_path_dual_on_grid(c, sim, r, grid.U, std::move(details));
+}
+
+}  // namespace
+
+CertificateVerdict check_path_dual_on_grid(const Certificate& c, const Simulation<Rational>& sim, const Mat<Rational>& r,
+                                           const Mat<double>& U_grid, std::string details) {
+  const Eigen::Index ny = c.model.ny, nz = c.model.nz(), L = c.dual.path.taps.rows();
+  const PathDualRecipe& p = c.dual.path;
+  const PathDualSums sums = path_dual_sums(p, U_grid, ny, nz);
   if (!sums.problem.empty()) return invalid_verdict("the dual recipe gives no point: " + sums.problem, details);
   const PathDualValue v = path_dual_value(p, sums, fir_adjoint(c.dual.g, sim.z, L), c.dual.g, c.dual.sigma, r, ny, nz);
   std::ostringstream d;
@@ -51,15 +60,13 @@ CertificateVerdict check_path_dual(const Certificate& c, const Simulation<Ration
   d << "; ||E||_F^2 = " << approx_text(v.E_norm2, 3) << " <= x*u_floor";
   const Rational bound = dual_bound(v.terms, c.objective, c.delta2, c.dmax2, c.lambda);
   if (std::string why = bound_problem(c, bound, d); !why.empty()) return invalid_verdict(why, d.str());
-  const PsdResult psd = path_dual_psd(p, grid.U, true);
+  const PsdResult psd = path_dual_psd(p, U_grid, true);
   if (psd.verdict == PsdVerdict::kNotPsd)
     return invalid_verdict("U - u_floor*I is not PSD (" + psd.reason + "), so Y1 is not shown PSD", d.str());
-  d << "; U - u_floor*I (size " << grid.U.rows() << ") is " << verdict_word(psd.verdict) << " ("
+  d << "; U - u_floor*I (size " << U_grid.rows() << ") is " << verdict_word(psd.verdict) << " ("
     << (psd.decided_by_filter ? "floating filter with rigorous bound" : "exact elimination") << "), so Y1 is PSD";
   return {true, "", d.str(), "", ""};
 }
-
-}  // namespace
 
 CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Rational>& exp, const Simulation<Rational>& sim,
                                     std::string details) {

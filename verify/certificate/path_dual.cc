@@ -11,6 +11,7 @@
 #include "core/gmp_raii.h"
 #include "verify/psd/power_of_two.h"
 #include "verify/psd/psd_filter.h"
+#include "verify/certificate/verdict_text.h"
 
 namespace lpvid {
 namespace {
@@ -18,6 +19,45 @@ namespace {
 
 /// z·2^k as a rational.
 Rational scaled(mpz_srcptr z, long k) { return mpz_to_rational(z) * power_of_two(k); }
+
+/// The taps as H·2^f with H integer, f = −(largest binary exponent of a
+/// denominator), into H column by column: Hcol[j][k·ny + i'] = H(k, i'·nz + j).
+/// Returns f; sets `problem` when a tap is not dyadic.
+long dyadic_tap_columns(const Mat<Rational>& taps, Eigen::Index ny, Eigen::Index nz, MpzArray& H, std::string& problem) {
+  const Eigen::Index L = taps.rows();
+  const std::size_t Pu = static_cast<std::size_t>(L * ny);
+  long max_den_bits = 0;
+  for (Eigen::Index l = 0; l < L; ++l)
+    for (Eigen::Index c = 0; c < ny * nz; ++c) {
+      mpz_srcptr den = mpq_denref(taps(l, c).mpq());
+      if (mpz_popcount(den) != 1) {
+        problem = "tap " + std::to_string(l) + " entry " + std::to_string(c) + " is not a dyadic rational";
+        return 0;
+      }
+      max_den_bits = std::max(max_den_bits, static_cast<long>(mpz_sizeinbase(den, 2)) - 1);
+    }
+  for (Eigen::Index k = 0; k < L; ++k)
+    for (Eigen::Index i = 0; i < ny; ++i)
+      for (Eigen::Index j = 0; j < nz; ++j) {
+        mpq_srcptr h = taps(k, i * nz + j).mpq();
+        const long bits = static_cast<long>(mpz_sizeinbase(mpq_denref(h), 2)) - 1;
+        mpz_mul_2exp(H[static_cast<std::size_t>(j) * Pu + static_cast<std::size_t>(k * ny + i)], mpq_numref(h),
+                     static_cast<mp_bitcnt_t>(max_den_bits - bits));
+      }
+  return -max_den_bits;
+}
+
+/// NOT_PSD of U − γ·I from its diagonal entry i < 0 (witness eᵢ), exactly.
+PsdResult negative_diagonal(Eigen::Index i, Eigen::Index P, const Rational& floor) {
+  PsdResult out;
+  out.verdict = PsdVerdict::kNotPsd;
+  out.pivot_index = static_cast<long>(i);
+  out.witness = Vec<Rational>::Zero(P);
+  out.witness(i) = Rational(1);
+  out.reason = "diagonal entry " + std::to_string(i) + " of U is below u_floor = " + approx_text(floor, 8) +
+               " (exact comparison)";
+  return out;
+}
 
 
 }  // namespace
@@ -38,12 +78,13 @@ Mat<double> path_dual_floating_u(const PathDualRecipe& recipe, Eigen::Index ny, 
   Mat<double> S = tap_gram(h, ny, nz);
   S = -S;
   S.diagonal().array() += t;
-  Eigen::LLT<Mat<double>> llt(S);
+  Eigen::LLT<Eigen::Ref<Mat<double>>> llt(S);  // in place: two P×P matrices in all
   if (llt.info() != Eigen::Success) {
     problem = "t*I - T*T^T is not positive definite in floating point (the recipe gives no U)";
     return {};
   }
-  Mat<double> U = llt.solve(Mat<double>::Identity(P, P));
+  Mat<double> U = Mat<double>::Identity(P, P);
+  llt.solveInPlace(U);
   U *= mu;
   return U;
 }
@@ -85,49 +126,33 @@ PathDualSums path_dual_sums(const PathDualRecipe& recipe, const Mat<double>& U_g
   PathDualSums out;
   const Eigen::Index L = recipe.taps.rows(), P = L * ny, q = ny * nz;
   const std::size_t Pu = static_cast<std::size_t>(P), Nz = static_cast<std::size_t>(nz);
-  // Taps as H·2^f with H integer: f = −(largest binary exponent of a denominator).
-  long max_den_bits = 0;
-  for (Eigen::Index l = 0; l < L; ++l)
-    for (Eigen::Index c = 0; c < q; ++c) {
-      mpz_srcptr den = mpq_denref(recipe.taps(l, c).mpq());
-      if (mpz_popcount(den) != 1) {
-        out.problem = "tap " + std::to_string(l) + " entry " + std::to_string(c) + " is not a dyadic rational";
-        return out;
-      }
-      max_den_bits = std::max(max_den_bits, static_cast<long>(mpz_sizeinbase(den, 2)) - 1);
-    }
-  const long f = -max_den_bits;
-  // Hcol[j][k·ny + i'] = H(k, i'·nz + j).
   MpzArray H(Pu * Nz);
-  for (Eigen::Index k = 0; k < L; ++k)
-    for (Eigen::Index i = 0; i < ny; ++i)
-      for (Eigen::Index j = 0; j < nz; ++j) {
-        mpq_srcptr h = recipe.taps(k, i * nz + j).mpq();
-        const long bits = static_cast<long>(mpz_sizeinbase(mpq_denref(h), 2)) - 1;
-        mpz_mul_2exp(H[static_cast<std::size_t>(j) * Pu + static_cast<std::size_t>(k * ny + i)], mpq_numref(h),
-                     static_cast<mp_bitcnt_t>(max_den_bits - bits));
-      }
-  // D(p, p2) = Ũ(p, p2) + D(p + ny, p2 + ny): partial block-diagonal sums.
-  MpzArray D(Pu * Pu);
-  for (std::size_t p = Pu; p-- > 0;)
-    for (std::size_t p2 = Pu; p2-- > 0;) {
-      mpz_ptr d = D[p * Pu + p2];
-      mpz_set_d(d, U_grid(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p2)));
-      const std::size_t s = static_cast<std::size_t>(ny);
-      if (p + s < Pu && p2 + s < Pu) mpz_add(d, d, D[(p + s) * Pu + p2 + s]);
-    }
+  const long f = dyadic_tap_columns(recipe.taps, ny, nz, H, out.problem);
+  if (!out.problem.empty()) return out;
+  // D(p, p2) = Ũ(p, p2) + D(p + ny, p2 + ny): partial block-diagonal sums,
+  // row p from row p + ny, so ny rows are kept (row p replaces row p + ny
+  // in slot p mod ny; ascending p2 reads p2 + ny before it is overwritten).
+  const std::size_t s = static_cast<std::size_t>(ny);
+  MpzArray D(s * Pu);
   // M(p, j) = Σ_p2 D(p, p2)·Hcol_j(p2): Ω_l(UT)(i, j) = M(l·ny + i, j)·2^(e+f),
   // tr(TᵀUT) = Σ_{p, j} Hcol_j(p)·M(p, j)·2^(e+2f).
   out.omega_UT = Mat<Rational>(L, q);
   Mpz acc, tr;
-  for (std::size_t p = 0; p < Pu; ++p)
+  for (std::size_t p = Pu; p-- > 0;) {
+    const std::size_t base = (p % s) * Pu;
+    for (std::size_t p2 = 0; p2 < Pu; ++p2) {
+      mpz_ptr d = D[base + p2];
+      mpz_set_d(d, U_grid(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p2)));
+      if (p + s < Pu && p2 + s < Pu) mpz_add(d, d, D[base + p2 + s]);  // D(p + ny, p2 + ny), not yet overwritten
+    }
     for (std::size_t j = 0; j < Nz; ++j) {
       mpz_set_ui(acc.z, 0);
-      for (std::size_t p2 = 0; p2 < Pu; ++p2) mpz_addmul(acc.z, D[p * Pu + p2], H[j * Pu + p2]);
+      for (std::size_t p2 = 0; p2 < Pu; ++p2) mpz_addmul(acc.z, D[base + p2], H[j * Pu + p2]);
       const Eigen::Index l = static_cast<Eigen::Index>(p) / ny, i = static_cast<Eigen::Index>(p) % ny;
       out.omega_UT(l, i * nz + static_cast<Eigen::Index>(j)) = scaled(acc.z, recipe.u_exponent + f);
       mpz_addmul(tr.z, H[j * Pu + p], acc.z);
     }
+  }
   out.tr_TUT = scaled(tr.z, recipe.u_exponent + 2 * f);
   Mpz diag;
   for (std::size_t p = 0; p < Pu; ++p) {
@@ -175,15 +200,18 @@ PathDualValue path_dual_value(const PathDualRecipe& recipe, const PathDualSums& 
 PsdResult path_dual_psd(const PathDualRecipe& recipe, const Mat<double>& U_grid, bool exact_fallback) {
   const Eigen::Index P = U_grid.rows();
   // A = Ũ − γ·2^−e·I with the diagonal rounded down: A ⪰ 0 implies the exact matrix is.
+  // A diagonal entry below the floor decides at once (eᵢᵀ(U − γ·I)eᵢ < 0);
+  // the others lie in [0, Ũᵢᵢ] ⊂ [0, 2^53), so their doubles are finite.
   const Rational floor_units = recipe.floor * power_of_two(-recipe.u_exponent);
   Mat<double> A = U_grid;
+  PsdResult out;
   for (Eigen::Index i = 0; i < P; ++i) {
     const Rational exact = Rational(U_grid(i, i)) - floor_units;
+    if (exact < 0) return negative_diagonal(i, P, recipe.floor);
     double d = nearest_double(exact);
     if (Rational(d) > exact) d = std::nextafter(d, -INFINITY);
     A(i, i) = d;
   }
-  PsdResult out;
   const PsdFilterResult f = run_psd_filter_on_doubles(A);
   if (f.proved_pd) {
     out.verdict = PsdVerdict::kPositiveDefinite;

@@ -13,6 +13,7 @@
 #include "core/number_text.h"
 #include "verify/psd/exact_psd.h"
 #include "verify/psd/rational_matrix_io.h"
+#include "verify/psd/work_limits.h"
 
 namespace lpvid {
 namespace {
@@ -88,6 +89,9 @@ int run_psd_command(const std::string& path, std::ostream& out, std::ostream& er
   } catch (const IoError& e) {
     err << "lpvid-verify psd: error: " << e.what() << '\n';
     return kPsdExitIo;
+  } catch (const WorkLimitError& e) {
+    err << "lpvid-verify psd: not decided: " << path << ": " << e.what() << '\n';
+    return kPsdExitWorkLimit;
   } catch (const std::invalid_argument& e) {
     err << "lpvid-verify psd: error: " << path << ": " << e.what() << '\n';
   } catch (const std::bad_alloc&) {

@@ -6,7 +6,8 @@
 /// same line; indented detail lines follow (n, which path decided, pivot
 /// index, witness, timings). Exit code 0 for PD and PSD, 1 for NOT_PSD, 2 for
 /// input that cannot be decided (6 when the operating system could not read
-/// an existing file): missing or non-regular file, too large (core/limits.h), bad number text, zero
+/// an existing file, 8 when the exact path would exceed --max-exact-work,
+/// verify/psd/work_limits.h): missing or non-regular file, too large (core/limits.h), bad number text, zero
 /// denominator, NaN/inf, ragged or non-square matrix, non-symmetric matrix,
 /// out of memory, any other error (message on `err`, never a crash).
 
@@ -29,6 +30,7 @@ inline constexpr int kPsdExitPsd = kExitOk;
 inline constexpr int kPsdExitNotPsd = kExitInvalidated;
 inline constexpr int kPsdExitBadInput = kExitBadInput;
 inline constexpr int kPsdExitIo = kExitIo;  ///< the file exists but could not be read (core/exit_codes.h)
+inline constexpr int kPsdExitWorkLimit = kExitWorkLimit;  ///< the exact path would exceed --max-exact-work
 
 int run_psd_command(const std::string& path, std::ostream& out, std::ostream& err,
                     const PsdCommandOptions& options = {});

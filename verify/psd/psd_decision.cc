@@ -16,6 +16,7 @@
 #include "verify/psd/power_of_two.h"
 #include "verify/psd/psd_filter.h"
 #include "verify/psd/psd_internal.h"
+#include "verify/psd/work_limits.h"
 
 namespace lpvid {
 namespace {
@@ -210,6 +211,9 @@ namespace psd_detail {
 
 PsdResult decide_psd_exact_limited(const Mat<Rational>& M, int threads, const ExactPsdLimits& limits) {
   require_symmetric(M);
+  // Refused before any elimination when above lpvid-verify's work limit.
+  if (verify_work_limits().max_exact_work > 0 && M.rows() > 0)
+    require_exact_work(static_cast<long>(M.rows()), static_cast<double>(hadamard_bits(*integer_matrix(M))));
   const int workers = resolve_threads(threads);
   PsdResult screened;
   if (screen_leading_blocks(M, workers, limits, &screened)) return screened;

@@ -27,6 +27,10 @@ struct IntegerMatrix {
 /// L·M for the symmetric rational M (upper triangle only).
 std::unique_ptr<IntegerMatrix> integer_matrix(const Mat<Rational>& M);
 
+/// log₂ of Hadamard's bound, rounded up: Σ_i ⌈log₂ max(1, ‖A_i‖₂)⌉
+/// (verify/psd/psd_modular.cc).
+std::size_t hadamard_bits(const IntegerMatrix& A);
+
 /// Sign of wᵀMw, exactly, for the symmetric rational M (upper triangle) and
 /// integer w: over the support of w and with one common denominator per row
 /// (verify/psd/psd_witness.cc), without forming L·M.

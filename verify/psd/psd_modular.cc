@@ -156,7 +156,8 @@ void choose_pivots_mod(const IntegerMatrix& A, Word p, std::vector<long>* perm, 
   *rank = n;
 }
 
-/// log₂ of Hadamard's bound, rounded up: Σ_i ⌈log₂ max(1, ‖A_i‖₂)⌉.
+}  // namespace
+
 std::size_t hadamard_bits(const IntegerMatrix& A) {
   Mpz s;
   std::size_t bits = 0;
@@ -170,6 +171,8 @@ std::size_t hadamard_bits(const IntegerMatrix& A) {
   }
   return bits;
 }
+
+namespace {
 
 /// Step 4 for one target t mod p, on the m×m triangle `a` after K
 /// elimination steps (pivot inverses `inv`, Δ_K = `delta`): w[K + t] = Δ_K,
