@@ -17,6 +17,7 @@ enum ExitCode {
   kExitNotVerified = 4,  ///< bounds were computed but the exact check did not accept them
   kExitUndecided = 5,    ///< fixed bounds: neither consistency nor invalidation could be certified
   kExitIo = 6,           ///< an existing input could not be read or an output could not be written (core/file_io.h)
+  kExitTimedOut = 124,   ///< the user's --timeout passed first: no answer, the run's outputs removed (core/deadline.h; GNU timeout's code)
   kExitInterrupted = 130,  ///< SIGINT/SIGTERM: the run's outputs were removed (core/file_io.h)
 };
 
