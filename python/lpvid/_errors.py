@@ -9,6 +9,7 @@ EXIT_CODES = {
     4: "bounds were computed but the exact check did not accept them",
     5: "fixed bounds: neither consistency nor invalidation could be certified",
     6: "I/O failure: an existing input could not be read, or an output could not be written",
+    124: "timed out: the --timeout given passed before an answer; the run's outputs were removed",
     130: "interrupted: the run's outputs were removed",
 }
 

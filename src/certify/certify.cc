@@ -284,6 +284,7 @@ struct CertifyRun {
 void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, CertifiedBounds& b) {
   b.solve_status = sol.solve.status;
   b.solve_seconds += sol.solve.seconds;
+  if (!sol.fallback.empty()) b.fallback += (b.fallback.empty() ? "" : "; ") + sol.fallback + " (fell back to " + run.solver.name() + ")";
   b.taps = sol.taps.rows();
   b.horizon = sol.horizon;
   if (!has_solution(sol.solve.status)) {

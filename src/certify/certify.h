@@ -115,6 +115,10 @@ struct CertifiedBounds {
   /// The status of the solve whose answer was certified; none when no solve
   /// ran here (given taps: certify_with_taps).
   std::optional<SolveStatus> solve_status;
+  /// Why a solve of this certification fell back from the structured
+  /// barrier to the SDP backend (DeltaFormSolution::fallback, "; "-joined);
+  /// empty when none did. Reports and progress lines show it.
+  std::string fallback;
   double solve_seconds = 0, verify_seconds = 0;
   std::string verifier_details;
 

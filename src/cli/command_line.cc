@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "cli/report.h"
 #include "core/argv_words.h"
+#include "core/deadline.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/limit_options.h"
@@ -24,6 +25,11 @@ int run_lpvid(const std::vector<std::string>& args, const std::string& program) 
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("lpvid ") + LPVID_VERSION);
   lpvid::add_limit_options(app);
+  double timeout = 0;
+  app.add_option("--timeout", timeout,
+                 "stop after SECONDS of wall-clock time: the run ends 'timed out' (exit 124) and removes its outputs "
+                 "(default: none; nothing else depends on the wall clock, so a loaded machine only takes longer)")
+      ->check(CLI::PositiveNumber);
   std::vector<Runner> runners = {add_invalidate_command(app), add_identify_command(app), add_simulate_command(app),
                                  add_generate_command(app)};
   runners.push_back(add_select_basis_command(app));
@@ -42,6 +48,10 @@ int run_lpvid(const std::vector<std::string>& args, const std::string& program) 
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }
+  lpvid::set_deadline(timeout);  // 0: none
+  struct ClearDeadline {
+    ~ClearDeadline() { lpvid::clear_deadline(); }  // in-process callers (the Python module) run again without it
+  } clear_at_return;
   // A command that fails with an exception leaves none of its outputs behind
   // (a certificate without its report would look like a finished run).
   const auto fail = [](const std::string& message, int code) {
@@ -55,6 +65,8 @@ int run_lpvid(const std::vector<std::string>& args, const std::string& program) 
       const int code = run();
       if (code >= 0) return code;
     }
+  } catch (const lpvid::TimedOut& e) {
+    return fail(e.what(), kExitTimedOut);
   } catch (const lpvid::InputError& e) {
     return fail(e.what(), kExitBadInput);
   } catch (const lpvid::IoError& e) {

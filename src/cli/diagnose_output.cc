@@ -59,6 +59,7 @@ ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>&
                {"delta", b.verified ? ojson(b.delta) : ojson(nullptr)}, {"dmax", b.verified ? ojson(b.dmax) : ojson(nullptr)},
                {"verified", b.verified}, {"certificate", w.certificate.empty() ? ojson(nullptr) : ojson(w.certificate)}};
     if (!b.verified) e["reason"] = b.reason;
+    if (!b.fallback.empty()) e["fallback"] = b.fallback;
     e["rms_output"] = finite_or_null(w.rms_output);
     e["rms_output_variation"] = finite_or_null(w.rms_variation);
     e["informative"] = w.informative;

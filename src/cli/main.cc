@@ -9,6 +9,7 @@
 
 int main(int argc, char** argv) {
   lpvid::remove_outputs_on_interrupt("lpvid");  // before any thread: Ctrl-C leaves nothing half-done
+  lpvid::end_run_after_deadline("lpvid");       // --timeout's backstop (idle until a deadline is set)
   if (argc < 1) return lpvid::cli::run_lpvid({});
   return lpvid::cli::run_lpvid(std::vector<std::string>(argv + 1, argv + argc), argv[0]);
 }

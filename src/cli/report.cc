@@ -51,6 +51,7 @@ nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& 
   c["delta2_solver"] = b.delta2_solver;
   c["delta2_margin"] = b.margin;
   c["solver_status"] = solve_status_text(b);
+  if (!b.fallback.empty()) c["fallback"] = b.fallback;
   c["solve_seconds"] = b.solve_seconds;
   c["verify_seconds"] = b.verify_seconds;
   c["verifier"] = b.verifier_details;

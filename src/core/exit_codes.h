@@ -20,6 +20,7 @@ enum ExitCode {
   kExitUndecided = 5,    ///< fixed bounds: neither consistency nor invalidation could be certified
   kExitIo = 6,           ///< an existing input could not be read or an output could not be written (core/file_io.h)
   kExitWorkLimit = 8,    ///< lpvid-verify: the check would exceed a work limit (verify/psd/work_limits.h); nothing was decided
+  kExitTimedOut = 124,   ///< the user's --timeout passed first: no answer, the run's outputs removed (core/deadline.h; GNU timeout's code)
   kExitInterrupted = 130,  ///< SIGINT/SIGTERM: the run's outputs were removed (core/file_io.h)
 };
 

@@ -1,6 +1,7 @@
 #include "core/file_io.h"
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "core/deadline.h"
 #include "core/exit_codes.h"
 #include "core/input_error.h"
 #include "core/limits.h"
@@ -161,6 +163,22 @@ void check_output_directory(const std::string& dir, const std::string& what) {
 
 namespace {
 int interrupt_pipe[2] = {-1, -1};
+
+/// Removes every output this run wrote (and a temporary being written),
+/// says `what` and so on stderr, and ends the process with `code`.
+[[noreturn]] void end_run_now(const char* program, const std::string& what, int code) {
+  int removed = 0;
+  {
+    std::lock_guard<std::mutex> lock(outputs_mutex());
+    for (const std::string& p : outputs())
+      if (std::remove(p.c_str()) == 0) ++removed;
+    for (const std::string& p : in_flight()) std::remove(p.c_str());
+  }
+  std::cerr << "\n" << program << ": " << what << "; removed the " << removed << " file(s) this run had written\n"
+            << std::flush;
+  std::_Exit(code);
+}
+
 extern "C" void on_interrupt(int sig) {
   const unsigned char byte = static_cast<unsigned char>(sig);
   [[maybe_unused]] const ssize_t w = ::write(interrupt_pipe[1], &byte, 1);  // async-signal-safe
@@ -180,17 +198,18 @@ void remove_outputs_on_interrupt(const char* program) {
     unsigned char sig = 0;
     while (::read(interrupt_pipe[0], &sig, 1) != 1)
       if (errno != EINTR) return;
-    int removed = 0;
-    {
-      std::lock_guard<std::mutex> lock(outputs_mutex());
-      for (const std::string& p : outputs())
-        if (std::remove(p.c_str()) == 0) ++removed;
-      for (const std::string& p : in_flight()) std::remove(p.c_str());
+    end_run_now(program, "interrupted (signal " + std::to_string(static_cast<int>(sig)) + ")", kExitInterrupted);
+  }).detach();
+}
+
+void end_run_after_deadline(const char* program) {
+  std::thread([program]() {
+    for (;;) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      const double timeout = deadline_timeout_seconds();
+      if (timeout > 0 && seconds_to_deadline() < -(kDeadlineGraceSeconds + kDeadlineGraceShare * timeout))
+        end_run_now(program, timed_out_message() + " (a step without a check ran past it)", kExitTimedOut);
     }
-    std::cerr << "\n" << program << ": interrupted (signal " << static_cast<int>(sig) << "); removed the " << removed
-              << " file(s) this run had written\n"
-              << std::flush;
-    std::_Exit(kExitInterrupted);
   }).detach();
 }
 

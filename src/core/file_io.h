@@ -55,4 +55,16 @@ void check_output_directory(const std::string& dir, const std::string& what);
 /// clean-up in ordinary code (not in a signal handler).
 void remove_outputs_on_interrupt(const char* program);
 
+/// The backstop of the user's --timeout (core/deadline.h): the long loops
+/// stop themselves at their next check (exit 124, outputs removed, by the
+/// command line's ordinary error path); a step that runs on without a check
+/// (an exact check of a large certificate) is ended by a thread started here,
+/// kDeadlineGraceSeconds + kDeadlineGraceShare × the timeout after the
+/// deadline, with the same clean-up as an interrupt and exit code
+/// kExitTimedOut. Call once, at the start of main() (it acts only once a
+/// deadline is set). Not in the Python module, which must not end its process.
+void end_run_after_deadline(const char* program);
+constexpr double kDeadlineGraceSeconds = 2.0;
+constexpr double kDeadlineGraceShare = 0.05;
+
 }  // namespace lpvid

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace lpvid {
@@ -35,14 +36,37 @@ BoundCost estimate_bound_cost(const std::vector<RowWindow>& windows, int ny, int
   BoundCost c;
   for (const RowWindow& w : windows) {
     const double size = static_cast<double>(w.second - w.first) * static_cast<double>(ny + nz);
-    const double each = 3.0 * std::pow(size / 800.0, 2.4) * std::pow(static_cast<double>(ny * nz), 0.8);
-    c.seconds += 2.0 * each;  // before and after
+    const double each = kBoundSeconds * std::pow(size / 400.0, 3.0) * std::pow(static_cast<double>(ny * nz), 0.8);
+    c.seconds += 2.0 * each * (lower_ends ? kLowerEndFactor : 1.0);  // before and after
     // A compact dual certificate holds n·ny + L·ny·nz numbers of about 40 bytes
     // (measured: 31 kB at SISO n = 400, 103 kB at 2×2 n = 400).
     const double rows = static_cast<double>(w.second - w.first);
     c.megabytes += 2.0 * (0.01 + (lower_ends ? 40e-6 * rows * ny * (1.0 + nz) : 0.0));
   }
   return c;
+}
+
+namespace {
+
+/// "40 s", "3 min", "1.5 h": a duration as a progress line says it.
+std::string duration_text(double seconds) {
+  char buf[32];
+  if (seconds < 90) std::snprintf(buf, sizeof buf, "%.0f s", seconds);
+  else if (seconds < 5400) std::snprintf(buf, sizeof buf, "%.0f min", seconds / 60);
+  else std::snprintf(buf, sizeof buf, "%.1f h", seconds / 3600);
+  return buf;
+}
+
+}  // namespace
+
+std::string observed_rate_text(size_t done, size_t total, double elapsed_seconds) {
+  if (done == 0 || !(elapsed_seconds >= 0)) return "";
+  const double each = elapsed_seconds / static_cast<double>(done);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, each < 10 ? "%.1f s" : "%.0f s", each);
+  std::string out = std::string(buf) + " per bound so far";
+  if (done < total) out += ", ~" + duration_text(each * static_cast<double>(total - done)) + " left";
+  return out;
 }
 
 }  // namespace lpvid

@@ -7,6 +7,7 @@
 /// window shorter than the minimum is merged into the one before it, so no
 /// window is a scrap of a few rows whose bounds say little.
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -41,11 +42,26 @@ struct BoundCost {
 
 /// The estimate for every window certified twice (before and after): per
 /// certification of L rows with ny outputs and nz uncertainty channels,
-/// seconds ≈ 3·(L·(ny+nz)/800)^2.4·(ny·nz)^0.8 of wall time, both ends of
-/// the interval (the structured barrier, bench/README.md `interval_bench`
-/// 2026-11-26: SISO 2.9 s at 400 rows and 15 s at 800, 2×2 42 s at 400, 3×3
-/// 33 s at 200), a primal certificate ≈ 10 kB, and with `lower_ends` a compact
-/// dual certificate of n·ny + L·ny·nz numbers at about 40 bytes each.
+/// seconds ≈ kBoundSeconds·(L·(ny+nz)/400)³·(ny·nz)^0.8 of one core's time
+/// for the upper end (the structured barrier's Newton steps cost O(L³) and
+/// their number grows with L on measured records; the exact check of the
+/// certificate is a fifth of it), × kLowerEndFactor with `lower_ends` (the
+/// dual certificate built and checked too). Calibrated on the cascaded-tanks
+/// record (dataBenchmark.csv, the linear model of scripts/demo.sh, λ = 0.99
+/// in the data's units, one thread, 2-core machine at load ~2): upper end
+/// 2.6–3.0 s at 200 rows (2.2 s solve + 0.6 s exact check), 21 s at 400;
+/// both ends 4.7 s at 200 and 39 s at 400. Windows run in parallel
+/// (--threads) divide the wall time by at most the thread count. Files: a
+/// primal certificate ≈ 10 kB, and with `lower_ends` a compact dual
+/// certificate of n·ny + L·ny·nz numbers at about 40 bytes each.
+constexpr double kBoundSeconds = 2.7;   ///< one upper end, SISO, 200 rows (see estimate_bound_cost)
+constexpr double kLowerEndFactor = 1.8;  ///< both ends / the upper end alone (measured 4.7/2.7 and 39/21)
 BoundCost estimate_bound_cost(const std::vector<RowWindow>& windows, int ny, int nz, bool lower_ends);
+
+/// The rate the bounds actually run at, for the progress lines: after
+/// `done` of `total` certifications in `elapsed_seconds` of wall time,
+/// "11 s per bound so far, ~2 min left" (wall time per finished bound at the
+/// parallelism used; the rest at that rate). Empty before the first.
+std::string observed_rate_text(size_t done, size_t total, double elapsed_seconds);
 
 }  // namespace lpvid

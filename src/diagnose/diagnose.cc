@@ -1,9 +1,11 @@
 #include "diagnose/diagnose.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <mutex>
 
+#include "core/deadline.h"
 #include "core/input_error.h"
 #include "core/parallel_for.h"
 #include "diagnose/effect_reading.h"
@@ -118,15 +120,21 @@ ShownRecord shown_record(const DiagnoseResult& out, const Experiment<double>& es
 
 namespace {
 
-/// What the certification at the end will cost, said before any work.
+/// The threads that certify the windows (certify_windows).
+unsigned bound_threads(const DiagnoseOptions& options) { return options.make_solver ? std::max(1u, options.threads) : 1u; }
+
+/// What the certification at the end will cost, said before any work: the
+/// sequential estimate shared by the threads that run the 2·W certifications.
 void announce_bound_cost(const std::vector<RowWindow>& windows, const LpvModel<double>& declared, const DiagnoseOptions& options) {
   if (!options.ranking.progress) return;
   const BoundCost cost = estimate_bound_cost(windows, declared.ny, declared.nz(), options.certify.lower_end);
+  const size_t parallel = std::min<size_t>(bound_threads(options), 2 * windows.size());
   char buf[400];
   std::snprintf(buf, sizeof buf,
-                "bounds at the end: %zu windows x (before, after), expected roughly %.0f s and %.1f MB of "
-                "certificates%s (--max-windows N caps the windows%s)",
-                windows.size(), cost.seconds, cost.megabytes,
+                "bounds at the end: %zu windows x (before, after), expected roughly %.0f s on %zu thread%s (at idle) and "
+                "%.1f MB of certificates%s (--max-windows N caps the windows%s)",
+                windows.size(), cost.seconds / static_cast<double>(parallel), parallel, parallel == 1 ? "" : "s",
+                cost.megabytes,
                 options.certify.lower_end ? " with the lower ends' dual certificates" : "",
                 options.certify.lower_end ? "; without --lower-ends no dual certificates are written" : "");
   options.ranking.progress(buf);
@@ -139,10 +147,12 @@ void certify_windows(DiagnoseResult& out, const std::vector<RowWindow>& windows,
                      const Experiment<Rational>& est_q, const DiagnoseOptions& options, SdpSolver& solver) {
   out.before.resize(windows.size());
   out.after.resize(windows.size());
-  const unsigned threads = options.make_solver ? std::max(1u, options.threads) : 1u;
+  const unsigned threads = bound_threads(options);
   std::mutex report;
   size_t done = 0;
+  const auto started = std::chrono::steady_clock::now();  // the progress lines' rate only
   parallel_for(2 * windows.size(), threads, [&](size_t job) {
+    check_deadline("the bounds were certified");
     const size_t i = job / 2;
     const bool after = job % 2 == 1;
     auto own = threads > 1 ? options.make_solver() : nullptr;
@@ -152,11 +162,15 @@ void certify_windows(DiagnoseResult& out, const std::vector<RowWindow>& windows,
     if (options.on_bound) options.on_bound(w, i, windows.size(), after);
     if (options.ranking.progress) {
       const std::lock_guard<std::mutex> lock(report);
-      options.ranking.progress("bounds (Theorem 2.1), " + std::to_string(++done) + " of " +
+      const size_t k = ++done;
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      const std::string fell = w.bounds.fallback.empty() ? "" : " (" + w.bounds.fallback + ")";
+      options.ranking.progress("bounds (Theorem 2.1), " + std::to_string(k) + " of " +
                                std::to_string(2 * windows.size()) + ": window " + std::to_string(i + 1) + " " +
                                (after ? "after" : "before") + ": " +
-                               (w.bounds.verified ? "verified" + (w.certificate.empty() ? std::string() : ", " + w.certificate)
-                                                   : "NOT verified (" + w.bounds.reason + ")"));
+                               (w.bounds.verified ? "verified" + fell + (w.certificate.empty() ? std::string() : ", " + w.certificate)
+                                                   : "NOT verified (" + w.bounds.reason + ")") +
+                               "; " + observed_rate_text(k, 2 * windows.size(), elapsed));
     }
   });
 }

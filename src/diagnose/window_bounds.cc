@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/deadline.h"
 #include "core/rms.h"
 #include "core/input_error.h"
 #include "data/experiment_builder.h"
@@ -56,6 +57,8 @@ WindowBounds certify_window(const LpvModel<double>& model, const Experiment<doub
     const Vec<double> xb = model.nx > 0 ? Vec<double>(sim.x.row(begin).transpose()) : Vec<double>();
     w.model = exact_model(model, xb);
     w.bounds = certify_fixed_model(w.model, select_rows(est_q, begin, end), options, solver);
+  } catch (const TimedOut&) {
+    throw;  // the user's --timeout ends the run, not a window or a stage
   } catch (const std::exception& e) {
     // this window's failure (a diverging free run, z = 0 on its rows, a solver
     // error): not verified, with the reason; the other windows and every

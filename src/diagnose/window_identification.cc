@@ -1,5 +1,6 @@
 #include "diagnose/window_identification.h"
 
+#include "core/deadline.h"
 #include "data/experiment_builder.h"
 #include "identify/affine_residual.h"
 #include "identify/fix_and_certify.h"
@@ -64,6 +65,8 @@ WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, cons
                                             long file_row_offset, const CertifyOptions& options, SdpSolver& solver) {
   try {
     return identify_on_window(fitted, est_d, est_q, begin, end, file_row_offset, options, solver);
+  } catch (const TimedOut&) {
+    throw;  // the user's --timeout ends the run, not a window or a stage
   } catch (const std::exception& e) {
     WindowIdentification failed;
     failed.applicable = true;

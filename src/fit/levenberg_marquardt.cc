@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/deadline.h"
+
 namespace lpvid {
 
 Mat<double> forward_difference_jacobian(const Residual& r, const Vec<double>& p, const Vec<double>& r0) {
@@ -39,6 +41,7 @@ LmResult levenberg_marquardt(const Residual& r, const Vec<double>& p0, const LmO
   int small_decreases = 0;
   while (out.iterations < options.max_iterations) {
     ++out.iterations;
+    check_deadline("a model was fitted");  // the user's --timeout, between steps
     // Marquardt's scaling: damp each direction by its own curvature; the
     // floor keeps a parameter with a zero column (no influence) well posed.
     // Solved in the scaled variables z = S p, S = diag(JᵀJ)^½, so that columns

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/deadline.h"
 #include "core/rms.h"
 #include "lmi/noise_block.h"
 #include "toeplitz/correlation_2d.h"
@@ -376,6 +377,8 @@ class BarrierRun {
   /// Newton on F_μ until the decrement λ² is below `tol`; "" on success.
   std::string center(double tol, int max_steps) {
     for (int inner = 0; inner < max_steps; ++inner) {
+      last_center_steps_ = inner;
+      check_deadline("the structured barrier was solving");  // the user's --timeout, between Newton steps
       if (++newton_ > options_.max_newton) return "no convergence within " + std::to_string(options_.max_newton) + " Newton steps";
       Vecd dx;
       double dec2 = 0;
@@ -493,7 +496,7 @@ class BarrierRun {
   /// it is interior and lowers F_μ (x is kept otherwise: F_μ's domain does not
   /// depend on μ).
   void reduce_mu() {
-    const double factor = p_.s_var ? options_.mu_factor : options_.mu_factor_fixed_noise;
+    const double factor = adapt_mu_factor();
     const Vecd step = options_.predictor ? predictor_step(p_, pt_, H_, mu_, factor) : Vecd();
     mu_ /= factor;
     pt_ = evaluate(p_, x_, mu_);
@@ -506,6 +509,19 @@ class BarrierRun {
         return;
       }
     }
+  }
+
+  /// The factor of the next μ reduction, from the last centering's Newton
+  /// steps (BarrierOptions::slow_centering): √ after a slow one (not below
+  /// min_mu_factor), squared after a quick one (≤ 2 steps; not above the base).
+  double adapt_mu_factor() {
+    const double base = p_.s_var ? options_.mu_factor : options_.mu_factor_fixed_noise;
+    if (factor_ == 0) factor_ = base;
+    if (last_center_steps_ > options_.slow_centering)
+      factor_ = std::max(std::min(base, options_.min_mu_factor), std::sqrt(factor_));
+    else if (last_center_steps_ <= 2)
+      factor_ = std::min(base, factor_ * factor_);
+    return factor_;
   }
 
   /// Dual matrices of (C1) and (C2) from the central point (scaled), then in
@@ -542,6 +558,8 @@ class BarrierRun {
   double mu_ = 0;
   Point pt_;
   int newton_ = 0;
+  int last_center_steps_ = 0;  ///< Newton steps of the last centering
+  double factor_ = 0;          ///< the current μ reduction factor (0: not yet set)
   bool infeasible_ = false, found_feasible_ = false, stalled_ = false;
   Vecd g_;
   Dense H_, P_, Q_, R_;

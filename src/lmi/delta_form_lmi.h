@@ -22,6 +22,7 @@
 /// σ_r); `DeltaFormSolution` is in the original units.
 
 #include <optional>
+#include <string>
 
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
@@ -51,6 +52,10 @@ struct DeltaFormSolution {
   /// compact dual certificate (verify/certificate/path_dual.h). 0 when the dual matrices
   /// come from elsewhere.
   double path_mu = 0.0;
+  /// Why this answer is not the structured barrier's although it applied:
+  /// the barrier's failure ("structured barrier: …"), after which the SDP
+  /// backend solved the same program (lmi/delta_form_solve.h). Empty otherwise.
+  std::string fallback;
 };
 
 /// Builds and solves the Δ-form program. z is n × nz, r is n × ny (doubles).

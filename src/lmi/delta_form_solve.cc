@@ -38,6 +38,7 @@ DeltaFormSolution solve_delta_form(const DeltaFormSignals& s, const BoundObjecti
     DeltaFormSolution slow = solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps);
     slow.solve.message += (slow.solve.message.empty() ? "" : "; ") + fast.solve.message + " (fell back to " + solver.name() + ")";
     slow.solve.seconds += fast.solve.seconds;
+    slow.fallback = fast.solve.message;
     return slow;
   }
   tell("solving Theorem 2.1 with " + solver.name() + " (" + (q.taps == 0 ? std::to_string(L) : std::to_string(q.taps)) +

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/deadline.h"
 #include "solvers/watchdog_child.h"
 
 extern "C" {
@@ -75,7 +76,7 @@ SolveStatus status_from_csdp(int code, std::string& words) {
       words = "CSDP 10: stopped by a signal (user_exit)";
       return SolveStatus::kBackendError;
     case kCodeStalled:
-      words = "CSDP made no progress inside one iteration and was stopped by the watchdog";
+      words = "CSDP made no progress inside one iteration and was stopped by the watchdog (CPU-time budget spent)";
       return SolveStatus::kBackendError;
     case kCodeChildFailed:
       words = "the CSDP process ended abnormally";
@@ -386,7 +387,9 @@ bool read_attempt(std::FILE* f, Attempt& a) {
 /// CSDP can spin forever inside one iteration, where its maxiter cap never
 /// looks (IdentifyRegression.CsdpReturnsOnThisRelaxation: perturbobj 0 loops
 /// in copy_mat at iteration 50). The child prints CSDP's per-iteration lines
-/// (printlevel ≥ 1) as the heartbeat; they are shown only when verbose.
+/// (printlevel ≥ 1) as the heartbeat; they are shown only when verbose. The
+/// budget is CPU time, so load never stops a healthy solve; past the user's
+/// --timeout the child is killed and TimedOut thrown.
 Attempt run_sdp_watched(const CsdpProblem& prob, std::vector<sparseblock*>& byblocks, const paramstruc& params,
                         int printlevel, const LmiProgram& p, bool want_dual, std::string& note) {
   Attempt out;
@@ -397,16 +400,16 @@ Attempt run_sdp_watched(const CsdpProblem& prob, std::vector<sparseblock*>& bybl
   }
   WatchdogOptions wo;
   wo.echo = printlevel > 0;
-  // Patience floor from the size: one iteration costs about m²·Σn_b (Schur
+  // CPU budget floor from the size: one iteration costs about m²·Σn_b (Schur
   // matrix) + Σn_b³ (factorisations) flops; at a pessimistic 1e9 flop/s,
-  // allow 10 iterations' worth of silence.
+  // allow 10 iterations' worth of CPU time without output.
   double m = static_cast<double>(p.num_vars), sum_n = 0, sum_n3 = 0;
   for (const LmiBlock& b : p.blocks) {
     const double nb = static_cast<double>(b.size);
     sum_n += nb;
     if (!b.diagonal) sum_n3 += nb * nb * nb;
   }
-  wo.min_stall_seconds = std::max(wo.min_stall_seconds, 10.0 * 1e-9 * (m * m * sum_n + sum_n3 + m * m * m));
+  wo.min_stall_cpu_seconds = std::max(wo.min_stall_cpu_seconds, 10.0 * 1e-9 * (m * m * sum_n + sum_n3 + m * m * m));
   const WatchdogOutcome w = run_in_watched_child(
       [&](std::FILE* r) { write_attempt(r, run_sdp(prob, byblocks, params, std::max(printlevel, 1), p, want_dual)); },
       f, wo);
@@ -415,13 +418,17 @@ Attempt run_sdp_watched(const CsdpProblem& prob, std::vector<sparseblock*>& bybl
   } else if (w.stalled) {
     out = Attempt{};
     out.code = kCodeStalled;
-    note = "stopped after " + std::to_string(w.stall_seconds) + " s without progress";
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "stopped after %.3g CPU s without progress, above its budget of %.3g CPU s",
+                  w.stall_cpu_seconds, w.budget_cpu_seconds);
+    note = buf;
   } else {
     out = Attempt{};
     out.code = kCodeChildFailed;
     note = w.error.empty() ? "its result could not be read" : w.error;
   }
   std::fclose(f);
+  if (w.timed_out) check_deadline("CSDP was solving");
   return out;
 }
 

@@ -2,15 +2,102 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
+#include <cmath>
 #include <cstring>
+#include <limits>
+
+#include "core/deadline.h"
 
 namespace lpvid {
+
+namespace {
+
+/// The child's CPU time (user + system, all threads) in seconds; NaN when it
+/// cannot be read.
+double cpu_seconds_of(const clockid_t* clock) {
+  timespec ts{};
+  if (clock == nullptr || clock_gettime(*clock, &ts) != 0) return std::numeric_limits<double>::quiet_NaN();
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+/// The parent's side: what it has heard from the child, in CPU seconds.
+struct Heartbeat {
+  bool heard = false;
+  double at_last = 0;   ///< the child's CPU time at its last output
+  double costliest = 0;  ///< max(CPU time to the first output, the most between two outputs)
+
+  double budget(const WatchdogOptions& o) const { return std::max(o.min_stall_cpu_seconds, o.stall_factor * costliest); }
+  void output(double cpu) {
+    if (!std::isfinite(cpu)) return;
+    costliest = std::max(costliest, cpu - (heard ? at_last : 0.0));
+    at_last = cpu;
+    heard = true;
+  }
+};
+
+/// How long poll() may wait: at most a second, less when the CPU budget or
+/// the deadline is nearer (the child's CPU time grows at most as fast as the
+/// wall clock per thread, so the budget left is a safe wait).
+int poll_milliseconds(const Heartbeat& h, const WatchdogOptions& o, double cpu_now) {
+  double wait = 1.0;
+  if (h.heard && std::isfinite(cpu_now)) wait = std::min(wait, h.budget(o) - (cpu_now - h.at_last));
+  wait = std::min(wait, seconds_to_deadline());
+  return static_cast<int>(std::clamp(wait, 0.01, 1.0) * 1000.0);
+}
+
+void run_child(const std::function<void(std::FILE* result)>& work, std::FILE* result, int fds[2], pid_t parent) {
+  prctl(PR_SET_PDEATHSIG, SIGKILL);  // the parent interrupted or timed out: no solver left running
+  if (getppid() != parent) _exit(4);  // it ended before the line above
+  close(fds[0]);
+  dup2(fds[1], STDOUT_FILENO);
+  close(fds[1]);
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  work(result);
+  std::fflush(result);
+  std::fflush(stdout);
+  _exit(0);
+}
+
+/// Reads the child's output until EOF, a spent CPU budget or the deadline.
+void watch(pid_t pid, int fd, const WatchdogOptions& options, WatchdogOutcome& out) {
+  clockid_t clock{};
+  const clockid_t* cpu_clock = clock_getcpuclockid(pid, &clock) == 0 ? &clock : nullptr;
+  Heartbeat beat;
+  char buf[4096];
+  for (;;) {
+    pollfd pfd{fd, POLLIN, 0};
+    const int ready = poll(&pfd, 1, poll_milliseconds(beat, options, cpu_seconds_of(cpu_clock)));
+    if (ready < 0 && errno == EINTR) continue;
+    const double cpu = cpu_seconds_of(cpu_clock);
+    if (deadline_passed()) {
+      kill(pid, SIGKILL);
+      out.timed_out = true;
+      return;
+    }
+    if (ready == 0) {
+      if (!beat.heard || !std::isfinite(cpu) || cpu - beat.at_last < beat.budget(options)) continue;
+      kill(pid, SIGKILL);
+      out.stalled = true;
+      out.stall_cpu_seconds = cpu - beat.at_last;
+      out.budget_cpu_seconds = beat.budget(options);
+      return;
+    }
+    const ssize_t got = read(fd, buf, sizeof buf);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) return;  // EOF: the child closed stdout (exited)
+    if (options.echo) std::fwrite(buf, 1, static_cast<size_t>(got), stdout);
+    beat.output(cpu);
+  }
+}
+
+}  // namespace
 
 WatchdogOutcome run_in_watched_child(const std::function<void(std::FILE* result)>& work, std::FILE* result,
                                      const WatchdogOptions& options) {
@@ -21,6 +108,7 @@ WatchdogOutcome run_in_watched_child(const std::function<void(std::FILE* result)
     return out;
   }
   std::fflush(nullptr);  // nothing buffered may be written twice
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
     close(fds[0]);
@@ -28,53 +116,14 @@ WatchdogOutcome run_in_watched_child(const std::function<void(std::FILE* result)
     out.error = std::string("fork failed: ") + std::strerror(errno);
     return out;
   }
-  if (pid == 0) {  // child
-    close(fds[0]);
-    dup2(fds[1], STDOUT_FILENO);
-    close(fds[1]);
-    std::setvbuf(stdout, nullptr, _IOLBF, 0);
-    work(result);
-    std::fflush(result);
-    std::fflush(stdout);
-    _exit(0);
-  }
+  if (pid == 0) run_child(work, result, fds, parent);
   close(fds[1]);
-  using clock = std::chrono::steady_clock;
-  const auto started = clock::now();
-  auto last = started;
-  bool heard = false;
-  double longest = 0.0;      // longest silence between two outputs so far
-  double first_delay = 0.0;  // setup + first iteration: the scale of one healthy step
-  char buf[4096];
-  for (;;) {
-    const double limit = std::max(options.min_stall_seconds, options.stall_factor * std::max(longest, first_delay));
-    const double waited = std::chrono::duration<double>(clock::now() - last).count();
-    const int timeout_ms = heard ? static_cast<int>(std::max(1.0, (limit - waited) * 1000.0)) : -1;
-    pollfd pfd{fds[0], POLLIN, 0};
-    const int ready = poll(&pfd, 1, timeout_ms);
-    if (ready < 0 && errno == EINTR) continue;
-    const double silent = std::chrono::duration<double>(clock::now() - last).count();
-    if (ready == 0) {
-      if (silent < limit) continue;
-      kill(pid, SIGKILL);
-      out.stalled = true;
-      out.stall_seconds = silent;
-      break;
-    }
-    const ssize_t got = read(fds[0], buf, sizeof buf);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) break;  // EOF: the child closed stdout (exited)
-    if (options.echo) std::fwrite(buf, 1, static_cast<size_t>(got), stdout);
-    if (heard) longest = std::max(longest, silent);
-    else first_delay = std::chrono::duration<double>(clock::now() - started).count();
-    heard = true;
-    last = clock::now();
-  }
+  watch(pid, fds[0], options, out);
   close(fds[0]);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  if (out.stalled) return out;
+  if (out.stalled || out.timed_out) return out;
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
     out.finished = true;
     std::fseek(result, 0, SEEK_SET);
