@@ -3,7 +3,9 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 
+#include "cli/class_interval_report.h"
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
@@ -28,6 +30,7 @@ struct IdentifyArgs {
   long alt_taps = 16;
   std::vector<std::string> basis;  ///< --basis: replaces the model's correction basis
   std::string model_out;           ///< --model-out: the identified exact model
+  ClassIntervalArgs class_interval;
 };
 
 int run_identify(IdentifyArgs& a) {
@@ -60,7 +63,7 @@ int run_identify(IdentifyArgs& a) {
   CertifyOptions co = certify_options(a.common, in);
   co.solver = opt.solver;
   auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
-  const IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, *solver);
+  IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, *solver);
   const IdentifyResult& res = id.fit;
 
   std::cout << "\nTheorem 3.1: " << res.relaxation << "\n"
@@ -91,6 +94,14 @@ int run_identify(IdentifyArgs& a) {
     return exit_code(id.outcome);
   }
 
+  std::optional<ClassInterval> klass;
+  if (!a.class_interval.skip && id.bounds.verified && in.objective.kind != BoundObjective::Kind::kFeasibility) {
+    ClassBoundOptions cbo;
+    cbo.unknowns = opt.unknowns;
+    cbo.box_fraction = a.class_interval.box;
+    cbo.max_leaves = a.class_interval.leaves;
+    klass = class_interval(id, in.model_q, in.model_d, in.exp_q, in.exp_d, co, cbo, *solver);
+  }
   const CertifiedBounds& b = id.bounds;
   const CertificateFiles files = write_certificates(b, certificate_path(a.common));
   if (!id.taps_note.empty()) std::cout << "\n  the iterate's own Delta did not certify (" << id.taps_note << "); solved again\n";
@@ -115,6 +126,7 @@ int run_identify(IdentifyArgs& a) {
     report["interval"] = interval_json(b, in.objective, files);
     report["interval"]["scope"] = "the model with the identified theta fixed (not the model class)";
   }
+  if (klass) report["class_interval"] = report_class_interval(*klass, b, certificate_path(a.common));
   if (!a.model_out.empty()) {
     // the exact model the bounds are about: θ folded in, x0 (and φ) as identified
     LpvModel<Rational> m = id.fixed.model;
@@ -156,6 +168,7 @@ Runner add_identify_command(CLI::App& app) {
   cmd->add_flag("--no-offset", args->no_offset, "do not identify the offset phi even if the model declares one");
   cmd->add_option("--model-out", args->model_out,
                   "write the identified model (exact, the one the bounds are about) as an lpvid-model/1 file");
+  add_class_interval_options(cmd, args->class_interval);
   return [cmd, args] { return cmd->parsed() ? run_identify(*args) : -1; };
 }
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/exit_codes.h"
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 #include "certify/certificate_files.h"
 #include "certify/certify.h"
 #include "lmi/bound_objective.h"

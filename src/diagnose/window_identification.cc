@@ -2,7 +2,7 @@
 
 #include "core/deadline.h"
 #include "data/experiment_builder.h"
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 #include "identify/fix_and_certify.h"
 #include "model/simulate.h"
 

@@ -14,7 +14,7 @@
 
 #include "core/scalar.h"
 #include "data/experiment.h"
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 #include "certify/certify.h"
 #include "identify/identify.h"
 #include "model/lpv_model.h"

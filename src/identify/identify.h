@@ -16,7 +16,7 @@
 
 #include "core/scalar.h"
 #include "data/experiment.h"
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 #include "lmi/bound_objective.h"
 #include "lmi/relaxed_bmi_lmi.h"
 #include "model/lpv_model.h"

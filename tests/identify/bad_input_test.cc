@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 #include "certify/certify.h"
 #include "identify/identify.h"
 #include "lmi/delta_form_lmi.h"

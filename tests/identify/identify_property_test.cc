@@ -15,7 +15,7 @@
 #include <cmath>
 #include <limits>
 
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 #include "certify/certify.h"
 #include "identify/identify.h"
 #include "data/csv_reader.h"

@@ -17,7 +17,7 @@
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "examples/model_literals.h"
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 #include "certify/certify.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
@@ -148,7 +148,7 @@ TEST(StateOffsetCertificate, VerifiesExactlyAndMutationsAreRejected) {
   }
 }
 
-/// x0 as an unknown (identify/affine_residual.h) with a state offset: the x0
+/// x0 as an unknown (toeplitz/affine_residual.h) with a state offset: the x0
 /// columns are the secant sim(x0 + e_c) − sim(x0). With a constant E only
 /// (no state columns) the state equation is affine in x0, so the secant must
 /// equal the zero-input response from e_c of the model without E (exactly).

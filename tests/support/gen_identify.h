@@ -31,7 +31,7 @@
 #include "data/experiment.h"
 #include "data/experiment_builder.h"
 #include "examples/random_case.h"
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 #include "certify/certify.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"

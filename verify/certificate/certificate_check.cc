@@ -19,6 +19,7 @@
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "toeplitz/toeplitz_gram.h"
 #include "verify/certificate/c1_check.h"
+#include "verify/certificate/class_check.h"
 #include "verify/certificate/column_gram.h"
 #include "verify/certificate/dual_check.h"
 #include "verify/certificate/verdict_text.h"
@@ -92,6 +93,14 @@ CertificateData certificate_data(const Certificate& c, const std::string& certif
 /// Steps 3–6 on the exact rows of the certificate's window; `details` starts
 /// with what the caller knows about the data's origin.
 CertificateVerdict check_claim(const Certificate& c, Experiment<Rational> exp, std::ostringstream& details) {
+  if (is_class_claim(c.claim)) {
+    details << "n = " << exp.n() << ", ny = " << c.model.ny << ", nz = " << c.model.nz();
+    try {
+      return check_class_claim(c, exp, details.str());
+    } catch (const std::invalid_argument& e) {
+      return invalid_verdict(std::string("the class's model and data: ") + e.what(), details.str());
+    }
+  }
   // "@x<i>", "@sqrt(x<i>-c)", … scheduling: functions of the certified model's own exact state on these rows
   try {
     exp = with_state_scheduling(c.model, exp);
@@ -213,7 +222,8 @@ CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
   if (!v.holds) return v;
   std::ostringstream o;
   o << to_string(c.claim);
-  if (c.claim == CertificateClaim::kLowerBound) o << " " << lower_text(c.lower_bound, 10);
+  if (c.claim == CertificateClaim::kLowerBound || c.claim == CertificateClaim::kClassLowerBound)
+    o << " " << lower_text(c.lower_bound, 10);
   v.claim_text = o.str();
   std::ostringstream e;
   e << "claim: toeplitz mode " << (c.mode == ToeplitzMode::kSignal ? "signal" : "paper") << "; ";
@@ -231,6 +241,13 @@ CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
       e << "no causal LTI Delta with ||Delta||_inf^2 <= " << exact(c.delta2) << " and no noise with RMS^2 <= "
         << exact(c.dmax2) << " explain the data";
       break;
+    case CertificateClaim::kClassInvalidated:
+      e << "no correction theta of the class region (see the details), no causal LTI Delta with ||Delta||_inf^2 <= "
+        << exact(c.delta2) << " and no noise with RMS^2 <= " << exact(c.dmax2) << " explain the data";
+      break;
+    case CertificateClaim::kClassLowerBound:
+      e << "for every correction theta of the class region (see the details): ";
+      [[fallthrough]];
     case CertificateClaim::kLowerBound:
       switch (c.objective) {
         case DualClaim::kMinDelta2: e << "delta^2 >= " << lower_text(c.lower_bound, 10) << " at dmax^2 = " << exact(c.dmax2); break;

@@ -10,6 +10,8 @@
 #include "model/model_file.h"
 #include "model/json_members.h"
 #include "model/model_json_tree.h"
+#include "verify/certificate/class_region_file.h"
+#include "verify/certificate/dual_point_file.h"
 #include "verify/certificate/number_range.h"
 
 namespace lpvid {
@@ -26,7 +28,7 @@ void parse_dual_form(const JsonNode& root, const std::string& file, Certificate&
   c.form = form == "dual_delta" ? CertificateForm::kDualDelta : CertificateForm::kDualDeltaPath;
   const JsonNode& objective_node = member(root, "objective", file, "");
   const std::string objective = string_member(root, "objective", file, "");
-  const bool invalidated = c.claim == CertificateClaim::kInvalidated;
+  const bool invalidated = c.claim == CertificateClaim::kInvalidated || c.claim == CertificateClaim::kClassInvalidated;
   if (objective == "feasibility" && invalidated) c.objective = DualClaim::kInvalidated;
   else if (objective == "min_delta" && !invalidated) c.objective = DualClaim::kMinDelta2;
   else if (objective == "min_dmax" && !invalidated) c.objective = DualClaim::kMinDmax2;
@@ -53,7 +55,7 @@ void parse_dual_values(const JsonNode& root, const std::string& file, Certificat
   fixed("lambda", c.objective == DualClaim::kWeighted, c.lambda);
   if (c.objective == DualClaim::kWeighted && c.lambda > 1)
     throw_input_error(file, member(root, "lambda", file, "").line, "lambda", "must be in [0, 1]");
-  if (c.claim == CertificateClaim::kInvalidated) {
+  if (c.claim == CertificateClaim::kInvalidated || c.claim == CertificateClaim::kClassInvalidated) {
     if (const JsonNode* n = root.find("lower_bound"))
       throw_input_error(file, n->line, "lower_bound", "the claim \"invalidated\" carries no lower_bound");
   } else {
@@ -61,72 +63,9 @@ void parse_dual_values(const JsonNode& root, const std::string& file, Certificat
   }
 }
 
-/// Form "dual_delta_path": the recipe Y1 is rebuilt from (verify/certificate/path_dual.h).
-void parse_path_recipe(const JsonNode& dual, const std::string& file, Certificate& c) {
-  PathDualRecipe& p = c.dual.path;
-  const JsonNode& taps = member(dual, "taps", file, "dual");
-  p.taps = matrix_member(taps, file, "dual.taps", c.model.ny * c.model.nz());
-  if (p.taps.rows() != c.dual.horizon)
-    throw_input_error(file, taps.line, "dual.taps", "expected " + std::to_string(c.dual.horizon) + " rows (the horizon)");
-  const auto positive = [&](const char* key, Rational& out, bool strictly) {
-    const JsonNode& n = member(dual, key, file, "dual");
-    out = number_from_json<Rational>(n, file, std::string("dual.") + key);
-    if (strictly ? !(out > 0) : out < 0)
-      throw_input_error(file, n.line, std::string("dual.") + key, strictly ? "must be > 0" : "must be >= 0");
-  };
-  positive("t", p.t, true);
-  positive("mu", p.mu, true);
-  positive("x", p.x, true);
-  positive("u_floor", p.floor, false);
-  const JsonNode& e = member(dual, "u_exponent", file, "dual");
-  const Rational ev = number_from_json<Rational>(e, file, "dual.u_exponent");
-  if (mpz_cmp_ui(mpq_denref(ev.mpq()), 1) != 0 || ev < Rational(-4000) || ev > Rational(4000))
-    throw_input_error(file, e.line, "dual.u_exponent", "must be an integer in [-4000, 4000]");
-  p.u_exponent = mpz_get_si(mpq_numref(ev.mpq()));
-}
-
-/// Form "dual_delta": Y1 as upper-triangle rows, row i holds columns i … P−1.
-void parse_dense_y1(const JsonNode& dual, const std::string& file, Certificate& c) {
-  const JsonNode& y1 = member(dual, "Y1", file, "dual");
-  const long P = c.dual.horizon * static_cast<long>(c.model.ny + c.model.nz());
-  if (!y1.is_array() || static_cast<long>(y1.items.size()) != P)
-    throw_input_error(file, y1.line, "dual.Y1",
-                      "expected " + std::to_string(P) + " upper-triangle rows (horizon*(ny+nz))");
-  c.dual.Y1 = Mat<Rational>(P, P);
-  for (long i = 0; i < P; ++i) {
-    const JsonNode& row = y1.items[static_cast<size_t>(i)];
-    const std::string rp = "dual.Y1[" + std::to_string(i) + "]";
-    if (!row.is_array() || static_cast<long>(row.items.size()) != P - i)
-      throw_input_error(file, row.line, rp, "expected " + std::to_string(P - i) + " numbers (columns i..P-1)");
-    for (long j = i; j < P; ++j) {
-      const Rational v = number_from_json<Rational>(row.items[static_cast<size_t>(j - i)], file,
-                                                    rp + "[" + std::to_string(j - i) + "]");
-      c.dual.Y1(i, j) = v;
-      c.dual.Y1(j, i) = v;
-    }
-  }
-}
-
 /// The dual point: horizon, σ, g, then the form's own fields.
 void parse_dual_point(const JsonNode& root, const std::string& file, Certificate& c) {
-  const JsonNode& dual = member(root, "dual", file, "");
-  if (!dual.is_object()) throw_input_error(file, dual.line, "dual", "expected an object");
-  const bool path = c.form == CertificateForm::kDualDeltaPath;
-  for (const auto& [key, value] : dual.members) {
-    const bool common = key == "horizon" || key == "sigma" || key == "g";
-    const bool own = path ? (key == "taps" || key == "t" || key == "mu" || key == "u_exponent" || key == "x" || key == "u_floor")
-                          : key == "Y1";
-    if (!common && !own)
-      throw_input_error(file, value.line, "dual." + key,
-                        std::string("unknown key for form \"") + (path ? "dual_delta_path" : "dual_delta") + "\"");
-  }
-  const JsonNode& horizon = member(dual, "horizon", file, "dual");
-  c.dual.horizon = integer_member(horizon, file, "dual.horizon");
-  if (c.dual.horizon < 1) throw_input_error(file, horizon.line, "dual.horizon", "must be at least 1");
-  c.dual.sigma = number_from_json<Rational>(member(dual, "sigma", file, "dual"), file, "dual.sigma");
-  c.dual.g = matrix_member(member(dual, "g", file, "dual"), file, "dual.g", c.model.ny);
-  if (path) parse_path_recipe(dual, file, c);
-  else parse_dense_y1(dual, file, c);
+  c.dual = parse_dual_point_object(member(root, "dual", file, ""), file, "dual", c.model.ny, c.model.nz(), c.form);
 }
 
 /// The dual claims' fields (certificate_file.h).
@@ -135,6 +74,17 @@ void parse_dual_claim(const JsonNode& root, const std::string& file, const std::
   parse_dual_form(root, file, c);
   parse_dual_values(root, file, c);
   parse_dual_point(root, file, c);
+  if (const JsonNode* n = root.find("class")) throw_input_error(file, n->line, "class", "only class claims carry this key");
+}
+
+/// The class claims' fields (certificate_file.h): the dual claims' objective
+/// and values, then the region and its tree of dual points.
+void parse_class_claim(const JsonNode& root, const std::string& file, const std::string& claim, Certificate& c) {
+  c.claim = claim == "class_invalidated" ? CertificateClaim::kClassInvalidated : CertificateClaim::kClassLowerBound;
+  if (const JsonNode* n = root.find("dual")) throw_input_error(file, n->line, "dual", "a class claim carries its dual points in class.nodes");
+  parse_dual_form(root, file, c);
+  parse_dual_values(root, file, c);
+  c.region = parse_class_region(member(root, "class", file, ""), file, c.model.ny, c.model.nz(), c.form);
 }
 
 /// The top level: known keys only, the format, the claim (returned) and the noise normalisation.
@@ -143,16 +93,18 @@ std::string parse_header(const JsonNode& root, const std::string& file) {
   static const std::vector<std::string> allowed = {"format", "claim", "data", "model", "toeplitz_mode",
                                                    "noise_normalisation", "delta2", "dmax2", "form",
                                                    "delta_taps", "delta_horizon", "w", "info",
-                                                   "objective", "lambda", "lower_bound", "dual"};
+                                                   "objective", "lambda", "lower_bound", "dual", "class"};
   for (const auto& [key, value] : root.members)
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
       throw_input_error(file, value.line, key, "unknown key in a certificate");
   if (string_member(root, "format", file, "") != kCertificateFormat)
     throw_input_error(file, root.line, "format", std::string("expected \"") + kCertificateFormat + "\"");
   const std::string claim = string_member(root, "claim", file, "");
-  if (claim != "consistent" && claim != "invalidated" && claim != "lower_bound" && claim != "not_a_witness")
+  if (claim != "consistent" && claim != "invalidated" && claim != "lower_bound" && claim != "not_a_witness" &&
+      claim != "class_lower_bound" && claim != "class_invalidated")
     throw_input_error(file, member(root, "claim", file, "").line, "claim",
-                      "expected \"consistent\", \"invalidated\", \"lower_bound\" or \"not_a_witness\"");
+                      "expected \"consistent\", \"invalidated\", \"lower_bound\", \"not_a_witness\", "
+                      "\"class_lower_bound\" or \"class_invalidated\"");
   if (string_member(root, "noise_normalisation", file, "") != "rms")
     throw_input_error(file, root.line, "noise_normalisation", "expected \"rms\" (||d||^2 <= n*ny*dmax^2)");
   return claim;
@@ -182,7 +134,7 @@ void parse_data_reference(const JsonNode& root, const std::string& file, Certifi
 
 /// A primal point ("consistent", "not_a_witness"): δ², d_max² and the Δ taps or w.
 void parse_primal_point(const JsonNode& root, const std::string& file, Certificate& c) {
-  for (const char* key : {"objective", "lambda", "lower_bound", "dual"})
+  for (const char* key : {"objective", "lambda", "lower_bound", "dual", "class"})
     if (const JsonNode* n = root.find(key)) throw_input_error(file, n->line, key, "only dual claims carry this key");
   c.delta2 = number_from_json<Rational>(member(root, "delta2", file, ""), file, "delta2");
   c.dmax2 = number_from_json<Rational>(member(root, "dmax2", file, ""), file, "dmax2");
@@ -218,6 +170,10 @@ const char* to_string(CertificateClaim c) {
       return "lower_bound";
     case CertificateClaim::kNotAWitness:
       return "not_a_witness";
+    case CertificateClaim::kClassLowerBound:
+      return "class_lower_bound";
+    case CertificateClaim::kClassInvalidated:
+      return "class_invalidated";
   }
   return "?";
 }
@@ -234,6 +190,10 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
     parse_dual_claim(root, file, claim, c);
     return c;
   }
+  if (claim == "class_lower_bound" || claim == "class_invalidated") {
+    parse_class_claim(root, file, claim, c);
+    return c;
+  }
   if (claim == "not_a_witness") c.claim = CertificateClaim::kNotAWitness;
   parse_primal_point(root, file, c);
   return c;
@@ -243,7 +203,8 @@ Certificate read_certificate(const std::string& path) { return parse_certificate
 
 namespace {
 
-void dual_claim_json(const Certificate& c, nlohmann::ordered_json& j) {
+/// The objective, its fixed values and the claimed lower end (dual and class claims).
+void objective_json(const Certificate& c, nlohmann::ordered_json& j) {
   const char* objective = c.objective == DualClaim::kInvalidated ? "feasibility"
                           : c.objective == DualClaim::kMinDelta2 ? "min_delta"
                           : c.objective == DualClaim::kMinDmax2  ? "min_dmax"
@@ -252,32 +213,9 @@ void dual_claim_json(const Certificate& c, nlohmann::ordered_json& j) {
   if (c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDmax2) j["delta2"] = rational_to_json(c.delta2);
   if (c.objective == DualClaim::kInvalidated || c.objective == DualClaim::kMinDelta2) j["dmax2"] = rational_to_json(c.dmax2);
   if (c.objective == DualClaim::kWeighted) j["lambda"] = rational_to_json(c.lambda);
-  if (c.claim == CertificateClaim::kLowerBound) j["lower_bound"] = rational_to_json(c.lower_bound);
-  const bool path = c.form == CertificateForm::kDualDeltaPath;
-  j["form"] = path ? "dual_delta_path" : "dual_delta";
-  nlohmann::ordered_json dual;
-  dual["horizon"] = c.dual.horizon;
-  dual["sigma"] = rational_to_json(c.dual.sigma);
-  dual["g"] = matrix_json(c.dual.g);
-  if (path) {
-    const PathDualRecipe& p = c.dual.path;
-    dual["t"] = rational_to_json(p.t);
-    dual["mu"] = rational_to_json(p.mu);
-    dual["u_exponent"] = p.u_exponent;
-    dual["x"] = rational_to_json(p.x);
-    dual["u_floor"] = rational_to_json(p.floor);
-    dual["taps"] = matrix_json(p.taps);
-    j["dual"] = dual;
-    return;
-  }
-  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  for (Eigen::Index i = 0; i < c.dual.Y1.rows(); ++i) {
-    nlohmann::ordered_json row = nlohmann::ordered_json::array();
-    for (Eigen::Index k = i; k < c.dual.Y1.cols(); ++k) row.push_back(rational_to_json(c.dual.Y1(i, k)));
-    rows.push_back(row);
-  }
-  dual["Y1"] = rows;
-  j["dual"] = dual;
+  if (c.claim == CertificateClaim::kLowerBound || c.claim == CertificateClaim::kClassLowerBound)
+    j["lower_bound"] = rational_to_json(c.lower_bound);
+  j["form"] = c.form == CertificateForm::kDualDeltaPath ? "dual_delta_path" : "dual_delta";
 }
 
 }  // namespace
@@ -295,8 +233,10 @@ std::string certificate_json(const Certificate& c) {
   j["model"] = model_to_json(c.model);
   j["toeplitz_mode"] = to_string(c.mode);
   j["noise_normalisation"] = "rms";
-  if (is_dual_claim(c.claim)) {
-    dual_claim_json(c, j);
+  if (is_dual_claim(c.claim) || is_class_claim(c.claim)) {
+    objective_json(c, j);
+    if (is_dual_claim(c.claim)) j["dual"] = dual_point_json(c.dual, c.form);
+    else j["class"] = class_region_json(c.region, c.form);
     j["info"] = c.info;
     return pretty_json(j);
   }

@@ -44,6 +44,23 @@
 /// (Y1 rebuilt by the verifier from U = round(μ(t·I − T Tᵀ)⁻¹·2^−e)·2^e:
 /// verify/certificate/path_dual.h).
 ///
+/// Class claims (docs/class_lower_bound.md): a lower end of Theorem 3.1's
+/// objective over every correction θ of a region (or "the data cannot be
+/// explained at (δ, d_max) by any θ of the region"):
+///
+///   "claim": "class_lower_bound" | "class_invalidated",
+///   "model": the INITIAL model with its correction basis (and unknown offsets),
+///   "objective", "delta2", "dmax2", "lambda", "lower_bound" as for the dual claims,
+///   "form": "dual_delta_path",
+///   "class": {"unknowns": {"correction": b, "offset": b, "x0": b},
+///             "parameters": [names of p, in order],        // checked against the exact build
+///             "free": [indices: range over all reals; they must not move z],
+///             "center": [P numbers], "radius": [P numbers],  // the box of the others
+///             "horizon": L,                                  // n − (samples where z is 0 for every θ)
+///             "nodes": [preorder tree: {"split": i} halves the box in coordinate i,
+///                       {"leaf": {"epsilon": ε > 0, "horizon", "sigma", "g", "taps", "t", "mu",
+///                                 "u_exponent", "x", "u_floor"}}]}
+///
 /// Every number is exact text (JSON number or string with a decimal or p/q).
 /// Form "delta" (signal mode only) carries the causal FIR Δ of the Poolla
 /// form: w = Δ ∗ z, and (C1) follows from ‖T_Δ‖ ≤ δ (see certificate_check.h).
@@ -56,6 +73,7 @@
 #include "core/scalar.h"
 #include "data/data_reference.h"
 #include "model/lpv_model.h"
+#include "toeplitz/affine_residual.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "verify/certificate/path_dual.h"
@@ -75,7 +93,9 @@ enum class CertificateForm { kDelta, kW, kDualDelta, kDualDeltaPath };
 /// mathematical conditions fails exactly — (C2), (C1) or, in form "delta",
 /// a non-zero z before the Δ horizon. A malformed point (wrong sizes) is not
 /// evidence of anything: it makes the claim fail like any other bad file.
-enum class CertificateClaim { kConsistent, kInvalidated, kLowerBound, kNotAWitness };
+/// kClassLowerBound / kClassInvalidated: the same about Theorem 3.1 over every
+/// θ of a region of the model's correction class (ClassRegion below).
+enum class CertificateClaim { kConsistent, kInvalidated, kLowerBound, kNotAWitness, kClassLowerBound, kClassInvalidated };
 
 /// "consistent", "invalidated", "lower_bound", "not_a_witness".
 const char* to_string(CertificateClaim c);
@@ -85,6 +105,11 @@ inline bool is_dual_claim(CertificateClaim c) {
   return c == CertificateClaim::kInvalidated || c == CertificateClaim::kLowerBound;
 }
 
+/// Claims about the whole correction class (verify/certificate/class_check.h).
+inline bool is_class_claim(CertificateClaim c) {
+  return c == CertificateClaim::kClassLowerBound || c == CertificateClaim::kClassInvalidated;
+}
+
 /// The dual point Y1 ⪰ 0, Y2 = (1/σ)[σ; g][σ; g]ᵀ (toeplitz/delta_form_dual.h).
 struct DualPoint {
   long horizon = 0;  ///< L
@@ -92,6 +117,28 @@ struct DualPoint {
   PathDualRecipe path;  ///< form "dual_delta_path": Y1 is rebuilt from it (verify/certificate/path_dual.h)
   Mat<Rational> g;   ///< n × ny
   Rational sigma;    ///< σ > 0
+};
+
+/// One node of a class certificate's region tree, in preorder: a split halves
+/// the current box in coordinate `split` (two subtrees follow, lower half
+/// first); a leaf carries the dual point at its box's centre and ε > 0 of the
+/// bilinear term's bound c·√t ≤ c·(t/(2ε) + ε/2).
+struct ClassNode {
+  long split = -1;  ///< ≥ 0: a split; −1: a leaf
+  DualPoint dual;
+  Rational epsilon;
+};
+
+/// The region of θ a class claim covers (docs/class_lower_bound.md): the
+/// parameters in `free` range over all reals, the others over
+/// [center − radius, center + radius]; the tree's leaves cover that box.
+struct ClassRegion {
+  Unknowns unknowns;
+  std::vector<std::string> parameters;
+  std::vector<long> free;
+  Vec<Rational> center, radius;
+  long horizon = 0;
+  std::vector<ClassNode> nodes;
 };
 
 struct Certificate {
@@ -114,6 +161,7 @@ struct Certificate {
   Rational lambda;
   Rational lower_bound;
   DualPoint dual;
+  ClassRegion region;  ///< class claims only
   nlohmann::ordered_json info = nlohmann::ordered_json::object();
 };
 

@@ -1,4 +1,4 @@
-#include "identify/affine_residual.h"
+#include "toeplitz/affine_residual.h"
 
 #include <type_traits>
 

@@ -1,0 +1,67 @@
+#pragma once
+/// A certified lower end of Theorem 3.1's optimum over a whole region of the
+/// correction class (docs/class_lower_bound.md): the least objective over
+/// every θ (C_i, D_i of eq. 10, φ of eq. 20, x0 when free) of the region,
+/// together with Δ and d.
+///
+/// The parameters that do not move z (the additive structure's θ, output-map
+/// corrections of the general structure, the offsets φ) enter (C2) linearly
+/// and range over all reals: they are the structured barrier's free
+/// regressors, and the dual g is projected off their columns. When every
+/// parameter is of that kind Theorem 3.1 is convex (T_z is fixed) and one
+/// solve gives the class optimum, its parameters and its certified lower end.
+/// The others (the multiplicative structure's θ and x0: a BMI) are confined to
+/// a box around the found θ; a leaf's bound holds for its whole box, and the
+/// box is split (branch and bound, the lowest leaf first, along the
+/// coordinate whose half-width costs most) until the lowest leaf reaches the
+/// stopping gap or the leaf budget, counted in leaves, never in time.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "certify/certify.h"
+#include "data/experiment.h"
+#include "model/lpv_model.h"
+#include "toeplitz/affine_residual.h"
+#include "verify/certificate/certificate_file.h"
+
+namespace lpvid {
+
+struct ClassBoundOptions {
+  Unknowns unknowns;
+  /// Box of the parameters that move z: each may move z by at most this
+  /// fraction of ‖z(θ̂)‖ on its own, ρ_i = fraction·‖z(θ̂)‖/‖Jz_i‖.
+  double box_fraction = 0.01;
+  int max_leaves = 31;          ///< leaves of the branch-and-bound tree
+  double stop_rel_gap = 0.01;   ///< stop splitting when the lowest leaf is within this of `upper`
+  double upper = 0;             ///< the certified upper end it is compared with (0: split to the budget)
+};
+
+struct ClassBoundResult {
+  bool certified = false;
+  std::string reason;                ///< why not (empty when certified)
+  Rational lower;                    ///< the certified lower end (the claim's lower_bound; 0 for an invalidation)
+  std::optional<Certificate> certificate;
+  bool whole_class = false;          ///< every parameter free: the bound holds for every θ of the basis
+  std::vector<long> free;            ///< parameter indices ranging over all reals
+  Vec<double> center, radius;        ///< the box of the others (free ones: 0)
+  std::vector<std::string> names;
+  int leaves = 0;
+  double seconds = 0;
+  /// The parameters of the lowest leaf's solve: its centre with the free
+  /// parameters at the solver's least-squares values. In the convex case
+  /// (whole_class) this is the class optimum.
+  Vec<double> best_p;
+  double best_objective = 0;         ///< the solver's objective there (not certified)
+};
+
+/// `found_p` is the identified θ (layout of the affine residual for
+/// `options.unknowns`): the box's centre. `certify` gives the objective, its
+/// fixed values' exact texts and the data reference.
+ClassBoundResult class_lower_bound(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
+                                   const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
+                                   const Vec<double>& found_p, const CertifyOptions& certify,
+                                   const ClassBoundOptions& options);
+
+}  // namespace lpvid

@@ -1,0 +1,29 @@
+#include "identify/class_interval.h"
+
+#include "core/number_text.h"
+
+namespace lpvid {
+
+ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
+                             const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
+                             const CertifyOptions& certify, ClassBoundOptions options, SdpSolver& solver) {
+  ClassInterval out;
+  options.upper = nearest_double(id.bounds.upper);
+  out.bound = class_lower_bound(model_q, model_d, exp_q, exp_d, id.fixed.value, certify, options);
+  if (!out.bound.certified) return out;
+  if (out.bound.whole_class && out.bound.best_p.size() == id.fixed.value.size() &&
+      out.bound.best_objective < options.upper) {
+    FixedParameters optimum = fix_parameters(model_q, id.fit.layout, out.bound.best_p, certify.digits);
+    CertifiedBounds b = certify_identified(optimum.model, exp_q, Mat<double>(), certify, solver);
+    if (b.verified && b.upper < id.bounds.upper) {
+      id.fixed = std::move(optimum);
+      id.bounds = std::move(b);
+      out.adopted = true;
+    }
+  }
+  const double U = nearest_double(id.bounds.upper), L = nearest_double(out.bound.lower);
+  out.relative_gap = U > 0 ? (U - L) / U : 0.0;
+  return out;
+}
+
+}  // namespace lpvid
