@@ -6,9 +6,11 @@
 
 #include "core/deadline.h"
 #include "core/rms.h"
+#include "lmi/free_regressors.h"
 #include "lmi/noise_block.h"
 #include "toeplitz/correlation_2d.h"
 #include "toeplitz/fir.h"
+#include "toeplitz/signal_toeplitz.h"
 #include "toeplitz/tap_toeplitz.h"
 
 namespace lpvid {
@@ -54,10 +56,13 @@ Dense sub_block(const Dense& M, Index p, Index q, Index i, Index j) {
 /// The scaled problem. Variables x = (h, t) (t only when δ is free): entry
 /// (i, j) of tap l at x((i·nz + j)·L + l), i.e. the taps matrix (L × ny·nz,
 /// column i·nz + j) stored column by column. s is eliminated (see the
-/// header) unless it is fixed (min δ at d_max).
+/// header) unless it is fixed (min δ at d_max). With free regressors G the
+/// residual is P⊥r and every d is projected (P⊥(r − Zh) = P⊥r − P⊥Zh).
 struct Problem : SignalScaling {  ///< n, ny, nz, m, L and the scales σ_z, σ_r
   double N = 0;
   Dense r_head, r_tail;     ///< scaled residual: rows < m (no Δ acts there) and rows ≥ m (ny columns)
+  FreeRegressors regressors;  ///< G of the header (empty: none)
+  Dense W;                  ///< Zᵀ Q (taps × rank of G, the taps' order): the noise Hessian's correction
   std::vector<Dense> Z;     ///< per input j of Δ: L × L lower-triangular Toeplitz of the scaled z_j (rows ≥ m)
   std::vector<Dense> G;     ///< G[j·nz + j'] = Z_jᵀ Z_j'
   bool t_var = false;
@@ -89,6 +94,29 @@ Dense residual_tail(const Problem& p, const Vecd& x) {
   return d;
 }
 
+/// The residual stacked like r in (C2) (row k·ny + i) from its rows < m and ≥ m.
+Vecd stacked_residual(const Problem& p, const Dense& head, const Dense& tail) {
+  Vecd v(p.n * p.ny);
+  for (Index k = 0; k < p.n; ++k)
+    for (Index i = 0; i < p.ny; ++i) v(k * p.ny + i) = k < p.m ? head(k, i) : tail(k - p.m, i);
+  return v;
+}
+
+/// The inverse of stacked_residual.
+void split_residual(const Problem& p, const Vecd& v, Dense& head, Dense& tail) {
+  head.resize(p.m, p.ny);
+  tail.resize(p.L, p.ny);
+  for (Index k = 0; k < p.n; ++k)
+    for (Index i = 0; i < p.ny; ++i) (k < p.m ? head(k, i) : tail(k - p.m, i)) = v(k * p.ny + i);
+}
+
+/// (head, tail) ← P⊥(head, tail): the free regressors' part removed.
+void project_residual(const Problem& p, Dense& head, Dense& tail) {
+  Vecd v = stacked_residual(p, head, tail);
+  p.regressors.project(v);
+  split_residual(p, v, head, tail);
+}
+
 /// F_μ at x, or +∞ outside the interior, with what the derivatives reuse.
 struct Point {
   bool interior = false;
@@ -98,7 +126,7 @@ struct Point {
   /// constructed LLT leaves its status uninitialised, and moving a Point
   /// that returned early (t <= 0) read it (UBSan: invalid ComputationInfo).
   Eigen::LLT<Dense> llt{Dense(0, 0)};
-  Dense d_tail;
+  Dense d_head, d_tail;  ///< d on the rows < m (r's own, projected with free regressors) and ≥ m
   double D = 0;    ///< ‖d‖² (all rows)
   double phi = 0;  ///< N·s_fix − ‖d‖² (s fixed only)
 };
@@ -107,7 +135,9 @@ Point evaluate(const Problem& p, const Vecd& x, double mu) {
   Point pt;
   const double t = p.t_of(x);
   pt.d_tail = residual_tail(p, x);
-  pt.D = p.r_head.squaredNorm() + pt.d_tail.squaredNorm();
+  pt.d_head = p.r_head;
+  if (!p.regressors.empty()) project_residual(p, pt.d_head, pt.d_tail);
+  pt.D = pt.d_head.squaredNorm() + pt.d_tail.squaredNorm();
   if (!(t > 0) || !std::isfinite(pt.D)) return pt;
   pt.phi = p.N * p.s_fix - pt.D;
   if (!p.s_var && !(pt.phi > 0)) return pt;
@@ -134,7 +164,8 @@ Dense diagonal_sums(const Dense& M) {
 }
 
 /// The noise's part of the gradient and Hessian: ∂‖d‖²/∂h_ij = −2 Z_jᵀ d_i,
-/// ∂²‖d‖²/∂h_ij ∂h_ij' = 2 Z_jᵀ Z_j', weighted by c_s/(N μ) when s is
+/// ∂²‖d‖²/∂h_ij ∂h_ij' = 2 Z_jᵀ Z_j' (with free regressors d is projected and
+/// the Hessian loses 2 W Wᵀ, W = ZᵀQ), weighted by c_s/(N μ) when s is
 /// eliminated, or through −log φ with φ = N s − ‖d‖² when s is fixed.
 void add_noise_terms(const Problem& p, const Point& pt, double mu, Vecd& g, Dense& H) {
   const Index L = p.L, ny = p.ny, nz = p.nz, nt = p.taps();
@@ -147,6 +178,7 @@ void add_noise_terms(const Problem& p, const Point& pt, double mu, Vecd& g, Dens
   for (Index i = 0; i < ny; ++i)
     for (Index j = 0; j < nz; ++j)
       for (Index j2 = 0; j2 < nz; ++j2) H.block(at(i, j), at(i, j2), L, L) += 2.0 * w * p.G[static_cast<size_t>(j * nz + j2)];
+  if (!p.regressors.empty()) H.topLeftCorner(nt, nt) -= (2.0 * w) * (p.W * p.W.transpose());
   if (!p.s_var) H.topLeftCorner(nt, nt) += 4.0 * Zd * Zd.transpose() / (pt.phi * pt.phi);
 }
 
@@ -233,9 +265,26 @@ Vecd predictor_step(const Problem& p, const Point& pt, const Dense& H, double mu
   return step.allFinite() ? step : Vecd();
 }
 
+/// The free regressors G of a scaled problem: r ← P⊥r and W = ZᵀQ (P⊥ and
+/// Q do not depend on the scaling: range(G) is a subspace).
+void add_free_regressors(Problem& p, const Mat<double>& free_regressors) {
+  p.regressors = FreeRegressors(free_regressors, p.n, p.ny, "structured barrier");
+  if (p.regressors.empty()) return;
+  project_residual(p, p.r_head, p.r_tail);
+  const Dense& Q = p.regressors.basis();
+  p.W = Dense::Zero(p.taps(), Q.cols());
+  Dense head, tail;
+  for (Index c = 0; c < Q.cols(); ++c) {
+    split_residual(p, Q.col(c), head, tail);
+    for (Index i = 0; i < p.ny; ++i)
+      for (Index j = 0; j < p.nz; ++j)
+        p.W.col(c).segment((i * p.nz + j) * p.L, p.L) = p.Z[static_cast<size_t>(j)].transpose() * tail.col(i);
+  }
+}
+
 /// The scaled problem of solve_delta_form_barrier (σ_z, σ_r returned).
-Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective, double& sigma_z,
-                     double& sigma_r) {
+Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
+                     const Mat<double>& free_regressors, double& sigma_z, double& sigma_r) {
   Problem p;
   static_cast<SignalScaling&>(p) = signal_scaling(z, r);
   p.N = static_cast<double>(p.n * p.ny);
@@ -248,6 +297,7 @@ Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObje
   for (Index j = 0; j < p.nz; ++j) p.Z.push_back(lower_toeplitz(z.col(j).tail(p.L) / sigma_z));
   for (Index j = 0; j < p.nz; ++j)
     for (Index j2 = 0; j2 < p.nz; ++j2) p.G.push_back(p.Z[static_cast<size_t>(j)].transpose() * p.Z[static_cast<size_t>(j2)]);
+  add_free_regressors(p, free_regressors);
   p.t_var = !objective.delta_fixed();
   p.s_var = objective.kind != BoundObjective::Kind::kMinDelta;  // fixed bounds go through min d_max²
   const double kz = sigma_z / sigma_r;
@@ -273,8 +323,10 @@ Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObje
 /// Toeplitz Zc whose inverse grows like 3^L (z = 0.5, −1, −1, …) has
 /// σ_min/σ_max ~ 1e-10, which the SVD resolves while K's eigenvalues (~1e-20
 /// of the largest) drown in its rounding (~1e-16), leaving the smallest
-/// directions unfitted at every ρ. Empty with the reason when there is no
-/// such point.
+/// directions unfitted at every ρ. With free regressors r is P⊥r here and the
+/// misfit ‖P⊥r − Z h‖² an upper bound on the projected one ‖P⊥(r − Z h)‖²,
+/// so the start is inside (C2) all the same. Empty with the reason when there
+/// is no such point.
 std::string ridge_start(const Problem& p, Vecd& x) {
   const double head = p.r_head.squaredNorm(), cap = p.N * p.s_fix, target = 0.5 * (head + cap);
   if (!(head < cap)) return "the rows before the first nonzero z already exceed N*dmax^2";
@@ -533,9 +585,7 @@ class BarrierRun {
     out.dual_c1.topRightCorner(Y, Z) = -mu_ * Q_;
     out.dual_c1.bottomLeftCorner(Z, Y) = -mu_ * Q_.transpose();
     out.dual_c1.bottomRightCorner(Z, Z) = mu_ * (Dense::Identity(Z, Z) + R_);
-    Vecd d(Nn);  // row k·ny + i of (C2)
-    for (Index k = 0; k < p_.n; ++k)
-      for (Index i = 0; i < p_.ny; ++i) d(k * p_.ny + i) = k < p_.m ? p_.r_head(k, i) : pt_.d_tail(k - p_.m, i);
+    const Vecd d = stacked_residual(p_, pt_.d_head, pt_.d_tail);  // row k·ny + i of (C2)
     const double phi = p_.N * s_of(pt_) - pt_.D;  // = N μ / c_s on the path when s is eliminated
     out.dual_c2 = Dense::Zero(Nn + 1, Nn + 1);
     out.dual_c2(0, 0) = mu_ / phi;
@@ -565,10 +615,18 @@ class BarrierRun {
   Dense H_, P_, Q_, R_;
 };
 
+/// q (minimum-norm least squares for the final taps) and d = r − Z h − G q, original units.
+void write_free_solution(DeltaFormSolution& out, const Problem& p, const Mat<double>& z, const Mat<double>& r) {
+  Vecd e = stack_rows(Mat<double>(r - apply_fir(out.taps, z, p.ny, p.L)));
+  out.free_coefficients = p.regressors.coefficients(e);
+  if (p.regressors.count() > 0) e -= p.regressors.matrix() * out.free_coefficients;
+  out.noise_residual = unstack_rows(e, p.ny);
+}
+
 }  // namespace
 
 DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                           const BarrierOptions& options) {
+                                           const BarrierOptions& options, const Mat<double>& free_regressors) {
   const auto start = std::chrono::steady_clock::now();
   objective.validate();
   DeltaFormSolution out;
@@ -576,7 +634,7 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
   if (z.rows() != r.rows() || !barrier_applies(z, r, objective))
     return fail(out, "applies to every objective (weighted: 0 < lambda < 1; fixed bounds: delta > 0; min delta: dmax > 0)");
   double sigma_z = 1, sigma_r = 1;
-  const Problem p = make_problem(z, r, objective, sigma_z, sigma_r);
+  const Problem p = make_problem(z, r, objective, free_regressors, sigma_z, sigma_r);
   out.leading_zeros = p.m;
   out.horizon = p.L;
   BarrierRun run(p, objective, options);
@@ -584,14 +642,15 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
   if (const std::string err = run.follow_path(); !err.empty()) return fail(out, err);
   if (const std::string err = run.finish(); !err.empty()) return fail(out, err);
   run.write(out, objective, sigma_r, sigma_z / sigma_r);  // h' = kz·h, t' = kz²·t, s' = s/σ_r² with kz = σ_z/σ_r
+  write_free_solution(out, p, z, r);
   out.solve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 
 BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                       const Eigen::VectorXd& x, double mu) {
+                                       const Eigen::VectorXd& x, double mu, const Mat<double>& free_regressors) {
   double sigma_z = 1, sigma_r = 1;
-  const Problem p = make_problem(z, r, objective, sigma_z, sigma_r);
+  const Problem p = make_problem(z, r, objective, free_regressors, sigma_z, sigma_r);
   BarrierDerivatives out;
   const Point pt = evaluate(p, x, mu);
   out.value = pt.value;

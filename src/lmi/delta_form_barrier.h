@@ -50,6 +50,28 @@
 /// cut) with θ putting ‖d‖² halfway between its floor (the rows before the
 /// first nonzero z) and N·s. The dual matrices are μ·C⁻¹ as above, with φ
 /// the actual slack of (C2).
+///
+/// Free regressors (lmi/free_regressors.h): with G ((n·ny) × P, column c the
+/// stacked n × ny signal g_c, row k·ny + i = output i at sample k, the rows of
+/// d in (C2)) the noise residual of Theorem 2.1's (C2) becomes
+///   d = r − Z h − G q,   q ∈ R^P free (eq. (C2) with linear unknowns),
+/// and minimising over q leaves d = P⊥(r − Z h), P⊥ = I − Q Qᵀ with Q an
+/// orthonormal basis of range(G) (rank-revealing: zero or dependent columns
+/// add nothing). Every formula above holds with d projected: ‖d‖² =
+/// ‖P⊥r − P⊥Z h‖², ∂‖d‖²/∂h = −2 Zᵀd, ∂²‖d‖²/∂h² = 2 ZᵀZ − 2 W Wᵀ with
+/// W = ZᵀQ (a rank-P correction of the Toeplitz Gram, built once), φ =
+/// N s − ‖d‖², the ridge start on P⊥r, and C2⁻¹ built from the projected d.
+/// Hence the dual of (C2), Y2 = μ·C2⁻¹ = (1/σ)[σ; g][σ; g]ᵀ + μ·[0, 0; 0, I]
+/// with σ = μ/φ and g = −μ d/φ ∝ d, satisfies the dual equality of the q
+/// variables, Gᵀg = 0, up to rounding and the rank tolerance: ‖Gᵀg‖ ≤
+/// ~1e-10·‖G‖‖g‖ (tested at 1e-9; when d itself is at the rounding of r, as
+/// for r in range(G) + what the taps fit, relative to g's size at ‖d‖ =
+/// 1e-8‖r‖). Unlike the taps' dual equality it does not depend on centering:
+/// d is projected exactly at every iterate. The answer
+/// carries q = argmin ‖r − Z h − G q‖ for the final h (minimum-norm in G's
+/// coordinates when G is rank deficient) and d = r − Z h − G q. All four
+/// objectives accept free regressors. With P = 0 the computation is
+/// bit-for-bit the one without them.
 
 #include "lmi/bound_objective.h"
 #include "lmi/delta_form_lmi.h"
@@ -103,8 +125,13 @@ bool barrier_applies(const Mat<double>& z, const Mat<double>& r, const BoundObje
 /// is kBackendError with the reason in solve.message (callers fall back to an
 /// SDP backend). Dual matrices are always returned with a solution or an
 /// infeasibility answer (original units, as DeltaFormSolution documents).
+/// `free_regressors` ((n·ny) × P, the layout above; 0 columns: none) adds
+/// the free unknowns q; throws std::invalid_argument when it has columns but
+/// not n·ny rows, or a non-finite entry. The answer's free_coefficients
+/// (length P; empty without regressors) and noise_residual (n × ny, d =
+/// r − Z h − G q) are filled with a solution or an infeasibility answer.
 DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                           const BarrierOptions& options = {});
+                                           const BarrierOptions& options = {}, const Mat<double>& free_regressors = {});
 
 /// F_μ, its gradient and Hessian at x = (h, t?) of the SCALED problem (for
 /// the finite-difference test of the formulas above; value = +∞ outside the
@@ -115,6 +142,6 @@ struct BarrierDerivatives {
   Eigen::MatrixXd hessian;
 };
 BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                       const Eigen::VectorXd& x, double mu);
+                                       const Eigen::VectorXd& x, double mu, const Mat<double>& free_regressors = {});
 
 }  // namespace lpvid

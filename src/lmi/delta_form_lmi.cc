@@ -4,10 +4,12 @@
 #include <cmath>
 #include <string>
 
+#include "lmi/free_regressors.h"
 #include "lmi/noise_block.h"
 #include "core/rms.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "toeplitz/signal_toeplitz.h"
 
 namespace lpvid {
 
@@ -43,6 +45,7 @@ struct DeltaFormLayout : SignalScaling {  ///< n, ny, nz, m, L and the scales σ
   int tap0 = -1;  ///< first tap variable: h_l(i, j) is tap0 + l·ny·nz + i·nz + j
   int t = -1;     ///< δ² (scaled), -1 if fixed
   int s = -1;     ///< d_max² (scaled), -1 if fixed
+  int free0 = -1;  ///< first free variable f_c (column c of Q, lmi/free_regressors.h), -1 without
 };
 
 /// LmiProgram::about of a Δ-form program (what an outside solver's x means).
@@ -71,7 +74,23 @@ void describe(DeltaFormLayout& f, const BoundObjective& obj) {
   if (obj.kind == BoundObjective::Kind::kWeighted) a.emplace_back("lambda", double_to_text(obj.lambda));
 }
 
-DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index max_taps) {
+/// Free regressors in (C2)'s block B: d' = r/σ_r − Δ'∗z' − Q f' with one free
+/// variable f'_c per column of Q (f' = f/σ_r, Q f the free part G q of d).
+void add_free_variables(DeltaFormLayout& f, const FreeRegressors& regressors, int B) {
+  const Mat<double>& Q = regressors.basis();
+  if (Q.cols() == 0) return;
+  f.free0 = f.program.num_vars;
+  for (Eigen::Index c = 0; c < Q.cols(); ++c) {
+    const int v = f.program.add_variable("f" + std::to_string(c));
+    for (Eigen::Index row = 0; row < Q.rows(); ++row)
+      if (Q(row, c) != 0.0) f.program.add_entry(B, v, 0, static_cast<int>(1 + row), -Q(row, c));
+  }
+  f.program.about.emplace_back("free_variables", "f<c> times sigma_r is the coefficient of column c of an orthonormal "
+                                                 "basis Q of the free regressors' range in d = r - Delta*z - Q f");
+}
+
+DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index max_taps,
+                      const FreeRegressors& regressors = {}) {
   obj.validate();
   if (z.rows() != r.rows()) throw std::invalid_argument("delta form: z and r have different lengths");
   DeltaFormLayout f;
@@ -123,6 +142,7 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
           if (zs(k - l, j) != 0.0)
             p.add_entry(B, static_cast<int>(f.tap0 + l * taps_per + i * f.nz + j), 0, row, -zs(k - l, j));
     }
+  add_free_variables(f, regressors, B);
   return f;
 }
 
@@ -134,15 +154,38 @@ DeltaFormProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, 
   return {std::move(f.program), {f.K, f.ny, f.nz, f.tap0, f.t, f.s, f.sigma_z, f.sigma_r}, f.m, f.L};
 }
 
+namespace {
+
+/// q and d = r − Δ∗z − G q of a solve (original units; Q f = G q).
+void read_free_solution(DeltaFormSolution& out, const DeltaFormLayout& f, const FreeRegressors& regressors,
+                        const Mat<double>& z, const Mat<double>& r) {
+  Vec<double> e = stack_rows(Mat<double>(r - apply_fir(out.taps, z, f.ny, f.L)));
+  if (regressors.count() == 0) {
+    out.noise_residual = unstack_rows(e, f.ny);
+    return;
+  }
+  Vec<double> Qf = Vec<double>::Zero(e.size());
+  if (f.free0 >= 0 && has_solution(out.solve.status))
+    for (Eigen::Index c = 0; c < regressors.rank(); ++c)
+      Qf += regressors.basis().col(c) * (f.sigma_r * out.solve.x[static_cast<size_t>(f.free0 + c)]);
+  out.free_coefficients = regressors.coefficients(Qf);
+  out.noise_residual = unstack_rows(Vec<double>(e - regressors.matrix() * out.free_coefficients), f.ny);
+}
+
+}  // namespace
+
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                   SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps) {
-  DeltaFormLayout f = build(z, r, objective, max_taps);
+                                   SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps,
+                                   const Mat<double>& free_regressors) {
+  const FreeRegressors regressors(free_regressors, z.rows(), r.cols(), "delta form");
+  DeltaFormLayout f = build(z, r, objective, max_taps, regressors);
   DeltaFormSolution out;
   out.solve = solver.solve(f.program, options);
   out.leading_zeros = f.m;
   out.horizon = f.L;
   read_delta_solution(out.solve, {f.K, f.ny, f.nz, f.tap0, f.t, f.s, f.sigma_z, f.sigma_r}, objective, out.taps,
                       out.delta2, out.dmax2);
+  read_free_solution(out, f, regressors, z, r);
   if (options.want_dual && out.solve.dual_blocks.size() == 2) {
     const double kz = f.sigma_z / f.sigma_r;
     const Eigen::Index off = f.L * f.ny;

@@ -56,6 +56,13 @@ struct DeltaFormSolution {
   /// the barrier's failure ("structured barrier: …"), after which the SDP
   /// backend solved the same program (lmi/delta_form_solve.h). Empty otherwise.
   std::string fallback;
+  /// With free regressors G (lmi/free_regressors.h; length P, empty without):
+  /// q = argmin ‖r − Δ∗z − G q‖ for the returned taps, minimum-norm in G's
+  /// coordinates when G is rank deficient.
+  Vec<double> free_coefficients;
+  /// d = r − Δ∗z − G q (n × ny, original units; r − Δ∗z without free
+  /// regressors). Filled by the structured barrier and by solve_delta_form.
+  Mat<double> noise_residual;
 };
 
 /// Builds and solves the Δ-form program. z is n × nz, r is n × ny (doubles).
@@ -65,8 +72,16 @@ struct DeltaFormSolution {
 /// so the bounds are upper bounds on the full-length optimum, still sound,
 /// and the program has K·ny·nz tap variables with O(K·L) nonzeros instead
 /// of O(L²) (the cost that dominates the solvers here). 0 means K = L.
+/// `free_regressors` G ((n·ny) × P, stacked like r; 0 columns: none) adds
+/// free unknowns to d = r − Δ∗z − G q (lmi/free_regressors.h): the program
+/// gets one free variable per column of an orthonormal basis Q of range(G)
+/// (so zero or dependent columns cost nothing and leave the program well
+/// posed), and the answer's free_coefficients are the minimum-norm q with
+/// G q = Q·(those variables). Throws std::invalid_argument for a G without
+/// n·ny rows.
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                   SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps = 0);
+                                   SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps = 0,
+                                   const Mat<double>& free_regressors = {});
 
 /// Throws the InputError of solve_delta_form when z has no nonzero sample
 /// (or nz = 0); returns the number of leading zero samples m. Shared with

@@ -1,5 +1,7 @@
 #include "lmi/delta_form_solve.h"
 
+#include <stdexcept>
+
 #include "lmi/delta_form_barrier.h"
 #include "lmi/delta_kyp_lmi.h"
 #include "toeplitz/fir.h"
@@ -30,12 +32,14 @@ DeltaFormSolution solve_delta_form(const DeltaFormSignals& s, const BoundObjecti
   };
   const Eigen::Index L = s.z.rows() - leading_zero_samples(s.z);
   const bool kyp = q.method == DeltaFormMethod::kKyp;
+  if (kyp && q.free_regressors.cols() > 0)
+    throw std::invalid_argument("delta form: free regressors are not available with the KYP program");
   if (q.method == DeltaFormMethod::kStructured && q.taps == 0 && barrier_applies(s.z, s.r, objective)) {
     tell("solving Theorem 2.1 on the full horizon (" + std::to_string(L) + " taps) with the structured barrier");
-    DeltaFormSolution fast = solve_delta_form_barrier(s.z, s.r, objective);
+    DeltaFormSolution fast = solve_delta_form_barrier(s.z, s.r, objective, {}, q.free_regressors);
     if (fast.solve.status != SolveStatus::kBackendError) return fast;
     tell(fast.solve.message + "; solving again with " + solver.name());
-    DeltaFormSolution slow = solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps);
+    DeltaFormSolution slow = solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors);
     slow.solve.message += (slow.solve.message.empty() ? "" : "; ") + fast.solve.message + " (fell back to " + solver.name() + ")";
     slow.solve.seconds += fast.solve.seconds;
     slow.fallback = fast.solve.message;
@@ -43,7 +47,8 @@ DeltaFormSolution solve_delta_form(const DeltaFormSignals& s, const BoundObjecti
   }
   tell("solving Theorem 2.1 with " + solver.name() + " (" + (q.taps == 0 ? std::to_string(L) : std::to_string(q.taps)) +
        " taps" + (kyp ? ", KYP" : "") + ")");
-  return kyp ? solve_kyp(s, objective, q, solver) : solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps);
+  return kyp ? solve_kyp(s, objective, q, solver)
+             : solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors);
 }
 
 }  // namespace lpvid

@@ -34,6 +34,10 @@ struct DeltaFormRequest {
   long taps = 0;  ///< K; 0: the full horizon L = n − (leading zero samples of z)
   SolverOptions solver;
   std::function<void(const std::string&)> progress;  ///< one line per solve and fall-back; unset: silent
+  /// Free regressors G ((n·ny) × P, stacked like r; lmi/free_regressors.h):
+  /// d = r − Δ∗z − G q with q free. 0 columns: none. Not for kKyp
+  /// (std::invalid_argument).
+  Mat<double> free_regressors;
 };
 
 DeltaFormSolution solve_delta_form(const DeltaFormSignals& signals, const BoundObjective& objective,

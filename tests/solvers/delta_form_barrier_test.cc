@@ -12,6 +12,7 @@
 #include "toeplitz/fir.h"
 #include "solvers/sdp_solver.h"
 #include "toeplitz/tap_toeplitz.h"
+#include "support/barrier_finite_differences.h"
 
 namespace lpvid {
 namespace {
@@ -160,35 +161,7 @@ namespace {
 // central finite differences of the barrier value.
 RC_GTEST_PROP(DeltaFormBarrier, DerivativesMatchFiniteDifferences, ()) {
   const Signals s = *signals();
-  const int which = *rc::gen::inRange(0, 3);
-  const bool weighted = which != 0;  // t is a variable
-  BoundObjective obj;
-  obj.kind = which == 0 ? BoundObjective::Kind::kMinDmax : which == 1 ? BoundObjective::Kind::kWeighted : BoundObjective::Kind::kMinDelta;
-  obj.delta = s.r.norm() / s.z.norm();
-  // min δ: d_max above the residual's RMS, so that small taps keep (C2) strict
-  obj.dmax = 2.0 * s.r.norm() / std::sqrt(static_cast<double>(s.r.rows()));
-  const double mu = std::pow(10.0, *rc::gen::inRange(-3, 1));
-  const Eigen::Index L = s.z.rows() - leading_zero_samples(s.z), nt = L * s.r.cols() * s.z.cols();
-  const Eigen::Index D = nt + (weighted ? 1 : 0);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(D);
-  for (Eigen::Index i = 0; i < nt; ++i) x(i) = *rc::gen::inRange(-100, 101) / (1000.0 * static_cast<double>(L));
-  if (weighted) x(nt) = 1.0 + *rc::gen::inRange(0, 100) / 100.0;
-  const BarrierDerivatives b = barrier_derivatives(s.z, s.r, obj, x, mu);
-  RC_PRE(std::isfinite(b.value));
-  const double step = 1e-4;
-  for (Eigen::Index i = 0; i < D; ++i) {
-    Eigen::VectorXd xp = x, xm = x;
-    xp(i) += step;
-    xm(i) -= step;
-    const BarrierDerivatives bp = barrier_derivatives(s.z, s.r, obj, xp, mu), bm = barrier_derivatives(s.z, s.r, obj, xm, mu);
-    RC_PRE(std::isfinite(bp.value) && std::isfinite(bm.value));
-    const double fd = (bp.value - bm.value) / (2 * step);
-    // Truncation O(step²) plus round-off of F_μ's value (the t/μ term can be 1e9).
-    RC_ASSERT(std::abs(fd - b.gradient(i)) <= 1e-4 * (1 + std::abs(fd)) + 1e-14 * std::abs(b.value) / step);
-    const Eigen::VectorXd fdh = (bp.gradient - bm.gradient) / (2 * step);
-    RC_ASSERT((fdh - b.hessian.col(i)).cwiseAbs().maxCoeff() <=
-              1e-3 * (1 + fdh.cwiseAbs().maxCoeff()) + 1e-14 * b.gradient.cwiseAbs().maxCoeff() / step);
-  }
+  check_barrier_finite_differences(s.z, s.r);
 }
 
 }  // namespace
