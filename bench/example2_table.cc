@@ -190,7 +190,8 @@ int main(int argc, char** argv) {
     const IdentifyResult res = identify(convert_model<double>(mq), ed, io, *solver);
     const double t_ident = seconds_since(t0);
     Vec<Rational> p = res.p.unaryExpr([](double x) { return round_to_digits(x, 12); });
-    std::fprintf(stderr, "[example2_table]   identify %.1f s (%s); certify...\n", t_ident, to_string(res.status));
+    std::fprintf(stderr, "[example2_table]   identify %.1f s (%s; %s); certify...\n", t_ident, to_string(res.status),
+                 res.relaxation.c_str());
     char paper[32];
     std::snprintf(paper, sizeof paper, "%7.3f %7.3f", row.paper_delta, row.paper_dmax);
     certify_row(row.name, apply_parameters(mq, res.layout, p), paper, t_ident);

@@ -154,8 +154,8 @@ Runner add_identify_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("identify", "Theorem 3.1: identify the correction S_C(rho) with certified bounds");
   add_common_options(*cmd, args->common, true);
   cmd->add_flag("--iterate", args->iterate, "re-linearise at each solution until the objective stalls (beyond the paper)");
-  cmd->add_option("--max-iterations", args->max_iterations, "solves of --iterate")->capture_default_str()->check(CLI::Range(1, 1000));
-  cmd->add_option("--rel-tol", args->rel_tol, "stop --iterate when the objective improves by less")->capture_default_str();
+  cmd->add_option("--max-iterations", args->max_iterations, "solves of --iterate, or Delta steps of --method alternating")->capture_default_str()->check(CLI::Range(1, 1000));
+  cmd->add_option("--rel-tol", args->rel_tol, "stop --iterate (or --method alternating) when the objective improves by less (relative)")->capture_default_str();
   cmd->add_option("--method", args->method,
                   "relaxation: the paper's linearised BMI (default); alternating: Delta/theta block-coordinate descent "
                   "in the Delta form, every iterate feasible for the true BMI (fast for long records)")

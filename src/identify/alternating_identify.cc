@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <limits>
 
 #include "lmi/delta_kyp_lmi.h"
 #include "toeplitz/fir.h"
@@ -96,6 +95,52 @@ void judge_given_dmax(const BoundObjective& objective, const IterateRecord& acce
   }
 }
 
+/// Iterate `index`: the Δ step at p (where the previous accepted iterate's p
+/// step ended, or the least-squares start), then the p step for its Δ.
+IterateRecord alternating_iterate(const AffineResidual<double>& a, const Vec<double>& p, const Mat<double>& E,
+                                  const BoundObjective& inner, const IdentifyOptions& options, SdpSolver& solver,
+                                  IdentifyResult& out, int index) {
+  const auto start = std::chrono::steady_clock::now();  // reported only
+  IterateRecord rec = delta_step(a, p, E, inner, options, solver, out);
+  rec.index = index;
+  rec.p_delta_step = p;
+  if (has_solution(rec.status)) {
+    rec.p = alternating_parameter_step(a, rec.taps, &rec.dmax2);
+    rec.objective = inner.value(rec.delta2, rec.dmax2);
+  }
+  rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return rec;
+}
+
+/// The descent: appends every iterate to out.iterates and returns the index
+/// of the accepted one (−1 if the first Δ step failed). Iterate k+1's Δ step
+/// is solved at iterate k's p, where Δ_k is feasible, so J does not rise up
+/// to the SDP's tolerance; an iterate that rises anyway ends the loop and is
+/// not accepted, as is a failed Δ step after a good one. A gain below
+/// rel_tol (relative) ends it too, that iterate accepted.
+int descend(const AffineResidual<double>& a, const BoundObjective& inner, const IdentifyOptions& options,
+            SdpSolver& solver, IdentifyResult& out) {
+  Vec<double> p = alternating_parameter_step(a, Mat<double>(), nullptr);  // plain least squares: Δ = 0
+  const Mat<double> E = joint_regressors(a);
+  int accepted = -1;
+  for (int it = 0; it < std::max(1, options.max_iterations); ++it) {
+    out.iterates.push_back(alternating_iterate(a, p, E, inner, options, solver, out, it));
+    const IterateRecord& rec = out.iterates.back();
+    if (!has_solution(rec.status)) break;
+    bool stalled = false;
+    if (accepted >= 0) {
+      const double previous = out.iterates[static_cast<size_t>(accepted)].objective;
+      const double gain = previous - rec.objective;
+      if (gain < 0) break;  // the SDP's tolerance made it worse: keep the previous iterate
+      stalled = !(gain > options.rel_tol * std::max(std::abs(previous), 1e-300));
+    }
+    accepted = it;
+    p = rec.p;  // θ fed back: the next Δ step is solved at this iterate's p
+    if (stalled) break;
+  }
+  return accepted;
+}
+
 }  // namespace
 
 IdentifyResult identify_alternating(const LpvModel<double>& model, const Experiment<double>& exp_in,
@@ -112,45 +157,22 @@ IdentifyResult identify_alternating(const LpvModel<double>& model, const Experim
   const bool feasibility = inner.kind == BoundObjective::Kind::kFeasibility;
   if (feasibility) inner.kind = BoundObjective::Kind::kMinDmax;
 
-  double dmax2 = 0.0;
-  Vec<double> p = alternating_parameter_step(a, Mat<double>(), &dmax2);  // plain least squares
-  const Mat<double> E = joint_regressors(a);
-  double previous = std::numeric_limits<double>::infinity();
-  bool have = false;
-  IterateRecord accepted;
-  for (int it = 0; it < std::max(1, options.max_iterations); ++it) {
-    const auto start = std::chrono::steady_clock::now();
-    IterateRecord rec = delta_step(a, p, E, inner, options, solver, out);
-    rec.index = it;
-    if (!has_solution(rec.status)) {
-      rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      out.iterates.push_back(rec);
-      if (!have) {
-        out.p = Vec<double>::Zero(a.num_params());
-        out.relaxation = "failed";
-        return out;
-      }
-      break;  // keep the last good iterate
-    }
-    // p step: least squares with Δ fixed.
-    rec.p = alternating_parameter_step(a, rec.taps, &dmax2);
-    rec.dmax2 = dmax2;
-    rec.objective = inner.value(rec.delta2, rec.dmax2);
-    rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    out.iterates.push_back(rec);
-    const double gain = previous - rec.objective;
-    if (have && gain < 0) break;  // the SDP's tolerance made it worse: keep the previous iterate
-    out.p = rec.p;
-    out.taps = rec.taps;
-    accepted = rec;
-    have = true;
-    if (it > 0 && !(gain > options.rel_tol * std::max(std::abs(previous), 1e-300))) break;
-    previous = rec.objective;
+  const int accepted = descend(a, inner, options, solver, out);
+  if (accepted < 0) {  // the first Δ step failed: its status and message are out's
+    out.p = Vec<double>::Zero(a.num_params());
+    out.relaxation = "failed";
+    return out;
   }
-  out.status = accepted.status;
+  const IterateRecord& best = out.iterates[static_cast<size_t>(accepted)];
+  out.p = best.p;        // p_{k+1} = the p step for Δ_k ...
+  out.taps = best.taps;  // ... and Δ_k: the pair certify_with_taps certifies
+  if (!has_solution(out.iterates.back().status))
+    out.message = "Delta step " + std::to_string(out.iterates.back().index) + " failed (" + out.message +
+                  "); iterate " + std::to_string(accepted) + " is kept";
+  out.status = best.status;
   out.relaxation = "alternating Delta/theta descent (" + std::to_string(out.iterates.size()) + " Delta steps, " +
                    std::to_string(options.taps) + " taps, KYP)";
-  if (feasibility) judge_given_dmax(options.objective, accepted, out);
+  if (feasibility) judge_given_dmax(options.objective, best, out);
   return out;
 }
 

@@ -21,13 +21,17 @@
 ///   p step (Δ fixed): d = (r0 − T_Δ z0) − (Jr + T_Δ Jz) p is affine in p and
 ///      δ² does not depend on p, so min J is linear least squares (closed
 ///      form, complete orthogonal decomposition: rank deficiency allowed).
-/// Start: p from plain least squares (the p step at Δ = 0). Each iterate
-/// (p_{k+1}, Δ_k) satisfies (KYP) and (C2) as stated, so it is a feasible
-/// point of the TRUE BMI of Theorem 3.1 and certifies with
-/// certify_with_taps (certify.h), no re-solve needed. J never rises (each
-/// step minimises it over one block with the other block's value feasible),
-/// up to the SDP's tolerance: an iterate that rises ends the loop and is
-/// discarded. Stop when J improves by less than rel_tol (relative).
+/// Start: p_0 from plain least squares (the p step at Δ = 0). Iterate k
+/// solves the Δ step at p_k, giving Δ_k, then the p step for Δ_k, giving
+/// p_{k+1}, at which iterate k + 1's Δ step is solved (IterateRecord::
+/// p_delta_step records p_k). Each iterate (p_{k+1}, Δ_k) satisfies (KYP)
+/// and (C2) as stated, so it is a feasible point of the TRUE BMI of
+/// Theorem 3.1 and certifies with certify_with_taps (certify.h), no re-solve
+/// needed; the result's p and taps are the accepted iterate's pair. J never
+/// rises (Δ_k is feasible for the Δ step at p_{k+1}, and p_{k+1} for the p
+/// step after it), up to the SDP's tolerance: an iterate that rises ends the
+/// loop and is discarded. Stop when J improves by less than rel_tol
+/// (relative) or after max_iterations Δ steps.
 ///
 /// Fixed bounds: for a fixed δ the Δ step minimises d_max at that δ; for
 /// kFeasibility it does too, and the result is feasible when the final

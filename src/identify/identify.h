@@ -50,6 +50,8 @@ struct IterateRecord {
   double seconds = 0;
   Vec<double> p;  ///< parameters after this solve
   Mat<double> taps;  ///< kAlternating: the Δ of this iterate (K × ny·nz); empty for kRelaxation
+  Vec<double> p_delta_step;  ///< kAlternating: the p at which this iterate's Δ step was solved (the previous
+                             ///< accepted iterate's p, or the least-squares start); empty for kRelaxation
 };
 
 struct IdentifyResult {
