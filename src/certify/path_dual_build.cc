@@ -228,7 +228,15 @@ PathDualBuild build_path_dual(const Mat<Rational>& z, const Mat<Rational>& r, Ei
   GridSignal gs = grid_signal(g_col, b.scale, n, ny);
   b.g_effective = effective_g ? effective_g(gs.g) : gs.g;
   PathDualRecipe recipe = padded_recipe(s, b.scale, L);
-  const Mat<double> U_d = path_dual_floating_u(recipe, ny, nz, b.problem);
+  Mat<double> U_d = path_dual_floating_u(recipe, ny, nz, b.problem);
+  // Taps padded to a longer horizon make a larger T (‖T_L‖ ≥ ‖T_Lc‖): t·I − TTᵀ
+  // may lose definiteness. Any t that keeps it definite gives a dual point
+  // (the correction E makes its dual equality exact), so t grows until it does.
+  for (int grow = 0; !b.problem.empty() && s.taps.rows() < L && grow < 40; ++grow) {
+    b.problem.clear();
+    recipe.t = recipe.t * Rational(5) / Rational(4);
+    U_d = path_dual_floating_u(recipe, ny, nz, b.problem);
+  }
   if (!b.problem.empty()) return b;
   recipe.u_exponent = path_dual_exponent(U_d);
   const PathDualGrid grid = path_dual_round(U_d, recipe.u_exponent);

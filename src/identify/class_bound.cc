@@ -163,6 +163,9 @@ std::string certify_tree(const LpvModel<Rational>& model_q, const Experiment<Rat
   const Rational lowest = tree[lowest_leaf(tree)].leaf.bound;
   c.lower_bound = q.claim == DualClaim::kInvalidated ? Rational(0) : round_down_to_digits(lowest, 12);
   if (q.claim == DualClaim::kInvalidated && !(lowest > 0)) return "the lowest leaf's margin is not > 0: not invalidated";
+  if (q.claim != DualClaim::kInvalidated && !(c.lower_bound > 0))
+    return "no useful class bound: the lowest leaf's bound is 0 (a smaller box, --class-box, or more leaves, "
+           "--class-leaves, may give one)";
   c.region.unknowns = o.unknowns;
   c.region.parameters = q.s.a.names;
   c.region.free = q.s.free;

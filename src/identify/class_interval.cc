@@ -1,5 +1,6 @@
 #include "identify/class_interval.h"
 
+#include "core/deadline.h"
 #include "core/number_text.h"
 
 namespace lpvid {
@@ -9,7 +10,15 @@ ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& mode
                              const CertifyOptions& certify, ClassBoundOptions options, SdpSolver& solver) {
   ClassInterval out;
   options.upper = nearest_double(id.bounds.upper);
-  out.bound = class_lower_bound(model_q, model_d, exp_q, exp_d, id.fixed.value, certify, options);
+  try {
+    out.bound = class_lower_bound(model_q, model_d, exp_q, exp_d, id.fixed.value, certify, options);
+  } catch (const TimedOut&) {
+    throw;  // the user's --timeout ends the command
+  } catch (const std::exception& e) {
+    // the found θ and its bounds stand; only the class's lower end is missing
+    out.bound.reason = std::string("the class bound failed: ") + e.what();
+    return out;
+  }
   if (!out.bound.certified) return out;
   if (out.bound.whole_class && out.bound.best_p.size() == id.fixed.value.size() &&
       out.bound.best_objective < options.upper) {

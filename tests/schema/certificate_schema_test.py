@@ -2,7 +2,7 @@
 """docs/certificate.schema.json against real certificates.
 
 Writes certificates with the built `lpvid` on fixtures/example1 (a primal
-"consistent" one in form delta, its dual "lower_bound" companion, form w of
+"consistent" one in form delta, its dual "lower_bound" and "class_lower_bound" companions, form w of
 --toeplitz paper, a dual "invalidated" one) and validates each against the
 schema; then checks that broken copies (a required field removed, another
 format version, a key of the other form) FAIL. Also checks that the schema's
@@ -65,9 +65,9 @@ certificates = [
     lpvid_run("invalidated_dense", "initial_model.json", "invalidate", "--delta", "0.001", "--dmax", "0.001",
               "--dense-dual", exit_codes=(1,)),
 ]
-lower = os.path.join(work, "identify.cert.lower.json")
-if os.path.exists(lower):
-    certificates.append(lower)
+for companion in ("identify.cert.lower.json", "identify.cert.class.json"):
+    if os.path.exists(os.path.join(work, companion)):
+        certificates.append(os.path.join(work, companion))
 
 seen = set()
 for path in certificates:
@@ -92,15 +92,21 @@ for path in certificates:
     broken("an unknown key", lambda d: d.update(comment="x"))
     broken("a number as text 'abc'", lambda d: d.update(delta2="abc") if "delta2" in d else d.update(lower_bound="abc"))
     required = {"delta": "delta_taps", "w": "w", "dual_delta": "dual", "dual_delta_path": "dual"}[cert["form"]]
+    if cert["claim"].startswith("class_"):
+        required = "class"
+        broken("a 'dual' beside 'class'", lambda d: d.update(dual=d["class"]["nodes"][-1]["leaf"]))
+        broken("no 'class.nodes'", lambda d: d["class"].pop("nodes"))
+        broken("a leaf without 'epsilon'", lambda d: d["class"]["nodes"][-1]["leaf"].pop("epsilon"))
     broken(f"no '{required}'", lambda d: d.pop(required))
-    if cert["form"] == "dual_delta_path":
+    if cert["form"] == "dual_delta_path" and "dual" in cert:
         broken("no 'dual.u_floor'", lambda d: d["dual"].pop("u_floor"))
         broken("a 'dual.Y1' beside the recipe", lambda d: d["dual"].update(Y1=[[1]]))
     if cert["form"] == "dual_delta":
         broken("a 'dual.taps' beside Y1", lambda d: d["dual"].update(taps=[[0]]))
 
 for kind in [("consistent", "delta"), ("consistent", "w"), ("lower_bound", "dual_delta_path"),
-             ("invalidated", "dual_delta_path"), ("invalidated", "dual_delta")]:
+             ("invalidated", "dual_delta_path"), ("invalidated", "dual_delta"),
+             ("class_lower_bound", "dual_delta_path")]:
     check(kind in seen, f"a certificate with claim {kind[0]}, form {kind[1]} was validated")
 print(f"{len(failures)} failed" if failures else "all schema checks passed")
 sys.exit(1 if failures else 0)

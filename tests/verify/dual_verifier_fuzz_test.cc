@@ -27,6 +27,7 @@
 
 #include "certify/certificate_files.h"
 #include "certify/certify.h"
+#include "identify/class_interval.h"
 #include "core/exit_codes.h"
 #include "data/csv_reader.h"
 #include "data/data_reference.h"
@@ -44,7 +45,7 @@ namespace {
 /// Genuine lower-bound certificates of both dual forms, next to their data (made once).
 struct GenuineDuals {
   gen::ScratchDir dir{"dual_fuzz"};
-  std::string compact, dense;
+  std::string compact, dense, klass;
   GenuineDuals() {
     const std::string data = dir.file("data.csv");
     {
@@ -56,6 +57,35 @@ struct GenuineDuals {
     auto solver = make_solver("csdp");
     compact = lower_certificate(model, exp, data, false, *solver);
     dense = lower_certificate(model, exp, data, true, *solver);
+    klass = class_certificate(data, *solver);
+  }
+  /// A class lower bound (docs/class_lower_bound.md) of the initial Example-1
+  /// model with the correction basis 1, rho1, rho2: three leaves of a box.
+  std::string class_certificate(const std::string& data, SdpSolver& solver) {
+    LpvModel<Rational> model = read_model_file<Rational>(gen::kExample1Fixtures + "initial_model.json");
+    model.correction.basis.resize(3);
+    model.correction.A.resize(3);
+    model.correction.B.resize(3);
+    const LpvModel<double> model_d = convert_model<double>(model);
+    const Experiment<Rational> exp = make_experiment<Rational>(read_table(data), model.columns);
+    const Experiment<double> exp_d = make_experiment<double>(read_table(data), model_d.columns);
+    IdentifyOptions io;
+    io.objective.kind = BoundObjective::Kind::kWeighted;
+    io.method = IdentifyMethod::kAlternating;
+    CertifyOptions co;
+    co.objective = io.objective;
+    co.data = read_data_table(data).reference;
+    IdentifiedModel id = identify_and_certify(model, model_d, exp, exp_d, io, co, solver);
+    ClassBoundOptions o;
+    o.max_leaves = 3;
+    const ClassInterval ci = class_interval(id, model, model_d, exp, exp_d, co, o, solver);
+    if (!ci.bound.certified) throw std::runtime_error("no class certificate: " + ci.bound.reason);
+    const std::string path = dir.file("class.json");
+    write_certificate_at(*ci.bound.certificate, path);
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
   }
   std::string lower_certificate(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const std::string& data,
                                 bool dense_dual, SdpSolver& solver) {
@@ -194,6 +224,12 @@ void fuzz_dual(const std::string& text, std::uint64_t seed, int count) {
 TEST(DualCertificateVerifierFuzz, EditsOfTheCompactFormEndInADocumentedExitCode) { fuzz_dual(genuine_duals().compact, 33, 300); }
 
 TEST(DualCertificateVerifierFuzz, EditsOfTheDenseFormEndInADocumentedExitCode) { fuzz_dual(genuine_duals().dense, 34, 300); }
+
+TEST(DualCertificateVerifierFuzz, TheGenuineClassCertificateHoldsAndItsEditsEndInADocumentedExitCode) {
+  std::string out;
+  ASSERT_EQ(genuine_duals().check(genuine_duals().klass, &out), kExitOk) << out;
+  fuzz_dual(genuine_duals().klass, 35, 150);
+}
 
 /// `lpvid-verify args` (the program); its exit code, output in *out.
 int run_verify_program(const std::string& args, std::string* out) {
