@@ -253,7 +253,9 @@ int run_select(SelectArgs& a) {
 Runner add_select_basis_command(CLI::App& app) {
   auto a = std::make_shared<SelectArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "select-basis", "Appendix algorithm: grow the correction basis until consistent at --delta/--dmax, then prune");
+      "select-basis",
+      "Appendix algorithm: grow the correction basis until consistent at --delta/--dmax, then prune; a basis is "
+      "'cannot_explain' only with a class certificate (lpvid-verify checks it), else 'not_decided'");
   add_common_options(*cmd, a->common, true);
   cmd->add_option("--max-degree", a->max_degree, "largest total degree of a candidate term (default 2)")
       ->check(CLI::Range(0, 8));
@@ -266,7 +268,7 @@ Runner add_select_basis_command(CLI::App& app) {
   cmd->add_flag("--no-offset", a->no_offset, "do not identify the offset phi even if the model declares one");
   cmd->add_flag("--no-prune", a->no_prune, "skip the removal phase");
   cmd->add_flag("--no-class-bound", a->no_class,
-                "do not try class certificates: every step not consistent is then not_decided");
+                "do not try class certificates: every step not consistent is then not_decided (or unverified)");
   cmd->add_option("--class-box", a->class_box,
                   "half-width of the class box of a step whose corrections move z: each may move z by this fraction "
                   "of ||z|| (default 0.01)")
