@@ -31,6 +31,12 @@ void write_step_certificates(BasisSelectionResult& result, const std::string& st
     const std::string file = s.same_as >= 0 ? result.steps[static_cast<size_t>(s.same_as)].certificate
                                             : write_certificates(s.bounds, stem + ".step" + std::to_string(s.index) + ".cert.json").certificate;
     s.certificate = s.verdict == BasisVerdict::kConsistent ? file : "";
+    if (s.same_as >= 0) {
+      s.class_certificate = result.steps[static_cast<size_t>(s.same_as)].class_certificate;
+    } else if (s.klass && s.klass->certified) {
+      s.class_certificate = stem + ".step" + std::to_string(s.index) + ".class.json";
+      write_certificate_at(*s.klass->certificate, s.class_certificate);
+    }
   }
 }
 

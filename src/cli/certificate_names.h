@@ -7,9 +7,10 @@
 ///    (".w<i>" before the side when there are several windows; lower ends
 ///    beside them as ".lower.json") and <stem>.before.thm31.json,
 ///    <stem>.after.thm31.json;
-///  - select-basis: step k → <stem>.step<k>.cert.json (an invalidation
-///    certificate too; a step names its file only when consistent, a repeated
-///    basis its first step's file);
+///  - select-basis: step k → <stem>.step<k>.cert.json (a step names it only
+///    when consistent, a repeated basis its first step's file) and, when the
+///    step has a class certificate ("cannot explain" over the class or a
+///    box), <stem>.step<k>.class.json;
 ///  - tradeoff: point k (1-based) → <stem>.lambda<k>.cert.json.
 
 #include <string>

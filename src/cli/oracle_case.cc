@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "certify/certificate_files.h"
+#include "identify/class_interval.h"
 #include "identify/fix_and_certify.h"
 #include "model/simulate.h"
 #include "oracle/answer.h"
@@ -108,8 +109,31 @@ WitnessResult check_witness(const OracleTask& task, const OracleAnswer& a, const
   return r;
 }
 
+/// identify: the class lower end of `id`'s class interval, its certificate
+/// written to lpvid's folder.
+ClassReference class_reference(const ClassInterval& ci, const fs::path& folder) {
+  ClassReference k;
+  const ClassBoundResult& b = ci.bound;
+  if (!b.certified) {
+    k.reason = b.reason;
+    return k;
+  }
+  k.verified = true;
+  k.lower = b.lower;
+  k.certificate = (folder / "lpvid.class.json").string();
+  write_certificate_at(*b.certificate, k.certificate);
+  k.whole_class = b.whole_class;
+  k.center = b.certificate->region.center;
+  k.radius = b.certificate->region.radius;
+  k.free = b.certificate->region.free;
+  return k;
+}
+
 /// identify: lpvid's own identification of the task (Theorem 3.1, iterated
-/// relaxation, θ fixed and certified), the reference for "suboptimal".
+/// relaxation, θ fixed and certified), the reference for "suboptimal", and
+/// its class interval (identify/class_interval.h; in the convex case the
+/// class optimum replaces lpvid's θ when it certifies lower), whose lower
+/// end refutes claims below it.
 void identify_reference(const Inputs& in, const CommonOptions& c, const fs::path& folder, SdpSolver& solver,
                         ReferenceResult& ref) {
   IdentifyOptions opt;
@@ -117,8 +141,14 @@ void identify_reference(const Inputs& in, const CommonOptions& c, const fs::path
   opt.iterate = true;
   CertifyOptions co = certify_options(c, in);
   co.lower_end = false;
-  const IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, solver);
-  if (!id.bounds.verified) return;
+  IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, solver);
+  if (!id.bounds.verified) {
+    ref.klass.reason = "lpvid's own identification was not certified";
+    return;
+  }
+  ClassBoundOptions cbo;
+  cbo.unknowns = opt.unknowns;
+  ref.klass = class_reference(class_interval(id, in.model_q, in.model_d, in.exp_q, in.exp_d, co, cbo, solver), folder);
   ref.identified_verified = true;
   ref.identified = id.bounds.dmax2;
   ref.identified_certificate = write_certificates(id.bounds, (folder / "lpvid.identify.cert.json").string()).certificate;
@@ -244,6 +274,8 @@ CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   ref.identified_verified = identified.identified_verified;
   ref.identified = identified.identified;
   ref.identified_certificate = identified.identified_certificate;
+  ref.klass = identified.klass;
+  if (identify) rep.klass = ref.klass;
   rep.judgement = judge(task, answer, ref, witness, o.tolerance);
 
   // A refutation's evidence is checked once more, from its file, by the verifier.

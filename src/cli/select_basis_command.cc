@@ -26,6 +26,9 @@ struct SelectArgs {
   bool free_x0 = false;
   bool no_offset = false;
   bool no_prune = false;
+  bool no_class = false;                                ///< --no-class-bound
+  double class_box = ClassBoundOptions{}.box_fraction;  ///< --class-box
+  int class_leaves = ClassBoundOptions{}.max_leaves;    ///< --class-leaves
 };
 
 class Table {
@@ -33,7 +36,7 @@ class Table {
   explicit Table(size_t basis_width) : w_(basis_width) {}
   void header() const {
     std::cout << std::left << std::setw(5) << "step" << std::setw(9) << "phase" << std::setw(static_cast<int>(w_) + 2)
-              << "basis" << std::setw(13) << "verdict" << std::setw(11) << "delta" << std::setw(11) << "dmax"
+              << "basis" << std::setw(17) << "verdict" << std::setw(11) << "delta" << std::setw(11) << "dmax"
               << std::setw(13) << "dmax_relax" << std::setw(7) << "solves" << std::setw(9) << "time[s]"
               << "note\n";
   }
@@ -45,7 +48,7 @@ class Table {
     char t[32];
     std::snprintf(t, sizeof t, "%.2f", s.seconds);
     std::cout << std::left << std::setw(5) << s.index << std::setw(9) << s.phase << std::setw(static_cast<int>(w_) + 2)
-              << s.basis_text << std::setw(13) << to_string(s.verdict) << std::setw(11)
+              << s.basis_text << std::setw(17) << to_string(s.verdict) << std::setw(11)
               << (v ? cell_text(s.bounds.delta) : "-") << std::setw(11) << (v ? cell_text(s.bounds.dmax) : "-") << std::setw(13)
               << cell_text(s.dmax_relaxation) << std::setw(7) << s.solves << std::setw(9) << t << note << "\n"
               << std::flush;
@@ -54,6 +57,57 @@ class Table {
  private:
   size_t w_;
 };
+
+void print_legend(const CommonOptions& c, bool iterate) {
+  std::cout << "\n  consistent      = a certificate at delta = " << c.delta_text << ", dmax = " << c.dmax_text
+            << " passed the exact verifier (delta, dmax columns)\n"
+            << "  cannot_explain  = a class certificate (lpvid-verify certificate checks it): no theta of this basis, with\n"
+            << "                    any Delta of norm <= delta and any noise of RMS <= dmax, explains the data\n"
+            << "  box_invalidated = the same for the theta of a box around the step's theta only (another theta may\n"
+            << "                    explain the data: for the algorithm it counts as not decided)\n"
+            << "  not_decided     = no consistent model found and no class certificate: the solver's verdict on "
+            << (iterate ? "the best model of the iterated relaxation (Theorem 2.1)"
+                        : "the relaxation of Theorem 3.1 at S_I (conservative: one relaxation step cannot make large corrections)")
+            << "\n"
+            << "  dmax_relax      = the smallest dmax at the given delta that the (iterated) relaxation reached\n";
+}
+
+/// "every theta of the basis" or "box of k parameters around …, radius a … b; m free".
+std::string class_region_text(const ClassBoundResult& k) {
+  if (k.whole_class) return "every theta of the basis";
+  double lo = 0, hi = 0;
+  long boxed = 0;
+  for (Eigen::Index i = 0; i < k.radius.size(); ++i)
+    if (k.radius(i) > 0) {
+      lo = boxed == 0 ? k.radius(i) : std::min(lo, k.radius(i));
+      hi = std::max(hi, k.radius(i));
+      ++boxed;
+    }
+  return "box of " + std::to_string(boxed) + " parameters, half-widths " + cell_text(lo) + " to " + cell_text(hi) + ", " +
+         std::to_string(k.free.size()) + " free; " + std::to_string(k.leaves) + (k.leaves == 1 ? " leaf" : " leaves");
+}
+
+nlohmann::ordered_json class_json(const BasisStep& s) {
+  if (!s.klass) return nullptr;
+  const ClassBoundResult& k = *s.klass;
+  nlohmann::ordered_json j{{"certified", k.certified}};
+  if (!k.certified) {
+    j["reason"] = k.reason;
+    return j;
+  }
+  j["certificate"] = s.class_certificate;
+  j["region"] = k.whole_class ? "whole_class" : "box";
+  j["center"] = k.whole_class ? "none" : s.class_centered_at_fit ? "identified" : "zero";
+  nlohmann::ordered_json box = nlohmann::ordered_json::array();
+  for (size_t i = 0; i < k.names.size(); ++i)
+    if (k.radius(static_cast<Eigen::Index>(i)) > 0)
+      box.push_back({{"name", k.names[i]}, {"center", k.center(static_cast<Eigen::Index>(i))},
+                     {"radius", k.radius(static_cast<Eigen::Index>(i))}});
+  j["box"] = box;
+  j["free_parameters"] = k.free.size();
+  j["leaves"] = k.leaves;
+  return j;
+}
 
 int run_select(SelectArgs& a) {
   CommonOptions& c = a.common;
@@ -85,6 +139,9 @@ int run_select(SelectArgs& a) {
   o.prune = !a.no_prune;
   o.unknowns.x0 = a.free_x0;
   o.unknowns.offset = !a.no_offset;
+  o.class_certificates = !a.no_class;
+  o.klass.box_fraction = a.class_box;
+  o.klass.max_leaves = a.class_leaves;
   o.solver.verbose = c.verbose;
   o.certify = certify_options(c, in);  // objective and bounds: set per step
   const std::string final_cert = certificate_path(c);
@@ -97,16 +154,13 @@ int run_select(SelectArgs& a) {
   BasisSelectionResult r = select_basis(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
   write_step_certificates(r, stem);
 
-  std::cout << "\n  consistent  = a certificate at delta = " << c.delta_text << ", dmax = " << c.dmax_text
-            << " passed the exact verifier (delta, dmax columns)\n"
-            << "  infeasible  = the solver found the LMI infeasible (uncertified: no exact certificate); for a correction basis "
-            << (a.iterate ? "the best model of the iterated relaxation is infeasible in Theorem 2.1"
-                          : "the relaxation of Theorem 3.1 at S_I is infeasible (it is conservative: one relaxation step cannot make large corrections)")
-            << "\n"
-            << "  dmax_relax  = the smallest dmax at the given delta that the (iterated) relaxation reached\n";
+  print_legend(c, a.iterate);
   for (const BasisStep& s : r.steps)
-    if (s.verdict == BasisVerdict::kUnverified && s.same_as < 0)
+    if (s.verdict != BasisVerdict::kConsistent && s.same_as < 0) {
       std::cout << "  step " << s.index << ": " << s.detail << "\n";
+      if (!s.class_certificate.empty())
+        std::cout << "          class certificate " << s.class_certificate << " (" << class_region_text(*s.klass) << ")\n";
+    }
   const std::string mono = monotonicity_violation(r.steps);
   if (!mono.empty()) std::cout << "  NOTE: verdicts are not monotone (solver or relaxation effect): " << mono << "\n";
 
@@ -129,8 +183,12 @@ int run_select(SelectArgs& a) {
       std::cout << "  (the relaxation at S_I cannot make large corrections at tight bounds: try --iterate)\n";
     bool unverified = false;
     for (const BasisStep& s : r.steps) unverified = unverified || s.verdict == BasisVerdict::kUnverified;
-    // no exact certificate backs these verdicts: never "invalidated"
-    report["status"] = unverified ? "not_verified" : "no_consistent_model_found_uncertified";
+    const bool certified = certified_cannot_explain(r);
+    if (certified)
+      std::cout << "  certified: the largest basis tried (step " << r.steps.back().index
+                << ") cannot explain the data, so no basis of these terms can (class certificate)\n";
+    // "cannot explain" only with a whole-class certificate of the largest basis
+    report["status"] = certified ? "cannot_explain" : unverified ? "not_verified" : "not_decided";
     report["delta"] = nullptr;
     report["dmax"] = nullptr;
     report["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
@@ -168,7 +226,8 @@ int run_select(SelectArgs& a) {
                      {"seconds", s.seconds},
                      {"same_as", s.same_as >= 0 ? nlohmann::ordered_json(s.same_as) : nlohmann::ordered_json(nullptr)},
                      {"kept", s.kept},
-                     {"certificate", v ? nlohmann::ordered_json(s.certificate) : nlohmann::ordered_json(nullptr)}});
+                     {"certificate", v ? nlohmann::ordered_json(s.certificate) : nlohmann::ordered_json(nullptr)},
+                     {"class_certificate", class_json(s)}});
   }
   report["steps"] = steps;
   if (r.found) {
@@ -185,7 +244,8 @@ int run_select(SelectArgs& a) {
   report["samples"] = in.exp_q.n();
   write_json(c.report_path, report);
   if (r.found) return kExitOk;
-  return report["status"] == "not_verified" ? kExitNotVerified : kExitInvalidated;
+  if (report["status"] == "cannot_explain") return kExitInvalidated;
+  return report["status"] == "not_verified" ? kExitNotVerified : kExitUndecided;
 }
 
 }  // namespace
@@ -193,7 +253,9 @@ int run_select(SelectArgs& a) {
 Runner add_select_basis_command(CLI::App& app) {
   auto a = std::make_shared<SelectArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "select-basis", "Appendix algorithm: grow the correction basis until consistent at --delta/--dmax, then prune");
+      "select-basis",
+      "Appendix algorithm: grow the correction basis until consistent at --delta/--dmax, then prune; a basis is "
+      "'cannot_explain' only with a class certificate (lpvid-verify checks it), else 'not_decided'");
   add_common_options(*cmd, a->common, true);
   cmd->add_option("--max-degree", a->max_degree, "largest total degree of a candidate term (default 2)")
       ->check(CLI::Range(0, 8));
@@ -205,6 +267,14 @@ Runner add_select_basis_command(CLI::App& app) {
   cmd->add_flag("--free-x0", a->free_x0, "the initial state is an unknown too");
   cmd->add_flag("--no-offset", a->no_offset, "do not identify the offset phi even if the model declares one");
   cmd->add_flag("--no-prune", a->no_prune, "skip the removal phase");
+  cmd->add_flag("--no-class-bound", a->no_class,
+                "do not try class certificates: every step not consistent is then not_decided (or unverified)");
+  cmd->add_option("--class-box", a->class_box,
+                  "half-width of the class box of a step whose corrections move z: each may move z by this fraction "
+                  "of ||z|| (default 0.01)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--class-leaves", a->class_leaves, "leaves of a step's class certificate (default 31)")
+      ->check(CLI::Range(1, 4095));
   return [cmd, a] { return cmd->parsed() ? run_select(*a) : -1; };
 }
 

@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "identify/fix_and_certify.h"
+#include "model/simulate.h"
 #include "identify/identify.h"
 
 namespace lpvid {
@@ -127,6 +128,8 @@ class Selector {
       s.relaxation = prev.relaxation;
       s.layout = prev.layout;
       s.p = prev.p;
+      s.klass = prev.klass;
+      s.class_centered_at_fit = prev.class_centered_at_fit;
       s.same_as = prev.index;
       s.detail = "same basis as step " + std::to_string(prev.index) + " (not solved again)";
     } else {
@@ -160,18 +163,55 @@ class Selector {
       s.verdict = BasisVerdict::kConsistent;
       s.detail = what + " is consistent at the given bounds: certificate verified exactly";
     } else if (b.solve_status == SolveStatus::kPrimalInfeasible) {
-      s.verdict = BasisVerdict::kInvalidated;
-      s.detail = what + " is infeasible at the given bounds: the Theorem 2.1 LMI is infeasible (solver verdict, "
-                        "not exactly certified)";
+      s.verdict = BasisVerdict::kNotDecided;
+      s.detail = what + ": the solver found the Theorem 2.1 LMI infeasible at the given bounds (a solver verdict)";
     } else {
       s.verdict = BasisVerdict::kUnverified;
       s.detail = what + ": not verified: " + b.reason;
     }
   }
 
+  Unknowns unknowns() const {
+    Unknowns u = o_.unknowns;
+    u.correction = true;
+    return u;
+  }
+
+  /// A step not certified consistent: the class certificate over the
+  /// basis (whole class, or a box centred at `centre`, zero when empty).
+  void certify_class(BasisStep& s, const LpvModel<Rational>& mq, const LpvModel<double>& md, Vec<double> centre) {
+    if (!o_.class_certificates || s.verdict == BasisVerdict::kConsistent) return;
+    ClassBoundOptions cbo = o_.klass;
+    cbo.unknowns = unknowns();
+    cbo.upper = 0;
+    s.class_centered_at_fit = centre.size() > 0;
+    if (!s.class_centered_at_fit)
+      centre = Vec<double>::Zero(build_affine_residual(md, with_state_scheduling(md, ed_), cbo.unknowns).num_params());
+    ClassBoundResult k = class_lower_bound(mq, md, eq_, ed_, centre, certify_options(), cbo);
+    s.solves += k.leaves;
+    if (k.certified) {
+      s.verdict = k.whole_class ? BasisVerdict::kCannotExplain : BasisVerdict::kBoxInvalidated;
+      s.detail = (k.whole_class ? "no theta of this basis" : "no theta of the box around the " +
+                                                                 std::string(s.class_centered_at_fit ? "identified theta" : "initial model (theta = 0)")) +
+                 " explains the data at the given bounds: class certificate checked exactly (" + std::to_string(k.leaves) +
+                 (k.leaves == 1 ? " leaf" : " leaves") + (k.whole_class ? ")" : "; theta outside the box is not decided)") +
+                 "; before it: " + s.detail;
+    } else {
+      s.detail += "; no class certificate: " + k.reason;
+    }
+    s.klass = std::move(k);
+  }
+
   void solve(BasisStep& s) {
     const LpvModel<Rational> mq = with_correction_basis(mq_, s.basis);
     const LpvModel<double> md = with_correction_basis(md_, s.basis);
+    Vec<double> centre;
+    identify_step(s, mq, md, centre);
+    certify_class(s, mq, md, centre);
+  }
+
+  /// The solver's side of a step: the fit and its certification (`centre`: the fit's parameters, if any).
+  void identify_step(BasisStep& s, const LpvModel<Rational>& mq, const LpvModel<double>& md, Vec<double>& centre) {
     const CertifyOptions co = certify_options();
     const bool unknowns = !s.basis.empty() || (o_.unknowns.offset && unknown_offset_count(md) > 0) || o_.unknowns.x0;
     if (!unknowns) {
@@ -180,8 +220,7 @@ class Selector {
       return;
     }
     IdentifyOptions io;
-    io.unknowns = o_.unknowns;
-    io.unknowns.correction = true;
+    io.unknowns = this->unknowns();
     io.solver = o_.solver;
     if (o_.iterate) {
       io.objective.kind = BoundObjective::Kind::kMinDmax;
@@ -200,10 +239,10 @@ class Selector {
     const std::string what = s.basis.empty() ? "S_I with the identified offset" : "the identified model";
     if (res.iterates.empty() || !has_solution(res.iterates.front().status)) {  // no model at all
       if (res.status == SolveStatus::kPrimalInfeasible) {
-        s.verdict = BasisVerdict::kInvalidated;
-        s.detail = "the relaxation of Theorem 3.1 (" + res.relaxation +
-                   ") is infeasible at the given bounds: no consistent model found (solver verdict, not exactly "
-                   "certified; the relaxation is conservative)";
+        s.verdict = BasisVerdict::kNotDecided;
+        s.detail = "the solver found the relaxation of Theorem 3.1 (" + res.relaxation +
+                   ") infeasible at the given bounds: no consistent model found (a solver verdict; the relaxation is "
+                   "conservative)";
       } else {
         s.verdict = BasisVerdict::kUnverified;
         s.detail = std::string("the identification solve ended with status ") + to_string(res.status) +
@@ -218,6 +257,7 @@ class Selector {
       s.dmax_relaxation = best;
     }
     const FixedParameters fp = fix_parameters(mq, res.layout, res.p, co.digits);
+    centre = fp.value;
     s.p = fp.value;
     s.layout = res.layout;
     judge(s, certify_fixed_model(fp.model, eq_, co, solver_), what);
@@ -286,7 +326,9 @@ std::string basis_text(const std::vector<Monomial>& basis, const std::vector<std
 const char* to_string(BasisVerdict v) {
   switch (v) {
     case BasisVerdict::kConsistent: return "consistent";
-    case BasisVerdict::kInvalidated: return "infeasible";  // the solver's verdict, not an exact certificate
+    case BasisVerdict::kCannotExplain: return "cannot_explain";
+    case BasisVerdict::kBoxInvalidated: return "box_invalidated";
+    case BasisVerdict::kNotDecided: return "not_decided";
     case BasisVerdict::kUnverified: return "unverified";
   }
   return "unverified";
@@ -303,12 +345,26 @@ BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvMo
   return sel.run();
 }
 
+bool certified_cannot_explain(const BasisSelectionResult& result) {
+  for (auto s = result.steps.rbegin(); s != result.steps.rend(); ++s)
+    if (s->phase == "grow" || s->phase == "initial") return s->verdict == BasisVerdict::kCannotExplain;
+  return false;
+}
+
 std::string monotonicity_violation(const std::vector<BasisStep>& steps) {
   for (const BasisStep& a : steps)
-    for (const BasisStep& b : steps)
-      if (a.verdict == BasisVerdict::kConsistent && b.verdict == BasisVerdict::kInvalidated && subset(a.basis, b.basis))
-        return "step " + std::to_string(a.index) + " {" + a.basis_text + "} is consistent but its superset step " +
-               std::to_string(b.index) + " {" + b.basis_text + "} is infeasible (solver verdict)";
+    for (const BasisStep& b : steps) {
+      const bool counted = b.verdict == BasisVerdict::kCannotExplain || b.verdict == BasisVerdict::kBoxInvalidated ||
+                           b.verdict == BasisVerdict::kNotDecided;
+      if (a.verdict != BasisVerdict::kConsistent || !counted || !subset(a.basis, b.basis)) continue;
+      const std::string why = b.verdict == BasisVerdict::kCannotExplain
+                                  ? "certified unable to explain the data (two exact certificates contradict: a bug)"
+                                  : std::string(b.verdict == BasisVerdict::kBoxInvalidated
+                                                    ? "invalidated on a box only (the consistent theta lies outside it)"
+                                                    : "not decided (solver verdict)");
+      return "step " + std::to_string(a.index) + " {" + a.basis_text + "} is consistent but its superset step " +
+             std::to_string(b.index) + " {" + b.basis_text + "} is " + why;
+    }
   return "";
 }
 

@@ -3,11 +3,10 @@
 /// Appendix ("Practical implementation issues"), SPEC §5 last item.
 ///
 ///  0. Test S_I alone with Theorem 2.1 at the given δ, d_max (certified with
-///     BoundObjective kFeasibility: verified ⇒ consistent; the solver finds
-///     the LMI infeasible ⇒ invalidated, a solver verdict, not exactly
-///     certified). If the model declares an offset basis without values, φ
-///     is identified in this step too (Theorem 3.1 without correction is an
-///     LMI), so "S_I" means S_I with its best offset.
+///     BoundObjective kFeasibility: verified ⇒ consistent; otherwise see
+///     "cannot explain" below). If the model declares an offset basis
+///     without values, φ is identified in this step too (Theorem 3.1 without
+///     correction is an LMI), so "S_I" means S_I with its best offset.
 ///  1. Otherwise grow the correction basis ONE monomial at a time in the
 ///     order of basis_growth_order() (the Appendix's F^1 ⊂ F^2 ⊂ …),
 ///     identify with Theorem 3.1 at the given bounds, certify the identified
@@ -35,16 +34,38 @@
 ///    itself is ignored: the algorithm builds its own.
 ///  - Identification per step. Without `iterate`: one solve of the paper's
 ///    relaxation (linearised at S_I) with kFeasibility at the given δ, d_max;
-///    an infeasible relaxation is "invalidated" — the solver's verdict on the
-///    relaxation, which is conservative (it does not prove the class
-///    invalid, SPEC §9). With `iterate` (beyond the paper): kMinDmax at the
-///    given δ with re-linearisation until d_max stalls, then the best model
-///    is certified at the given bounds; "invalidated" then means the exact
-///    Theorem 2.1 LMI of that best model is infeasible at the given bounds
-///    (solver verdict). The kFeasibility relaxation at S_I is usually
+///    an infeasible relaxation is only the solver's verdict on the
+///    relaxation, which is conservative (it proves nothing about the class).
+///    With `iterate` (beyond the paper): kMinDmax at the given δ with
+///    re-linearisation until d_max stalls, then the best model is certified
+///    at the given bounds. The kFeasibility relaxation at S_I is usually
 ///    infeasible when the missing term is large and the bounds tight
 ///    (Example 1: even the full basis is rejected at δ = 0.05, d_max = 0.01),
 ///    so `iterate` is the useful mode there.
+///  - "Cannot explain" is certified both ways or not said. A step whose
+///    model is not certified consistent asks for a class certificate
+///    (identify/class_bound.h, claim "class_invalidated", checked exactly
+///    after its JSON round trip): no θ of the region, with any Δ of
+///    ‖Δ‖∞ ≤ δ and noise of RMS ≤ d_max, explains the data. The region is
+///    the whole class when no unknown moves z (additive structure, offsets:
+///    Theorem 3.1 is convex there) → kCannotExplain; otherwise the
+///    parameters that move z (multiplicative θ, x0) are confined to a box
+///    centred at the step's identified parameters (zero when the step found
+///    none), split by branch and bound up to `klass.max_leaves` →
+///    kBoxInvalidated, which says nothing about θ outside that box. When the
+///    class certificate fails (a point of the region is feasible, a leaf's
+///    margin is not positive, the solver gave no answer) the step is
+///    kNotDecided, its detail giving the solver's verdict and the reason;
+///    solver trouble with no certificate either way stays kUnverified.
+///  - How the verdicts drive the algorithm: only "consistent" stops the
+///    growth or keeps a removal, exactly as before. A whole-class
+///    "cannot explain" proves that no θ of that basis helps, so growing is
+///    the only way on; a box invalidation refutes only θ near the found one
+///    (another θ of the basis may still explain the data), so for the
+///    algorithm it is treated exactly as "not decided" and only reported
+///    with its box. The selection's overall result is "cannot explain" only
+///    when the largest basis grown (it contains every smaller one, whose
+///    classes are subsets) carries a whole-class certificate.
 ///  - Every "consistent" is backed by a certificate that the exact verifier
 ///    accepted (CertifiedBounds::verified; the front end writes it, the CLI
 ///    to <stem>.step<k>.cert.json). A model that was found but not
@@ -56,6 +77,7 @@
 ///    previous F^k) is not solved again: the step says "same as step j".
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +85,7 @@
 #include "data/experiment.h"
 #include "toeplitz/affine_residual.h"
 #include "certify/certify.h"
+#include "identify/class_bound.h"
 #include "identify/identify.h"
 #include "model/lpv_model.h"
 #include "model/monomial.h"
@@ -83,11 +106,13 @@ LpvModel<T> with_correction_basis(const LpvModel<T>& model, const std::vector<Mo
 std::string basis_text(const std::vector<Monomial>& basis, const std::vector<std::string>& names);
 
 enum class BasisVerdict {
-  kConsistent,   ///< a certificate at the given bounds passed the exact verifier
-  kInvalidated,  ///< the solver found the LMI infeasible (not exactly certified; see above)
-  kUnverified,   ///< anything else: solver trouble, or a model whose certificate did not pass
+  kConsistent,      ///< a certificate at the given bounds passed the exact verifier
+  kCannotExplain,   ///< a class certificate (exactly checked): no θ of the basis explains the data
+  kBoxInvalidated,  ///< a class certificate for a box of θ only (see above): the algorithm treats it as kNotDecided
+  kNotDecided,      ///< the solver found no consistent model, and no class certificate exists
+  kUnverified,      ///< solver trouble, or a model whose certificate did not pass, and no class certificate
 };
-/// "consistent", "infeasible" (kInvalidated: a solver verdict, never printed as "invalidated"), "unverified".
+/// "consistent", "cannot_explain", "box_invalidated", "not_decided", "unverified".
 const char* to_string(BasisVerdict v);
 
 struct BasisStep {
@@ -107,6 +132,12 @@ struct BasisStep {
   bool kept = false;                 ///< remove phase: the removal was kept
   ParameterLayout layout;            ///< of the certified model's parameters
   Vec<double> p;                     ///< the rounded parameters (12 digits) that were certified
+  /// The class certificate's attempt (not consistent steps only; `klass.certified`
+  /// ⇔ kCannotExplain or kBoxInvalidated); `class_centered_at_fit`: its box is
+  /// centred at the step's identified parameters (else at zero).
+  std::optional<ClassBoundResult> klass;
+  bool class_centered_at_fit = false;
+  std::string class_certificate;     ///< the file the front end wrote it to (certified only)
 };
 
 struct BasisSelectionOptions {
@@ -118,6 +149,8 @@ struct BasisSelectionOptions {
   double rel_tol = IdentifyOptions{}.rel_tol;
   bool prune = true;                 ///< run the removal phase
   Unknowns unknowns;                 ///< offset / x0 (correction is always on)
+  bool class_certificates = true;    ///< try a class certificate for every step not consistent
+  ClassBoundOptions klass;           ///< its box and leaf budget (unknowns are set per step)
   SolverOptions solver;
   /// data reference, max_taps, digits; objective and solver options are set per step.
   CertifyOptions certify;
@@ -139,9 +172,15 @@ BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvMo
                                   const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                   const BasisSelectionOptions& options, SdpSolver& solver);
 
+/// The selection's answer when it found no consistent basis: true when the
+/// largest basis grown carries a whole-class "cannot explain" certificate.
+bool certified_cannot_explain(const BasisSelectionResult& result);
+
 /// Monotonicity of the verdicts (adding terms can only help): returns a
 /// description of the first pair of steps with basis_i ⊆ basis_j, step i
-/// consistent and step j invalidated; "" if there is none.
+/// consistent and step j not (cannot_explain: a contradiction between two
+/// exact certificates; box_invalidated, not_decided: the region or the
+/// solver); "" if there is none. Unverified steps are not counted.
 std::string monotonicity_violation(const std::vector<BasisStep>& steps);
 
 }  // namespace lpvid

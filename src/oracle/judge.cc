@@ -1,5 +1,8 @@
 #include "oracle/judge.h"
 
+#include <algorithm>
+#include <optional>
+
 #include "core/number_text.h"
 
 namespace lpvid {
@@ -98,6 +101,30 @@ Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const Refer
                                                             " cannot decide it (" + (ref.reason.empty() ? "no certified lower end" : ref.reason) + ")"));
 }
 
+/// identify: a claim below L_class with a θ of the class region is refuted by
+/// the class certificate; `note` says why a claim below it is not.
+std::optional<Judgement> refute_by_class(const OracleTask& task, const OracleAnswer& a, const ReferenceResult& ref,
+                                         std::string& note) {
+  const ClassReference& k = ref.klass;
+  if (task.kind != TaskKind::kIdentify || !k.verified || !a.dmax) return std::nullopt;
+  const Rational J = *a.dmax * *a.dmax;
+  if (!(J < k.lower)) return std::nullopt;
+  std::string why_not;
+  if (!theta_in_class_region(a.theta, k, why_not)) {
+    note = "claimed dmax^2 = " + approx(J) + " is below lpvid's class lower end " + approx(k.lower) +
+           ", but not refutable by the class certificate: " + why_not;
+    return std::nullopt;
+  }
+  Judgement j = verdict(OracleVerdict::kRefuted,
+                        "claimed dmax^2 = " + approx(J) + " is below lpvid's certified class lower end " + approx(k.lower) +
+                            ": no theta of " +
+                            (k.whole_class ? std::string("the correction basis") : "the certified box, which contains the claimed theta,") +
+                            " reaches it (class certificate)",
+                        k.certificate);
+  j.claimed = J;
+  return j;
+}
+
 Judgement judge_decision(const OracleAnswer& a, const ReferenceResult& ref, const WitnessResult& wit) {
   const bool says_consistent = a.verdict == "consistent";
   if (ref.outcome == CertifyOutcome::kVerified && !says_consistent)
@@ -120,7 +147,31 @@ Judgement judge(const OracleTask& task, const OracleAnswer& answer, const Refere
                 const JudgeTolerance& tolerance) {
   if (answer.failed) return verdict(OracleVerdict::kError, "the implementation reported failure" + (answer.message.empty() ? "" : ": " + answer.message));
   if (witness.status == WitnessResult::kMalformed) return verdict(OracleVerdict::kError, "malformed witness: " + witness.text);
-  return task.kind == TaskKind::kDecide ? judge_decision(answer, ref, witness) : judge_bound(task, answer, ref, witness, tolerance);
+  if (task.kind == TaskKind::kDecide) return judge_decision(answer, ref, witness);
+  std::string note;
+  if (std::optional<Judgement> j = refute_by_class(task, answer, ref, note)) return *j;
+  Judgement j = judge_bound(task, answer, ref, witness, tolerance);
+  if (!note.empty()) j.reason += "; " + note;
+  return j;
+}
+
+bool theta_in_class_region(const Vec<Rational>& theta, const ClassReference& k, std::string& why_not) {
+  const Eigen::Index P = k.center.size();
+  if (theta.size() > P || k.radius.size() != P) {
+    why_not = "theta has " + std::to_string(theta.size()) + " entries, the class " + std::to_string(P);
+    return false;
+  }
+  for (Eigen::Index i = 0; i < P; ++i) {
+    if (std::find(k.free.begin(), k.free.end(), static_cast<long>(i)) != k.free.end()) continue;
+    const Rational value = i < theta.size() ? theta(i) : Rational(0);
+    const Rational gap = value > k.center(i) ? value - k.center(i) : k.center(i) - value;
+    if (gap > k.radius(i)) {
+      why_not = "theta outside the certified box (parameter " + std::to_string(i + 1) + " is " + approx(gap) +
+                " from the centre, half-width " + approx(k.radius(i)) + ")";
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace lpvid

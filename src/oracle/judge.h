@@ -28,10 +28,17 @@
 /// J is the task's objective at the claim: d_max² (min_dmax, identify), δ²
 /// (min_delta), λδ² + (1−λ)d_max² (weighted). The tolerance comes from the
 /// oracle's command line, never from a file the command under test can edit.
-/// identify: the claim (θ, d_max) is judged as the fixed model with θ folded
-/// in; [L, U] is that model's certified interval, so a refutation proves
-/// that THIS θ cannot explain the data with the claimed d_max at δ (Theorem
-/// 3.1 is a BMI: lpvid certifies no lower end over all θ).
+/// identify: the claim (θ, d_max) is judged first against lpvid's class
+/// interval [L_class, U] (identify/class_bound.h, docs/class_lower_bound.md):
+/// L_class is certified for every θ of a region — the whole correction class
+/// when no correction moves z (additive structure: Theorem 3.1 is convex),
+/// else a box around lpvid's own identified θ (multiplicative: a BMI) — so a
+/// claimed d_max² below L_class with a θ of that region is refuted by the
+/// class certificate whatever the θ. A claimed θ outside the box is not
+/// refutable by it (said in the reason). Then the claim is judged as the
+/// fixed model with θ folded in: [L, U] is that model's certified interval,
+/// and a refutation there proves that THIS θ cannot explain the data with the
+/// claimed d_max at δ.
 
 #include <optional>
 #include <string>
@@ -59,6 +66,25 @@ struct JudgeTolerance {
   double absolute = 1e-9;
 };
 
+/// identify: lpvid's certified class lower end on d_max² at the task's δ,
+/// over every θ of the region its certificate states.
+struct ClassReference {
+  bool verified = false;
+  Rational lower;                ///< L_class
+  std::string certificate;       ///< its file ("class_lower_bound", checked again before a refutation)
+  bool whole_class = false;      ///< no parameter boxed: the region is every θ of the basis
+  /// The region in the class's parameter layout (θ_out first, as the answer's
+  /// theta; then θ_unc, φ, x0): the box's centre and half-widths, and the free
+  /// parameters (any real).
+  Vec<Rational> center, radius;
+  std::vector<long> free;
+  std::string reason;            ///< why there is none
+};
+
+/// Whether the answer's θ (output correction; the class's other parameters
+/// taken as 0, the free ones as anything) lies in the class region; else why not.
+bool theta_in_class_region(const Vec<Rational>& theta, const ClassReference& klass, std::string& why_not);
+
 /// What lpvid certified for the task (from CertifiedBounds).
 struct ReferenceResult {
   CertifyOutcome outcome = CertifyOutcome::kNotVerified;
@@ -69,6 +95,7 @@ struct ReferenceResult {
   Rational lower;
   std::string lower_certificate;
   std::string invalidation_certificate;  ///< decide: the "invalidated" certificate
+  ClassReference klass;                  ///< identify: the class lower end
   bool identified_verified = false;      ///< identify: lpvid's own identified model was certified
   Rational identified;                   ///< ... with this d_max²
   std::string identified_certificate;

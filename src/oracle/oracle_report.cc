@@ -61,6 +61,20 @@ std::string totals_text(const OracleTotals& t) {
          " tampered";
 }
 
+/// identify: L_class, its certificate and region, or why there is none.
+nlohmann::ordered_json class_lower_end_json(const ClassReference& k) {
+  nlohmann::ordered_json j{{"verified", k.verified}};
+  if (!k.verified) {
+    j["reason"] = k.reason;
+    return j;
+  }
+  j["lower_dmax2"] = CGAL::to_double(k.lower);
+  j["lower_exact"] = exact_decimal_or_fraction(k.lower);
+  j["certificate"] = k.certificate;
+  j["region"] = k.whole_class ? "whole_class" : "box";
+  return j;
+}
+
 }  // namespace
 
 std::string case_table(const std::vector<CaseReport>& cases) {
@@ -109,6 +123,7 @@ nlohmann::ordered_json oracle_report_json(const std::vector<CaseReport>& cases, 
       e["certificate"] = c.judgement.evidence;
       e["certificate_check"] = c.evidence_check;
     }
+    if (c.klass) e["class_lower_end"] = class_lower_end_json(*c.klass);
     e["outside_seconds"] = c.outside_seconds;
     e["outside_exit"] = c.outside_exit;
     e["outside_log"] = c.outside_log;

@@ -5,6 +5,7 @@
 /// answer, tampered inputs → error; undecided → skipped; suboptimal →
 /// failure only with --strict).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct CaseReport {
   std::string claim;    ///< the outside claim in words ("dmax = 0.031", "invalidated", …)
   Judgement judgement;
   std::string evidence_check;  ///< the verifier's first line on the evidence file ("lower_bound 0.0098…")
+  std::optional<ClassReference> klass;  ///< identify: lpvid's class lower end (or why none)
   double outside_seconds = 0, lpvid_seconds = 0;
   int outside_exit = 0;
   std::string outside_log;

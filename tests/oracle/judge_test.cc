@@ -152,5 +152,81 @@ TEST(OracleJudge, AVerdictIsJudgedAgainstLpvidsCertifiedOne) {
   EXPECT_EQ(judge(task, failed, consistent, {}).verdict, OracleVerdict::kError);
 }
 
+/// An identify task (min d_max at δ) and a claim (θ, d_max).
+OracleTask identify_task() {
+  OracleTask t = min_dmax_task();
+  t.kind = TaskKind::kIdentify;
+  return t;
+}
+OracleAnswer claims_theta(const Rational& dmax, std::vector<Rational> theta) {
+  OracleAnswer a = claims_dmax(dmax);
+  a.theta = Vec<Rational>(static_cast<Eigen::Index>(theta.size()));
+  for (size_t i = 0; i < theta.size(); ++i) a.theta(static_cast<Eigen::Index>(i)) = theta[i];
+  return a;
+}
+
+/// lpvid's reference for an identify task: the fixed θ's d_max² ∈ [L, U] and
+/// a class lower end L_class = 0.01 over 3 parameters (θ_out of 2 entries, one
+/// offset φ, always free); `box`: θ_out in the box 1 ± 1/10, −2 ± 1/100.
+ReferenceResult class_reference(bool box) {
+  ReferenceResult r = interval(Rational(4, 100), Rational(5, 100));
+  ClassReference& k = r.klass;
+  k.verified = true;
+  k.lower = Rational(1, 100);
+  k.certificate = "class.json";
+  k.whole_class = !box;
+  k.center = Vec<Rational>::Zero(3);
+  k.radius = Vec<Rational>::Zero(3);
+  if (box) {
+    k.center << Rational(1), Rational(-2), Rational(0);
+    k.radius << Rational(1, 10), Rational(1, 100), Rational(0);
+    k.free = {2};
+  } else {
+    k.free = {0, 1, 2};
+  }
+  return r;
+}
+
+TEST(OracleJudge, AnIdentifyClaimBelowTheClassLowerEndIsRefutedByTheClassCertificate) {
+  const OracleTask task = identify_task();
+  // whole class: any θ; J = 0.0099² … below L_class = 0.01 (d_max = 0.1): refuted with the class certificate
+  const Judgement below = judge(task, claims_theta(Rational(99, 1000), {Rational(7), Rational(-3)}), class_reference(false), {});
+  EXPECT_EQ(below.verdict, OracleVerdict::kRefuted);
+  EXPECT_EQ(below.evidence, "class.json");
+  EXPECT_NE(below.reason.find("class lower end"), std::string::npos) << below.reason;
+  // at L_class it is not refuted by the class (here: by the fixed θ's lower end 0.04, its own certificate)
+  const Judgement at = judge(task, claims_theta(Rational(1, 10), {Rational(7), Rational(-3)}), class_reference(false), {});
+  EXPECT_EQ(at.verdict, OracleVerdict::kRefuted);
+  EXPECT_EQ(at.evidence, "lower.json");
+  // a claim in the fixed θ's interval is confirmed
+  EXPECT_EQ(judge(task, claims_theta(Rational(21, 100), {Rational(7), Rational(-3)}), class_reference(false), {}).verdict,
+            OracleVerdict::kConfirmed);
+}
+
+TEST(OracleJudge, AClassCertificateOverABoxRefutesOnlyTheThetaInsideIt) {
+  const OracleTask task = identify_task();
+  const ReferenceResult ref = class_reference(true);
+  // on the box's corner (exact: |Δ| = radius): inside
+  const Judgement inside = judge(task, claims_theta(Rational(99, 1000), {Rational(11, 10), Rational(-199, 100)}), ref, {});
+  EXPECT_EQ(inside.verdict, OracleVerdict::kRefuted);
+  EXPECT_EQ(inside.evidence, "class.json");
+  EXPECT_NE(inside.reason.find("certified box"), std::string::npos) << inside.reason;
+  // just outside along the second parameter: the class certificate cannot refute it, and says so;
+  // the fixed θ's own lower end still does
+  const Judgement outside = judge(task, claims_theta(Rational(99, 1000), {Rational(1), Rational(-2011, 1000)}), ref, {});
+  EXPECT_EQ(outside.verdict, OracleVerdict::kRefuted);
+  EXPECT_EQ(outside.evidence, "lower.json");
+  EXPECT_NE(outside.reason.find("not refutable by the class certificate: theta outside the certified box"), std::string::npos)
+      << outside.reason;
+  // without the fixed θ's lower end, the same claim is undecided, never refuted
+  ReferenceResult no_lower = ref;
+  no_lower.lower_verified = false;
+  EXPECT_EQ(judge(task, claims_theta(Rational(99, 1000), {Rational(1), Rational(-2011, 1000)}), no_lower, {}).verdict,
+            OracleVerdict::kUndecided);
+  // the class region never refutes other task kinds
+  EXPECT_EQ(judge(min_dmax_task(), claims_theta(Rational(21, 100), {Rational(1), Rational(-2)}), ref, {}).verdict,
+            OracleVerdict::kConfirmed);
+}
+
 }  // namespace
 }  // namespace lpvid

@@ -9,6 +9,8 @@
 #include <map>
 #include <string>
 
+#include "cli/random_cases.h"
+#include "oracle/random_task.h"
 #include "support/cli_runner.h"
 
 namespace lpvid {
@@ -127,6 +129,71 @@ TEST_F(Oracle, IdentifyClaimsAreJudgedOnTheirTheta) {
   EXPECT_EQ(verdicts(report)["confirmed"], 3) << report.dump(1);
   // the same θ with d_max scaled by 0.95: below the lower end of the model with that θ
   EXPECT_EQ(oracle("scaled", "--cases 3 --seed 11 --min-n 10 --max-n 30 --kinds identify", report), 1) << output();
+  EXPECT_GE(verdicts(report)["refuted"], 1) << report.dump(1);
+  expect_refutations_verified(report);
+}
+
+/// `count` identify cases (the oracle's random tasks, seeds from 1) whose
+/// model has (or lacks) the additive structure, as case folders under `root`.
+void write_identify_cases(const std::string& root, bool additive, int count) {
+  RandomTaskOptions o;
+  o.kinds = {TaskKind::kIdentify};
+  o.cases.min_n = 10;
+  o.cases.max_n = 24;
+  o.cases.model.max_nu = o.cases.model.max_ny = 1;
+  int written = 0;
+  for (uint64_t seed = 1; seed < 200 && written < count; ++seed) {
+    const GeneratedCase g = random_oracle_case(seed, o);
+    if ((g.random.model.uncertainty.structure == UncertaintyStructure::kAdditive) != additive) continue;
+    cli::write_case_folder(root + "/case-" + std::to_string(seed), g);
+    ++written;
+  }
+  ASSERT_EQ(written, count);
+}
+
+TEST_F(Oracle, IdentifyClaimsBelowTheClassLowerEndAreRefutedByTheClassCertificate) {
+  // additive structure: z does not depend on θ, Theorem 3.1 is convex and
+  // lpvid's class lower end holds for every θ of the basis
+  write_identify_cases(file("additive"), true, 3);
+  const std::string cases = " --cases-dir " + file("additive");
+  nlohmann::json report;
+  EXPECT_EQ(oracle("correct", cases, report), 0) << output();
+  EXPECT_EQ(verdicts(report)["confirmed"], 3) << report.dump(1);
+  for (const auto& c : report["cases"]) {
+    EXPECT_TRUE(c["class_lower_end"]["verified"].get<bool>()) << c.dump();
+    EXPECT_EQ(c["class_lower_end"]["region"], "whole_class") << c.dump();
+  }
+  // too good by 5 % in d_max (the class interval is at the solver's tolerance), and with θ = 0
+  for (const std::string mode : {"scaled", "zero_theta"}) {
+    EXPECT_EQ(oracle(mode, cases, report), 1) << output();
+    EXPECT_EQ(verdicts(report)["refuted"], 3) << report.dump(1);
+    for (const auto& c : report["cases"]) {
+      const std::string cert = c["certificate"];
+      EXPECT_EQ(cert, c["class_lower_end"]["certificate"]) << c.dump();
+      EXPECT_NE(c["certificate_check"].get<std::string>().find("class_lower_bound"), std::string::npos) << c.dump();
+    }
+    expect_refutations_verified(report);
+  }
+}
+
+TEST_F(Oracle, ABoxClassCertificateDoesNotRefuteAThetaOutsideItsBox) {
+  // multiplicative: the class lower end holds on a box around lpvid's θ; θ = 0
+  // lies outside it, so only the fixed θ's own lower end can refute the claim
+  write_identify_cases(file("multiplicative"), false, 2);
+  nlohmann::json report;
+  EXPECT_EQ(oracle("zero_theta", " --cases-dir " + file("multiplicative"), report), 1) << output();
+  for (const auto& c : report["cases"]) {
+    if (c["verdict"] != "refuted") continue;
+    EXPECT_NE(c["certificate"], c["class_lower_end"].value("certificate", "")) << c.dump();
+    const nlohmann::json& k = c["class_lower_end"];
+    const bool below = k["verified"].get<bool>() &&
+                       std::stod(c["claimed_objective"].get<std::string>()) < 0.999 * k["lower_dmax2"].get<double>();
+    if (below && k["region"] == "box") {
+      EXPECT_NE(c["reason"].get<std::string>().find("not refutable by the class certificate: theta outside the certified box"),
+                std::string::npos)
+          << c.dump();
+    }
+  }
   EXPECT_GE(verdicts(report)["refuted"], 1) << report.dump(1);
   expect_refutations_verified(report);
 }

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Outside implementations for the tests of `lpvid oracle`: one correct, four
-deliberately wrong. Each answers a task by asking lpvid itself (so the right
+"""Outside implementations for the tests of `lpvid oracle`: one correct, the
+others deliberately wrong. Each answers a task by asking lpvid itself (so the right
 answer is known) and then, depending on MODE:
 
   correct        the certified bound, rounded up, with lpvid's Delta taps as
@@ -12,6 +12,10 @@ answer is known) and then, depending on MODE:
   flipped        decide: "consistent" where lpvid certified "invalidated"
   bad_witness    the correct bound, but the witness's first tap moved by
                  3*delta: then ||T_Delta|| >= 2*delta > the claimed delta
+  zero_theta     identify: theta = 0 (no correction) with 0.95 times lpvid's
+                 d_max: too good for every theta of an additive class (the
+                 class certificate refutes it); outside the certified box of
+                 a multiplicative one
   leading_zeros  min_dmax computed without the leading samples where every
                  input is 0 (z = 0 there, so w must be 0; an implementation
                  that forgets it lets w absorb the residual there), the RMS
@@ -107,6 +111,10 @@ def main():
         for key in ("delta", "dmax"):
             if key in a:
                 a[key] = a[key] * (0.95 if mode == "scaled" else 10)
+    elif mode == "zero_theta" and "theta" in a:
+        a.pop("witness", None)
+        a["dmax"] = a["dmax"] * 0.95
+        a["theta"] = {f: {k: [["0" for _ in row] for row in m] for k, m in t.items()} for f, t in a["theta"].items()}
     elif mode == "flipped" and task["kind"] == "decide" and code == 1:
         a["verdict"] = "consistent"
     elif mode == "bad_witness" and "witness" in a:

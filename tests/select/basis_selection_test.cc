@@ -4,9 +4,10 @@
 // degree). The algorithm runs on the paper's Example 1 (noise-free, n = 30):
 // the initial model lacks the output factor ρ2², so with --iterate at
 // δ = 0.05, d_max = 0.01 the selected basis must contain ρ2², every
-// "consistent" must carry a certificate the exact verifier accepts, and the
-// verdicts must be monotone (a consistent basis has no invalidated superset
-// among the steps).
+// "consistent" must carry a certificate the exact verifier accepts, every
+// "cannot explain" (or box invalidation) a class certificate it accepts, and
+// the verdicts must be monotone (a consistent basis has no superset among the
+// steps that is not).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
@@ -23,9 +24,11 @@
 #include "data/experiment_builder.h"
 #include "examples/paper_example1.h"
 #include "cli/certificate_names.h"
+#include "core/file_io.h"
 #include "identify/basis_selection.h"
 #include "solvers/sdp_solver.h"
 #include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate_file.h"
 
 #include "support/scratch_dir.h"
 
@@ -139,20 +142,24 @@ TEST(WithCorrectionBasis, KeepsDeclaredFixedMatricesAndZerosNewOnes) {
   EXPECT_EQ(basis_text({}, m.scheduling), "(none)");
 }
 
-TEST(MonotonicityViolation, FindsAConsistentSubsetOfAnInvalidatedBasis) {
+TEST(MonotonicityViolation, FindsAConsistentSubsetOfABasisThatIsNot) {
   BasisStep a, b;
   a.index = 0;
   a.basis = {Monomial{{0, 0}}};
   a.verdict = BasisVerdict::kConsistent;
   b.index = 1;
   b.basis = {Monomial{{0, 0}}, Monomial{{1, 0}}};
-  b.verdict = BasisVerdict::kInvalidated;
-  EXPECT_NE(monotonicity_violation({a, b}), "");
+  b.verdict = BasisVerdict::kNotDecided;
+  EXPECT_NE(monotonicity_violation({a, b}).find("not decided"), std::string::npos);
+  b.verdict = BasisVerdict::kCannotExplain;  // two exact certificates contradicting each other
+  EXPECT_NE(monotonicity_violation({a, b}).find("contradict"), std::string::npos);
+  b.verdict = BasisVerdict::kBoxInvalidated;  // only a box: the consistent theta may lie outside it
+  EXPECT_NE(monotonicity_violation({a, b}).find("box only"), std::string::npos);
   b.verdict = BasisVerdict::kUnverified;
   EXPECT_EQ(monotonicity_violation({a, b}), "");
-  a.verdict = BasisVerdict::kInvalidated;
+  a.verdict = BasisVerdict::kCannotExplain;
   b.verdict = BasisVerdict::kConsistent;
-  EXPECT_EQ(monotonicity_violation({a, b}), "");  // adding terms may turn invalidated into consistent
+  EXPECT_EQ(monotonicity_violation({a, b}), "");  // adding terms may turn "cannot explain" into consistent
 }
 
 /// The steps' certificates written as `lpvid select-basis` writes them.
@@ -162,7 +169,9 @@ BasisSelectionResult with_files(BasisSelectionResult r, const std::string& stem)
 }
 
 /// Checks shared by the runs: steps well formed, consistent ⇔ verified
-/// certificate on disk accepted again by the verifier, monotone verdicts.
+/// certificate on disk accepted again by the verifier, "cannot explain" and
+/// box invalidations ⇔ a class certificate on disk that the verifier accepts
+/// (over the whole class, resp. a box), monotone verdicts.
 void check_steps(const BasisSelectionResult& r) {
   ASSERT_FALSE(r.steps.empty());
   EXPECT_EQ(r.steps.front().phase, "initial");
@@ -176,6 +185,14 @@ void check_steps(const BasisSelectionResult& r) {
     } else {
       EXPECT_TRUE(s.certificate.empty());
     }
+    const bool refuted = s.verdict == BasisVerdict::kCannotExplain || s.verdict == BasisVerdict::kBoxInvalidated;
+    EXPECT_EQ(refuted, !s.class_certificate.empty());
+    if (!refuted) continue;
+    const CertificateVerdict v = check_certificate_file(s.class_certificate);
+    EXPECT_TRUE(v.holds) << v.reason;
+    const Certificate c = parse_certificate(read_text_file(s.class_certificate), s.class_certificate);
+    EXPECT_EQ(c.claim, CertificateClaim::kClassInvalidated);
+    EXPECT_EQ(c.region.free.size() == c.region.parameters.size(), s.verdict == BasisVerdict::kCannotExplain);
   }
   EXPECT_EQ(monotonicity_violation(r.steps), "");
 }
@@ -191,7 +208,8 @@ TEST(SelectBasis, Example1IteratedFindsTheMissingRho2Squared) {
     std::cout << "  step " << s.index << " " << s.phase << " {" << s.basis_text << "} " << to_string(s.verdict)
               << (s.dmax_relaxation >= 0 ? "  dmax_relax = " + std::to_string(s.dmax_relaxation) : "") << "\n";
   check_steps(r);
-  EXPECT_EQ(r.steps.front().verdict, BasisVerdict::kInvalidated);  // S_I lacks the rho2^2 factor
+  // S_I lacks the rho2^2 factor; with no unknown, its "class" is S_I itself: certified
+  EXPECT_EQ(r.steps.front().verdict, BasisVerdict::kCannotExplain);
   ASSERT_TRUE(r.found);
   const Monomial rho2sq{{0, 2}};
   EXPECT_NE(std::find(r.basis.begin(), r.basis.end(), rho2sq), r.basis.end());
@@ -217,9 +235,39 @@ TEST(SelectBasis, Example1PaperRelaxationAtLooserBounds) {
       with_files(select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver), data.dir.file("sel"));
   check_steps(r);
   ASSERT_TRUE(r.found);
-  EXPECT_EQ(r.steps.front().verdict, BasisVerdict::kInvalidated);
+  EXPECT_EQ(r.steps.front().verdict, BasisVerdict::kCannotExplain);
   EXPECT_FALSE(r.basis.empty());
   EXPECT_LE(r.basis.size(), 2u);
+}
+
+TEST(SelectBasis, SolverInfeasibleWithoutAClassCertificateIsNotDecided) {
+  // The relaxation at S_I finds every grown basis infeasible at these tight
+  // bounds (a solver verdict). Over a box of half-width ||z|| per parameter
+  // around theta = 0 the first-order class bound cannot be positive (3
+  // leaves): no certificate, so "not decided", the solver's verdict and the
+  // reason in the detail. S_I itself (no unknown) is still certified.
+  const Example1Data data(30);
+  BasisSelectionOptions o = data.options(0.05, 0.01, "0.05", "0.01");
+  o.max_degree = 1;
+  o.klass.box_fraction = 1;
+  o.klass.max_leaves = 3;
+  auto solver = make_solver("csdp");
+  const BasisSelectionResult r =
+      with_files(select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver), data.dir.file("sel"));
+  check_steps(r);
+  ASSERT_EQ(r.steps.size(), 4u);
+  EXPECT_EQ(r.steps[0].verdict, BasisVerdict::kCannotExplain);
+  for (size_t i = 1; i < r.steps.size(); ++i) {
+    const BasisStep& s = r.steps[i];
+    EXPECT_EQ(s.verdict, BasisVerdict::kNotDecided) << s.detail;
+    EXPECT_NE(s.detail.find("the solver found"), std::string::npos) << s.detail;
+    EXPECT_NE(s.detail.find("no class certificate: "), std::string::npos) << s.detail;
+    ASSERT_TRUE(s.klass.has_value());
+    EXPECT_FALSE(s.klass->certified);
+    EXPECT_TRUE(s.class_certificate.empty());
+  }
+  EXPECT_FALSE(r.found);
+  EXPECT_FALSE(certified_cannot_explain(r));
 }
 
 }  // namespace
