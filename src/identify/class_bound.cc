@@ -20,6 +20,8 @@ struct TreeNode {
   int lower = -1, upper = -1;
   Vec<Rational> center, radius;
   ClassLeafBuild leaf;
+  Vec<Rational> cost_radius;  ///< the radii leaf.cost was computed for (an inherited leaf: its parent's)
+  int source = -1;            ///< the node whose dual point this leaf carries (−1: its own)
   Vec<double> p;          ///< the solve's parameters (free ones from the solver)
   double objective = 0;   ///< the solver's objective there
 };
@@ -55,6 +57,7 @@ std::string evaluate(const Search& q, TreeNode& node) {
   for (size_t k = 0; k < q.s.free.size(); ++k) node.p(q.s.free[k]) = sol.free_coefficients(static_cast<Eigen::Index>(k));
   node.objective = q.objective.value(sol.delta2, sol.dmax2);
   node.leaf = build_class_leaf(q.s, node.center, node.radius, sol, q.claim, q.fixed);
+  node.cost_radius = node.radius;
   return node.leaf.problem;
 }
 
@@ -66,9 +69,26 @@ int lowest_leaf(const std::vector<TreeNode>& tree) {
   return best;
 }
 
+/// A child keeps its parent's dual point when that bounds its box better: made
+/// at the parent's expansion point, seen from there the child's box is within
+/// the parent's (ρ'_i = |p_e,i − c_i| + ρ_i ≤ the parent's ρ_i), so the bound
+/// carries over and the tree's lowest leaf never falls when a leaf is split.
+void inherit(const TreeNode& parent, int parent_index, TreeNode& child) {
+  if (!(parent.leaf.bound > child.leaf.bound)) return;
+  child.leaf = parent.leaf;
+  child.cost_radius = parent.cost_radius;
+  child.source = parent.source >= 0 ? parent.source : parent_index;
+  if (child.leaf.node.expansion.size() == 0) child.leaf.node.expansion = parent.center;
+}
+
 /// Splits leaf `at` along its costliest boxed coordinate; false when nothing can be split.
 std::string split(const Search& q, std::vector<TreeNode>& tree, int at) {
-  const std::vector<double>& cost = tree[at].leaf.cost;
+  // each coordinate's cost scaled to this leaf's own half-width (an inherited cost was computed for the parent's)
+  std::vector<double> cost = tree[at].leaf.cost;
+  for (size_t j = 0; j < cost.size(); ++j) {
+    const long c = q.s.boxed[j];
+    if (tree[at].cost_radius(c) > 0) cost[j] *= nearest_double(tree[at].radius(c)) / nearest_double(tree[at].cost_radius(c));
+  }
   int k = -1;
   for (int j = 0; j < static_cast<int>(cost.size()); ++j)
     if (cost[j] > 0 && (k < 0 || cost[j] > cost[k])) k = j;
@@ -82,6 +102,8 @@ std::string split(const Search& q, std::vector<TreeNode>& tree, int at) {
   hi.center(i) += hi.radius(i);
   if (std::string why = evaluate(q, lo); !why.empty()) return why;
   if (std::string why = evaluate(q, hi); !why.empty()) return why;
+  inherit(tree[at], at, lo);
+  inherit(tree[at], at, hi);
   tree[at].split = i;
   tree[at].lower = static_cast<int>(tree.size());
   tree.push_back(std::move(lo));
@@ -90,7 +112,22 @@ std::string split(const Search& q, std::vector<TreeNode>& tree, int at) {
   return "";
 }
 
+/// The node whose dual point `at` carries.
+int source_of(const std::vector<TreeNode>& tree, int at) { return tree[at].source >= 0 ? tree[at].source : at; }
+
+/// True when every leaf below `at` carries the dual point of node `source`
+/// (then the subtree adds nothing to that point's own leaf).
+bool carries_only(const std::vector<TreeNode>& tree, int at, int source) {
+  if (tree[at].split < 0) return source_of(tree, at) == source;
+  return carries_only(tree, tree[at].lower, source) && carries_only(tree, tree[at].upper, source);
+}
+
+/// The tree in preorder, a subtree whose leaves all inherited its root's point collapsed to that leaf.
 void preorder(std::vector<TreeNode>& tree, int at, std::vector<ClassNode>& out) {
+  if (tree[at].split >= 0 && carries_only(tree, at, source_of(tree, at))) {
+    out.push_back(tree[at].leaf.node);
+    return;
+  }
   if (tree[at].split >= 0) {
     ClassNode n;
     n.split = tree[at].split;
@@ -221,8 +258,12 @@ ClassBoundResult class_lower_bound(const LpvModel<Rational>& model_q, const LpvM
   const TreeNode& low = tree[lowest_leaf(tree)];
   out.best_p = low.p;
   out.best_objective = low.objective;
-  out.leaves = static_cast<int>((tree.size() + 1) / 2);
-  return done(certify_tree(model_q, exp_q, q, certify, o, tree, out));
+  std::string why = certify_tree(model_q, exp_q, q, certify, o, tree, out);
+  if (out.certificate) {
+    out.leaves = 0;
+    for (const ClassNode& n : out.certificate->region.nodes) out.leaves += n.split < 0 ? 1 : 0;
+  }
+  return done(why);
 }
 
 }  // namespace lpvid

@@ -58,7 +58,7 @@
 ///             "center": [P numbers], "radius": [P numbers],  // the box of the others
 ///             "horizon": L,                                  // n − (samples where z is 0 for every θ)
 ///             "nodes": [preorder tree: {"split": i} halves the box in coordinate i,
-///                       {"leaf": {"epsilon": ε > 0, "horizon", "sigma", "g", "taps", "t", "mu",
+///                       {"leaf": {"epsilon": ε > 0, "expansion": [P numbers, optional], "horizon", "sigma", "g", "taps", "t", "mu",
 ///                                 "u_exponent", "x", "u_floor"}}]}
 ///
 /// Every number is exact text (JSON number or string with a decimal or p/q).
@@ -127,6 +127,10 @@ struct ClassNode {
   long split = -1;  ///< ≥ 0: a split; −1: a leaf
   DualPoint dual;
   Rational epsilon;
+  /// The point p_e the leaf's dual point was made at (empty: the box's
+  /// centre). The penalties then use ρ'_i = |p_e,i − c_i| + ρ_i, so an
+  /// ancestor's dual point keeps its bound on a child's box.
+  Vec<Rational> expansion;
 };
 
 /// The region of θ a class claim covers (docs/class_lower_bound.md): the

@@ -54,19 +54,35 @@ std::string path_leaf_terms(const DualPoint& d, const Mat<Rational>& z, const Ma
   return "";
 }
 
+/// ρ'_i = |p_e,i − c_i| + ρ_i on the boxed coordinates: the box seen from p_e.
+Vec<Rational> expansion_radius(const ClassSignals& s, const Vec<Rational>& point, const Vec<Rational>& center,
+                               const Vec<Rational>& radius) {
+  Vec<Rational> reach = radius;
+  for (const long i : s.boxed) {
+    const Rational d = point(i) - center(i);
+    reach(i) += d < 0 ? Rational(-d) : d;
+  }
+  return reach;
+}
+
 LeafValue leaf_value(const Certificate& c, const ClassSignals& s, const ClassNode& leaf, const Vec<Rational>& center,
                      const Vec<Rational>& radius) {
   const Eigen::Index ny = c.model.ny, nz = c.model.nz();
   if (leaf.dual.horizon != s.horizon) return {"its horizon is not the class's", {}};
   if (leaf.dual.g.rows() != s.a.n) return {"its g does not have one row per sample", {}};
   if (!(leaf.dual.sigma > 0)) return {"its sigma is not > 0", {}};
-  const Mat<Rational> z = class_z(s, center), r = class_r(s, center);
+  // The expansion point (the box's centre unless stated) and the radii seen from it.
+  const bool moved = leaf.expansion.size() > 0;
+  if (moved && leaf.expansion.size() != center.size()) return {"its expansion point does not have one number per parameter", {}};
+  const Vec<Rational>& point = moved ? leaf.expansion : center;
+  const Vec<Rational> reach = moved ? expansion_radius(s, point, center, radius) : radius;
+  const Mat<Rational> z = class_z(s, point), r = class_r(s, point);
   const Mat<Rational> g = project_out_free(leaf.dual.g, s.free_columns);
   DualTerms<Rational> terms;
   const std::string why = c.form == CertificateForm::kDualDeltaPath ? path_leaf_terms(leaf.dual, z, r, g, ny, nz, terms)
                                                                     : dense_leaf_terms(leaf.dual, z, r, g, ny, nz, terms);
   if (!why.empty()) return {why, {}};
-  const ClassPenalty pen = class_penalty(s, radius, g);
+  const ClassPenalty pen = class_penalty(s, reach, g);
   if (!pen.problem.empty()) return {pen.problem, {}};
   return {"", dual_bound(leaf_terms(terms, pen, leaf.epsilon), c.objective, c.delta2, c.dmax2, c.lambda)};
 }

@@ -64,9 +64,17 @@ size_t parse_tree(const JsonNode& nodes, size_t at, long depth, const std::strin
     return parse_tree(nodes, next, depth + 1, file, ny, nz, form, r);
   }
   const JsonNode& leaf = member(n, "leaf", file, where);
-  node.dual = parse_dual_point_object(leaf, file, where + ".leaf", ny, nz, form, {"epsilon"});
+  node.dual = parse_dual_point_object(leaf, file, where + ".leaf", ny, nz, form, {"epsilon", "expansion"});
   node.epsilon = number_from_json<Rational>(member(leaf, "epsilon", file, where + ".leaf"), file, where + ".leaf.epsilon");
   if (!(node.epsilon > 0)) throw_input_error(file, leaf.line, where + ".leaf.epsilon", "must be > 0");
+  if (const JsonNode* e = leaf.find("expansion")) {
+    const long P = static_cast<long>(r.parameters.size());
+    if (!e->is_array() || static_cast<long>(e->items.size()) != P)
+      throw_input_error(file, e->line, where + ".leaf.expansion", "expected " + std::to_string(P) + " numbers (one per parameter)");
+    node.expansion.resize(P);
+    for (long i = 0; i < P; ++i)
+      node.expansion(i) = number_from_json<Rational>(e->items[static_cast<size_t>(i)], file, where + ".leaf.expansion");
+  }
   r.nodes.push_back(std::move(node));
   return at + 1;
 }
@@ -121,6 +129,11 @@ nlohmann::ordered_json class_region_json(const ClassRegion& r, CertificateForm f
     }
     nlohmann::ordered_json leaf = dual_point_json(n.dual, form);
     leaf["epsilon"] = rational_to_json(n.epsilon);
+    if (n.expansion.size() > 0) {
+      nlohmann::ordered_json e = nlohmann::ordered_json::array();
+      for (Eigen::Index i = 0; i < n.expansion.size(); ++i) e.push_back(rational_to_json(n.expansion(i)));
+      leaf["expansion"] = e;
+    }
     nodes.push_back({{"leaf", leaf}});
   }
   j["nodes"] = nodes;
