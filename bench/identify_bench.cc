@@ -24,6 +24,7 @@
 #include "data/data_reference.h"
 #include "identify/identify.h"
 #include "model/simulate.h"
+#include "two_state_model.h"
 
 using namespace lpvid;
 
@@ -36,35 +37,9 @@ Rational dec(double x) { return round_to_digits(x, 6); }
 /// in C; correction basis {1, rho1}.
 void make_case(int m, int n, LpvModel<Rational>* initial, Experiment<Rational>* exp) {
   RandomStream rng(7 + static_cast<uint64_t>(m) * 1000 + static_cast<uint64_t>(n));
-  LpvModel<Rational> t;
-  t.nx = 2;
-  t.nu = t.ny = m;
-  t.scheduling = {"rho1"};
-  for (int i = 0; i < m; ++i) {
-    t.columns.u.push_back("u" + std::to_string(i + 1));
-    t.columns.y.push_back("y" + std::to_string(i + 1));
-  }
-  t.columns.rho = {"rho1"};
-  Mat<Rational> A(2, 2), A1(2, 2), B(2, m), C(m, 2), C1(m, 2);
-  A << dec(0), dec(1), dec(-0.5), dec(1.2);
-  A1 << dec(0), dec(0), dec(0.1), dec(0);
-  for (int i = 0; i < m; ++i) {
-    B(0, i) = dec(i == 0 ? 0.0 : 0.5);
-    B(1, i) = dec(1.0);
-    C(i, 0) = dec(1.0);
-    C(i, 1) = dec(0.5 * (i + 1));
-    C1(i, 0) = dec(0.3);
-    C1(i, 1) = dec(0.0);
-  }
-  t.A = ParamMatrix<Rational>(2, 2);
-  t.A.add(Monomial{{0}}, A);
-  t.A.add(Monomial{{1}}, A1);
-  t.B = ParamMatrix<Rational>(2, m);
-  t.B.add(Monomial{{0}}, B);
-  t.C = ParamMatrix<Rational>(m, 2);
-  t.C.add(Monomial{{0}}, C);
-  t.D = ParamMatrix<Rational>(m, m);
-  t.x0 = Vec<Rational>::Zero(2);
+  LpvModel<Rational> t = bench::two_state_model(m);
+  Mat<Rational> C1 = Mat<Rational>::Zero(m, 2);
+  for (int i = 0; i < m; ++i) C1(i, 0) = dec(0.3);
   *initial = t;
   initial->correction.basis = {Monomial{{0}}, Monomial{{1}}};
   initial->correction.A.assign(2, Mat<Rational>::Zero(2, 2));
