@@ -21,7 +21,8 @@ namespace {
 
 using namespace gen;
 
-IdentCaseOptions member_case_options(bool additive_only) {
+/// Cases from a known member of the class (either structure; cases_with picks one).
+IdentCaseOptions member_case_options() {
   IdentCaseOptions o;
   o.model.min_rho = 1;
   o.model.max_rho = 2;
@@ -31,7 +32,6 @@ IdentCaseOptions member_case_options(bool additive_only) {
   o.true_correction = true;
   o.min_n = 10;
   o.max_n = 24;
-  (void)additive_only;
   return o;
 }
 
@@ -71,7 +71,7 @@ ClassRun run_class(const IdentCase& c, const BoundObjective& objective, const Ve
 // lower end on d_max² at that δ may exceed d_max² (the truth is in the region:
 // the box is centred on it, or the class is whole).
 RC_GTEST_PROP(ClassBound, NeverAboveTheObjectiveOfTheTrueTheta, ()) {
-  const IdentCase c = *ident_case(member_case_options(false));
+  const IdentCase c = *ident_case(member_case_options());
   const Unknowns u{true, false, false};
   const Vec<double> truth = truth_parameters(c, u, c.exp);
   RC_PRE(truth.size() > 0);
@@ -120,7 +120,7 @@ struct Identified {
 // never above the found θ's certified upper end (both are exact numbers about
 // the same objective; the found θ is in the region: the box is centred on it).
 RC_GTEST_PROP(ClassBound, NeverAboveTheFoundThetasCertifiedUpperEnd, ()) {
-  const IdentCase c = *ident_case(member_case_options(false));
+  const IdentCase c = *ident_case(member_case_options());
   const double lambda = *rc::gen::element(0.5, 0.1, 0.9);
   ScratchDir dir("class-found");
   Identified run(c, dir, lambda, true);
@@ -139,7 +139,7 @@ RC_GTEST_PROP(ClassBound, NeverAboveTheFoundThetasCertifiedUpperEnd, ()) {
 std::vector<IdentCase> cases_with(bool additive, int count) {
   std::vector<IdentCase> out;
   for (uint64_t seed = 1; seed < 400 && static_cast<int>(out.size()) < count; ++seed) {
-    const IdentCase c = sample(ident_case(member_case_options(additive)), seed);
+    const IdentCase c = sample(ident_case(member_case_options()), seed);
     if ((c.model.uncertainty.structure == UncertaintyStructure::kAdditive) == additive) out.push_back(c);
   }
   return out;
