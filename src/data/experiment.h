@@ -23,6 +23,15 @@ template <typename T>
 struct Experiment {
   std::string source;  ///< file name (for messages and reports)
   Mat<T> u, y, rho;
+  /// Several records (experiments) of one system stacked row-wise
+  /// (toeplitz/record_segments.h): record k is the rows [start_k, start_k +
+  /// records[k]). Empty: one record of all rows. The model is simulated
+  /// record by record, each from its own initial state, and Δ acts on each
+  /// record from rest (docs/several_records.md).
+  std::vector<Eigen::Index> records;
+  /// Record k's own initial state (an empty vector: the model's x0). Empty
+  /// list: the model's x0 for every record.
+  std::vector<Vec<T>> record_x0;
   Eigen::Index n() const { return u.rows(); }
   Eigen::Index nu() const { return u.cols(); }
   Eigen::Index ny() const { return y.cols(); }
@@ -37,6 +46,8 @@ inline Experiment<double> nearest_double(const Experiment<Rational>& e) {
   d.u = nearest_double(e.u);
   d.y = nearest_double(e.y);
   d.rho = nearest_double(e.rho);
+  d.records = e.records;
+  for (const Vec<Rational>& x0 : e.record_x0) d.record_x0.push_back(nearest_double(Mat<Rational>(x0)).col(0));
   return d;
 }
 

@@ -1,5 +1,8 @@
 #include "data/experiment_builder.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "data/csv_reader.h"
@@ -96,6 +99,56 @@ Experiment<T> select_rows(const Experiment<T>& exp, Eigen::Index begin, Eigen::I
   out.u = exp.u.middleRows(begin, len);
   out.y = exp.y.middleRows(begin, len);
   out.rho = exp.rho.middleRows(begin, len);
+  if (exp.records.empty() && exp.record_x0.empty()) return out;
+  // Stacked records: the parts of the records inside the window stay records;
+  // a record keeps its own x0 only when the window starts at its first row.
+  const std::vector<Eigen::Index> lengths = exp.records.empty() ? std::vector<Eigen::Index>{exp.n()} : exp.records;
+  Eigen::Index first = 0;
+  bool any_x0 = false;
+  std::vector<Vec<T>> x0;
+  for (size_t k = 0; k < lengths.size(); ++k) {
+    const Eigen::Index b = std::max(first, begin), e = std::min(first + lengths[k], end);
+    if (e > b) {
+      out.records.push_back(e - b);
+      const bool own = b == first && k < exp.record_x0.size() && exp.record_x0[k].size() != 0;
+      x0.push_back(own ? exp.record_x0[k] : Vec<T>());
+      any_x0 = any_x0 || own;
+    }
+    first += lengths[k];
+  }
+  if (any_x0) out.record_x0 = x0;
+  if (out.records.size() <= 1) out.records.clear();
+  return out;
+}
+
+template <typename T>
+Experiment<T> stack_records(const std::vector<Experiment<T>>& parts) {
+  if (parts.empty()) throw std::invalid_argument("stack_records: no records");
+  Experiment<T> out;
+  Eigen::Index n = 0;
+  for (const Experiment<T>& p : parts) {
+    if (p.nu() != parts[0].nu() || p.ny() != parts[0].ny() || p.n_rho() != parts[0].n_rho())
+      throw_input_error(p.source, 0, "", "this record has " + std::to_string(p.nu()) + " inputs, " + std::to_string(p.ny()) +
+                                             " outputs and " + std::to_string(p.n_rho()) + " scheduling columns; " +
+                                             parts[0].source + " has " + std::to_string(parts[0].nu()) + ", " +
+                                             std::to_string(parts[0].ny()) + " and " + std::to_string(parts[0].n_rho()));
+    if (p.records.size() > 1) throw std::invalid_argument("stack_records: a part is itself stacked");
+    n += p.n();
+  }
+  out.source = parts[0].source;
+  out.u = Mat<T>(n, parts[0].nu());
+  out.y = Mat<T>(n, parts[0].ny());
+  out.rho = Mat<T>(n, parts[0].n_rho());
+  Eigen::Index first = 0;
+  for (const Experiment<T>& p : parts) {
+    out.u.middleRows(first, p.n()) = p.u;
+    out.y.middleRows(first, p.n()) = p.y;
+    out.rho.middleRows(first, p.n()) = p.rho;
+    out.records.push_back(p.n());
+    if (first > 0) out.source += ", " + p.source;
+    first += p.n();
+  }
+  if (out.records.size() == 1) out.records.clear();
   return out;
 }
 
@@ -103,5 +156,7 @@ template Experiment<double> make_experiment<double>(const TextTable&, const Colu
 template Experiment<Rational> make_experiment<Rational>(const TextTable&, const ColumnMap&);
 template Experiment<double> select_rows<double>(const Experiment<double>&, Eigen::Index, Eigen::Index);
 template Experiment<Rational> select_rows<Rational>(const Experiment<Rational>&, Eigen::Index, Eigen::Index);
+template Experiment<double> stack_records<double>(const std::vector<Experiment<double>>&);
+template Experiment<Rational> stack_records<Rational>(const std::vector<Experiment<Rational>>&);
 
 }  // namespace lpvid

@@ -5,6 +5,7 @@
 /// "0.1" is 1/10).
 
 #include <string>
+#include <vector>
 
 #include "data/experiment.h"
 #include "data/column_map.h"
@@ -26,9 +27,15 @@ Experiment<T> make_experiment(const TextTable& table, const ColumnMap& columns);
 
 /// Rows [begin, end) of an experiment (0 <= begin <= end <= n), e.g. an
 /// estimation/validation split. Throws InputError naming the source if the
-/// range is out of bounds.
+/// range is out of bounds. Stacked records keep their parts inside the window.
 template <typename T>
 Experiment<T> select_rows(const Experiment<T>& exp, Eigen::Index begin, Eigen::Index end);
+
+/// Several experiments of one system (same columns) stacked row-wise as
+/// records (data/experiment.h: records); one part: that experiment. The
+/// source names them all. Throws InputError when the columns differ.
+template <typename T>
+Experiment<T> stack_records(const std::vector<Experiment<T>>& parts);
 
 extern template Experiment<double> make_experiment<double>(const TextTable&, const ColumnMap&);
 extern template Experiment<Rational> make_experiment<Rational>(const TextTable&, const ColumnMap&);
@@ -36,4 +43,9 @@ extern template Experiment<double> select_rows<double>(const Experiment<double>&
 extern template Experiment<Rational> select_rows<Rational>(const Experiment<Rational>&, Eigen::Index,
                                                            Eigen::Index);
 
+}  // namespace lpvid
+
+namespace lpvid {
+extern template Experiment<double> stack_records<double>(const std::vector<Experiment<double>>&);
+extern template Experiment<Rational> stack_records<Rational>(const std::vector<Experiment<Rational>>&);
 }  // namespace lpvid

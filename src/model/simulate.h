@@ -245,7 +245,7 @@ Experiment<T> with_state_columns(const LpvModel<T>& model, const Experiment<T>& 
 }  // namespace detail
 
 template <typename T>
-Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp_in) {
+Simulation<T> simulate_one_record(const LpvModel<T>& model, const Experiment<T>& exp_in) {
   const SystemMatrices<T> s = system_matrices(model);
   const Experiment<T> exp = detail::with_state_columns(model, exp_in);  // may omit "@x<i>" columns
   check_experiment(model, exp);
@@ -277,6 +277,60 @@ Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp_in) {
     }
   }
   sim.output = model.statics.output.apply(Mat<T>(sim.yhat + sim.offset));
+  return sim;
+}
+
+/// Record k of a stacked experiment (data/experiment.h) as an experiment of
+/// its own (no record list).
+template <typename T>
+Experiment<T> record_of(const Experiment<T>& exp, Eigen::Index first, Eigen::Index rows) {
+  Experiment<T> e;
+  e.source = exp.source;
+  e.u = exp.u.middleRows(first, rows);
+  e.y = exp.y.middleRows(first, rows);
+  e.rho = exp.rho.middleRows(first, rows);
+  return e;
+}
+
+/// Simulates the model along the experiment: one record as
+/// simulate_one_record; several records (exp.records) one after another,
+/// each from its own initial state (exp.record_x0[k] when given, else
+/// model.x0), with the model's input delays starting afresh in each record;
+/// the trajectories are stacked like the records.
+template <typename T>
+Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp) {
+  if (exp.records.size() <= 1 && exp.record_x0.empty()) return simulate_one_record(model, exp);
+  const std::vector<Eigen::Index> lengths = exp.records.empty() ? std::vector<Eigen::Index>{exp.n()} : exp.records;
+  if (!exp.record_x0.empty() && exp.record_x0.size() != lengths.size())
+    throw std::invalid_argument(std::to_string(exp.record_x0.size()) + " initial states for " +
+                                std::to_string(lengths.size()) + " records");
+  Eigen::Index total = 0;
+  for (const Eigen::Index l : lengths) total += l;
+  if (total != exp.n())
+    throw std::invalid_argument("the records' lengths add up to " + std::to_string(total) + ", not the " +
+                                std::to_string(exp.n()) + " rows of the data");
+  Simulation<T> sim;
+  Eigen::Index first = 0;
+  for (size_t k = 0; k < lengths.size(); ++k) {
+    LpvModel<T> mk = model;
+    if (!exp.record_x0.empty() && exp.record_x0[k].size() != 0) mk.x0 = exp.record_x0[k];
+    const Simulation<T> s = simulate_one_record(mk, record_of(exp, first, lengths[k]));
+    if (k == 0) {
+      sim.x = Mat<T>(exp.n(), s.x.cols());
+      sim.yhat = Mat<T>(exp.n(), s.yhat.cols());
+      sim.z = Mat<T>(exp.n(), s.z.cols());
+      sim.offset = Mat<T>(exp.n(), s.offset.cols());
+      sim.output = Mat<T>(exp.n(), s.output.cols());
+      sim.rho = Mat<T>(exp.n(), s.rho.cols());
+    }
+    sim.x.middleRows(first, lengths[k]) = s.x;
+    sim.yhat.middleRows(first, lengths[k]) = s.yhat;
+    sim.z.middleRows(first, lengths[k]) = s.z;
+    sim.offset.middleRows(first, lengths[k]) = s.offset;
+    sim.output.middleRows(first, lengths[k]) = s.output;
+    sim.rho.middleRows(first, lengths[k]) = s.rho;
+    first += lengths[k];
+  }
   return sim;
 }
 

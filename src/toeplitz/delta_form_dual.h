@@ -32,6 +32,7 @@
 #include <algorithm>
 
 #include "core/scalar.h"
+#include "toeplitz/record_segments.h"
 
 namespace lpvid {
 
@@ -40,15 +41,7 @@ namespace lpvid {
 /// n × nz. Returns L × (ny·nz), row l = C_l row-major.
 template <typename T>
 Mat<T> fir_adjoint(const Mat<T>& g, const Mat<T>& z, Eigen::Index horizon) {
-  const Eigen::Index n = z.rows(), nz = z.cols(), ny = g.cols(), m = n - horizon;
-  Mat<T> c = Mat<T>::Zero(horizon, ny * nz);
-  for (Eigen::Index l = 0; l < horizon; ++l)
-    for (Eigen::Index k = m + l; k < n; ++k)
-      for (Eigen::Index i = 0; i < ny; ++i) {
-        if (g(k, i) == T(0)) continue;
-        for (Eigen::Index j = 0; j < nz; ++j) c(l, i * nz + j) += g(k, i) * z(k - l, j);
-      }
-  return c;
+  return fir_adjoint_records(g, z, horizon, RecordLengths{});
 }
 
 /// Ω_l(W) = Σ_{b=0}^{L−1−l} W_{(b+l), b} for l = 0 … L−1, W the upper-right

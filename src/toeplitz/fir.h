@@ -4,6 +4,7 @@
 /// zero samples that causality pins (SPEC §9). Templated on the scalar.
 
 #include "core/scalar.h"
+#include "toeplitz/record_segments.h"
 
 namespace lpvid {
 
@@ -25,18 +26,10 @@ Eigen::Index leading_zero_samples(const Mat<T>& z) {
 /// k ≥ m = n − L, w_k = 0 for k < m. `taps` is K × (ny·nz) (K ≤ L; taps
 /// h_K … h_{L−1} are zero), row l = h_l row-major. Returns n × ny. Callers
 /// check that z_k = 0 for k < m, otherwise this is not the convolution.
+/// (One record; several: apply_fir_records of toeplitz/record_segments.h.)
 template <typename T>
 Mat<T> apply_fir(const Mat<T>& taps, const Mat<T>& z, Eigen::Index ny, Eigen::Index horizon) {
-  const Eigen::Index n = z.rows(), nz = z.cols(), K = taps.rows(), m = n - horizon;
-  Mat<T> w = Mat<T>::Zero(n, ny);
-  for (Eigen::Index k = m; k < n; ++k)
-    for (Eigen::Index l = 0; l <= k - m && l < K; ++l)
-      for (Eigen::Index i = 0; i < ny; ++i) {
-        T s(0);
-        for (Eigen::Index j = 0; j < nz; ++j) s += taps(l, i * nz + j) * z(k - l, j);
-        w(k, i) += s;
-      }
-  return w;
+  return apply_fir_records(taps, z, ny, horizon, RecordLengths{});
 }
 
 }  // namespace lpvid

@@ -47,16 +47,23 @@ PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>&
 CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c);
 }  // namespace
 
-std::string certificate_data_path(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+namespace {
+/// Where a recorded data file is: relative to the certificate's folder, or,
+/// moved together with its data, the file of the same name beside the certificate.
+std::string recorded_data_path(const std::string& file, const std::string& certificate_dir) {
   namespace fs = std::filesystem;
-  if (!data_file.empty()) return data_file;
-  fs::path recorded(c.data_file);
+  fs::path recorded(file);
   if (recorded.is_relative()) recorded = fs::path(certificate_dir) / recorded;
   std::error_code ec;
   if (fs::exists(recorded, ec)) return recorded.string();
-  // moved together with its data: the file of the same name beside the certificate
-  const fs::path beside = fs::path(certificate_dir) / fs::path(c.data_file).filename();
+  const fs::path beside = fs::path(certificate_dir) / fs::path(file).filename();
   return fs::exists(beside, ec) ? beside.string() : recorded.string();
+}
+}  // namespace
+
+std::string certificate_data_path(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+  if (!data_file.empty()) return data_file;
+  return recorded_data_path(c.data_file, certificate_dir);
 }
 
 namespace {
@@ -69,30 +76,79 @@ struct CertificateData {
   std::string path;
   Experiment<Rational> exp;
 };
-CertificateData certificate_data(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+CertificateData reference_data(const DataReference& ref, const std::string& path, const ColumnMap& columns,
+                               const std::string& what) {
   CertificateData out;
-  out.path = certificate_data_path(c, certificate_dir, data_file);
+  out.path = path;
   const std::string bytes = read_text_file(out.path);
   const std::string hash = sha256_hex(bytes);
-  if (hash != c.data_sha256) {
-    out.invalid = "data file '" + out.path + "' has changed: sha256 " + hash + " differs from the certificate's " + c.data_sha256;
+  if (hash != ref.sha256) {
+    out.invalid = "data file '" + out.path + "' has changed: sha256 " + hash + " differs from the certificate's " + ref.sha256;
     return out;
   }
-  const TextTable table = c.data_names.empty() ? parse_table(bytes, out.path) : parse_table(bytes, out.path, c.data_names);
-  out.exp = make_experiment<Rational>(table, c.model.columns);
-  if (c.row_end >= 0) {
-    if (c.row_end > out.exp.n()) {
-      out.invalid = "data.rows ends at " + std::to_string(c.row_end) + " but the data has " + std::to_string(out.exp.n()) + " rows";
+  const TextTable table = ref.names.empty() ? parse_table(bytes, out.path) : parse_table(bytes, out.path, ref.names);
+  out.exp = make_experiment<Rational>(table, columns);
+  if (ref.row_end >= 0) {
+    if (ref.row_end > out.exp.n()) {
+      out.invalid = what + ".rows ends at " + std::to_string(ref.row_end) + " but the data has " + std::to_string(out.exp.n()) + " rows";
       return out;
     }
-    out.exp = select_rows(out.exp, c.row_begin, c.row_end);
+    out.exp = select_rows(out.exp, ref.row_begin, ref.row_end);
   }
   return out;
+}
+
+/// Several records: each read and checked like "data", then stacked
+/// (data/experiment.h: records, record_x0).
+CertificateData records_data(const Certificate& c, const std::string& certificate_dir) {
+  CertificateData out;
+  std::vector<Experiment<Rational>> parts;
+  for (size_t k = 0; k < c.records.size(); ++k) {
+    const CertificateRecord& r = c.records[k];
+    const std::string what = "records[" + std::to_string(k) + "]";
+    CertificateData one = reference_data(r.data, recorded_data_path(r.data.file, certificate_dir), c.model.columns, what);
+    if (!one.invalid.empty()) return one;
+    if (r.x0.size() != 0 && r.x0.size() != c.model.nx) {
+      out.invalid = what + ".x0 has " + std::to_string(r.x0.size()) + " entries, the model has " + std::to_string(c.model.nx) + " states";
+      return out;
+    }
+    out.path += (k == 0 ? "" : ", ") + one.path;
+    parts.push_back(std::move(one.exp));
+  }
+  out.exp = stack_records(parts);
+  for (const CertificateRecord& r : c.records) out.exp.record_x0.push_back(r.x0);
+  return out;
+}
+
+CertificateData certificate_data(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
+  if (!c.records.empty()) {
+    if (!data_file.empty()) {
+      CertificateData out;
+      out.invalid = "--data names one file, but the certificate names " + std::to_string(c.records.size()) + " records";
+      return out;
+    }
+    return records_data(c, certificate_dir);
+  }
+  DataReference ref;
+  ref.sha256 = c.data_sha256;
+  ref.names = c.data_names;
+  ref.row_begin = c.row_begin;
+  ref.row_end = c.row_end;
+  return reference_data(ref, certificate_data_path(c, certificate_dir, data_file), c.model.columns, "data");
 }
 
 /// Steps 3–6 on the exact rows of the certificate's window; `details` starts
 /// with what the caller knows about the data's origin.
 CertificateVerdict check_claim(const Certificate& c, Experiment<Rational> exp, std::ostringstream& details) {
+  if (several_records(exp.records)) {
+    details << exp.records.size() << " records under one Delta (rows";
+    for (const Eigen::Index l : exp.records) details << " " << l;
+    details << "); ";
+    // The one-record Gram forms and the class claims are not defined across records here.
+    if (is_class_claim(c.claim)) return invalid_verdict("class claims are about one record");
+    if (c.mode != ToeplitzMode::kSignal) return invalid_verdict("several records need toeplitz mode \"signal\"");
+    if (c.form == CertificateForm::kW) return invalid_verdict("several records need form \"delta\" (one Delta for every record)");
+  }
   if (is_class_claim(c.claim)) {
     details << "n = " << exp.n() << ", ny = " << c.model.ny << ", nz = " << c.model.nz();
     try {
@@ -173,13 +229,20 @@ PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>&
   if (c.form == CertificateForm::kDelta) {
     if (c.mode != ToeplitzMode::kSignal) return malformed("form \"delta\" is only valid with toeplitz_mode \"signal\"");
     const Eigen::Index L = c.horizon, K = c.taps.rows();
-    if (L > n) return malformed("delta_horizon " + std::to_string(L) + " exceeds the " + std::to_string(n) + " samples");
-    for (Eigen::Index k = 0; k < n - L; ++k)
-      for (Eigen::Index j = 0; j < nz; ++j)
-        if (sim.z(k, j) != 0)
-          return fails("z_" + std::to_string(k) + " is not zero but precedes the delta horizon of " + std::to_string(L) +
-                       " samples (the horizon must cover every sample from the first non-zero z)");
-    w = apply_fir(c.taps, sim.z, ny, L);
+    const RecordLengths lengths = record_lengths_of(exp.records, n);
+    const std::vector<Eigen::Index> start = record_starts(lengths);
+    Eigen::Index longest = 0;
+    for (const Eigen::Index l : lengths) longest = std::max(longest, l);
+    if (L > longest) return malformed("delta_horizon " + std::to_string(L) + " exceeds the " + std::to_string(longest) + " samples");
+    // Δ acts on each record from rest: each record's z must vanish before its last L samples.
+    for (size_t r = 0; r < lengths.size(); ++r)
+      for (Eigen::Index k = 0; k < lengths[r] - L; ++k)
+        for (Eigen::Index j = 0; j < nz; ++j)
+          if (sim.z(start[r] + k, j) != 0)
+            return fails("z_" + std::to_string(k) + (lengths.size() > 1 ? " of record " + std::to_string(r + 1) : "") +
+                         " is not zero but precedes the delta horizon of " + std::to_string(L) +
+                         " samples (the horizon must cover every sample from the first non-zero z)");
+    w = apply_fir_records(c.taps, sim.z, ny, L, exp.records);
     details << ", form delta with " << K << " taps on a horizon of " << L << " samples";
   } else {
     if (c.w.rows() != n) return malformed("w has " + std::to_string(c.w.rows()) + " rows for " + std::to_string(n) + " samples");

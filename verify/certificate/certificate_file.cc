@@ -90,7 +90,7 @@ void parse_class_claim(const JsonNode& root, const std::string& file, const std:
 /// The top level: known keys only, the format, the claim (returned) and the noise normalisation.
 std::string parse_header(const JsonNode& root, const std::string& file) {
   if (!root.is_object()) throw_input_error(file, root.line, "", "a certificate is a JSON object");
-  static const std::vector<std::string> allowed = {"format", "claim", "data", "model", "toeplitz_mode",
+  static const std::vector<std::string> allowed = {"format", "claim", "data", "records", "model", "toeplitz_mode",
                                                    "noise_normalisation", "delta2", "dmax2", "form",
                                                    "delta_taps", "delta_horizon", "w", "info",
                                                    "objective", "lambda", "lower_bound", "dual", "class"};
@@ -110,26 +110,60 @@ std::string parse_header(const JsonNode& root, const std::string& file) {
   return claim;
 }
 
-/// "data": file, sha256, names, rows.
-void parse_data_reference(const JsonNode& root, const std::string& file, Certificate& c) {
-  const JsonNode& data = member(root, "data", file, "");
-  if (!data.is_object()) throw_input_error(file, data.line, "data", "expected an object");
-  c.data_file = string_member(data, "file", file, "data");
-  c.data_sha256 = string_member(data, "sha256", file, "data");
+/// One data reference object ("data", or an entry of "records" at `path`): file, sha256, names, rows.
+DataReference parse_reference_object(const JsonNode& data, const std::string& file, const std::string& path) {
+  if (!data.is_object()) throw_input_error(file, data.line, path, "expected an object");
+  DataReference d;
+  d.file = string_member(data, "file", file, path);
+  d.sha256 = string_member(data, "sha256", file, path);
   if (const JsonNode* names = data.find("names")) {
-    if (!names->is_array()) throw_input_error(file, names->line, "data.names", "expected a list of names");
+    if (!names->is_array()) throw_input_error(file, names->line, path + ".names", "expected a list of names");
     for (const auto& n : names->items) {
-      if (!n.is_string()) throw_input_error(file, n.line, "data.names", "expected strings");
-      c.data_names.push_back(n.text);
+      if (!n.is_string()) throw_input_error(file, n.line, path + ".names", "expected strings");
+      d.names.push_back(n.text);
     }
   }
   if (const JsonNode* rows = data.find("rows")) {
     if (!rows->is_array() || rows->items.size() != 2)
-      throw_input_error(file, rows->line, "data.rows", "expected [begin, end]");
-    c.row_begin = integer_member(rows->items[0], file, "data.rows[0]");
-    c.row_end = integer_member(rows->items[1], file, "data.rows[1]");
-    if (c.row_end <= c.row_begin) throw_input_error(file, rows->line, "data.rows", "empty window");
+      throw_input_error(file, rows->line, path + ".rows", "expected [begin, end]");
+    d.row_begin = integer_member(rows->items[0], file, path + ".rows[0]");
+    d.row_end = integer_member(rows->items[1], file, path + ".rows[1]");
+    if (d.row_end <= d.row_begin) throw_input_error(file, rows->line, path + ".rows", "empty window");
   }
+  return d;
+}
+
+/// "records": two or more {file, sha256, names, rows, x0} (several records under one Δ).
+void parse_records(const JsonNode& list, const std::string& file, Certificate& c) {
+  if (!list.is_array() || list.items.size() < 2)
+    throw_input_error(file, list.line, "records", "expected a list of two or more records (one record: \"data\")");
+  for (size_t k = 0; k < list.items.size(); ++k) {
+    const std::string path = "records[" + std::to_string(k) + "]";
+    const JsonNode& item = list.items[k];
+    CertificateRecord r;
+    r.data = parse_reference_object(item, file, path);
+    for (const auto& [key, value] : item.members)
+      if (key != "file" && key != "sha256" && key != "names" && key != "rows" && key != "x0")
+        throw_input_error(file, value.line, path + "." + key, "unknown key in a record");
+    if (const JsonNode* x0 = item.find("x0")) {
+      if (!x0->is_array()) throw_input_error(file, x0->line, path + ".x0", "expected a list of numbers");
+      r.x0 = Vec<Rational>(static_cast<Eigen::Index>(x0->items.size()));
+      for (size_t i = 0; i < x0->items.size(); ++i)
+        r.x0(static_cast<Eigen::Index>(i)) = number_from_json<Rational>(x0->items[i], file, path + ".x0[" + std::to_string(i) + "]");
+    }
+    c.records.push_back(r);
+  }
+}
+
+/// "data" (one record) or "records" (several), exactly one of them.
+void parse_data_reference(const JsonNode& root, const std::string& file, Certificate& c) {
+  const JsonNode* records = root.find("records");
+  if (records != nullptr) {
+    if (root.find("data") != nullptr) throw_input_error(file, records->line, "records", "give either \"data\" or \"records\", not both");
+    parse_records(*records, file, c);
+    return;
+  }
+  set_data_reference(c, parse_reference_object(member(root, "data", file, ""), file, "data"));
 }
 
 /// A primal point ("consistent", "not_a_witness"): δ², d_max² and the Δ taps or w.
@@ -203,6 +237,16 @@ Certificate read_certificate(const std::string& path) { return parse_certificate
 
 namespace {
 
+/// A data reference as JSON ("data" or an entry of "records").
+nlohmann::ordered_json reference_json(const DataReference& d) {
+  nlohmann::ordered_json data;
+  data["file"] = d.file;
+  data["sha256"] = d.sha256;
+  if (!d.names.empty()) data["names"] = d.names;
+  if (d.row_end >= 0) data["rows"] = {d.row_begin, d.row_end};
+  return data;
+}
+
 /// The objective, its fixed values and the claimed lower end (dual and class claims).
 void objective_json(const Certificate& c, nlohmann::ordered_json& j) {
   const char* objective = c.objective == DualClaim::kInvalidated ? "feasibility"
@@ -224,12 +268,23 @@ std::string certificate_json(const Certificate& c) {
   nlohmann::ordered_json j;
   j["format"] = kCertificateFormat;
   j["claim"] = to_string(c.claim);
-  nlohmann::ordered_json data;
-  data["file"] = c.data_file;
-  data["sha256"] = c.data_sha256;
-  if (!c.data_names.empty()) data["names"] = c.data_names;
-  if (c.row_end >= 0) data["rows"] = {c.row_begin, c.row_end};
-  j["data"] = data;
+  if (c.records.empty()) {
+    DataReference d;
+    d.file = c.data_file;
+    d.sha256 = c.data_sha256;
+    d.names = c.data_names;
+    d.row_begin = c.row_begin;
+    d.row_end = c.row_end;
+    j["data"] = reference_json(d);
+  } else {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const CertificateRecord& r : c.records) {
+      nlohmann::ordered_json item = reference_json(r.data);
+      if (r.x0.size() > 0) item["x0"] = matrix_json(Mat<Rational>(r.x0.transpose()))[0];
+      list.push_back(item);
+    }
+    j["records"] = list;
+  }
   j["model"] = model_to_json(c.model);
   j["toeplitz_mode"] = to_string(c.mode);
   j["noise_normalisation"] = "rms";
@@ -266,12 +321,32 @@ void set_data_reference(Certificate& c, const DataReference& data) {
   c.row_end = data.row_end;
 }
 
+void set_record_references(Certificate& c, const std::vector<DataReference>& records, const std::vector<Vec<Rational>>& x0) {
+  if (!x0.empty() && x0.size() != records.size())
+    throw std::invalid_argument(std::to_string(x0.size()) + " initial states for " + std::to_string(records.size()) + " records");
+  c.records.clear();
+  if (records.size() == 1) {
+    set_data_reference(c, records.front());
+    return;
+  }
+  for (size_t k = 0; k < records.size(); ++k) c.records.push_back({records[k], x0.empty() ? Vec<Rational>() : x0[k]});
+}
+
+namespace {
+/// `file` relative to `cert_dir` (absolute when there is no relative path).
+std::string relative_to(const std::string& file, const std::filesystem::path& cert_dir) {
+  namespace fs = std::filesystem;
+  const fs::path data_abs = fs::absolute(fs::path(file));
+  const std::string rel = fs::relative(data_abs, cert_dir).string();
+  return rel.empty() ? data_abs.string() : rel;
+}
+}  // namespace
+
 Certificate placed_at(Certificate c, const std::string& certificate_path) {
   namespace fs = std::filesystem;
   const fs::path cert_dir = fs::absolute(fs::path(certificate_path)).parent_path();
-  const fs::path data_abs = fs::absolute(fs::path(c.data_file));
-  c.data_file = fs::relative(data_abs, cert_dir).string();
-  if (c.data_file.empty()) c.data_file = data_abs.string();
+  if (c.records.empty()) c.data_file = relative_to(c.data_file, cert_dir);
+  for (CertificateRecord& r : c.records) r.data.file = relative_to(r.data.file, cert_dir);
   return c;
 }
 

@@ -8,6 +8,9 @@
 ///              "sha256": "…",                // of the file's bytes
 ///              "names": ["u", "y"],          // only for headerless whitespace files
 ///              "rows": [begin, end]},        // optional window [begin, end) of the data rows
+///     — or, for several records of one system under one Δ (docs/several_records.md),
+///     "records": [{"file", "sha256", "names", "rows" as in "data", "x0": [record's own initial state,
+///                  optional]}, …]  (two or more, instead of "data"),
 ///     "model": { … lpvid-model/1, with θ, φ and x0 folded in: no unknowns … },
 ///     "toeplitz_mode": "signal" | "paper",
 ///     "noise_normalisation": "rms",          // ‖d‖₂² ≤ n·ny·d_max²  (SPEC §4)
@@ -145,7 +148,18 @@ struct ClassRegion {
   std::vector<ClassNode> nodes;
 };
 
+/// One record of a certificate about several records ("records", docs/several_records.md):
+/// where its rows come from (file as written, sha256, names, rows) and its own initial state.
+struct CertificateRecord {
+  DataReference data;
+  Vec<Rational> x0;  ///< empty: the model's x0
+};
+
 struct Certificate {
+  /// Two or more records under one Δ and one noise bound ("records" instead of
+  /// "data"; each simulated from its own x0, Δ acting on each from rest).
+  /// Empty: the one record named by the data_* fields below.
+  std::vector<CertificateRecord> records;
   std::string data_file;                ///< as written in the file
   std::string data_sha256;
   std::vector<std::string> data_names;  ///< headerless files only
@@ -183,6 +197,10 @@ void write_certificate(const std::string& path, const Certificate& c);
 /// (data/data_reference.h). The file stays as it was opened until the
 /// certificate is placed in a folder (placed_at).
 void set_data_reference(Certificate& c, const DataReference& data);
+/// Names several records (two or more; `x0` empty or one entry per record,
+/// an empty entry meaning the model's x0); one record goes to `data`.
+void set_record_references(Certificate& c, const std::vector<DataReference>& records,
+                           const std::vector<Vec<Rational>>& x0 = {});
 /// The certificate as it is written at `certificate_path`: its data file
 /// relative to that file's folder (absolute when there is no relative path).
 Certificate placed_at(Certificate c, const std::string& certificate_path);

@@ -31,24 +31,24 @@ std::string bound_problem(const Certificate& c, const Rational& bound, std::ostr
 /// Steps 6–8 for the compact form (verify/certificate/path_dual.h): the point is rebuilt
 /// from its recipe, then checked on that grid matrix.
 CertificateVerdict check_path_dual(const Certificate& c, const Simulation<Rational>& sim, const Mat<Rational>& r,
-                                   Eigen::Index L, std::string details) {
+                                   Eigen::Index L, std::string details, const RecordLengths& records) {
   const PathDualRecipe& p = c.dual.path;
   if (p.taps.rows() != L) return invalid_verdict("dual.taps has " + std::to_string(p.taps.rows()) + " rows, not the horizon", details);
   require_dual_order(static_cast<long>(L * c.model.ny));  // before the O((L·ny)³) floating rebuild
   const PathDualGrid grid = path_dual_grid(p, c.model.ny, c.model.nz());
   if (!grid.problem.empty()) return invalid_verdict("the dual recipe gives no point: " + grid.problem, details);
-  return check_path_dual_on_grid(c, sim, r, grid.U, std::move(details));
+  return check_path_dual_on_grid(c, sim, r, grid.U, std::move(details), records);
 }
 
 }  // namespace
 
 CertificateVerdict check_path_dual_on_grid(const Certificate& c, const Simulation<Rational>& sim, const Mat<Rational>& r,
-                                           const Mat<double>& U_grid, std::string details) {
+                                           const Mat<double>& U_grid, std::string details, const RecordLengths& records) {
   const Eigen::Index ny = c.model.ny, nz = c.model.nz(), L = c.dual.path.taps.rows();
   const PathDualRecipe& p = c.dual.path;
   const PathDualSums sums = path_dual_sums(p, U_grid, ny, nz);
   if (!sums.problem.empty()) return invalid_verdict("the dual recipe gives no point: " + sums.problem, details);
-  const PathDualValue v = path_dual_value(p, sums, fir_adjoint(c.dual.g, sim.z, L), c.dual.g, c.dual.sigma, r, ny, nz);
+  const PathDualValue v = path_dual_value(p, sums, fir_adjoint_records(c.dual.g, sim.z, L, records), c.dual.g, c.dual.sigma, r, ny, nz);
   std::ostringstream d;
   d << details << ", compact dual of horizon " << L << " rebuilt from " << L * ny * nz
     << " taps; dual equality made exact by the correction E";
@@ -73,23 +73,25 @@ CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Ratio
   if (c.mode != ToeplitzMode::kSignal)
     return invalid_verdict("a dual certificate is only defined for toeplitz_mode \"signal\" (the Delta form)", details);
   const Eigen::Index n = exp.n(), ny = c.model.ny, nz = c.model.nz();
-  const Eigen::Index m = leading_zero_samples(sim.z);
-  if (m == n || nz == 0) return invalid_verdict("z is identically zero: the Delta form has no horizon", details);
-  const Eigen::Index L = n - m;
-  // 4. The horizon covers exactly the taps that act on the data.
+  // 4. The horizon covers exactly the taps that act on the data: the longest
+  // record's samples from its first non-zero z (one record: n − m).
+  const Eigen::Index L = nz == 0 ? 0 : records_horizon(sim.z, exp.records);
+  if (L == 0) return invalid_verdict("z is identically zero: the Delta form has no horizon", details);
   if (c.dual.horizon != L)
-    return invalid_verdict("dual.horizon is " + std::to_string(c.dual.horizon) + " but the exact z has " + std::to_string(m) +
-                       " leading zero samples of " + std::to_string(n) + ", so the horizon must be " + std::to_string(L),
-                   details);
+    return invalid_verdict("dual.horizon is " + std::to_string(c.dual.horizon) + " but the exact z has " +
+                               (several_records(exp.records) ? "its longest record's first non-zero sample "
+                                                             : std::to_string(n - L) + " leading zero samples of " + std::to_string(n)) +
+                               ", so the horizon must be " + std::to_string(L),
+                           details);
   if (c.dual.g.rows() != n)
     return invalid_verdict("dual.g has " + std::to_string(c.dual.g.rows()) + " rows for " + std::to_string(n) + " samples", details);
   // 5. σ > 0.
   if (!(c.dual.sigma > 0)) return invalid_verdict("dual.sigma must be > 0", details);
   const Mat<Rational> r = exp.y - sim.output;
-  if (c.form == CertificateForm::kDualDeltaPath) return check_path_dual(c, sim, r, L, std::move(details));
+  if (c.form == CertificateForm::kDualDeltaPath) return check_path_dual(c, sim, r, L, std::move(details), exp.records);
   // 6. Dual equality, exactly.
   const Mat<Rational> omega = block_diagonal_sums(c.dual.Y1, L, ny, nz);
-  const Mat<Rational> adj = fir_adjoint(c.dual.g, sim.z, L);
+  const Mat<Rational> adj = fir_adjoint_records(c.dual.g, sim.z, L, exp.records);
   for (Eigen::Index l = 0; l < L; ++l)
     for (Eigen::Index q = 0; q < ny * nz; ++q)
       if (omega(l, q) != adj(l, q))

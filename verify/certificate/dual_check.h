@@ -16,6 +16,7 @@
 #include "core/scalar.h"
 #include "data/experiment.h"
 #include "model/simulate.h"
+#include "toeplitz/record_segments.h"
 #include "verify/certificate/certificate_check.h"
 
 namespace lpvid {
@@ -23,9 +24,11 @@ namespace lpvid {
 /// Steps 6–8 of the compact form (verify/certificate/path_dual.h) on the grid
 /// matrix Ũ (U = Ũ·2^e) rebuilt from c.dual.path: check_dual_claim passes
 /// path_dual_grid's; a test passes another rebuild (a U with other last
-/// bits, as a verifier compiled elsewhere would make). `r` = y − ŷ − Φ.
+/// bits, as a verifier compiled elsewhere would make). `r` = y − ŷ − Φ;
+/// `records` the lengths of stacked records (empty: one record).
 CertificateVerdict check_path_dual_on_grid(const Certificate& c, const Simulation<Rational>& sim, const Mat<Rational>& r,
-                                           const Mat<double>& U_grid, std::string details);
+                                           const Mat<double>& U_grid, std::string details,
+                                           const RecordLengths& records = {});
 
 CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Rational>& exp, const Simulation<Rational>& sim,
                                     std::string details);
