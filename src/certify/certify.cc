@@ -43,7 +43,7 @@ CertificateVerdict round_trip_check(const Certificate& c, const Experiment<Ratio
 template <typename Norm2>
 void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 norm2_fn, const CertifyOptions& o,
                         const std::string& solver_name, CertifiedBounds& out) {
-  set_data_reference(c, o.data);
+  name_certificate_data(c, o, exp);
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
   c.info["solver"] = solver_name;
@@ -146,7 +146,7 @@ void certify_taps(const LpvModel<Rational>& model, const Experiment<Rational>& e
     }
 
   // 4. (C2) exactly.
-  const Mat<Rational> w = apply_fir(c.taps, sim.z, ny, c.horizon);
+  const Mat<Rational> w = apply_fir_records(c.taps, sim.z, ny, c.horizon, exp.records);
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - w)), Rational(static_cast<long>(n * ny)), o, out)) return;
 
   finish_certificate(c, exp, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver_name, out);
@@ -168,7 +168,7 @@ ExactSignals exact_signals(const LpvModel<Rational>& model, const Experiment<Rat
   s.sim = simulate(model, s.exp);
   s.r = s.exp.y - s.sim.output;
   s.n = s.exp.n();
-  s.horizon = s.n - leading_zero_samples(s.sim.z);
+  s.horizon = records_horizon(s.sim.z, s.exp.records);  // one record: n − (leading zero samples of z)
   return s;
 }
 
@@ -198,6 +198,17 @@ std::string status_reason(const DeltaFormSolution& sol, const char* what) {
 }
 
 }  // namespace
+
+void name_certificate_data(Certificate& c, const CertifyOptions& o, const Experiment<Rational>& exp) {
+  if (o.records.size() < 2) {
+    set_data_reference(c, o.data);
+    return;
+  }
+  if (!several_records(exp.records) || exp.records.size() != o.records.size())
+    throw std::invalid_argument("certification: " + std::to_string(o.records.size()) + " record references for " +
+                                std::to_string(std::max<size_t>(1, exp.records.size())) + " records of data");
+  set_record_references(c, o.records, exp.record_x0);
+}
 
 BoundObjective solver_objective(BoundObjective objective) {
   if (objective.dmax_fixed()) objective.dmax *= 1.0 - 1e-7;
@@ -381,7 +392,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   // 1. Exact signals, and their doubles once.
   const ExactSignals es = exact_signals(model, exp_in);
   if (es.horizon == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(es.sim.z));  // throws the usual InputError
-  DeltaFormSignals doubles{nearest_double(es.sim.z), nearest_double(es.r)};
+  DeltaFormSignals doubles{nearest_double(es.sim.z), nearest_double(es.r), es.exp.records};
   check_finite_signal(doubles.z, "certification (Theorem 2.1)", "the model's uncertainty channel z, in double precision");
   check_finite_signal(doubles.r, "certification (Theorem 2.1)", "the residual r = y - yhat, in double precision");
   // A weighted objective stated on signals scaled to unit size (certify/
@@ -480,6 +491,8 @@ CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment
 
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                           const CertifyOptions& o, SdpSolver& solver) {
+  if (several_records(exp_in.records))
+    throw InputError("--toeplitz paper takes one record: its T_z = T_G12 T_u has no meaning across records (use the signal mode)");
   CertifiedBounds out = certify_w_form(model, exp_in, o, solver);
   out.outcome = outcome_of(out, o.objective);
   return out;

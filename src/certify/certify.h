@@ -57,6 +57,9 @@ struct CertifyOptions {
   /// Where the experiment's rows came from (file, sha256, names, rows),
   /// copied into every certificate; made where the data was read.
   DataReference data;
+  /// Several records (two or more, in the order of Experiment::records):
+  /// where each one's rows came from; then `data` is unused.
+  std::vector<DataReference> records;
   std::string fixed_delta_text, fixed_dmax_text;  ///< exact text of a fixed bound (CLI), if any
   /// Also certify the lower end of the optimum (a dual certificate of the
   /// full-horizon problem: CertifiedBounds::lower), and for fixed bounds,
@@ -143,6 +146,10 @@ struct CertifiedBounds {
   double total_seconds = 0;
   SignalScales scales;        ///< with CertifyOptions::scale_signals: the scales and λ in original units
 };
+
+/// Names the data of a certificate made by certification with `o` on `exp`:
+/// `o.data` (one record) or `o.records` with each record's own x0 (several).
+void name_certificate_data(Certificate& c, const CertifyOptions& o, const Experiment<Rational>& exp);
 
 /// Step 2's objective as the solver gets it: fixed bounds tightened by a
 /// relative 1e-7, so that rounding the taps does not push the exact values

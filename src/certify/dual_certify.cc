@@ -49,7 +49,7 @@ Certificate dual_certificate(const LpvModel<Rational>& model, DualClaim claim, c
 /// 6) on the exact experiment, fills `out` (the certificate only when it holds).
 void check_and_keep(Certificate& c, const Experiment<Rational>& exp, const CertifyOptions& o, const Rational& bound,
                     DualOutcome& out) {
-  set_data_reference(c, o.data);
+  name_certificate_data(c, o, exp);
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
   const CertificateVerdict v = check_certificate(parse_certificate(certificate_json(c), "the dual certificate (in memory)"), exp);
@@ -81,8 +81,8 @@ Mat<Rational> grid_matrix(const Mat<double>& Y1d) {
 /// Step 3: Y1 projected onto Ω_l(W) = C_l(g) exactly (the dual equality of
 /// toeplitz/delta_form_dual.h), the error spread along each block diagonal.
 void project_onto_dual_equality(Mat<Rational>& Y1, const Mat<Rational>& g, const Mat<Rational>& z, Eigen::Index L,
-                                Eigen::Index ny, Eigen::Index nz) {
-  const Mat<Rational> target = fir_adjoint(g, z, L);
+                                Eigen::Index ny, Eigen::Index nz, const RecordLengths& records) {
+  const Mat<Rational> target = fir_adjoint_records(g, z, L, records);
   const Mat<Rational> have = block_diagonal_sums(Y1, L, ny, nz);
   const Eigen::Index off = L * ny;
   for (Eigen::Index l = 0; l < L; ++l)
@@ -122,7 +122,7 @@ DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment
   DualOutcome out;
   const auto done = outcome_closer(out);
   const Eigen::Index n = exp.n(), ny = model.ny, nz = model.nz();
-  const Eigen::Index L = n - leading_zero_samples(sim.z);
+  const Eigen::Index L = records_horizon(sim.z, exp.records);
   const Eigen::Index P = L * (ny + nz), N = n * ny;
   if (L == 0 || nz == 0) return done("z is identically zero: no Delta form");
   if (Y1_in.rows() != P || Y1_in.cols() != P || Y2_in.rows() != N + 1 || Y2_in.cols() != N + 1)
@@ -137,7 +137,7 @@ DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment
   if (!(scale > 0)) return done("the solver's dual matrices are zero");
   GridSignal gs = grid_signal(Y2_in.col(0).tail(N), scale, n, ny);
   Mat<Rational> Y1 = grid_matrix(Y1_in / scale);
-  project_onto_dual_equality(Y1, gs.g, sim.z, L, ny, nz);
+  project_onto_dual_equality(Y1, gs.g, sim.z, L, ny, nz, exp.records);
   // 4. PSD margin.
   Rational eps_q;
   double eps_failed = 0;
@@ -174,11 +174,11 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
                               const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o) {
   DualOutcome out;
   const auto done = outcome_closer(out);
-  const Eigen::Index ny = model.ny, L = exp.n() - leading_zero_samples(sim.z);
+  const Eigen::Index ny = model.ny, L = records_horizon(sim.z, exp.records);
   const DualClaim claim = claim_of(o.objective);
   const FixedValues fixed = fixed_values(o, claim);
   const Mat<Rational> r = exp.y - sim.output;
-  PathDualBuild b = build_path_dual(sim.z, r, L, s, claim, fixed);
+  PathDualBuild b = build_path_dual(sim.z, r, L, s, claim, fixed, {}, {}, exp.records);
   if (!b.problem.empty()) return done(b.problem);
   const Rational bound = dual_bound(b.value.terms, claim, fixed.delta2, fixed.dmax2, fixed.lambda);
   // What a verifier built elsewhere, with U in other last bits, still reaches.

@@ -216,7 +216,7 @@ Rational sigma_for(const PathDualBuild& b, const Mat<Rational>& r, const DeltaFo
 
 PathDualBuild build_path_dual(const Mat<Rational>& z, const Mat<Rational>& r, Eigen::Index L, const DeltaFormSolution& s,
                               DualClaim claim, const FixedValues& fixed, const GTransform& effective_g,
-                              const SigmaShift& sigma_shift) {
+                              const SigmaShift& sigma_shift, const RecordLengths& records) {
   PathDualBuild b;
   const Eigen::Index n = r.rows(), ny = r.cols(), nz = z.cols(), N = n * ny;
   if (L == 0 || nz == 0) return b.problem = "z is identically zero: no Delta form", b;
@@ -243,7 +243,7 @@ PathDualBuild build_path_dual(const Mat<Rational>& z, const Mat<Rational>& r, Ei
   if (!grid.problem.empty()) return b.problem = grid.problem, b;
   const PathDualSums sums = path_dual_sums(recipe, grid.U, ny, nz);
   if (!sums.problem.empty()) return b.problem = sums.problem, b;
-  const Mat<Rational> C = fir_adjoint(b.g_effective, z, L);
+  const Mat<Rational> C = fir_adjoint_records(b.g_effective, z, L, records);
   b.value = path_dual_value(recipe, sums, C, b.g_effective, Rational(1), r, ny, nz);
   b.margin = rebuild_margin(recipe, grid);
   if (std::string why = prove_floor(recipe, grid, b.value.E_norm2, b.margin); !why.empty()) return b.problem = why, b;

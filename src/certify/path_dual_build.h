@@ -63,6 +63,7 @@ DualTerms<Rational> rebuilt_terms(DualTerms<Rational> terms, const RebuildMargin
 /// stored g (grid) to the g the verifier uses (the class bound's projection;
 /// identity for a fixed model); `sigma_shift(g)` returns what is added to tr U
 /// and tr V (doubles) when σ is chosen (the class bound's penalties).
+/// `records`: stacked records of z and r (toeplitz/record_segments.h; empty: one).
 struct PathDualBuild {
   std::string problem;           ///< why no point (empty when built)
   DualPoint point;               ///< horizon, the stored g, σ, the recipe
@@ -75,6 +76,6 @@ using GTransform = std::function<Mat<Rational>(const Mat<Rational>&)>;
 using SigmaShift = std::function<std::pair<double, double>(const Mat<Rational>&)>;
 PathDualBuild build_path_dual(const Mat<Rational>& z, const Mat<Rational>& r, Eigen::Index L, const DeltaFormSolution& s,
                               DualClaim claim, const FixedValues& fixed, const GTransform& effective_g = {},
-                              const SigmaShift& sigma_shift = {});
+                              const SigmaShift& sigma_shift = {}, const RecordLengths& records = {});
 
 }  // namespace lpvid

@@ -17,6 +17,7 @@
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
 #include "lmi/delta_form_lmi.h"
+#include "toeplitz/record_segments.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {
@@ -27,6 +28,9 @@ enum class DeltaFormMethod { kStructured, kSdp, kKyp };
 /// the exact signals.
 struct DeltaFormSignals {
   Mat<double> z, r;
+  /// Stacked records (toeplitz/record_segments.h): the lengths of the records
+  /// whose rows z and r hold one after another; empty: one record.
+  RecordLengths records;
 };
 
 struct DeltaFormRequest {
