@@ -119,28 +119,58 @@ def _folder(command, out_dir):
     return os.path.abspath(out_dir)
 
 
-def _prepare(out_dir, u, y, rho, model, data):
-    """The run's input files in out_dir: (data path, model path)."""
-    if data is not None and (u is not None or y is not None or rho is not None):
-        raise LpvidError(2, "give the signals either as arrays (u, y, rho) or as a data file (data=), not both")
+def _model_dict(model, model_path):
+    """The model as a dict (for the column names; lpvid itself reads and checks the file)."""
+    if isinstance(model, dict):
+        return model
+    try:
+        return read_json(model_path)
+    except (OSError, ValueError) as e:
+        raise LpvidError(6 if isinstance(e, OSError) else 2, f"{model_path}: {e}") from None
+
+
+def _record_signals(record, k):
+    """(u, y, rho) of one entry of records=: a dict with keys u, y (and rho) or a tuple (u, y[, rho])."""
+    if isinstance(record, dict):
+        unknown = set(record) - {"u", "y", "rho"}
+        if unknown:
+            raise LpvidError(2, f"records[{k}]: unknown key(s) {sorted(unknown)} (expected u, y, rho)")
+        return record.get("u"), record.get("y"), record.get("rho")
+    if isinstance(record, (tuple, list)) and len(record) in (2, 3):
+        return record[0], record[1], record[2] if len(record) == 3 else None
+    raise LpvidError(2, f"records[{k}]: expected a dict with u, y (and rho) or a tuple (u, y[, rho])")
+
+
+def _prepare(out_dir, u, y, rho, model, data, records=None):
+    """The run's input files in out_dir: (data paths, model path). One
+    record: u, y, rho arrays or data=PATH. Several records under one Delta:
+    records=[{"u": .., "y": .., "rho": ..}, ...] or data=[PATH, PATH, ...]."""
+    given = [name for name, v in (("u, y, rho", u if u is not None else y if y is not None else rho),
+                                  ("data", data), ("records", records)) if v is not None]
+    if len(given) > 1:
+        raise LpvidError(2, "give the signals one way: as arrays (u, y, rho), as data file(s) (data=) or as "
+                            f"records=, not {' and '.join(given)}")
     if isinstance(model, dict):
         model_path = os.path.join(out_dir, "model.json")
         write_model(model, model_path)
     else:
         model_path = os.path.abspath(os.fspath(model))
     if data is not None:
-        return os.path.abspath(os.fspath(data)), model_path
-    if isinstance(model, dict):
-        model_dict = model
-    else:
-        # only for the column names; lpvid itself reads and checks the file
-        try:
-            model_dict = read_json(model_path)
-        except (OSError, ValueError) as e:
-            raise LpvidError(6 if isinstance(e, OSError) else 2, f"{model_path}: {e}") from None
+        paths = data if isinstance(data, (list, tuple)) else [data]
+        return [os.path.abspath(os.fspath(p)) for p in paths], model_path
+    model_dict = _model_dict(model, model_path)
+    if records is not None:
+        if len(records) == 0:
+            raise LpvidError(2, "records=: no records")
+        paths = []
+        for k, record in enumerate(records):
+            ru, ry, rrho = _record_signals(record, k)
+            paths.append(os.path.join(out_dir, f"data{k + 1}.csv"))
+            write_data(paths[-1], model_dict, ru, ry, rrho)
+        return paths, model_path
     data_path = os.path.join(out_dir, "data.csv")
     write_data(data_path, model_dict, u, y, rho)
-    return data_path, model_path
+    return [data_path], model_path
 
 
 def _remove_earlier_outputs(out_dir, report_path, model_out_path):
@@ -161,13 +191,18 @@ def _remove_earlier_outputs(out_dir, report_path, model_out_path):
         os.remove(model_out_path)
 
 
-def _run_bounds_command(command, u, y, rho, model, *, data, out_dir, quiet, bounds, extra, model_out=False):
+def _run_bounds_command(command, u, y, rho, model, *, data, out_dir, quiet, bounds, extra, model_out=False,
+                        records=None):
     out_dir = _folder(command, out_dir)
     report_path = os.path.join(out_dir, f"{command}.json")
     model_out_path = os.path.join(out_dir, f"{command}.model.json") if model_out else None
     _remove_earlier_outputs(out_dir, report_path, model_out_path)
-    data_path, model_path = _prepare(out_dir, u, y, rho, model, data)
-    args = [command, "--data", data_path, "--model", model_path, "--report", report_path]
+    data_paths, model_path = _prepare(out_dir, u, y, rho, model, data, records)
+    data_path = data_paths[0]
+    args = [command]
+    for path in data_paths:
+        args += ["--data", path]
+    args += ["--model", model_path, "--report", report_path]
     if model_out_path:
         args += ["--model-out", model_out_path]
     for name, value in bounds.items():
@@ -198,14 +233,18 @@ def _result(command, code, report, report_path, data_path, model_path, out_dir, 
                   data_path=data_path, model_path=model_path, out_dir=out_dir, output=output, messages=messages)
 
 
-def invalidate(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=None, out_dir=None, quiet=True,
-               **options):
+def invalidate(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=None, records=None, out_dir=None,
+               quiet=True, **options):
     """Theorem 2.1 for a fixed model (`lpvid invalidate`).
 
     u, y, rho: arrays, 1-D (one channel) or 2-D (samples x channels), in
     the order of the model's columns; rho None for a model without
     scheduling columns. Or data=PATH (an existing data file) and u, y, rho
     None. model: an lpvid-model/1 dict or a model file's path.
+    Several records of one system under one Delta (one uncertainty and one
+    noise bound for every record; each record starts from rest):
+    records=[{"u": u1, "y": y1, "rho": rho1}, {"u": u2, "y": y2}, ...] (or
+    tuples (u, y[, rho])), or data=[PATH1, PATH2, ...]; u, y, rho None.
     delta and dmax given: decide consistency at those bounds (code 0
     consistent, 1 invalidated); one of them: minimise the other; neither:
     minimise lambda_*delta^2 + (1-lambda_)*dmax^2 (--lambda, default 0.5).
@@ -218,11 +257,12 @@ def invalidate(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=No
     Exit codes other than 0 and 1 raise LpvidError.
     """
     return _run_bounds_command("invalidate", u, y, rho, model, data=data, out_dir=out_dir, quiet=quiet,
-                               bounds={"delta": delta, "dmax": dmax, "lambda": lambda_}, extra=options)
+                               bounds={"delta": delta, "dmax": dmax, "lambda": lambda_}, extra=options,
+                               records=records)
 
 
-def identify(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=None, out_dir=None, quiet=True,
-             **options):
+def identify(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=None, records=None, out_dir=None,
+             quiet=True, **options):
     """Theorem 3.1 (`lpvid identify`): the correction S_C(rho) over the
     model's correction basis ("correction": {"basis": [...]}, or
     basis=["1", "rho1"]), with certified bounds of the identified model.
@@ -234,11 +274,11 @@ def identify(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=None
     """
     return _run_bounds_command("identify", u, y, rho, model, data=data, out_dir=out_dir, quiet=quiet,
                                bounds={"delta": delta, "dmax": dmax, "lambda": lambda_}, extra=options,
-                               model_out=True)
+                               model_out=True, records=records)
 
 
-def diagnose(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=None, out_dir=None, quiet=True,
-             **options):
+def diagnose(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=None, records=None, out_dir=None,
+             quiet=True, **options):
     """Residual -> missing effect -> re-fitted model (`lpvid diagnose`),
     with before/after RMS and verified bounds on windows of the record.
 
@@ -249,7 +289,7 @@ def diagnose(u, y, rho, model, *, delta=None, dmax=None, lambda_=None, data=None
     """
     return _run_bounds_command("diagnose", u, y, rho, model, data=data, out_dir=out_dir, quiet=quiet,
                                bounds={"delta": delta, "dmax": dmax, "lambda": lambda_}, extra=options,
-                               model_out=True)
+                               model_out=True, records=records)
 
 
 def verify(certificate, data=None, *, quiet=True, **options):
