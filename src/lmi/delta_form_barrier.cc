@@ -58,12 +58,20 @@ Dense sub_block(const Dense& M, Index p, Index q, Index i, Index j) {
 /// column i·nz + j) stored column by column. s is eliminated (see the
 /// header) unless it is fixed (min δ at d_max). With free regressors G the
 /// residual is P⊥r and every d is projected (P⊥(r − Zh) = P⊥r − P⊥Zh).
-struct Problem : SignalScaling {  ///< n, ny, nz, m, L and the scales σ_z, σ_r
+struct Problem : SignalScaling {  ///< n, ny, nz, the scales σ_z, σ_r; L = records_horizon, m = head rows
   double N = 0;
-  Dense r_head, r_tail;     ///< scaled residual: rows < m (no Δ acts there) and rows ≥ m (ny columns)
+  /// The stacked rows (of r, z) before each record's first nonzero z (head:
+  /// no Δ acts there) and from it (tail), each in stack order; m = #head.
+  /// One record: rows < m and rows ≥ m.
+  std::vector<Index> head_rows, tail_rows;
+  RecordLengths records;    ///< n_1 … n_K (one record: {n})
+  Dense r_head, r_tail;     ///< scaled residual on the head and tail rows (ny columns)
   FreeRegressors regressors;  ///< G of the header (empty: none)
   Dense W;                  ///< Zᵀ Q (taps × rank of G, the taps' order): the noise Hessian's correction
-  std::vector<Dense> Z;     ///< per input j of Δ: L × L lower-triangular Toeplitz of the scaled z_j (rows ≥ m)
+  /// Per input j of Δ: the tail rows × L matrix of the scaled z_j, record k's
+  /// rows its (n_k − m_k)-square lower-triangular Toeplitz block, zero columns
+  /// after (one record: L × L lower-triangular Toeplitz).
+  std::vector<Dense> Z;
   std::vector<Dense> G;     ///< G[j·nz + j'] = Z_jᵀ Z_j'
   bool t_var = false;
   bool s_var = true;      ///< false: s = s_fix and (C2) keeps its own barrier −log(N s − ‖d‖²)
@@ -86,7 +94,7 @@ Dense block_toeplitz(const Problem& p, const Vecd& x) {
   return tap_toeplitz_dense<double>(Eigen::Map<const Dense>(x.data(), p.L, p.q()), p.ny, p.nz);
 }
 
-/// d on the rows ≥ m (L × ny): r_i − Σ_j Z_j h_ij.
+/// d on the tail rows: r_i − Σ_j Z_j h_ij.
 Dense residual_tail(const Problem& p, const Vecd& x) {
   Dense d = p.r_tail;
   for (Index i = 0; i < p.ny; ++i)
@@ -94,20 +102,20 @@ Dense residual_tail(const Problem& p, const Vecd& x) {
   return d;
 }
 
-/// The residual stacked like r in (C2) (row k·ny + i) from its rows < m and ≥ m.
+/// The residual stacked like r in (C2) (row k·ny + i) from its head and tail rows.
 Vecd stacked_residual(const Problem& p, const Dense& head, const Dense& tail) {
   Vecd v(p.n * p.ny);
-  for (Index k = 0; k < p.n; ++k)
-    for (Index i = 0; i < p.ny; ++i) v(k * p.ny + i) = k < p.m ? head(k, i) : tail(k - p.m, i);
+  for (size_t a = 0; a < p.head_rows.size(); ++a) v.segment(p.head_rows[a] * p.ny, p.ny) = head.row(static_cast<Index>(a));
+  for (size_t a = 0; a < p.tail_rows.size(); ++a) v.segment(p.tail_rows[a] * p.ny, p.ny) = tail.row(static_cast<Index>(a));
   return v;
 }
 
 /// The inverse of stacked_residual.
 void split_residual(const Problem& p, const Vecd& v, Dense& head, Dense& tail) {
-  head.resize(p.m, p.ny);
-  tail.resize(p.L, p.ny);
-  for (Index k = 0; k < p.n; ++k)
-    for (Index i = 0; i < p.ny; ++i) (k < p.m ? head(k, i) : tail(k - p.m, i)) = v(k * p.ny + i);
+  head.resize(static_cast<Index>(p.head_rows.size()), p.ny);
+  tail.resize(static_cast<Index>(p.tail_rows.size()), p.ny);
+  for (size_t a = 0; a < p.head_rows.size(); ++a) head.row(static_cast<Index>(a)) = v.segment(p.head_rows[a] * p.ny, p.ny);
+  for (size_t a = 0; a < p.tail_rows.size(); ++a) tail.row(static_cast<Index>(a)) = v.segment(p.tail_rows[a] * p.ny, p.ny);
 }
 
 /// (head, tail) ← P⊥(head, tail): the free regressors' part removed.
@@ -126,7 +134,7 @@ struct Point {
   /// constructed LLT leaves its status uninitialised, and moving a Point
   /// that returned early (t <= 0) read it (UBSan: invalid ComputationInfo).
   Eigen::LLT<Dense> llt{Dense(0, 0)};
-  Dense d_head, d_tail;  ///< d on the rows < m (r's own, projected with free regressors) and ≥ m
+  Dense d_head, d_tail;  ///< d on the head rows (r's own, projected with free regressors) and the tail rows
   double D = 0;    ///< ‖d‖² (all rows)
   double phi = 0;  ///< N·s_fix − ‖d‖² (s fixed only)
 };
@@ -282,19 +290,46 @@ void add_free_regressors(Problem& p, const Mat<double>& free_regressors) {
   }
 }
 
+/// The records' rows of the scaled problem: head and tail rows, r on them,
+/// the horizon L = max_k (n_k − m_k), and Z (the Problem's fields; σ_z, σ_r set).
+void record_rows(Problem& p, const Mat<double>& z, const Mat<double>& r, const RecordLengths& records_in) {
+  const RecordLengths records = record_lengths_of(records_in, z.rows());
+  const std::vector<Index> start = record_starts(records);
+  std::vector<Index> first;  // per record: its first nonzero z (stacked row)
+  for (size_t k = 0; k < records.size(); ++k) {
+    first.push_back(start[k] + leading_zero_rows(z, start[k], records[k]));
+    for (Index row = start[k]; row < start[k + 1]; ++row) (row < first[k] ? p.head_rows : p.tail_rows).push_back(row);
+  }
+  p.records = records;
+  p.L = records_horizon(z, records);
+  p.m = static_cast<Index>(p.head_rows.size());
+  const Index M = static_cast<Index>(p.tail_rows.size());
+  p.r_head.resize(p.m, p.ny);
+  p.r_tail.resize(M, p.ny);
+  for (Index a = 0; a < p.m; ++a) p.r_head.row(a) = r.row(p.head_rows[static_cast<size_t>(a)]) / p.sigma_r;
+  for (Index a = 0; a < M; ++a) p.r_tail.row(a) = r.row(p.tail_rows[static_cast<size_t>(a)]) / p.sigma_r;
+  for (Index j = 0; j < p.nz; ++j) {
+    Dense Zj = Dense::Zero(M, p.L);
+    Index o = 0;  // record k's first row in the stacked tail
+    for (size_t k = 0; k < records.size(); ++k) {
+      const Index Lk = start[k + 1] - first[k];
+      Zj.block(o, 0, Lk, Lk) = lower_toeplitz(z.col(j).segment(first[k], Lk) / p.sigma_z);
+      o += Lk;
+    }
+    p.Z.push_back(std::move(Zj));
+  }
+}
+
 /// The scaled problem of solve_delta_form_barrier (σ_z, σ_r returned).
 Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                     const Mat<double>& free_regressors, double& sigma_z, double& sigma_r) {
+                     const Mat<double>& free_regressors, const RecordLengths& records, double& sigma_z, double& sigma_r) {
   Problem p;
   static_cast<SignalScaling&>(p) = signal_scaling(z, r);
+  record_rows(p, z, r, records);
   p.N = static_cast<double>(p.n * p.ny);
   p.nu = static_cast<double>(p.L * (p.ny + p.nz)) + p.N + 1.0;
   sigma_z = p.sigma_z;
   sigma_r = p.sigma_r;
-  const Dense rs = r / sigma_r;
-  p.r_head = rs.topRows(p.m);
-  p.r_tail = rs.bottomRows(p.L);
-  for (Index j = 0; j < p.nz; ++j) p.Z.push_back(lower_toeplitz(z.col(j).tail(p.L) / sigma_z));
   for (Index j = 0; j < p.nz; ++j)
     for (Index j2 = 0; j2 < p.nz; ++j2) p.G.push_back(p.Z[static_cast<size_t>(j)].transpose() * p.Z[static_cast<size_t>(j2)]);
   add_free_regressors(p, free_regressors);
@@ -315,9 +350,11 @@ Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObje
 
 /// Min δ at a fixed d_max: taps strictly inside (C2). Per output i, the ridge
 /// taps h_i(ρ) = Zcᵀ(K + ρI)⁻¹r_i with Zc = [Z_1 … Z_nz], K = Zc Zcᵀ
-/// (d_i = ρ(K + ρI)⁻¹r_i → 0 as ρ → 0: Zc has full row rank once the
-/// leading zeros are cut), at the largest ρ that puts ‖d‖² at most halfway
-/// between ‖r_head‖² and N·s. Not Zc⁻¹r itself: on a long record its entries
+/// (d_i = ρ(K + ρI)⁻¹r_i → 0 as ρ → 0 for one record: Zc has full row rank
+/// once the leading zeros are cut; several records stack more tail rows than
+/// taps, and d_i tends to the part of r_i outside range(Zc)), at the largest
+/// ρ that puts ‖d‖² at most halfway between its floor (‖r_head‖² plus that
+/// part) and N·s. Not Zc⁻¹r itself: on a long record its entries
 /// grow geometrically. Computed from the thin SVD Zc = U Σ Vᵀ, h_i(ρ) =
 /// V diag(σ/(σ² + ρ)) Uᵀ r_i, not from an eigendecomposition of K: a lower
 /// Toeplitz Zc whose inverse grows like 3^L (z = 0.5, −1, −1, …) has
@@ -328,14 +365,19 @@ Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObje
 /// so the start is inside (C2) all the same. Empty with the reason when there
 /// is no such point.
 std::string ridge_start(const Problem& p, Vecd& x) {
-  const double head = p.r_head.squaredNorm(), cap = p.N * p.s_fix, target = 0.5 * (head + cap);
-  if (!(head < cap)) return "the rows before the first nonzero z already exceed N*dmax^2";
-  if (head + p.r_tail.squaredNorm() <= target) return "";  // h = 0 is inside
-  Dense Zc(p.L, p.L * p.nz);
+  const double cap = p.N * p.s_fix;
+  if (!(p.r_head.squaredNorm() < cap)) return "the rows before the first nonzero z already exceed N*dmax^2";
+  Dense Zc(p.r_tail.rows(), p.L * p.nz);
   for (Index j = 0; j < p.nz; ++j) Zc.middleCols(j * p.L, p.L) = p.Z[static_cast<size_t>(j)];
   const Eigen::BDCSVD<Dense> svd(Zc, Eigen::ComputeThinU | Eigen::ComputeThinV);
   if (svd.info() != Eigen::Success) return "no singular value decomposition for the start";
-  const Dense B = svd.matrixU().transpose() * p.r_tail;  // L × ny
+  const Dense B = svd.matrixU().transpose() * p.r_tail;  // min(rows, L·nz) × ny
+  // several records: more tail rows than taps, and the part of r_tail outside
+  // range(Zc) is a misfit no taps remove (one record: Zc has no more rows than columns)
+  const double head = p.r_head.squaredNorm() + (Zc.rows() > Zc.cols() ? (p.r_tail - svd.matrixU() * B).squaredNorm() : 0.0);
+  const double target = 0.5 * (head + cap);
+  if (!(head < cap)) return "the residual no taps can fit already exceeds N*dmax^2";
+  if (p.r_head.squaredNorm() + p.r_tail.squaredNorm() <= target) return "";  // h = 0 is inside
   const Vecd sigma = svd.singularValues();
   const Vecd lambda = sigma.array().square().matrix();
   const auto misfit = [&](double rho) {
@@ -617,7 +659,7 @@ class BarrierRun {
 
 /// q (minimum-norm least squares for the final taps) and d = r − Z h − G q, original units.
 void write_free_solution(DeltaFormSolution& out, const Problem& p, const Mat<double>& z, const Mat<double>& r) {
-  Vecd e = stack_rows(Mat<double>(r - apply_fir(out.taps, z, p.ny, p.L)));
+  Vecd e = stack_rows(Mat<double>(r - apply_fir_records(out.taps, z, p.ny, p.L, p.records)));
   out.free_coefficients = p.regressors.coefficients(e);
   if (p.regressors.count() > 0) e -= p.regressors.matrix() * out.free_coefficients;
   out.noise_residual = unstack_rows(e, p.ny);
@@ -626,7 +668,8 @@ void write_free_solution(DeltaFormSolution& out, const Problem& p, const Mat<dou
 }  // namespace
 
 DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                           const BarrierOptions& options, const Mat<double>& free_regressors) {
+                                           const BarrierOptions& options, const Mat<double>& free_regressors,
+                                           const RecordLengths& records) {
   const auto start = std::chrono::steady_clock::now();
   objective.validate();
   DeltaFormSolution out;
@@ -634,7 +677,7 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
   if (z.rows() != r.rows() || !barrier_applies(z, r, objective))
     return fail(out, "applies to every objective (weighted: 0 < lambda < 1; fixed bounds: delta > 0; min delta: dmax > 0)");
   double sigma_z = 1, sigma_r = 1;
-  const Problem p = make_problem(z, r, objective, free_regressors, sigma_z, sigma_r);
+  const Problem p = make_problem(z, r, objective, free_regressors, records, sigma_z, sigma_r);
   out.leading_zeros = p.m;
   out.horizon = p.L;
   BarrierRun run(p, objective, options);
@@ -648,9 +691,10 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
 }
 
 BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                       const Eigen::VectorXd& x, double mu, const Mat<double>& free_regressors) {
+                                       const Eigen::VectorXd& x, double mu, const Mat<double>& free_regressors,
+                                       const RecordLengths& records) {
   double sigma_z = 1, sigma_r = 1;
-  const Problem p = make_problem(z, r, objective, free_regressors, sigma_z, sigma_r);
+  const Problem p = make_problem(z, r, objective, free_regressors, records, sigma_z, sigma_r);
   BarrierDerivatives out;
   const Point pt = evaluate(p, x, mu);
   out.value = pt.value;

@@ -72,6 +72,18 @@
 /// coordinates when G is rank deficient) and d = r − Z h − G q. All four
 /// objectives accept free regressors. With P = 0 the computation is
 /// bit-for-bit the one without them.
+///
+/// Several records (toeplitz/record_segments.h: K records stacked row-wise,
+/// each from rest for Δ): the horizon is L = max_k (n_k − m_k) and only the
+/// data term changes. Z_j stacks, record by record, the (n_k − m_k)-square
+/// lower-triangular Toeplitz block of record k's z_j from its own first
+/// nonzero sample m_k, padded with zero columns up to L; the rows before each
+/// m_k are head rows (r only, no Δ). −log det(t·I − T_h T_hᵀ) and its
+/// derivatives depend on L only; ZᵀZ (L × L) is formed once, so a Newton step
+/// costs what one record of length L costs plus O((Σ_k (n_k − m_k))·L) for
+/// the residual. N = (Σ n_k)·ny and (C2)'s rows, its dual and noise_residual
+/// stay in the stacked order of r. With one record ({n} or the empty list)
+/// the computation is bit-for-bit the one-record one.
 
 #include "lmi/bound_objective.h"
 #include "lmi/delta_form_lmi.h"
@@ -130,8 +142,14 @@ bool barrier_applies(const Mat<double>& z, const Mat<double>& r, const BoundObje
 /// not n·ny rows, or a non-finite entry. The answer's free_coefficients
 /// (length P; empty without regressors) and noise_residual (n × ny, d =
 /// r − Z h − G q) are filled with a solution or an infeasibility answer.
+/// `records` (the lengths n_k of the stacked records; empty: one record)
+/// selects the several-records program above; throws std::invalid_argument
+/// when the lengths do not add up to n. The answer's horizon is
+/// records_horizon(z, records) and its leading_zeros the number of head rows
+/// Σ_k m_k (one record: m = n − L; several: not n − L).
 DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                           const BarrierOptions& options = {}, const Mat<double>& free_regressors = {});
+                                           const BarrierOptions& options = {}, const Mat<double>& free_regressors = {},
+                                           const RecordLengths& records = {});
 
 /// F_μ, its gradient and Hessian at x = (h, t?) of the SCALED problem (for
 /// the finite-difference test of the formulas above; value = +∞ outside the
@@ -142,6 +160,7 @@ struct BarrierDerivatives {
   Eigen::MatrixXd hessian;
 };
 BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                       const Eigen::VectorXd& x, double mu, const Mat<double>& free_regressors = {});
+                                       const Eigen::VectorXd& x, double mu, const Mat<double>& free_regressors = {},
+                                       const RecordLengths& records = {});
 
 }  // namespace lpvid

@@ -38,9 +38,18 @@ void read_delta_solution(const SolveResult& solve, const DeltaScaledVariables& v
 
 namespace {
 
+/// Σ_k m_k: the rows of the stack before each record's first nonzero z.
+Eigen::Index count_head_rows(const Mat<double>& z, const RecordLengths& records) {
+  const std::vector<Eigen::Index> start = record_starts(records);
+  Eigen::Index m = 0;
+  for (size_t k = 0; k < records.size(); ++k) m += leading_zero_rows(z, start[k], records[k]);
+  return m;
+}
+
 /// The program and where its variables are.
-struct DeltaFormLayout : SignalScaling {  ///< n, ny, nz, m, L and the scales σ_z, σ_r
+struct DeltaFormLayout : SignalScaling {  ///< n, ny, nz, the scales σ_z, σ_r; L = records_horizon, m = head rows
   LmiProgram program;
+  RecordLengths records;  ///< n_1 … n_K (one record: {n})
   Eigen::Index K = 0;
   int tap0 = -1;  ///< first tap variable: h_l(i, j) is tap0 + l·ny·nz + i·nz + j
   int t = -1;     ///< δ² (scaled), -1 if fixed
@@ -72,6 +81,15 @@ void describe(DeltaFormLayout& f, const BoundObjective& obj) {
   if (f.s >= 0) a.emplace_back("dmax2_variable", "dmax2 is d_max^2 / sigma_r^2 (original = value * sigma_r^2)");
   else a.emplace_back("dmax_fixed", double_to_text(obj.dmax));
   if (obj.kind == BoundObjective::Kind::kWeighted) a.emplace_back("lambda", double_to_text(obj.lambda));
+  if (several_records(f.records)) {
+    std::string lengths;
+    for (const Eigen::Index l : f.records) lengths += (lengths.empty() ? "" : " ") + std::to_string(l);
+    a.emplace_back("records", lengths);
+    a.emplace_back("records_meaning", "the rows are records of these lengths stacked, each from rest for Delta "
+                                      "(Delta*z record by record); leading_zeros counts the rows before each "
+                                      "record's first nonzero z, and sigma_z is the RMS of z from the first "
+                                      "nonzero sample of the stack");
+  }
 }
 
 /// Free regressors in (C2)'s block B: d' = r/σ_r − Δ'∗z' − Q f' with one free
@@ -89,12 +107,35 @@ void add_free_variables(DeltaFormLayout& f, const FreeRegressors& regressors, in
                                                  "basis Q of the free regressors' range in d = r - Delta*z - Q f");
 }
 
+/// (C2)'s variable part, −Δ∗z record by record (as apply_fir_records: in
+/// record k, row j ≥ m'_k = max(0, n_k − L) gets −Σ_{l ≤ j − m'_k, l < K} h_l z_{j−l})
+/// in column 0 of the noise block B; the constant part r is add_noise_block's.
+void add_fir_terms(DeltaFormLayout& f, const Mat<double>& zs, int B) {
+  const std::vector<Eigen::Index> start = record_starts(f.records);
+  const Eigen::Index taps_per = f.ny * f.nz;
+  for (size_t rec = 0; rec < f.records.size(); ++rec) {
+    const Eigen::Index first = std::max<Eigen::Index>(0, f.records[rec] - f.L);
+    for (Eigen::Index k = first; k < f.records[rec]; ++k)
+      for (Eigen::Index i = 0; i < f.ny; ++i) {
+        const Eigen::Index row_z = start[rec] + k;
+        const int row = static_cast<int>(1 + row_z * f.ny + i);
+        for (Eigen::Index l = 0; l <= std::min(k - first, f.K - 1); ++l)
+          for (Eigen::Index j = 0; j < f.nz; ++j)
+            if (zs(row_z - l, j) != 0.0)
+              f.program.add_entry(B, static_cast<int>(f.tap0 + l * taps_per + i * f.nz + j), 0, row, -zs(row_z - l, j));
+      }
+  }
+}
+
 DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObjective& obj, Eigen::Index max_taps,
-                      const FreeRegressors& regressors = {}) {
+                      const RecordLengths& records, const FreeRegressors& regressors = {}) {
   obj.validate();
   if (z.rows() != r.rows()) throw std::invalid_argument("delta form: z and r have different lengths");
   DeltaFormLayout f;
   static_cast<SignalScaling&>(f) = signal_scaling(z, r);
+  f.records = record_lengths_of(records, z.rows());
+  f.L = records_horizon(z, f.records);
+  f.m = count_head_rows(z, f.records);
   f.K = max_taps > 0 ? std::min(max_taps, f.L) : f.L;
   const Mat<double> zs = z / f.sigma_z;
   const Mat<double> rs = r / f.sigma_r;
@@ -132,16 +173,9 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
           p.add_entry(A, static_cast<int>(f.tap0 + (a - b) * taps_per + i * f.nz + j), static_cast<int>(a * f.ny + i),
                       static_cast<int>(off + b * f.nz + j), 1.0);
 
-  // (C2): [N s, dᵀ; d, I] ⪰ 0, d = r − Δ∗z.
+  // (C2): [N s, dᵀ; d, I] ⪰ 0, d = r − Δ∗z (record by record).
   const int B = add_noise_block(p, f.s, obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r), rs);
-  for (Eigen::Index k = 0; k < f.n; ++k)
-    for (Eigen::Index i = 0; i < f.ny; ++i) {
-      const int row = static_cast<int>(1 + k * f.ny + i);
-      for (Eigen::Index l = 0; l <= std::min(k - f.m, f.K - 1); ++l)
-        for (Eigen::Index j = 0; j < f.nz; ++j)
-          if (zs(k - l, j) != 0.0)
-            p.add_entry(B, static_cast<int>(f.tap0 + l * taps_per + i * f.nz + j), 0, row, -zs(k - l, j));
-    }
+  add_fir_terms(f, zs, B);
   add_free_variables(f, regressors, B);
   return f;
 }
@@ -149,8 +183,8 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
 }  // namespace
 
 DeltaFormProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                    Eigen::Index max_taps) {
-  DeltaFormLayout f = build(z, r, objective, max_taps);
+                                    Eigen::Index max_taps, const RecordLengths& records) {
+  DeltaFormLayout f = build(z, r, objective, max_taps, records);
   return {std::move(f.program), {f.K, f.ny, f.nz, f.tap0, f.t, f.s, f.sigma_z, f.sigma_r}, f.m, f.L};
 }
 
@@ -159,7 +193,7 @@ namespace {
 /// q and d = r − Δ∗z − G q of a solve (original units; Q f = G q).
 void read_free_solution(DeltaFormSolution& out, const DeltaFormLayout& f, const FreeRegressors& regressors,
                         const Mat<double>& z, const Mat<double>& r) {
-  Vec<double> e = stack_rows(Mat<double>(r - apply_fir(out.taps, z, f.ny, f.L)));
+  Vec<double> e = stack_rows(Mat<double>(r - apply_fir_records(out.taps, z, f.ny, f.L, f.records)));
   if (regressors.count() == 0) {
     out.noise_residual = unstack_rows(e, f.ny);
     return;
@@ -176,9 +210,9 @@ void read_free_solution(DeltaFormSolution& out, const DeltaFormLayout& f, const 
 
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
                                    SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps,
-                                   const Mat<double>& free_regressors) {
+                                   const Mat<double>& free_regressors, const RecordLengths& records) {
   const FreeRegressors regressors(free_regressors, z.rows(), r.cols(), "delta form");
-  DeltaFormLayout f = build(z, r, objective, max_taps, regressors);
+  DeltaFormLayout f = build(z, r, objective, max_taps, records, regressors);
   DeltaFormSolution out;
   out.solve = solver.solve(f.program, options);
   out.leading_zeros = f.m;

@@ -18,6 +18,13 @@
 /// and the problem lives on the horizon L = n − m (SPEC §9): w_k =
 /// Σ_{l=0}^{k−m} h_l z_{k−l}, and only the taps h_0 … h_{L−1} matter.
 ///
+/// Several records (toeplitz/record_segments.h): z and r stack K records of
+/// one system under one Δ, each from rest for Δ. The horizon is then
+/// L = max_k (n_k − m_k) (m_k the leading zero samples of record k's z),
+/// (C1') is the same block on that L, and d = r − Δ∗z with Δ∗z taken record
+/// by record (apply_fir_records): no lag reaches into another record. (C2)
+/// keeps N = (Σ n_k)·ny rows in the stacked order of r.
+///
 /// Numbers are scaled before they reach the solver (z by its RMS σ_z, r by
 /// σ_r); `DeltaFormSolution` is in the original units.
 
@@ -28,15 +35,18 @@
 #include "lmi/bound_objective.h"
 #include "solvers/lmi_program.h"
 #include "toeplitz/fir.h"
+#include "toeplitz/record_segments.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {
 
 struct DeltaFormSolution {
   SolveResult solve;           ///< the backend's answer (x in scaled units)
-  Eigen::Index leading_zeros;  ///< m
-  Mat<double> taps;            ///< K × (ny·nz), original units (K ≤ L = n − leading_zeros)
-  Eigen::Index horizon = 0;    ///< L
+  /// m; several records: the rows before each record's first nonzero z,
+  /// Σ_k m_k (then not n − L: use horizon, or records_horizon)
+  Eigen::Index leading_zeros = 0;
+  Mat<double> taps;            ///< K × (ny·nz), original units (K ≤ L = n − leading_zeros for one record)
+  Eigen::Index horizon = 0;    ///< L (several records: max_k (n_k − m_k))
   double delta2 = 0.0;         ///< t (original units); the fixed value if δ was fixed
   double dmax2 = 0.0;          ///< s (original units); the fixed value if d_max was fixed
   /// With SolverOptions::want_dual: the dual matrices of (C1') and (C2) in
@@ -79,9 +89,12 @@ struct DeltaFormSolution {
 /// posed), and the answer's free_coefficients are the minimum-norm q with
 /// G q = Q·(those variables). Throws std::invalid_argument for a G without
 /// n·ny rows.
+/// `records` (lengths of the stacked records; empty: one record of all rows)
+/// gives the several-records program above (K taps: h_0 … h_{K−1} of the
+/// horizon L); throws std::invalid_argument when the lengths do not add up to n.
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
                                    SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps = 0,
-                                   const Mat<double>& free_regressors = {});
+                                   const Mat<double>& free_regressors = {}, const RecordLengths& records = {});
 
 /// Throws the InputError of solve_delta_form when z has no nonzero sample
 /// (or nz = 0); returns the number of leading zero samples m. Shared with
@@ -107,14 +120,15 @@ void read_delta_solution(const SolveResult& solve, const DeltaScaledVariables& v
 /// ("h<l>[<i>,<j>]", "delta2", "dmax2") and its meaning in
 /// LmiProgram::about: kind "theorem-2.1-delta-form", sigma_z, sigma_r,
 /// samples n, leading_zeros m, horizon L, taps K, ny, nz, and how each
-/// variable maps back to original units.
+/// variable maps back to original units (several records: also "records",
+/// the lengths).
 struct DeltaFormProgram {
   LmiProgram program;
   DeltaScaledVariables variables;
   Eigen::Index leading_zeros = 0, horizon = 0;
 };
 DeltaFormProgram delta_form_program(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
-                                    Eigen::Index max_taps = 0);
+                                    Eigen::Index max_taps = 0, const RecordLengths& records = {});
 /// The value of LmiProgram::about's "kind" for these programs.
 inline constexpr const char* kDeltaFormKind = "theorem-2.1-delta-form";
 

@@ -30,16 +30,19 @@ DeltaFormSolution solve_delta_form(const DeltaFormSignals& s, const BoundObjecti
   const auto tell = [&q](const std::string& line) {
     if (q.progress) q.progress(line);
   };
-  const Eigen::Index L = s.z.rows() - leading_zero_samples(s.z);
+  const Eigen::Index L = records_horizon(s.z, s.records);
   const bool kyp = q.method == DeltaFormMethod::kKyp;
   if (kyp && q.free_regressors.cols() > 0)
     throw std::invalid_argument("delta form: free regressors are not available with the KYP program");
+  if (kyp && several_records(s.records))
+    throw std::invalid_argument("delta form: several records are not available with the KYP program (its state "
+                                "would run across the records); use the Delta form on the full horizon or K taps");
   if (q.method == DeltaFormMethod::kStructured && q.taps == 0 && barrier_applies(s.z, s.r, objective)) {
     tell("solving Theorem 2.1 on the full horizon (" + std::to_string(L) + " taps) with the structured barrier");
-    DeltaFormSolution fast = solve_delta_form_barrier(s.z, s.r, objective, {}, q.free_regressors);
+    DeltaFormSolution fast = solve_delta_form_barrier(s.z, s.r, objective, {}, q.free_regressors, s.records);
     if (fast.solve.status != SolveStatus::kBackendError) return fast;
     tell(fast.solve.message + "; solving again with " + solver.name());
-    DeltaFormSolution slow = solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors);
+    DeltaFormSolution slow = solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors, s.records);
     slow.solve.message += (slow.solve.message.empty() ? "" : "; ") + fast.solve.message + " (fell back to " + solver.name() + ")";
     slow.solve.seconds += fast.solve.seconds;
     slow.fallback = fast.solve.message;
@@ -48,7 +51,7 @@ DeltaFormSolution solve_delta_form(const DeltaFormSignals& s, const BoundObjecti
   tell("solving Theorem 2.1 with " + solver.name() + " (" + (q.taps == 0 ? std::to_string(L) : std::to_string(q.taps)) +
        " taps" + (kyp ? ", KYP" : "") + ")");
   return kyp ? solve_kyp(s, objective, q, solver)
-             : solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors);
+             : solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors, s.records);
 }
 
 }  // namespace lpvid

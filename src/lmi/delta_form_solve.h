@@ -13,12 +13,13 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
 #include "lmi/delta_form_lmi.h"
-#include "toeplitz/record_segments.h"
 #include "solvers/sdp_solver.h"
+#include "toeplitz/record_segments.h"
 
 namespace lpvid {
 
@@ -27,15 +28,19 @@ enum class DeltaFormMethod { kStructured, kSdp, kKyp };
 /// z (n × nz) and r = y − ŷ − Φ (n × ny) as doubles, converted once from
 /// the exact signals.
 struct DeltaFormSignals {
+  DeltaFormSignals() = default;
+  DeltaFormSignals(Mat<double> z_in, Mat<double> r_in, RecordLengths records_in = {})
+      : z(std::move(z_in)), r(std::move(r_in)), records(std::move(records_in)) {}
   Mat<double> z, r;
-  /// Stacked records (toeplitz/record_segments.h): the lengths of the records
-  /// whose rows z and r hold one after another; empty: one record.
+  /// The lengths of the records stacked in z and r (toeplitz/record_segments.h;
+  /// each from rest for Δ, Δ∗z record by record); empty: one record of all
+  /// rows. Several records are not available with kKyp (std::invalid_argument).
   RecordLengths records;
 };
 
 struct DeltaFormRequest {
   DeltaFormMethod method = DeltaFormMethod::kStructured;
-  long taps = 0;  ///< K; 0: the full horizon L = n − (leading zero samples of z)
+  long taps = 0;  ///< K; 0: the full horizon L = n − (leading zero samples of z); records: records_horizon
   SolverOptions solver;
   std::function<void(const std::string&)> progress;  ///< one line per solve and fall-back; unset: silent
   /// Free regressors G ((n·ny) × P, stacked like r; lmi/free_regressors.h):
