@@ -41,7 +41,7 @@ int run_identify(IdentifyArgs& a) {
     in.model_q.correction = zero_correction<Rational>(basis, in.model_q.nx, in.model_q.nu);
     in.model_d.correction = zero_correction<double>(basis, in.model_d.nx, in.model_d.nu);
   }
-  print_options(a.common, in.objective, "identify");
+  print_options(a.common, in, "identify");
   std::cout << "  basis       ";
   for (const Monomial& f : in.model_q.correction.basis) std::cout << f.text(in.model_q.scheduling) << " ";
   std::cout << "\n";

@@ -20,11 +20,20 @@
 
 namespace lpvid::cli {
 
+/// One record of the command line: a --data file and the --rows window
+/// that follows it (empty: all rows).
+struct RecordOption {
+  std::string path, rows_text;
+};
+
 struct CommonOptions {
-  std::string data_path, model_path;
-  std::vector<std::string> names;        ///< --names for headerless data files
-  long row_begin = 0, row_end = -1;      ///< --rows B:E window
-  std::string rows_text;
+  std::string data_path, model_path;     ///< data_path: the first --data
+  std::vector<std::string> data_paths;   ///< every --data, in order (several: several records)
+  std::vector<std::string> rows_texts;   ///< every --rows, in order
+  std::string data_rows_order;           ///< 'd' per --data, 'r' per --rows, in the order given
+  std::vector<std::string> names;        ///< --names for headerless data files (every record)
+  long row_begin = 0, row_end = -1;      ///< --rows B:E window (one record)
+  std::string rows_text;                 ///< the --rows of one record
   std::string toeplitz = "signal";       ///< --toeplitz signal|paper
   std::string solver = "csdp";           ///< --solver
   std::string certificate_path;          ///< --certificate (default: <report stem>.cert.json or lpvid.cert.json)
@@ -54,8 +63,15 @@ struct Inputs {
   LpvModel<Rational> model_q;
   ToeplitzMode mode = ToeplitzMode::kSignal;
   BoundObjective objective;
-  DataReference data;  ///< where exp_q's rows came from (file, sha256, --names, --rows)
+  DataReference data;  ///< where exp_q's rows came from (file, sha256, --names, --rows); several records: the first
+  std::vector<DataReference> records;  ///< one per record, in order (one record: {data})
 };
+
+/// The records of the command line: each --data with the --rows after it
+/// (before the next --data). One --data: today's single window, its --rows
+/// anywhere. Throws InputError for a --rows before the first --data, two
+/// --rows for one --data, or several --data for a command without records.
+std::vector<RecordOption> data_records(const CommonOptions& o);
 
 /// The certification options every command takes from the common options and
 /// its inputs: objective, solver verbosity, --max-taps, --delta-norm, the data
@@ -71,7 +87,7 @@ Inputs load_inputs(const CommonOptions& o);
 std::pair<long, long> parse_row_range(const std::string& text, const std::string& flag);
 
 /// Prints the options a command ran with (DESIGN §7).
-void print_options(const CommonOptions& o, const BoundObjective& objective, const std::string& command);
+void print_options(const CommonOptions& o, const Inputs& in, const std::string& command);
 
 /// The certificate path to use.
 std::string certificate_path(const CommonOptions& o);
