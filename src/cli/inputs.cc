@@ -208,20 +208,20 @@ Inputs load_inputs(const CommonOptions& o) {
   return in;
 }
 
-void print_options(const CommonOptions& o, const Inputs& in, const std::string& command) {
-  std::cout << "lpvid " << command << "\n";
-  if (in.records.size() <= 1) {
-    std::cout << "  data        " << o.data_path << (o.rows_text.empty() ? "" : " rows " + o.rows_text) << "\n";
-  } else {
-    const std::vector<Eigen::Index>& n = in.exp_q.records;
-    for (size_t k = 0; k < in.records.size(); ++k) {
-      const DataReference& r = in.records[k];
-      std::cout << (k == 0 ? "  records     " : "              ") << r.file
-                << (r.row_end >= 0 ? " rows " + std::to_string(r.row_begin) + ":" + std::to_string(r.row_end) : "")
-                << " (n = " << n[k] << ")\n";
-    }
-    std::cout << "              one Delta and one noise bound for all " << in.records.size() << " records\n";
+std::string data_lines(const CommonOptions& o, const Inputs& in) {
+  if (in.records.size() <= 1) return "  data        " + o.data_path + (o.rows_text.empty() ? "" : " rows " + o.rows_text) + "\n";
+  std::string s;
+  for (size_t k = 0; k < in.records.size(); ++k) {
+    const DataReference& r = in.records[k];
+    s += (k == 0 ? "  records     " : "              ") + r.file +
+         (r.row_end >= 0 ? " rows " + std::to_string(r.row_begin) + ":" + std::to_string(r.row_end) : "") +
+         " (n = " + std::to_string(in.exp_q.records.at(k)) + ")\n";
   }
+  return s + "              one Delta and one noise bound for all " + std::to_string(in.records.size()) + " records\n";
+}
+
+void print_options(const CommonOptions& o, const Inputs& in, const std::string& command) {
+  std::cout << "lpvid " << command << "\n" << data_lines(o, in);
   std::cout << "  model       " << o.model_path << "\n"
             << "  objective   " << in.objective.describe() << "\n"
             << "  toeplitz    " << o.toeplitz << "\n"

@@ -86,6 +86,9 @@ Inputs load_inputs(const CommonOptions& o);
 /// naming the flag and the text otherwise.
 std::pair<long, long> parse_row_range(const std::string& text, const std::string& flag);
 
+/// The printed data line(s): the file and its --rows, or one line per record.
+std::string data_lines(const CommonOptions& o, const Inputs& in);
+
 /// Prints the options a command ran with (DESIGN §7).
 void print_options(const CommonOptions& o, const Inputs& in, const std::string& command);
 
