@@ -22,18 +22,15 @@ DeltaNorm delta_norm_of(const CommonOptions& o) {
 }
 
 void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
-  app.add_option("--data", o.data_paths,
-                 "data file (CSV with header, or whitespace columns with --names); repeat for several records of one "
-                 "system (one Delta, one noise bound for all; each --data followed by its own --rows)")
-      ->required()
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  add_data_and_rows(app, o.data_paths, o.rows_texts, o.data_rows_order,
+                    "data file (CSV with header, or whitespace columns with --names); repeat for several records of one "
+                    "system (one Delta, one noise bound for all; each --data followed by its own --rows)",
+                    "window of data rows B:E (0-based, E exclusive) of the --data before it; default all", [&o] {
+                      o.data_path = o.data_paths.empty() ? std::string() : o.data_paths.front();
+                      if (o.data_paths.size() == 1 && o.rows_texts.size() == 1) o.rows_text = o.rows_texts.front();
+                    });
   app.add_option("--model", o.model_path, "model file (lpvid-model/1 JSON)")->required();
-  app.add_option("--names", o.names, "column names for a headerless whitespace data file")->delimiter(',');
-  app.add_option("--rows", o.rows_texts,
-                 "window of data rows B:E (0-based, E exclusive) of the --data before it; default all")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--names", o.names, "column names for a headerless whitespace data file (every record)")->delimiter(',');
   app.add_option("--toeplitz", o.toeplitz, "T_z mode: signal (default: T_z from the simulated z) or paper (T_G12 T_u)")
       ->check(CLI::IsMember({"signal", "paper"}));
   std::vector<std::string> solvers = available_solvers();
@@ -60,13 +57,6 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   app.add_flag("--verbose", o.verbose, "let the SDP backend print its iterations");
   app.add_flag("--quiet", o.quiet, "no progress lines on stderr (errors are still printed)");
   o.command = app.get_name();
-  app.parse_complete_callback([&app, &o] {  // the order of --data and --rows pairs them (data_records)
-    o.data_rows_order.clear();
-    for (const CLI::Option* opt : app.parse_order())
-      if (opt->check_name("--data") || opt->check_name("--rows")) o.data_rows_order += opt->check_name("--data") ? 'd' : 'r';
-    o.data_path = o.data_paths.empty() ? std::string() : o.data_paths.front();
-    if (o.data_paths.size() == 1 && o.rows_texts.size() == 1) o.rows_text = o.rows_texts.front();
-  });
   if (needs_bounds) {
     auto* d = app.add_option("--delta", o.delta_text, "fix delta (exact decimal); minimise dmax");
     auto* m = app.add_option("--dmax", o.dmax_text, "fix dmax (RMS noise bound, exact decimal); minimise delta");
@@ -119,20 +109,33 @@ std::pair<long, long> parse_row_range(const std::string& text, const std::string
   return {b, e};
 }
 
-std::vector<RecordOption> data_records(const CommonOptions& o) {
-  if (o.data_paths.size() <= 1) {
-    if (o.rows_texts.size() > 1)
-      throw InputError("--rows is given " + std::to_string(o.rows_texts.size()) + " times for one --data (one window per --data)");
-    return {{o.data_path, o.rows_text}};
+void add_data_and_rows(CLI::App& app, std::vector<std::string>& paths, std::vector<std::string>& rows, std::string& order,
+                       const std::string& data_help, const std::string& rows_help, std::function<void()> then) {
+  app.add_option("--data", paths, data_help)->required()->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--rows", rows, rows_help)->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.parse_complete_callback([&app, &order, then] {  // the order of --data and --rows pairs them
+    order.clear();
+    for (const CLI::Option* opt : app.parse_order())
+      if (opt->check_name("--data") || opt->check_name("--rows")) order += opt->check_name("--data") ? 'd' : 'r';
+    if (then) then();
+  });
+}
+
+std::vector<RecordOption> pair_data_and_rows(const std::vector<std::string>& paths, const std::vector<std::string>& rows,
+                                             const std::string& order) {
+  if (paths.size() <= 1) {
+    if (rows.size() > 1)
+      throw InputError("--rows is given " + std::to_string(rows.size()) + " times for one --data (one window per --data)");
+    return {{paths.empty() ? std::string() : paths.front(), rows.empty() ? std::string() : rows.front()}};
   }
   std::vector<RecordOption> out;
   size_t d = 0, r = 0;
-  for (const char c : o.data_rows_order) {
+  for (const char c : order) {
     if (c == 'd') {
-      out.push_back({o.data_paths.at(d++), ""});
+      out.push_back({paths.at(d++), ""});
       continue;
     }
-    const std::string& text = o.rows_texts.at(r++);
+    const std::string& text = rows.at(r++);
     if (out.empty()) throw InputError("--rows " + text + ": given before the first --data (a --rows belongs to the --data before it)");
     if (!out.back().rows_text.empty())
       throw InputError("--rows " + text + ": " + out.back().path + " has a --rows already (" + out.back().rows_text +
@@ -140,6 +143,11 @@ std::vector<RecordOption> data_records(const CommonOptions& o) {
     out.back().rows_text = text;
   }
   return out;
+}
+
+std::vector<RecordOption> data_records(const CommonOptions& o) {
+  if (o.data_paths.empty()) return {{o.data_path, o.rows_text}};  // options set in code (one record)
+  return pair_data_and_rows(o.data_paths, o.rows_texts, o.data_rows_order);
 }
 
 namespace {

@@ -3,6 +3,7 @@
 /// exact rationals, from the same text), the model, the data window, and the
 /// common options of SPEC §8. Defaults live here, in one place (DESIGN §7).
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -67,10 +68,21 @@ struct Inputs {
   std::vector<DataReference> records;  ///< one per record, in order (one record: {data})
 };
 
+/// Registers --data and --rows, both repeatable, on `app`; after parsing,
+/// `order` holds 'd' per --data and 'r' per --rows in the order given and
+/// `then` (if set) runs.
+void add_data_and_rows(CLI::App& app, std::vector<std::string>& paths, std::vector<std::string>& rows, std::string& order,
+                       const std::string& data_help, const std::string& rows_help, std::function<void()> then = {});
+
+/// Each --data with the --rows after it (`order` as add_data_and_rows
+/// records it). One --data: its --rows anywhere (at most one). Throws
+/// InputError for a --rows before the first --data or two for one --data.
+std::vector<RecordOption> pair_data_and_rows(const std::vector<std::string>& paths, const std::vector<std::string>& rows,
+                                             const std::string& order);
+
 /// The records of the command line: each --data with the --rows after it
 /// (before the next --data). One --data: today's single window, its --rows
-/// anywhere. Throws InputError for a --rows before the first --data, two
-/// --rows for one --data, or several --data for a command without records.
+/// anywhere (pair_data_and_rows).
 std::vector<RecordOption> data_records(const CommonOptions& o);
 
 /// The certification options every command takes from the common options and

@@ -191,6 +191,29 @@ TEST_F(SeveralRecordsCli, OneRecordKeepsTheOneRecordReport) {
   EXPECT_EQ(output().find("pooled"), std::string::npos) << output();
 }
 
+TEST_F(SeveralRecordsCli, CompareScoresEachRecordFromItsOwnStartAndPoolsThem) {
+  ASSERT_EQ(run("compare", "--data " + file("a.csv") + " --data " + file("b.csv") + " --rows 20:80 --model " +
+                               file("model.json") + " --report " + file("r.json")),
+            0)
+      << output();
+  const nlohmann::json r = read_json(file("r.json"));
+  ASSERT_TRUE(r.contains("records")) << r.dump(1);
+  ASSERT_EQ(r["records"].size(), 2u);
+  EXPECT_EQ(r["records"][1]["rows"], nlohmann::json::array({20, 80}));
+  // each record a free run from the model's x0 at its own first row (computed here)
+  EXPECT_NEAR(r["records"][0]["rms"].get<double>(), std::sqrt(residual_energy(a, 0, 60) / 60), 1e-9);
+  EXPECT_NEAR(r["records"][1]["rms"].get<double>(), std::sqrt(residual_energy(b, 20, 80) / 60), 1e-9);
+  // pooled: every sample of both records
+  const double pooled = std::sqrt((residual_energy(a, 0, 60) + residual_energy(b, 20, 80)) / 120);
+  EXPECT_NEAR(r["rms"].get<double>(), pooled, 1e-9);
+  EXPECT_EQ(r["samples"], 120);
+  // --out writes one record's series: refused for several
+  EXPECT_EQ(run("compare", "--data " + file("a.csv") + " --data " + file("b.csv") + " --model " + file("model.json") +
+                               " --out " + file("s.csv")),
+            2);
+  EXPECT_NE(output().find("--out"), std::string::npos) << output();
+}
+
 // The certificate of several records: needs the record-aware Delta-form
 // solver (src/lmi); enable once it is merged.
 TEST_F(SeveralRecordsCli, DISABLED_TheCertificateNamesBothRecordsAndVerifies) {
