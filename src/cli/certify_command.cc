@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/inputs.h"
+#include "cli/record_figures.h"
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "certify/outside_solution.h"
@@ -25,7 +26,7 @@ int run_certify(CertifyArgs& a) {
   if (in.mode != ToeplitzMode::kSignal)
     throw InputError("certify: --toeplitz paper has no Delta-form program; outside solutions are read for the signal mode only");
   c.solver = "outside (" + a.format + " solution file " + a.solution_path + ")";  // for the printed options
-  print_options(c, in.objective, "certify");
+  print_options(c, in, "certify");
   const CertifyOptions co = certify_options(c, in);
   const OutsideSolution outside = read_outside_solution(
       a.program_path, a.solution_path, a.format == "sdpa" ? SolutionFormat::kSdpa : SolutionFormat::kCsdp, a.exit_code);
@@ -38,6 +39,7 @@ int run_certify(CertifyArgs& a) {
   report["program"] = a.program_path;
   report["solution"] = a.solution_path;
   report["samples"] = in.exp_q.n();
+  std::cout << add_record_figures(report, in.records, in.model_d, in.exp_d, b);
   const CertifyOutcome outcome = b.outcome;
   if (in.objective.kind == BoundObjective::Kind::kFeasibility)
     report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);

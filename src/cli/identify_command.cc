@@ -8,6 +8,7 @@
 #include "cli/class_interval_report.h"
 #include "cli/commands.h"
 #include "cli/inputs.h"
+#include "cli/record_figures.h"
 #include "cli/report.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
@@ -41,7 +42,7 @@ int run_identify(IdentifyArgs& a) {
     in.model_q.correction = zero_correction<Rational>(basis, in.model_q.nx, in.model_q.nu);
     in.model_d.correction = zero_correction<double>(basis, in.model_d.nx, in.model_d.nu);
   }
-  print_options(a.common, in.objective, "identify");
+  print_options(a.common, in, "identify");
   std::cout << "  basis       ";
   for (const Monomial& f : in.model_q.correction.basis) std::cout << f.text(in.model_q.scheduling) << " ";
   std::cout << "\n";
@@ -122,6 +123,8 @@ int run_identify(IdentifyArgs& a) {
   report["iterates"] = its;
   report["theta"] = theta_json(in.model_d, res.layout, id.fixed.value);
   report["samples"] = in.exp_q.n();
+  // each record's figures for the identified model (θ folded in, x0 as identified)
+  std::cout << add_record_figures(report, in.records, convert_model<double>(id.fixed.model), in.exp_d, b);
   if (in.objective.kind != BoundObjective::Kind::kFeasibility) {
     report["interval"] = interval_json(b, in.objective, files);
     report["interval"]["scope"] = "the model with the identified theta fixed (not the model class)";

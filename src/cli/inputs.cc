@@ -22,10 +22,15 @@ DeltaNorm delta_norm_of(const CommonOptions& o) {
 }
 
 void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
-  app.add_option("--data", o.data_path, "data file (CSV with header, or whitespace columns with --names)")->required();
+  add_data_and_rows(app, o.data_paths, o.rows_texts, o.data_rows_order,
+                    "data file (CSV with header, or whitespace columns with --names); repeat for several records of one "
+                    "system (one Delta, one noise bound for all; each --data followed by its own --rows)",
+                    "window of data rows B:E (0-based, E exclusive) of the --data before it; default all", [&o] {
+                      o.data_path = o.data_paths.empty() ? std::string() : o.data_paths.front();
+                      if (o.data_paths.size() == 1 && o.rows_texts.size() == 1) o.rows_text = o.rows_texts.front();
+                    });
   app.add_option("--model", o.model_path, "model file (lpvid-model/1 JSON)")->required();
-  app.add_option("--names", o.names, "column names for a headerless whitespace data file")->delimiter(',');
-  app.add_option("--rows", o.rows_text, "window of data rows B:E (0-based, E exclusive); default all");
+  app.add_option("--names", o.names, "column names for a headerless whitespace data file (every record)")->delimiter(',');
   app.add_option("--toeplitz", o.toeplitz, "T_z mode: signal (default: T_z from the simulated z) or paper (T_G12 T_u)")
       ->check(CLI::IsMember({"signal", "paper"}));
   std::vector<std::string> solvers = available_solvers();
@@ -104,47 +109,140 @@ std::pair<long, long> parse_row_range(const std::string& text, const std::string
   return {b, e};
 }
 
+void add_data_and_rows(CLI::App& app, std::vector<std::string>& paths, std::vector<std::string>& rows, std::string& order,
+                       const std::string& data_help, const std::string& rows_help, std::function<void()> then) {
+  app.add_option("--data", paths, data_help)->required()->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--rows", rows, rows_help)->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.parse_complete_callback([&app, &order, then] {  // the order of --data and --rows pairs them
+    order.clear();
+    for (const CLI::Option* opt : app.parse_order())
+      if (opt->check_name("--data") || opt->check_name("--rows")) order += opt->check_name("--data") ? 'd' : 'r';
+    if (then) then();
+  });
+}
+
+std::vector<RecordOption> pair_data_and_rows(const std::vector<std::string>& paths, const std::vector<std::string>& rows,
+                                             const std::string& order) {
+  if (paths.size() <= 1) {
+    if (rows.size() > 1)
+      throw InputError("--rows is given " + std::to_string(rows.size()) + " times for one --data (one window per --data)");
+    return {{paths.empty() ? std::string() : paths.front(), rows.empty() ? std::string() : rows.front()}};
+  }
+  std::vector<RecordOption> out;
+  size_t d = 0, r = 0;
+  for (const char c : order) {
+    if (c == 'd') {
+      out.push_back({paths.at(d++), ""});
+      continue;
+    }
+    const std::string& text = rows.at(r++);
+    if (out.empty()) throw InputError("--rows " + text + ": given before the first --data (a --rows belongs to the --data before it)");
+    if (!out.back().rows_text.empty())
+      throw InputError("--rows " + text + ": " + out.back().path + " has a --rows already (" + out.back().rows_text +
+                       "); give each --data at most one --rows, after it");
+    out.back().rows_text = text;
+  }
+  return out;
+}
+
+std::vector<RecordOption> data_records(const CommonOptions& o) {
+  if (o.data_paths.empty()) return {{o.data_path, o.rows_text}};  // options set in code (one record)
+  return pair_data_and_rows(o.data_paths, o.rows_texts, o.data_rows_order);
+}
+
+namespace {
+
+/// One record read once (sha256 of its bytes) and its --rows window applied.
+struct LoadedRecord {
+  Experiment<Rational> q;
+  Experiment<double> d;
+  DataReference ref;
+  std::vector<std::string> header;
+};
+
+LoadedRecord load_record(const RecordOption& r, const CommonOptions& o, const LpvModel<Rational>& model_q,
+                         const LpvModel<double>& model_d) {
+  const DataTable data = o.names.empty() ? read_data_table(r.path) : read_data_table(r.path, o.names);
+  LoadedRecord rec{make_experiment<Rational>(data.table, model_q.columns), make_experiment<double>(data.table, model_d.columns),
+                   data.reference, data.table.header};
+  if (r.rows_text.empty()) return rec;
+  const auto [b, e] = parse_row_range(r.rows_text, "--rows");
+  if (e > rec.q.n())
+    throw InputError("--rows " + r.rows_text + ": " + (o.data_paths.size() > 1 ? r.path + " has" : std::string("the data has")) +
+                     " only " + std::to_string(rec.q.n()) + " rows");
+  rec.q = select_rows(rec.q, b, e);
+  rec.d = select_rows(rec.d, b, e);
+  rec.ref = rec.ref.rows(b, e);
+  return rec;
+}
+
+/// The records side by side in `in` (exp_q, exp_d stacked; one reference each).
+void stack_into(const std::vector<LoadedRecord>& recs, Inputs& in) {
+  std::vector<Experiment<Rational>> qs;
+  std::vector<Experiment<double>> ds;
+  for (const LoadedRecord& r : recs) {
+    if (r.header.size() != recs[0].header.size())
+      throw InputError(r.ref.file + ": " + std::to_string(r.header.size()) + " columns, but " + recs[0].ref.file + " has " +
+                       std::to_string(recs[0].header.size()) + ": the records of one claim need the same columns");
+    qs.push_back(r.q);
+    ds.push_back(r.d);
+    in.records.push_back(r.ref);
+  }
+  in.exp_q = stack_records(qs);
+  in.exp_d = stack_records(ds);
+  in.data = in.records.front();
+}
+
+}  // namespace
+
 Inputs load_inputs(const CommonOptions& o) {
   // outputs first: a run that cannot write its report fails now, not at its end
   check_output_file(o.report_path, "report");
   check_output_file(o.certificate_path, "certificate");
   check_output_file(o.write_sdpa, "SDPA program");
+  const std::vector<RecordOption> wanted = data_records(o);
   Inputs in;
   in.model_q = read_model_file<Rational>(o.model_path);
   in.model_d = read_model_file<double>(o.model_path);
-  const DataTable data = o.names.empty() ? read_data_table(o.data_path) : read_data_table(o.data_path, o.names);
-  const TextTable& table = data.table;
-  in.data = data.reference;
-  in.exp_q = make_experiment<Rational>(table, in.model_q.columns);
-  in.exp_d = make_experiment<double>(table, in.model_d.columns);
-  CommonOptions& mo = const_cast<CommonOptions&>(o);
-  if (!o.rows_text.empty()) {
+  std::vector<LoadedRecord> recs;
+  for (const RecordOption& r : wanted) recs.push_back(load_record(r, o, in.model_q, in.model_d));
+  stack_into(recs, in);
+  if (!o.rows_text.empty() && wanted.size() == 1) {
+    CommonOptions& mo = const_cast<CommonOptions&>(o);
     std::tie(mo.row_begin, mo.row_end) = parse_row_range(o.rows_text, "--rows");
-    if (o.row_end > in.exp_q.n())
-      throw InputError("--rows " + o.rows_text + ": the data has only " + std::to_string(in.exp_q.n()) + " rows");
-    in.exp_q = select_rows(in.exp_q, o.row_begin, o.row_end);
-    in.exp_d = select_rows(in.exp_d, o.row_begin, o.row_end);
-    in.data = in.data.rows(o.row_begin, o.row_end);
   }
   in.mode = toeplitz_mode_from_string(o.toeplitz);
   in.objective = make_objective(o);
   return in;
 }
 
-void print_options(const CommonOptions& o, const BoundObjective& objective, const std::string& command) {
-  std::cout << "lpvid " << command << "\n"
-            << "  data        " << o.data_path << (o.rows_text.empty() ? "" : " rows " + o.rows_text) << "\n"
-            << "  model       " << o.model_path << "\n"
-            << "  objective   " << objective.describe() << "\n"
+std::string data_lines(const CommonOptions& o, const Inputs& in) {
+  if (in.records.size() <= 1) return "  data        " + o.data_path + (o.rows_text.empty() ? "" : " rows " + o.rows_text) + "\n";
+  std::string s;
+  for (size_t k = 0; k < in.records.size(); ++k) {
+    const DataReference& r = in.records[k];
+    s += (k == 0 ? "  records     " : "              ") + r.file +
+         (r.row_end >= 0 ? " rows " + std::to_string(r.row_begin) + ":" + std::to_string(r.row_end) : "") +
+         " (n = " + std::to_string(in.exp_q.records.at(k)) + ")\n";
+  }
+  return s + "              one Delta and one noise bound for all " + std::to_string(in.records.size()) + " records\n";
+}
+
+void print_options(const CommonOptions& o, const Inputs& in, const std::string& command) {
+  std::cout << "lpvid " << command << "\n" << data_lines(o, in);
+  std::cout << "  model       " << o.model_path << "\n"
+            << "  objective   " << in.objective.describe() << "\n"
             << "  toeplitz    " << o.toeplitz << "\n"
             << "  solver      " << o.solver << "\n"
-            << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny)\n";
+            << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny)"
+            << (in.records.size() > 1 ? ", n = all samples of all records" : "") << "\n";
 }
 
 CertifyOptions certify_options(const CommonOptions& c, const Inputs& in) {
   CertifyOptions co;
   co.objective = in.objective;
   co.data = in.data;
+  if (in.records.size() >= 2) co.records = in.records;
   co.solver.verbose = c.verbose;
   co.max_taps = c.max_taps;
   co.dense_dual = c.dense_dual;

@@ -3,6 +3,7 @@
 /// exact rationals, from the same text), the model, the data window, and the
 /// common options of SPEC §8. Defaults live here, in one place (DESIGN §7).
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -20,11 +21,20 @@
 
 namespace lpvid::cli {
 
+/// One record of the command line: a --data file and the --rows window
+/// that follows it (empty: all rows).
+struct RecordOption {
+  std::string path, rows_text;
+};
+
 struct CommonOptions {
-  std::string data_path, model_path;
-  std::vector<std::string> names;        ///< --names for headerless data files
-  long row_begin = 0, row_end = -1;      ///< --rows B:E window
-  std::string rows_text;
+  std::string data_path, model_path;     ///< data_path: the first --data
+  std::vector<std::string> data_paths;   ///< every --data, in order (several: several records)
+  std::vector<std::string> rows_texts;   ///< every --rows, in order
+  std::string data_rows_order;           ///< 'd' per --data, 'r' per --rows, in the order given
+  std::vector<std::string> names;        ///< --names for headerless data files (every record)
+  long row_begin = 0, row_end = -1;      ///< --rows B:E window (one record)
+  std::string rows_text;                 ///< the --rows of one record
   std::string toeplitz = "signal";       ///< --toeplitz signal|paper
   std::string solver = "csdp";           ///< --solver
   std::string certificate_path;          ///< --certificate (default: <report stem>.cert.json or lpvid.cert.json)
@@ -54,8 +64,26 @@ struct Inputs {
   LpvModel<Rational> model_q;
   ToeplitzMode mode = ToeplitzMode::kSignal;
   BoundObjective objective;
-  DataReference data;  ///< where exp_q's rows came from (file, sha256, --names, --rows)
+  DataReference data;  ///< where exp_q's rows came from (file, sha256, --names, --rows); several records: the first
+  std::vector<DataReference> records;  ///< one per record, in order (one record: {data})
 };
+
+/// Registers --data and --rows, both repeatable, on `app`; after parsing,
+/// `order` holds 'd' per --data and 'r' per --rows in the order given and
+/// `then` (if set) runs.
+void add_data_and_rows(CLI::App& app, std::vector<std::string>& paths, std::vector<std::string>& rows, std::string& order,
+                       const std::string& data_help, const std::string& rows_help, std::function<void()> then = {});
+
+/// Each --data with the --rows after it (`order` as add_data_and_rows
+/// records it). One --data: its --rows anywhere (at most one). Throws
+/// InputError for a --rows before the first --data or two for one --data.
+std::vector<RecordOption> pair_data_and_rows(const std::vector<std::string>& paths, const std::vector<std::string>& rows,
+                                             const std::string& order);
+
+/// The records of the command line: each --data with the --rows after it
+/// (before the next --data). One --data: today's single window, its --rows
+/// anywhere (pair_data_and_rows).
+std::vector<RecordOption> data_records(const CommonOptions& o);
 
 /// The certification options every command takes from the common options and
 /// its inputs: objective, solver verbosity, --max-taps, --delta-norm, the data
@@ -70,8 +98,11 @@ Inputs load_inputs(const CommonOptions& o);
 /// naming the flag and the text otherwise.
 std::pair<long, long> parse_row_range(const std::string& text, const std::string& flag);
 
+/// The printed data line(s): the file and its --rows, or one line per record.
+std::string data_lines(const CommonOptions& o, const Inputs& in);
+
 /// Prints the options a command ran with (DESIGN §7).
-void print_options(const CommonOptions& o, const BoundObjective& objective, const std::string& command);
+void print_options(const CommonOptions& o, const Inputs& in, const std::string& command);
 
 /// The certificate path to use.
 std::string certificate_path(const CommonOptions& o);

@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "cli/inputs.h"
+#include "cli/record_figures.h"
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "certify/certify.h"
@@ -16,7 +17,7 @@ namespace {
 
 int run_invalidate(CommonOptions& c) {
   Inputs in = load_inputs(c);
-  print_options(c, in.objective, "invalidate");
+  print_options(c, in, "invalidate");
   if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
     throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" or use 'lpvid identify'");
   // --write-sdpa: the Theorem 2.1 program itself, for an outside solver and
@@ -43,6 +44,7 @@ int run_invalidate(CommonOptions& c) {
   report["model_as_written"] = "theta = 0 (any correction basis is ignored), x0 as in the model file";
   report["iterations"] = 1;
   report["samples"] = in.exp_q.n();
+  std::cout << add_record_figures(report, in.records, in.model_d, in.exp_d, b);
   const CertifyOutcome outcome = b.outcome;
   if (in.objective.kind == BoundObjective::Kind::kFeasibility) {
     report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);

@@ -59,6 +59,8 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
                      "'lpvid jobs merge' writes the report");
   if (a.window < 2) throw InputError("jobs plan: --window must be at least 2 rows");
   if (a.min_last < 1) throw InputError("jobs plan: --min-last must be at least 1 row");
+  if (c.data_paths.size() > 1)
+    throw InputError("jobs plan: one --data (the plan tiles one record into windows); several records: 'lpvid invalidate'");
   Inputs in = load_inputs(c);
   if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
     throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" (the jobs run 'lpvid invalidate')");

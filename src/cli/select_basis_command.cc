@@ -116,7 +116,7 @@ int run_select(SelectArgs& a) {
   Inputs in = load_inputs(c);
   if (in.mode != ToeplitzMode::kSignal)
     throw InputError("select-basis: --toeplitz paper is not supported (identification uses the signal form)");
-  print_options(c, in.objective, "select-basis");
+  print_options(c, in, "select-basis");
   const std::vector<Monomial> order = basis_growth_order(in.model_d.n_rho(), a.max_degree);
   std::cout << "  growth      " << basis_text(order, in.model_d.scheduling) << " (max degree " << a.max_degree
             << ")\n"

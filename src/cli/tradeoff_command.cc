@@ -54,7 +54,7 @@ int run_tradeoff(TradeoffArgs& a) {
   }
   const std::vector<double> lambdas = a.lambdas.empty() ? default_lambda_grid() : a.lambdas;
   std::cout << "lpvid tradeoff\n"
-            << "  data        " << c.data_path << (c.rows_text.empty() ? "" : " rows " + c.rows_text) << "\n"
+            << data_lines(c, in)
             << "  model       " << c.model_path << "\n"
             << "  basis       " << basis_text(in.model_q.correction.basis, in.model_q.scheduling) << "\n"
             << "  objective   minimise lambda*delta^2 + (1-lambda)*dmax^2 for lambda in";
