@@ -73,11 +73,24 @@ int benchmark_warmup(const std::string& name) {
 
 /// Column map of the validation data: est column name → validation name.
 /// The records' roles as the options give them (diagnose/record_roles.h).
+/// The estimation records of the command line: each --data with its --rows
+/// (path, rows text). Today one; with repeatable --data (several records),
+/// one entry per --data in order.
+std::vector<std::pair<std::string, std::string>> estimation_records(const DiagnoseArgs& a) {
+  return {{a.common.data_path, a.common.rows_text}};
+}
+
 RolePlan role_plan(const DiagnoseArgs& a, int warmup) {
   RolePlan plan;
-  plan.data_path = a.common.data_path;
+  const auto records = estimation_records(a);
+  plan.data_path = records[0].first;
   plan.names = a.common.names;
-  if (!a.common.rows_text.empty()) plan.rows = std::make_pair(a.common.row_begin, a.common.row_end);
+  if (!records[0].second.empty()) plan.rows = parse_row_range(records[0].second, "--rows");
+  for (size_t k = 1; k < records.size(); ++k) {
+    RecordSource s{records[k].first, a.common.names, {}, std::nullopt, records[k].second};
+    if (!records[k].second.empty()) s.rows = parse_row_range(records[k].second, "--rows");
+    plan.more_data.push_back(s);
+  }
   const auto source = [](const std::string& path, const std::vector<std::string>& names,
                          const std::vector<std::string>& columns, const std::string& rows, const std::string& role) {
     RecordSource s{path, names, columns, std::nullopt, rows};
@@ -167,6 +180,8 @@ int run_diagnose(DiagnoseArgs& a) {
   o.certify.data = roles.data;  // the bytes est_q was parsed from; rows: set per window
   o.certify.lower_end = a.lower_ends;
   o.file_row_offset = file_offset;
+  if (roles.records.size() > 1)
+    for (const EstimationRecord& r : roles.records) o.record_data.push_back(r.data);
   const std::string certificates = certificate_path(a.common);
   o.on_bound = [&certificates](WindowBounds& w, size_t window, size_t windows, bool after) {
     write_window_certificate(w, certificates, window, windows, after);
@@ -194,6 +209,7 @@ int run_diagnose(DiagnoseArgs& a) {
   ri.test_warmup = warmup;
   ri.file_row_offset = file_offset;
   ri.validation_outputs = roles.selection.outputs;
+  ri.records = roles.records;
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;
   ri.solver = a.common.solver;

@@ -9,6 +9,7 @@
 #include "cli/report.h"
 #include "core/decimal_rounding.h"
 #include "fit/output_error_fit.h"
+#include "fit/output_score.h"
 #include "plot/diagnose_plots.h"
 #include "diagnose/residual_analysis.h"
 #include "model/simulate.h"
@@ -229,6 +230,59 @@ std::string bound_line(const WindowBounds& w) {
 
 }  // namespace
 
+namespace {
+
+/// Several test sets: the pooled score (DiagnoseResult::pooled_before/after), printed; null for fewer.
+ojson pooled_tests_json(const DiagnoseResult& res) {
+  if (res.tests.size() < 2) return nullptr;
+  const FreeRunScore &b = res.pooled_before, &a = res.pooled_after;
+  std::cout << "\ntests pooled (" << res.tests.size() << " sets, " << a.scored
+            << " scored samples, each set from its own warm-up): before: RMS " << num(b.rms) << ", fit "
+            << num(b.fit_percent, 4) << " %   after: RMS " << num(a.rms) << ", fit " << num(a.fit_percent, 4) << " %\n";
+  return {{"sets", res.tests.size()},
+          {"scored_samples", a.scored},
+          {"rms_before", finite_or_null(b.rms)},
+          {"rms_after", finite_or_null(a.rms)},
+          {"fit_percent_before", finite_or_null(b.fit_percent)},
+          {"fit_percent_after", finite_or_null(a.fit_percent)}};
+}
+
+/// Several estimation records: each record's free-run figures of the models
+/// before and after (simulated record by record from the fitted x0), printed
+/// and as the report's `records` list, then the pooled line.
+ojson estimation_records_json(const DiagnoseReportInputs& in) {
+  const DiagnoseResult& res = *in.result;
+  const Experiment<double>& est = *in.est;
+  const Mat<double> yb = simulate(res.before_model, est).output, ya = simulate(res.after_model, est).output;
+  ojson out = ojson::array();
+  std::cout << "\nestimation records (free run of the fitted models, each record from its start)\n";
+  Eigen::Index first = 0;
+  for (size_t k = 0; k < in.records.size(); ++k) {
+    const EstimationRecord& r = in.records[k];
+    const Eigen::Index m = k < est.records.size() ? est.records[k] : est.n();
+    const Mat<double> y = est.y.middleRows(first, m);
+    const OutputScores b = score_outputs(y, yb.middleRows(first, m)), a = score_outputs(y, ya.middleRows(first, m));
+    std::cout << "  record " << k + 1 << " (" << r.text << ", " << m << " samples): before: RMS " << num(b.rms_all)
+              << ", fit " << num(b.fit_percent_all, 4) << " %   after: RMS " << num(a.rms_all) << ", fit "
+              << num(a.fit_percent_all, 4) << " %\n";
+    out.push_back({{"file", r.data.file},
+                   {"rows", {r.data.row_begin, r.data.row_end}},
+                   {"sha256", r.data.sha256},
+                   {"samples", m},
+                   {"rms_before", finite_or_null(b.rms_all)},
+                   {"rms_after", finite_or_null(a.rms_all)},
+                   {"fit_percent_before", finite_or_null(b.fit_percent_all)},
+                   {"fit_percent_after", finite_or_null(a.fit_percent_all)}});
+    first += m;
+  }
+  const OutputScores b = score_outputs(est.y, yb), a = score_outputs(est.y, ya);
+  std::cout << "  pooled (" << est.n() << " samples): before: RMS " << num(b.rms_all) << ", fit " << num(b.fit_percent_all, 4)
+            << " %   after: RMS " << num(a.rms_all) << ", fit " << num(a.fit_percent_all, 4) << " %\n";
+  return out;
+}
+
+}  // namespace
+
 void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::string& report_path) {
   const DiagnoseResult& res = *in.result;
   const RankingResult& r = res.rank;
@@ -387,6 +441,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   }
   // "test": the first test set (the field of earlier reports), "tests": all of them
   const ojson test = tests.empty() ? ojson(nullptr) : tests.front();
+  const ojson tests_pooled = pooled_tests_json(res);
 
   // residual analysis and plots on the validation data (free run)
   const ShownRecord& shown = res.shown;
@@ -511,6 +566,8 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
   }
   j["test"] = test;
   j["tests"] = tests;
+  if (!tests_pooled.is_null()) j["tests_pooled"] = tests_pooled;
+  if (in.records.size() > 1) j["records"] = estimation_records_json(in);
   j["effects"] = effects;
   j["before"] = side_json(r.before_estimation, r.before_validation, res.before);
   j["after"] = side_json(r.after_estimation, r.after_validation, res.after);

@@ -2,6 +2,7 @@
 /// The report of `lpvid diagnose` (SPEC §8: effects, before, after, plots):
 /// printed in a readable form and written as JSON.
 
+#include "diagnose/record_roles.h"
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct DiagnoseReportInputs {
   std::string estimation_rows_text;  ///< "file rows a:b" of the estimation record (fold mode)
   long file_row_offset = 0;
   std::vector<std::string> validation_outputs;  ///< the validation data's output column names (plot legends)
+  /// The estimation records (two or more: the report's per-record lines and
+  /// its `records` list; one: nothing added).
+  std::vector<EstimationRecord> records;
 };
 
 /// Prints the report, makes the plots (if plots_dir is set) and writes the

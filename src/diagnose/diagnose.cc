@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <mutex>
 
@@ -9,8 +11,10 @@
 #include "core/input_error.h"
 #include "core/parallel_for.h"
 #include "diagnose/effect_reading.h"
+#include "diagnose/record_windows.h"
 #include "data/experiment_builder.h"
 #include "fit/output_error_fit.h"
+#include "fit/output_score.h"
 #include "model/simulate.h"
 
 namespace lpvid {
@@ -42,6 +46,27 @@ void set_map_ranges(DiagnoseResult& out, const Experiment<double>& est_d) {
 }
 
 }  // namespace
+
+FreeRunScore pooled_test_score(const std::vector<Experiment<double>>& tests, const std::vector<const Mat<double>*>& yhat,
+                               Eigen::Index warmup) {
+  FreeRunScore s;
+  s.warmup = warmup;
+  for (const Experiment<double>& t : tests) s.scored += t.n() - warmup;
+  if (tests.empty()) return s;
+  Mat<double> y(s.scored, tests[0].ny()), f(s.scored, tests[0].ny());
+  Eigen::Index row = 0;
+  for (size_t t = 0; t < tests.size(); ++t) {
+    const Eigen::Index m = tests[t].n() - warmup;
+    y.middleRows(row, m) = tests[t].y.bottomRows(m);
+    const bool ok = yhat[t]->rows() == tests[t].n() && yhat[t]->cols() == y.cols();
+    f.middleRows(row, m) = ok ? Mat<double>(yhat[t]->bottomRows(m)) : Mat<double>::Constant(m, y.cols(), std::nan(""));
+    row += m;
+  }
+  const OutputScores sc = score_outputs(y, f);  // the one-set formulas over the pooled samples
+  s.rms = sc.rms_all;
+  s.fit_percent = sc.fit_percent_all;
+  return s;
+}
 
 CertifyOptions diagnose_policy(CertifyOptions base) {
   base.lower_end = false;
@@ -140,10 +165,43 @@ void announce_bound_cost(const std::vector<RowWindow>& windows, const LpvModel<d
   options.ranking.progress(buf);
 }
 
+/// The bound windows as joint windows (diagnose/record_windows.h): one
+/// piece each for one record, the records' windows side by side for several.
+std::vector<JointWindow> bound_windows(const Experiment<double>& est_d, const DiagnoseOptions& options) {
+  if (options.record_data.size() < 2) {
+    std::vector<JointWindow> out;
+    for (const RowWindow& w :
+         spread_windows(options.windows.empty() ? default_bound_windows(est_d.n()) : options.windows, options.max_windows))
+      out.push_back({w});
+    return out;
+  }
+  const std::vector<JointWindow> all = joint_windows(est_d.n(), est_d.records, options.windows);
+  std::vector<RowWindow> index;  // spread_windows picks among the joint windows by their index
+  for (size_t i = 0; i < all.size(); ++i) index.emplace_back(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+  std::vector<JointWindow> out;
+  for (const RowWindow& i : spread_windows(index, options.max_windows)) out.push_back(all[static_cast<size_t>(i.first)]);
+  return out;
+}
+
+/// Every piece of every joint window (the checks), and one window of each
+/// joint window's total length (the cost estimate).
+std::vector<RowWindow> all_pieces(const std::vector<JointWindow>& joint, bool total) {
+  std::vector<RowWindow> out;
+  for (const JointWindow& w : joint) {
+    Eigen::Index len = 0;
+    for (const RowWindow& p : w) {
+      if (!total) out.push_back(p);
+      len += p.second - p.first;
+    }
+    if (total) out.emplace_back(0, len);
+  }
+  return out;
+}
+
 /// Step 3: Theorem 2.1 on every window, before and after: one independent
 /// job each (core/parallel_for.h); SDP solves serialise inside
 /// (solvers/sdp_solver.cc).
-void certify_windows(DiagnoseResult& out, const std::vector<RowWindow>& windows, const Experiment<double>& est_d,
+void certify_windows(DiagnoseResult& out, const std::vector<JointWindow>& windows, const Experiment<double>& est_d,
                      const Experiment<Rational>& est_q, const DiagnoseOptions& options, SdpSolver& solver) {
   out.before.resize(windows.size());
   out.after.resize(windows.size());
@@ -157,8 +215,11 @@ void certify_windows(DiagnoseResult& out, const std::vector<RowWindow>& windows,
     const bool after = job % 2 == 1;
     auto own = threads > 1 ? options.make_solver() : nullptr;
     WindowBounds& w = (after ? out.after : out.before)[i];
-    w = certify_window(after ? out.after_model : out.before_model, est_d, est_q, windows[i].first, windows[i].second,
-                       options.file_row_offset, options.certify, own ? *own : solver);
+    const LpvModel<double>& model = after ? out.after_model : out.before_model;
+    w = options.record_data.size() < 2
+            ? certify_window(model, est_d, est_q, windows[i][0].first, windows[i][0].second, options.file_row_offset,
+                             options.certify, own ? *own : solver)
+            : certify_joint_window(model, est_d, est_q, windows[i], options.record_data, options.certify, own ? *own : solver);
     if (options.on_bound) options.on_bound(w, i, windows.size(), after);
     if (options.ranking.progress) {
       const std::lock_guard<std::mutex> lock(report);
@@ -184,6 +245,14 @@ void score_tests(DiagnoseResult& out, const std::vector<Experiment<double>>& tes
     t.after = warmup_score(out.after_model, test, options.test_warmup, &t.y_after);
     out.tests.push_back(t);
   }
+  if (tests.size() < 2) return;
+  std::vector<const Mat<double>*> before, after;
+  for (const TestScore& t : out.tests) {
+    before.push_back(&t.y_before);
+    after.push_back(&t.y_after);
+  }
+  out.pooled_before = pooled_test_score(tests, before, options.test_warmup);
+  out.pooled_after = pooled_test_score(tests, after, options.test_warmup);
 }
 
 }  // namespace
@@ -192,10 +261,9 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
                         const Experiment<Rational>& est_q, const Experiment<double>& selection,
                         const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options,
                         SdpSolver& solver) {
-  const std::vector<RowWindow> windows =
-      spread_windows(options.windows.empty() ? default_bound_windows(est_q.n()) : options.windows, options.max_windows);
-  check_options(est_d, est_q, selection, tests, options, windows);
-  announce_bound_cost(windows, declared, options);
+  const std::vector<JointWindow> windows = bound_windows(est_d, options);
+  check_options(est_d, est_q, selection, tests, options, all_pieces(windows, false));
+  announce_bound_cost(all_pieces(windows, true), declared, options);
 
   // 1. effects: fitted on the estimation data, chosen on the selection data
   DiagnoseResult out;
@@ -212,7 +280,7 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
   // optional: a failure here is this stage's (WindowIdentification::failed); every result above stands
   for (auto [model, id] : {std::pair{&out.before_model, &out.before_id}, std::pair{&out.after_model, &out.after_id}}) {
-    *id = try_identify_on_window(*model, est_d, est_q, windows[0].first, windows[0].second, options.file_row_offset,
+    *id = try_identify_on_window(*model, est_d, est_q, windows[0][0].first, windows[0][0].second, options.file_row_offset,
                                  options.certify, solver);
     if (!id->failed.empty() && options.ranking.progress) options.ranking.progress(id->failed + " (the diagnosis stands)");
   }

@@ -65,6 +65,12 @@ struct DiagnoseOptions {
   /// nothing is written.
   std::function<void(WindowBounds& w, size_t window, size_t windows, bool after)> on_bound;
   long file_row_offset = 0;  ///< data-file row of estimation sample 0 (certificates name file rows)
+  /// Several estimation records (est_d.records): where each record's rows
+  /// are in its file (its window as read), in stacking order; the bounds are
+  /// then certified on joint windows (diagnose/record_windows.h), each one
+  /// claim over its records with a certificate naming every record. Empty:
+  /// one record, `certify.data` and `file_row_offset` name it.
+  std::vector<DataReference> record_data;
   /// Windows certified at once; > 1 needs `make_solver` (one backend per
   /// job). Results do not depend on it.
   unsigned threads = 1;
@@ -108,6 +114,10 @@ struct DiagnoseResult {
   std::vector<WindowBounds> before, after;     ///< one per bound window, same windows
   WindowIdentification before_id, after_id;    ///< Theorem 3.1 on the first window
   std::vector<TestScore> tests;                ///< one per test set given, in their order
+  /// Over every test set: RMS over all their scored samples (each set from
+  /// its own warm-up) and fit % against the pooled scored outputs' deviation
+  /// from their mean (pooled_test_score).
+  FreeRunScore pooled_before, pooled_after;
   ShownRecord shown;
   /// Per ranking round, per ranked candidate: the share of the round's
   /// estimation residual energy that the candidate's added output signal
@@ -125,6 +135,13 @@ struct DiagnoseResult {
   /// window's own outcome and reason).
   CertifyOutcome outcome() const;
 };
+
+/// The pooled score of several test sets' free runs: RMS over every scored
+/// sample of every set, fit % = 100·(1 − ‖y − ŷ‖/‖y − ȳ‖) over them all (ȳ
+/// per output over all scored samples); `yhat[t]` is set t's free run, its
+/// first `warmup` rows not scored.
+FreeRunScore pooled_test_score(const std::vector<Experiment<double>>& tests, const std::vector<const Mat<double>*>& yhat,
+                               Eigen::Index warmup);
 
 /// Runs steps 1–4. `est_q` is the exact copy of `est_d` (the same rows);
 /// `tests` may be empty; each test set is scored once, separately (a

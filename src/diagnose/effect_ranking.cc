@@ -204,12 +204,14 @@ std::vector<EffectCandidate> round_candidates(const LpvModel<double>& current, c
 }
 
 /// The training rows of set t: for fold t (t < K) the longer of the two
-/// contiguous stretches of the record beside its block (fold_plan.h "fit");
-/// t == K is the whole record.
-FoldBlock training_rows(Eigen::Index n, const std::vector<FoldBlock>& blocks, size_t t) {
-  if (t >= blocks.size()) return {0, n};
-  const FoldBlock& b = blocks[t];
-  return b.first >= n - b.last ? FoldBlock{0, b.first} : FoldBlock{b.last, n};
+/// contiguous stretches of its record beside its block and every other
+/// record whole, each a record of its own (fold_plan.h training_pieces);
+/// t == K is the whole estimation data.
+Experiment<double> training_set(const Experiment<double>& est, const std::vector<FoldBlock>& blocks, size_t t) {
+  if (t >= blocks.size()) return est;
+  std::vector<Experiment<double>> parts;
+  for (const FoldBlock& p : training_pieces(est.n(), est.records, blocks, t)) parts.push_back(select_rows(est, p.first, p.last));
+  return parts.size() == 1 ? parts[0] : stack_records(parts);
 }
 
 /// Held-out squared error of `m` on block j (fold_plan.h "score").
@@ -277,8 +279,7 @@ std::vector<FoldedFamily> fit_families(const std::vector<FamilyFit>& families, c
   size_t done = 0;
   parallel_for(jobs, o.threads, [&](size_t job) {
     const size_t i = job / sets, t = job % sets;
-    const FoldBlock rows = training_rows(est.n(), blocks, t);
-    FamilyFitOutcome r = families[i](t == k ? est : select_rows(est, rows.first, rows.last), t, o.fit);
+    FamilyFitOutcome r = families[i](training_set(est, blocks, t), t, o.fit);
     if (t == k) {
       out[i].whole = r.best;
       whole_by_start[i] = std::move(r.by_start);
@@ -429,8 +430,7 @@ FoldChain start_fold_chain(const LpvModel<double>& declared, const Experiment<do
   c.training.resize(k);
   c.current_fold.resize(k);
   for (size_t t = 0; t < k; ++t) {
-    const FoldBlock rows = training_rows(est.n(), res.fold_blocks, t);
-    c.training[t] = select_rows(est, rows.first, rows.last);
+    c.training[t] = training_set(est, res.fold_blocks, t);
     const FitResult f = fit_declared(declared, c.training[t], fit);
     c.current_fold[t] = f.finite ? f.model : res.before;
   }
@@ -545,7 +545,7 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
                                     const RankingOptions& o) {
   RankingResult res;
   res.min_gain = o.min_gain;
-  res.fold_blocks = blocked_folds(est.n(), o.folds, o.fold_warmup);
+  res.fold_blocks = blocked_folds(est.n(), est.records, o.folds, o.fold_warmup);
   // before: the declared unknowns fitted on each training set
   const FitResult before = fit_declared(declared, est, o.fit);
   res.before = before.model;

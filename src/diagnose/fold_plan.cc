@@ -31,6 +31,82 @@ std::vector<FoldBlock> blocked_folds(Eigen::Index n, int k, Eigen::Index warmup)
   return out;
 }
 
+namespace {
+
+/// [first, first + length) of every record.
+std::vector<FoldBlock> record_spans(Eigen::Index n, const std::vector<Eigen::Index>& records) {
+  if (records.size() <= 1) return {FoldBlock{0, n}};
+  std::vector<FoldBlock> out;
+  Eigen::Index first = 0;
+  for (const Eigen::Index len : records) {
+    out.push_back({first, first + len});
+    first += len;
+  }
+  return out;
+}
+
+/// Blocks per record: at least one each, k in all, by length (largest remainders).
+std::vector<int> blocks_per_record(const std::vector<FoldBlock>& spans, int k, Eigen::Index n) {
+  const size_t r = spans.size();
+  std::vector<int> share(r, 1);
+  if (k <= static_cast<int>(r)) return share;
+  std::vector<double> rest(r);
+  int given = static_cast<int>(r);
+  for (size_t i = 0; i < r; ++i) {
+    const double exact = static_cast<double>(k - static_cast<int>(r)) * static_cast<double>(spans[i].last - spans[i].first) /
+                         static_cast<double>(n);
+    share[i] += static_cast<int>(std::floor(exact));
+    rest[i] = exact - std::floor(exact);
+    given += static_cast<int>(std::floor(exact));
+  }
+  for (; given < k; ++given) {
+    size_t best = 0;
+    for (size_t i = 1; i < r; ++i)
+      if (rest[i] > rest[best]) best = i;
+    ++share[best];
+    rest[best] = -1;
+  }
+  return share;
+}
+
+}  // namespace
+
+std::vector<FoldBlock> blocked_folds(Eigen::Index n, const std::vector<Eigen::Index>& records, int k, Eigen::Index warmup) {
+  const std::vector<FoldBlock> spans = record_spans(n, records);
+  if (spans.size() == 1) return blocked_folds(n, k, warmup);
+  if (k < 2) throw InputError("--folds must be at least 2 (got " + std::to_string(k) + ")");
+  const std::vector<int> share = blocks_per_record(spans, k, n);
+  std::vector<FoldBlock> out;
+  for (size_t i = 0; i < spans.size(); ++i) {
+    const Eigen::Index len = spans[i].last - spans[i].first;
+    if (share[i] == 1) {
+      if (len <= 2 * warmup)
+        throw InputError("record " + std::to_string(i + 1) + " has " + std::to_string(len) +
+                         " samples: a fold needs more than twice the warm-up of " + std::to_string(warmup) + " samples");
+      out.push_back(spans[i]);
+      continue;
+    }
+    for (const FoldBlock& b : blocked_folds(len, share[i], warmup)) out.push_back({spans[i].first + b.first, spans[i].first + b.last});
+  }
+  return out;
+}
+
+std::vector<FoldBlock> training_pieces(Eigen::Index n, const std::vector<Eigen::Index>& records,
+                                       const std::vector<FoldBlock>& blocks, size_t t) {
+  const FoldBlock& b = blocks[t];
+  std::vector<FoldBlock> out;
+  for (const FoldBlock& s : record_spans(n, records)) {
+    if (b.last <= s.first || b.first >= s.last) {
+      out.push_back(s);
+      continue;
+    }
+    const FoldBlock before{s.first, b.first}, after{b.last, s.last};
+    const FoldBlock& longer = before.last - before.first >= after.last - after.first ? before : after;
+    if (longer.last > longer.first) out.push_back(longer);
+  }
+  return out;
+}
+
 double FoldFigures::rms(size_t j) const {
   if (!std::isfinite(sse[j]) || count[j] == 0) return std::numeric_limits<double>::infinity();
   return std::sqrt(sse[j] / static_cast<double>(count[j]));

@@ -54,6 +54,19 @@ struct RolePlan {
   double holdout = 0.3;                        ///< kHoldout: the held-out share
   RecordSource separate;                       ///< kSeparate: where the selection record is
   std::vector<RecordSource> tests;
+  /// Further estimation records (their files with optional `rows`, `names`;
+  /// `columns` unused), stacked after the first as records of one
+  /// experiment (data/experiment.h: records). Holdout then holds out the last
+  /// share of EACH record; folds are made within the records (fold_plan.h).
+  std::vector<RecordSource> more_data;
+};
+
+/// One estimation record as read: where its rows came from (file, sha256,
+/// the window of its rows) and the description the report gives it.
+struct EstimationRecord {
+  DataReference data;   ///< rows: the window of the file that was fitted
+  Eigen::Index samples = 0;
+  std::string text;
 };
 
 struct RoleRecords {
@@ -64,6 +77,9 @@ struct RoleRecords {
   RoleRecord selection;              ///< kFolds: the last block (shown, not a separate record)
   std::vector<RoleRecord> tests;
   std::string estimation_text;       ///< "file rows a:b (fit: …)"
+  /// Every estimation record in stacking order (one: `data` with its window);
+  /// est_q/est_d hold them stacked (Experiment::records) after any holdout.
+  std::vector<EstimationRecord> records;
 };
 
 /// Reads every record of the plan. `declared` names the columns of the

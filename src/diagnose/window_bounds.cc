@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "data/experiment_builder.h"
 #include "diagnose/effect_candidates.h"
+#include "diagnose/record_windows.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
 
@@ -67,6 +68,74 @@ WindowBounds certify_window(const LpvModel<double>& model, const Experiment<doub
     w.bounds.reason = std::string("certification failed on this window: ") + e.what();
   }
   judge_informative(w, est_d.y.middleRows(begin, end - begin));
+  return w;
+}
+
+namespace {
+
+/// The pieces stacked as records, each from the model's exact state at its first row.
+Experiment<Rational> joint_data(const LpvModel<double>& model, const Experiment<double>& est_d,
+                                const Experiment<Rational>& est_q, const std::vector<RowWindow>& pieces,
+                                LpvModel<Rational>& exact) {
+  const Simulation<double> sim = simulate(model, est_d);
+  std::vector<Experiment<Rational>> parts;
+  std::vector<Vec<Rational>> x0;
+  for (const auto& [b, e] : pieces) {
+    const Vec<double> xb = model.nx > 0 ? Vec<double>(sim.x.row(b).transpose()) : Vec<double>();
+    LpvModel<Rational> m = exact_model(model, xb);
+    x0.push_back(m.x0);
+    if (parts.empty()) exact = std::move(m);
+    Experiment<Rational> part = select_rows(est_q, b, e);
+    part.records.clear();
+    part.record_x0.clear();
+    parts.push_back(std::move(part));
+  }
+  Experiment<Rational> out = stack_records(parts);
+  out.record_x0 = x0;
+  return out;
+}
+
+}  // namespace
+
+WindowBounds certify_joint_window(const LpvModel<double>& model, const Experiment<double>& est_d,
+                                  const Experiment<Rational>& est_q, const std::vector<RowWindow>& pieces,
+                                  const std::vector<DataReference>& record_data, CertifyOptions options,
+                                  SdpSolver& solver) {
+  if (pieces.size() == 1) {
+    const auto [k, first] = record_of_row(est_d.records, pieces[0].first);
+    if (record_data.empty()) return certify_window(model, est_d, est_q, pieces[0].first, pieces[0].second, 0, options, solver);
+    options.data = record_data[k];  // its file; certify_window sets the rows
+    return certify_window(model, est_d, est_q, pieces[0].first, pieces[0].second,
+                          record_data[k].row_begin - static_cast<long>(first), options, solver);
+  }
+  for (const auto& [b, e] : pieces)
+    if (b < 0 || e <= b || e > est_q.n())
+      throw InputError("bound window " + std::to_string(b) + ":" + std::to_string(e) + " is outside the " +
+                       std::to_string(est_q.n()) + " estimation samples");
+  WindowBounds w;
+  w.pieces = pieces;
+  Mat<double> y(0, est_d.ny());
+  for (const auto& [b, e] : pieces) {
+    const auto [k, first] = record_of_row(est_d.records, b);
+    w.records.push_back(record_data.at(k).rows(static_cast<long>(b - first), static_cast<long>(e - first)));
+    y.conservativeResize(y.rows() + (e - b), Eigen::NoChange);
+    y.bottomRows(e - b) = est_d.y.middleRows(b, e - b);
+  }
+  w.begin = pieces[0].first;
+  w.end = pieces[0].second;
+  w.file_begin = w.records[0].row_begin;
+  w.file_end = w.records[0].row_end;
+  options.records = w.records;
+  try {
+    const Experiment<Rational> data = joint_data(model, est_d, est_q, pieces, w.model);
+    w.bounds = certify_fixed_model(w.model, data, options, solver);
+  } catch (const TimedOut&) {
+    throw;
+  } catch (const std::exception& e) {
+    w.bounds = CertifiedBounds{};
+    w.bounds.reason = std::string("certification failed on this joint window: ") + e.what();
+  }
+  judge_informative(w, y);
   return w;
 }
 

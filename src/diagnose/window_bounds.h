@@ -13,9 +13,11 @@
 /// RMS ≤ d_max (Theorem 2.1); nothing is claimed for other samples.
 
 #include <string>
+#include <vector>
 
 #include "data/experiment.h"
 #include "certify/certify.h"
+#include "diagnose/bound_windows.h"
 #include "model/lpv_model.h"
 #include "solvers/sdp_solver.h"
 
@@ -24,6 +26,11 @@ namespace lpvid {
 struct WindowBounds {
   Eigen::Index begin = 0, end = 0;    ///< rows of the estimation record (0-based, end exclusive)
   long file_begin = 0, file_end = 0;  ///< the same rows of the data file
+  /// A joint window over several records (diagnose/record_windows.h): its
+  /// pieces (rows of the stacked estimation data; begin, end are the first
+  /// piece's) and where each piece's rows are in its file. Empty: one record.
+  std::vector<RowWindow> pieces;
+  std::vector<DataReference> records;
   CertifiedBounds bounds;
   LpvModel<Rational> model;           ///< the exact model that was certified
   /// The file the front end wrote bounds.certificate to; empty unless the
@@ -60,5 +67,17 @@ LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0)
 WindowBounds certify_window(const LpvModel<double>& model, const Experiment<double>& est_d,
                             const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
                             long file_row_offset, CertifyOptions options, SdpSolver& solver);
+
+/// Theorem 2.1 on a joint window of stacked records: ONE claim (one Δ, one
+/// noise bound) over its pieces, each a record of its own, certified from the
+/// model's state at the piece's first row (simulated record by record from
+/// the fitted x0) with CertifyOptions::records naming each piece's file rows.
+/// `record_data[k]` is where estimation record k's rows are in its file (the
+/// window that was read); `records` are the estimation records' lengths. One
+/// piece: certify_window.
+WindowBounds certify_joint_window(const LpvModel<double>& model, const Experiment<double>& est_d,
+                                  const Experiment<Rational>& est_q, const std::vector<RowWindow>& pieces,
+                                  const std::vector<DataReference>& record_data, CertifyOptions options,
+                                  SdpSolver& solver);
 
 }  // namespace lpvid

@@ -51,9 +51,9 @@ Vec<double> resonant_third_order(const Vec<double>& u) {
   return v;
 }
 
-Experiment<double> abs_sensor(int n, RandomStream& rs, const std::string& role) {
+Experiment<double> abs_sensor(int n, RandomStream& rs, const std::string& role, double amplitude = 1.0) {
   // levels in [-0.8, 1.8]: about 30 % of them (and of the samples) are negative
-  const Vec<double> u = staircase(n, -0.8, 1.8, 8, 24, rs);
+  const Vec<double> u = amplitude * staircase(n, -0.8, 1.8, 8, 24, rs);
   const Vec<double> v = resonant_third_order(u);
   Vec<double> y(n);
   for (int k = 0; k < n; ++k) y(k) = std::round(std::abs(v(k)) / 0.005) * 0.005;
@@ -109,6 +109,14 @@ Experiment<double> oscillator(int n, double k3, RandomStream& rs, const std::str
 const std::vector<std::string>& plant_analogue_names() {
   static const std::vector<std::string> names{"abs_sensor", "tanks", "duffing", "linear"};
   return names;
+}
+
+std::vector<Experiment<double>> abs_sensor_records(int n, const std::vector<double>& amplitudes, uint64_t seed) {
+  if (n < 100) throw InputError("plant analogue: n must be at least 100 (got " + std::to_string(n) + ")");
+  RandomStream rs(seed);
+  std::vector<Experiment<double>> out;
+  for (const double a : amplitudes) out.push_back(abs_sensor(n, rs, "record at amplitude " + std::to_string(a), a));
+  return out;
 }
 
 PlantAnalogue make_plant_analogue(const std::string& name, int n, uint64_t seed) {

@@ -43,4 +43,11 @@ const std::vector<std::string>& plant_analogue_names();
 /// Throws InputError for an unknown name or n < 100.
 PlantAnalogue make_plant_analogue(const std::string& name, int n, uint64_t seed);
 
+/// Records of ONE abs_sensor plant (the coupled-drives analogue) with the
+/// input staircase scaled by each amplitude (its own realisation per record,
+/// the plant at rest at each record's start): experiments of one system at
+/// several input amplitudes. Right family: abs_value. Throws like
+/// make_plant_analogue for n < 100.
+std::vector<Experiment<double>> abs_sensor_records(int n, const std::vector<double>& amplitudes, uint64_t seed);
+
 }  // namespace lpvid

@@ -1,0 +1,30 @@
+#pragma once
+/// Bound windows over several estimation records (data/experiment.h:
+/// records). A bound is one claim of Theorem 2.1 over several records (one
+/// Δ, one noise bound; docs/several_records.md), so a bound window is a list
+/// of row ranges, each inside ONE record, certified together:
+///
+///   default     with R > 1 records, window j is the j-th default window
+///               (bound_windows.h: tile_windows of 200 rows) of every record
+///               that has one: one claim per j over the records' j-th windows;
+///   given       a window of the stacked rows (--window B:E) is cut at the
+///               records' seams into its pieces, one per record it meets.
+///
+/// One record: every window is one piece, as before.
+#include <vector>
+
+#include "diagnose/bound_windows.h"
+
+namespace lpvid {
+
+using JointWindow = std::vector<RowWindow>;  ///< row ranges of the stacked data, each inside one record
+
+/// The joint windows of `n` stacked rows in `records` (lengths; empty: one
+/// record): `given` (each cut at the seams) or, when empty, the default above.
+std::vector<JointWindow> joint_windows(Eigen::Index n, const std::vector<Eigen::Index>& records,
+                                       const std::vector<RowWindow>& given);
+
+/// The record (index into the lengths) that holds stacked row `row`, and its first row.
+std::pair<size_t, Eigen::Index> record_of_row(const std::vector<Eigen::Index>& records, Eigen::Index row);
+
+}  // namespace lpvid
