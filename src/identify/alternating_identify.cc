@@ -2,9 +2,11 @@
 
 #include "model/simulate.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
+#include "lmi/delta_form_solve.h"
 #include "lmi/delta_kyp_lmi.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
@@ -12,10 +14,13 @@
 namespace lpvid {
 namespace {
 
-/// T_Δ v for a stacked signal v (n·nz) → stacked n·ny: w = Δ ∗ v, all of the horizon.
-Vec<double> fir_stacked(const Mat<double>& taps, const Vec<double>& v, Eigen::Index nz, Eigen::Index ny) {
-  const Mat<double> z = unstack_rows(v, nz);
-  return stack_rows(apply_fir(taps, z, ny, z.rows()));
+/// T_Δ v for a stacked signal v (n·nz) → stacked n·ny: w = Δ ∗ v record by
+/// record, each record from its first sample (one record: all of the horizon).
+Vec<double> fir_stacked(const Mat<double>& taps, const Vec<double>& v, const AffineResidual<double>& a) {
+  const Mat<double> z = unstack_rows(v, a.nz);
+  Eigen::Index longest = 0;
+  for (const Eigen::Index l : record_lengths_of(a.records, z.rows())) longest = std::max(longest, l);
+  return stack_rows(apply_fir_records(taps, z, a.ny, longest, a.records));
 }
 
 /// An orthonormal basis of the span of the columns of Jr whose parameters do
@@ -45,12 +50,12 @@ Vec<double> alternating_parameter_step(const AffineResidual<double>& a, const Ma
   const Eigen::Index P = a.num_params();
   const bool delta_zero = taps.size() == 0 || taps.isZero(0.0);
   Vec<double> b = a.r0;
-  if (!delta_zero) b -= fir_stacked(taps, a.z0, a.nz, a.ny);
+  if (!delta_zero) b -= fir_stacked(taps, a.z0, a);
   Vec<double> p = Vec<double>::Zero(P);
   if (P > 0) {
     Mat<double> A = a.Jr;
     if (!delta_zero)
-      for (Eigen::Index j = 0; j < P; ++j) A.col(j) += fir_stacked(taps, Vec<double>(a.Jz.col(j)), a.nz, a.ny);
+      for (Eigen::Index j = 0; j < P; ++j) A.col(j) += fir_stacked(taps, Vec<double>(a.Jz.col(j)), a);
     // Column scaling keeps the decomposition's rank decision relative per column.
     Vec<double> scale(P);
     for (Eigen::Index j = 0; j < P; ++j) scale(j) = A.col(j).norm() > 0 ? 1.0 / A.col(j).norm() : 1.0;
@@ -69,11 +74,24 @@ namespace {
 /// with the parameters that do not move z (their span E; the p step
 /// recovers them: it minimises over all p, so it does at least as well).
 /// Sets the record's status, taps and δ², and the result's status and message.
+/// Several records: the Δ form over the records on their full horizon
+/// (the KYP program's state would run across the records).
 IterateRecord delta_step(const AffineResidual<double>& a, const Vec<double>& p, const Mat<double>& E,
                          const BoundObjective& inner, const IdentifyOptions& options, SdpSolver& solver,
                          IdentifyResult& out) {
-  const DeltaKypSolution ds = solve_delta_kyp(unstack_rows(a.z(p), a.nz), unstack_rows(a.r(p), a.ny), inner, solver,
-                                              options.solver, options.taps, E);
+  Mat<double> z = unstack_rows(a.z(p), a.nz), r = unstack_rows(a.r(p), a.ny);
+  DeltaKypSolution ds;
+  if (several_records(a.records)) {
+    DeltaFormRequest request;
+    request.solver = options.solver;
+    request.free_regressors = E;
+    DeltaFormSolution s = solve_delta_form(DeltaFormSignals{std::move(z), std::move(r), a.records}, inner, request, solver);
+    ds.solve = std::move(s.solve);
+    ds.taps = std::move(s.taps);
+    ds.delta2 = s.delta2;
+  } else {
+    ds = solve_delta_kyp(z, r, inner, solver, options.solver, options.taps, E);
+  }
   IterateRecord rec;
   rec.status = ds.solve.status;
   out.status = ds.solve.status;
@@ -171,7 +189,8 @@ IdentifyResult identify_alternating(const LpvModel<double>& model, const Experim
                   "); iterate " + std::to_string(accepted) + " is kept";
   out.status = best.status;
   out.relaxation = "alternating Delta/theta descent (" + std::to_string(out.iterates.size()) + " Delta steps, " +
-                   std::to_string(options.taps) + " taps, KYP)";
+                   (several_records(a.records) ? std::to_string(a.records.size()) + " records, full-horizon Delta form)"
+                                               : std::to_string(options.taps) + " taps, KYP)");
   if (feasibility) judge_given_dmax(options.objective, best, out);
   return out;
 }

@@ -33,6 +33,11 @@
 /// loop and is discarded. Stop when J improves by less than rel_tol
 /// (relative) or after max_iterations Δ steps.
 ///
+/// Several records (exp.records): the Δ step is Theorem 2.1 over the
+/// records on their full horizon (solve_delta_form with the records; KYP's
+/// state would run across records, so options.taps is not used), and
+/// T_Δ z is taken record by record (apply_fir_records) in the p step.
+///
 /// Fixed bounds: for a fixed δ the Δ step minimises d_max at that δ; for
 /// kFeasibility it does too, and the result is feasible when the final
 /// d_max² ≤ the given d_max² (status kPrimalInfeasible otherwise, which here

@@ -256,11 +256,11 @@ class Selector {
         if (has_solution(it.status) && (best < 0 || it.dmax2 < best * best)) best = std::sqrt(std::max(0.0, it.dmax2));
       s.dmax_relaxation = best;
     }
-    const FixedParameters fp = fix_parameters(mq, res.layout, res.p, co.digits);
+    const FixedParameters fp = fix_parameters(mq, res.layout, res.p, co.digits, eq_.record_x0);
     centre = fp.value;
     s.p = fp.value;
     s.layout = res.layout;
-    judge(s, certify_fixed_model(fp.model, eq_, co, solver_), what);
+    judge(s, certify_fixed_model(fp.model, with_fixed_initial_states(eq_, fp), co, solver_), what);
   }
 
   const LpvModel<Rational>& mq_;

@@ -2,6 +2,7 @@
 
 #include "core/deadline.h"
 #include "core/number_text.h"
+#include "toeplitz/record_segments.h"
 
 namespace lpvid {
 
@@ -9,6 +10,10 @@ ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& mode
                              const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                              const CertifyOptions& certify, ClassBoundOptions options, SdpSolver& solver) {
   ClassInterval out;
+  if (several_records(exp_q.records)) {  // the leaf dual is built for one record: no number rather than a wrong one
+    out.bound.reason = "no class bound: several records (not implemented)";
+    return out;
+  }
   options.upper = nearest_double(id.bounds.upper);
   try {
     out.bound = class_lower_bound(model_q, model_d, exp_q, exp_d, id.fixed.value, certify, options);

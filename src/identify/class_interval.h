@@ -18,7 +18,9 @@ struct ClassInterval {
 };
 
 /// `id` must hold a verified certification of an optimised objective (not
-/// fixed bounds). May replace id.fixed and id.bounds (adopted).
+/// fixed bounds). May replace id.fixed and id.bounds (adopted). Several
+/// records: not certified, reason "no class bound: several records (not
+/// implemented)".
 ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                              const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                              const CertifyOptions& certify, ClassBoundOptions options, SdpSolver& solver);

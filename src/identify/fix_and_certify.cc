@@ -5,7 +5,7 @@
 namespace lpvid {
 
 FixedParameters fix_parameters(const LpvModel<Rational>& model, const ParameterLayout& layout, const Vec<double>& p,
-                               int digits) {
+                               int digits, const std::vector<Vec<Rational>>& record_x0) {
   FixedParameters f;
   f.exact.resize(p.size());
   f.value.resize(p.size());
@@ -14,7 +14,14 @@ FixedParameters fix_parameters(const LpvModel<Rational>& model, const ParameterL
     f.value(i) = CGAL::to_double(f.exact(i));
   }
   f.model = apply_parameters(model, layout, f.exact);
+  f.record_x0 = record_initial_states(model, record_x0, layout, f.exact);
   return f;
+}
+
+Experiment<Rational> with_fixed_initial_states(const Experiment<Rational>& exp, const FixedParameters& fixed) {
+  Experiment<Rational> out = exp;
+  out.record_x0 = fixed.record_x0;
+  return out;
 }
 
 CertifiedBounds certify_identified(const LpvModel<Rational>& fixed, const Experiment<Rational>& exp,
@@ -46,8 +53,9 @@ IdentifiedModel identify_and_certify(const LpvModel<Rational>& model_q, const Lp
     out.outcome = out.fit.status == SolveStatus::kPrimalInfeasible ? CertifyOutcome::kUndecided : CertifyOutcome::kSolverFailed;
     return out;
   }
-  out.fixed = fix_parameters(model_q, out.fit.layout, out.fit.p, certify_options.digits);
-  out.bounds = certify_identified(out.fixed.model, exp_q, out.fit.taps, certify_options, solver, &out.taps_note);
+  out.fixed = fix_parameters(model_q, out.fit.layout, out.fit.p, certify_options.digits, exp_q.record_x0);
+  out.bounds = certify_identified(out.fixed.model, with_fixed_initial_states(exp_q, out.fixed), out.fit.taps,
+                                  certify_options, solver, &out.taps_note);
   out.outcome = out.bounds.outcome;
   return out;
 }

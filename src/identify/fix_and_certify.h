@@ -26,11 +26,20 @@ struct FixedParameters {
   Vec<Rational> exact;      ///< p rounded to `digits` significant digits
   Vec<double> value;        ///< the same numbers as doubles (for reports)
   LpvModel<Rational> model; ///< the model with them folded in (apply_parameters)
+  /// Several records with free x0 (layout.x0_records ≥ 2): each record's own
+  /// initial state with the rounded change folded in (Experiment::record_x0);
+  /// otherwise the `record_x0` given to fix_parameters.
+  std::vector<Vec<Rational>> record_x0;
 };
 
-/// Stage "fix": rounds p and folds it into `model`.
+/// Stage "fix": rounds p and folds it into `model` (and into each record's
+/// initial state, `record_x0` being the experiment's: record_initial_states).
 FixedParameters fix_parameters(const LpvModel<Rational>& model, const ParameterLayout& layout, const Vec<double>& p,
-                               int digits);
+                               int digits, const std::vector<Vec<Rational>>& record_x0 = {});
+
+/// `exp` with the fixed parameters' record initial states (the experiment the
+/// fixed model is certified on).
+Experiment<Rational> with_fixed_initial_states(const Experiment<Rational>& exp, const FixedParameters& fixed);
 
 /// Stage "certify" for an identified, fixed model. `taps` (K × ny·nz, may be
 /// empty) is the identification's own Δ. `note`, if given, receives why the

@@ -8,9 +8,35 @@
 #include "core/input_error.h"
 #include "identify/alternating_identify.h"
 #include "lmi/delta_form_lmi.h"
+#include "toeplitz/record_segments.h"
 #include "toeplitz/signal_toeplitz.h"
 
 namespace lpvid {
+
+namespace {
+
+/// The samples pinned at z = 0: each record's leading zero samples of z0
+/// (one record: 0 … m−1).
+std::vector<Eigen::Index> pinned_samples_of(const Mat<double>& z0, const RecordLengths& records) {
+  const RecordLengths lengths = record_lengths_of(records, z0.rows());
+  const std::vector<Eigen::Index> start = record_starts(lengths);
+  std::vector<Eigen::Index> rows;
+  for (size_t k = 0; k < lengths.size(); ++k) {
+    const Eigen::Index m = leading_zero_rows(z0, start[k], lengths[k]);
+    for (Eigen::Index j = 0; j < m; ++j) rows.push_back(start[k] + j);
+  }
+  return rows;
+}
+
+/// The rows of Jz (n·nz stacked) of the pinned samples.
+Mat<double> pinned_jacobian_rows(const AffineResidual<double>& a, const std::vector<Eigen::Index>& samples) {
+  Mat<double> lead(static_cast<Eigen::Index>(samples.size()) * a.nz, a.Jz.cols());
+  for (size_t i = 0; i < samples.size(); ++i)
+    lead.middleRows(static_cast<Eigen::Index>(i) * a.nz, a.nz) = a.Jz.middleRows(samples[i] * a.nz, a.nz);
+  return lead;
+}
+
+}  // namespace
 
 ReducedProblem reduce_problem(const LpvModel<double>& model, const Experiment<double>& exp, const Unknowns& unknowns) {
   ReducedProblem rp;
@@ -18,10 +44,11 @@ ReducedProblem reduce_problem(const LpvModel<double>& model, const Experiment<do
   const AffineResidual<double>& a = rp.residual;
   const Eigen::Index P = a.num_params();
   const Mat<double> z0 = unstack_rows(a.z0, a.nz);
-  rp.pinned = leading_zero_samples(z0);
-  // Directions that keep z_k = 0 for k < m (SPEC §9: the relaxation at a point
-  // with z̄_k = 0 forces it): the null space of those rows of Jz.
-  const Mat<double> lead = a.Jz.topRows(rp.pinned * a.nz);
+  const std::vector<Eigen::Index> pinned = pinned_samples_of(z0, a.records);
+  rp.pinned = static_cast<Eigen::Index>(pinned.size());
+  // Directions that keep z_k = 0 at the pinned samples (SPEC §9: the relaxation
+  // at a point with z̄_k = 0 forces it): the null space of those rows of Jz.
+  const Mat<double> lead = pinned_jacobian_rows(a, pinned);
   if (P == 0) {
     rp.N = Mat<double>::Zero(0, 0);
   } else if (lead.rows() == 0 || lead.isZero(0.0)) {
@@ -39,18 +66,34 @@ ReducedProblem reduce_problem(const LpvModel<double>& model, const Experiment<do
   s.rb = unstack_rows(a.r0, a.ny);
   for (Eigen::Index j = 0; j < rp.N.cols(); ++j) {
     Mat<double> Zj = unstack_rows(Vec<double>(a.Jz * rp.N.col(j)), a.nz);
-    Zj.topRows(rp.pinned).setZero();  // zero up to rounding by construction of N
+    for (const Eigen::Index k : pinned) Zj.row(k).setZero();  // zero up to rounding by construction of N
     s.Z.push_back(Zj);
     s.R.push_back(unstack_rows(Vec<double>(a.Jr * rp.N.col(j)), a.ny));
   }
   return rp;
 }
 
+namespace {
+
+/// The relaxation's w form (T_wᵀT_w ⪯ δ²T_zᵀT_z) is one record's
+/// construction; over several records the alternating method runs in the Δ
+/// form instead (docs/several_records.md), and says so.
+IdentifyResult identify_records_alternating(const LpvModel<double>& model, const Experiment<double>& exp,
+                                            const IdentifyOptions& options, SdpSolver& solver) {
+  IdentifyResult out = identify_alternating(model, exp, options, solver);
+  out.relaxation += "; the paper's relaxation takes one record, so " + std::to_string(exp.records.size()) +
+                    " records are identified by this method instead";
+  return out;
+}
+
+}  // namespace
+
 IdentifyResult identify(const LpvModel<double>& model, const Experiment<double>& exp_in, const IdentifyOptions& options,
                         SdpSolver& solver) {
   const Experiment<double> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   options.objective.validate();
   if (options.method == IdentifyMethod::kAlternating) return identify_alternating(model, exp, options, solver);
+  if (several_records(exp.records)) return identify_records_alternating(model, exp, options, solver);
   ReducedProblem rp = reduce_problem(model, exp, options.unknowns);
   IdentifyResult out;
   out.layout = rp.residual.layout;

@@ -60,14 +60,16 @@ struct IdentifyResult {
   Vec<double> p;                      ///< final parameters (layout above)
   Mat<double> taps;                   ///< kAlternating: the Δ that goes with p (certify_with_taps)
   std::vector<IterateRecord> iterates;
-  Eigen::Index pinned_samples = 0;    ///< m: z_k = 0 for k < m is kept by the relaxation (SPEC §9)
+  Eigen::Index pinned_samples = 0;    ///< m: z_k = 0 for k < m is kept by the relaxation (several records: Σ_k m_k)
   Eigen::Index free_directions = 0;   ///< unknowns left after pinning
   std::string relaxation;             ///< "linearised at initial model", "iterated (N solves)", "none (exact LMI)"
   SolveStatus status = SolveStatus::kBackendError;  ///< of the last solve
   std::string message;
 };
 
-/// Runs the identification (options.method picks the algorithm). Throws InputError for ill-posed data (z ≡ 0),
+/// Runs the identification (options.method picks the algorithm; several
+/// records (exp.records): always the alternating method, whose Δ steps run
+/// over the records, the relaxation text saying so). Throws InputError for ill-posed data (z ≡ 0),
 /// paper mode (not supported for identification) or no unknowns.
 IdentifyResult identify(const LpvModel<double>& model, const Experiment<double>& exp, const IdentifyOptions& options,
                         SdpSolver& solver);
@@ -77,7 +79,7 @@ IdentifyResult identify(const LpvModel<double>& model, const Experiment<double>&
 struct ReducedProblem {
   AffineResidual<double> residual;
   Mat<double> N;  ///< P × Q basis of the directions that keep pinned samples at zero
-  Eigen::Index pinned = 0;
+  Eigen::Index pinned = 0;  ///< pinned samples: each record's leading zero samples of z0, summed
   AffineSignals signals;
 };
 ReducedProblem reduce_problem(const LpvModel<double>& model, const Experiment<double>& exp, const Unknowns& unknowns);

@@ -43,11 +43,12 @@ std::vector<double> default_lambda_grid() {
 namespace {
 
 /// The point's identification at λ (Theorem 3.1, relaxed or iterated): the
-/// relaxation's values and the model with the rounded θ folded in; false
-/// (with the reason in pt.bounds) when no iterate solved.
+/// relaxation's values and the model with the rounded θ folded in (and, for
+/// several records with free x0, each record's initial state in `exp_fixed`);
+/// false (with the reason in pt.bounds) when no iterate solved.
 bool identify_point(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d, const Experiment<double>& exp_d,
                     const TradeoffOptions& o, const BoundObjective& obj, int digits, SdpSolver& solver, TradeoffPoint& pt,
-                    LpvModel<Rational>& fixed) {
+                    LpvModel<Rational>& fixed, Experiment<Rational>& exp_fixed) {
   IdentifyOptions io;
   io.objective = obj;
   io.iterate = o.iterate;
@@ -70,9 +71,10 @@ bool identify_point(const LpvModel<Rational>& model_q, const LpvModel<double>& m
     if (has_solution(it.status) && (!best || it.objective < best->objective)) best = &it;
   pt.delta_solver = std::sqrt(std::max(0.0, best->delta2));
   pt.dmax_solver = std::sqrt(std::max(0.0, best->dmax2));
-  FixedParameters fp = fix_parameters(model_q, res.layout, res.p, digits);
+  FixedParameters fp = fix_parameters(model_q, res.layout, res.p, digits, exp_fixed.record_x0);
   pt.p = fp.value;
   pt.layout = res.layout;
+  exp_fixed = with_fixed_initial_states(exp_fixed, fp);
   fixed = std::move(fp.model);
   return true;
 }
@@ -100,14 +102,15 @@ std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, con
     co.fixed_delta_text.clear();
     co.fixed_dmax_text.clear();
     LpvModel<Rational> fixed = model_q;
+    Experiment<Rational> exp_fixed = exp_q;
     bool have_model = true;
     if (unknowns) {
-      have_model = identify_point(model_q, model_d, exp_d, o, obj, co.digits, solver, pt, fixed);
+      have_model = identify_point(model_q, model_d, exp_d, o, obj, co.digits, solver, pt, fixed, exp_fixed);
     } else {
       pt.status = SolveStatus::kOptimal;
       pt.relaxation = "none (fixed model: Theorem 2.1)";
     }
-    if (have_model) pt.bounds = certify_fixed_model(fixed, exp_q, co, solver);
+    if (have_model) pt.bounds = certify_fixed_model(fixed, exp_fixed, co, solver);
     pt.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.push_back(pt);
     if (o.on_point) o.on_point(out.back());

@@ -73,43 +73,78 @@ void add_offset_block(const LpvModel<T>& model, const Experiment<T>& exp, Affine
       a.names.push_back("phi[" + model.offset.basis[j].text(model.scheduling) + "](" + std::to_string(r + 1) + ")");
 }
 
-/// x0: the response of ŷ and z to each initial state.
+/// Record k's own initial state: record_x0[k] when given, else the model's x0 (else 0).
+template <typename T>
+Vec<T> own_initial_state(const LpvModel<T>& model, const std::vector<Vec<T>>& record_x0, size_t k) {
+  if (k < record_x0.size() && record_x0[k].size() != 0) return record_x0[k];
+  return model.x0.size() == model.nx ? model.x0 : Vec<T>(Vec<T>::Zero(model.nx));
+}
+
+/// Column c of record `record`'s x0 block (record < 0: the one model x0) with
+/// a state offset E(ρ): the response to x0 is not linear (E acts from x = 0,
+/// and "@sqrt(x<i>-c)" columns follow x), so the column is the secant
+/// sim(x0 + e_c) − sim(x0) along the actual input. Only the identification's
+/// objective is approximate; the certificate checks the folded model (x0 +
+/// p_x0) by its exact simulation.
+template <typename T>
+Simulation<T> x0_secant(const LpvModel<T>& model, const Experiment<T>& exp, int record, int c) {
+  LpvModel<T> m1 = model;
+  if (record < 0) {
+    m1.x0 = own_initial_state(model, {}, 0);
+    m1.x0(c) += T(1);
+    return simulate(m1, exp);
+  }
+  Experiment<T> e1 = exp;
+  e1.record_x0.resize(exp.records.size());
+  for (size_t k = 0; k < exp.records.size(); ++k) e1.record_x0[k] = own_initial_state(model, exp.record_x0, k);
+  e1.record_x0[static_cast<size_t>(record)](c) += T(1);
+  return simulate(m1, e1);
+}
+
+/// The same column without a state offset: the simulation from e_c with zero
+/// input (record ≥ 0: record `record` from e_c, the others from 0).
+template <typename T>
+Simulation<T> x0_free_response(const LpvModel<T>& model, const Experiment<T>& exp, int record, int c) {
+  Experiment<T> free = exp;
+  free.u.setZero();
+  LpvModel<T> m0 = model;
+  m0.offset.values.clear();
+  m0.statics = StaticBlocks<T>{};  // zero u' (g_in(0) need not be 0)
+  m0.x0 = Vec<T>::Zero(model.nx);
+  if (record < 0) {
+    m0.x0(c) = T(1);
+  } else {
+    free.record_x0.assign(exp.records.size(), Vec<T>::Zero(model.nx));
+    free.record_x0[static_cast<size_t>(record)](c) = T(1);
+  }
+  return simulate(m0, free);
+}
+
+/// x0: the response of ŷ and z to each initial state (each record's own
+/// with several records: K·nx columns, record k's zero off its rows).
 template <typename T>
 void add_x0_block(const LpvModel<T>& model, const Experiment<T>& exp, const Simulation<T>& sim, AffineResidual<T>& a,
                   JacobianBlocks<T>& blocks) {
-  Mat<T> Jy(a.n * a.ny, model.nx), Jz1(a.n * a.nz, model.nx);
-  if (has_state_offset(model)) {
-    // With a state offset E(ρ) the response to x0 is not linear
-    // (E acts from x = 0, and "@sqrt(x<i>-c)" columns follow x): column c is
-    // the secant sim(x0 + e_c) − sim(x0) along the actual input. Only the
-    // identification's objective is approximate; the certificate checks the
-    // folded model (x0 + p_x0) by its exact simulation.
-    const Vec<T> base = model.x0.size() == model.nx ? model.x0 : Vec<T>(Vec<T>::Zero(model.nx));
+  const bool per_record = several_records(a.records);
+  const int K = per_record ? static_cast<int>(a.records.size()) : 1;
+  Mat<T> Jy(a.n * a.ny, K * model.nx), Jz1(a.n * a.nz, K * model.nx);
+  for (int k = 0; k < K; ++k)
     for (int c = 0; c < model.nx; ++c) {
-      LpvModel<T> m1 = model;
-      m1.x0 = base;
-      m1.x0(c) += T(1);
-      const Simulation<T> s = simulate(m1, exp);
-      Jy.col(c) = stack_rows(Mat<T>(s.yhat - sim.yhat));
-      Jz1.col(c) = stack_rows(Mat<T>(s.z - sim.z));
+      const int record = per_record ? k : -1, col = k * model.nx + c;
+      if (has_state_offset(model)) {
+        const Simulation<T> s = x0_secant(model, exp, record, c);
+        Jy.col(col) = stack_rows(Mat<T>(s.yhat - sim.yhat));
+        Jz1.col(col) = stack_rows(Mat<T>(s.z - sim.z));
+      } else {
+        const Simulation<T> s = x0_free_response(model, exp, record, c);
+        Jy.col(col) = stack_rows(s.yhat);
+        Jz1.col(col) = stack_rows(s.z);
+      }
+      const std::string rec = per_record ? "[" + std::to_string(k + 1) + "]" : "";
+      a.names.push_back("x0" + rec + "(" + std::to_string(c + 1) + ")");
     }
-  } else {
-    // The response to x0 with zero input: column c is the simulation from e_c.
-    Experiment<T> free = exp;
-    free.u.setZero();
-    LpvModel<T> m0 = model;
-    m0.offset.values.clear();
-    m0.statics = StaticBlocks<T>{};  // zero u' (g_in(0) need not be 0)
-    for (int c = 0; c < model.nx; ++c) {
-      m0.x0 = Vec<T>::Zero(model.nx);
-      m0.x0(c) = T(1);
-      const Simulation<T> s = simulate(m0, free);
-      Jy.col(c) = stack_rows(s.yhat);
-      Jz1.col(c) = stack_rows(s.z);
-    }
-  }
-  for (int c = 0; c < model.nx; ++c) a.names.push_back("x0(" + std::to_string(c + 1) + ")");
-  a.layout.n_x0 = model.nx;
+  a.layout.n_x0 = K * model.nx;
+  a.layout.x0_records = K;
   blocks.add(Jy, Jz1);
 }
 
@@ -129,6 +164,7 @@ AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experime
   a.n = exp.n();
   a.ny = model.ny;
   a.nz = model.nz();
+  if (several_records(exp.records)) a.records = record_lengths_of(exp.records, exp.n());
   if (exp.y.rows() != exp.n() || exp.y.cols() != model.ny)
     throw std::invalid_argument("the experiment has no output y of size n x ny");
   a.z0 = stack_rows(sim.z);
@@ -193,7 +229,7 @@ LpvModel<T> apply_parameters(const LpvModel<T>& model, const ParameterLayout& a,
       at += model.ny;
     }
   }
-  if (a.n_x0 > 0) {
+  if (a.n_x0 > 0 && a.x0_records <= 1) {
     // p holds the change of x0 from the model's own x0 (r0, z0 were simulated from it)
     const Vec<T> base = model.x0.size() == a.n_x0 ? model.x0 : Vec<T>(Vec<T>::Zero(a.n_x0));
     out.x0 = base + p.segment(at, a.n_x0);
@@ -202,10 +238,27 @@ LpvModel<T> apply_parameters(const LpvModel<T>& model, const ParameterLayout& a,
   return out;
 }
 
+template <typename T>
+std::vector<Vec<T>> record_initial_states(const LpvModel<T>& model, const std::vector<Vec<T>>& record_x0,
+                                          const ParameterLayout& a, const Vec<T>& p) {
+  if (a.n_x0 == 0 || a.x0_records <= 1) return record_x0;
+  if (p.size() != a.size() || a.n_x0 != a.x0_records * model.nx)
+    throw std::invalid_argument("record_initial_states: the parameters do not match the layout");
+  const Eigen::Index at = a.size() - a.n_x0;  // x0 is the last segment
+  std::vector<Vec<T>> out;
+  for (Eigen::Index k = 0; k < a.x0_records; ++k)
+    out.push_back(own_initial_state(model, record_x0, static_cast<size_t>(k)) + p.segment(at + k * model.nx, model.nx));
+  return out;
+}
+
 template AffineResidual<double> build_affine_residual(const LpvModel<double>&, const Experiment<double>&, const Unknowns&);
 template AffineResidual<Rational> build_affine_residual(const LpvModel<Rational>&, const Experiment<Rational>&,
                                                         const Unknowns&);
 template LpvModel<double> apply_parameters(const LpvModel<double>&, const ParameterLayout&, const Vec<double>&);
 template LpvModel<Rational> apply_parameters(const LpvModel<Rational>&, const ParameterLayout&, const Vec<Rational>&);
+template std::vector<Vec<double>> record_initial_states(const LpvModel<double>&, const std::vector<Vec<double>>&,
+                                                        const ParameterLayout&, const Vec<double>&);
+template std::vector<Vec<Rational>> record_initial_states(const LpvModel<Rational>&, const std::vector<Vec<Rational>>&,
+                                                          const ParameterLayout&, const Vec<Rational>&);
 
 }  // namespace lpvid

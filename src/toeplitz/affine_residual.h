@@ -12,7 +12,11 @@
 ///   φ      the unknown offset values φ_j (eq. 20), j major, ny each;
 ///   x0     the change of the initial state from the model's x0, when free
 ///          (`--free-x0`): z0, r0 are simulated from the model's x0, so
-///          x0 = model.x0 + p_x0 (apply_parameters adds it).
+///          x0 = model.x0 + p_x0 (apply_parameters adds it). Several
+///          records (Experiment::records): each record's own initial state,
+///          nx per record, record k's columns the response of record k alone
+///          (zero on the other records' rows), names "x0[k](c)"; p_x0 is the
+///          change from each record's own x0 (record_initial_states).
 /// The state does not depend on θ (A_i, B_i are fixed), so all of this is
 /// exact: the output is affine in θ, φ and x0. Exception: with a state
 /// offset E(ρ) (model.state_offset) the x0 columns are the secant
@@ -26,6 +30,7 @@
 #include "core/scalar.h"
 #include "data/experiment.h"
 #include "model/lpv_model.h"
+#include "toeplitz/record_segments.h"
 
 namespace lpvid {
 
@@ -39,12 +44,16 @@ struct Unknowns {
 /// Where each kind of unknown sits in p (sizes of the four segments).
 struct ParameterLayout {
   Eigen::Index n_theta_out = 0, n_theta_unc = 0, n_phi = 0, n_x0 = 0;
+  /// Records whose initial states the x0 block holds (nx each): 1 = the
+  /// model's x0 (one record); K ≥ 2 = each record's own (n_x0 = K·nx).
+  Eigen::Index x0_records = 1;
   Eigen::Index size() const { return n_theta_out + n_theta_unc + n_phi + n_x0; }
 };
 
 template <typename T>
 struct AffineResidual {
   Eigen::Index n = 0, ny = 0, nz = 0;
+  RecordLengths records;  ///< the experiment's records (empty: one record of all n rows)
   Vec<T> z0, r0;
   Mat<T> Jz, Jr;
   ParameterLayout layout;
@@ -64,8 +73,18 @@ AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experime
 /// The model with parameters p folded in: correction terms added to C, D
 /// (and C1, D1 for `general`), offset values set, x0 = model.x0 + p_x0. The correction
 /// basis is kept (its fixed A_i, B_i still act on the state); the unknowns
-/// that were solved for are no longer unknown.
+/// that were solved for are no longer unknown. Several records' own initial
+/// states (layout.x0_records ≥ 2) are not the model's: the model's x0 is
+/// kept, and record_initial_states gives them.
 template <typename T>
 LpvModel<T> apply_parameters(const LpvModel<T>& model, const ParameterLayout& layout, const Vec<T>& p);
+
+/// Each record's initial state with p folded in (for Experiment::record_x0):
+/// when layout.x0_records ≥ 2, record k's x0 = its own (record_x0[k], or the
+/// model's x0 when that is empty or absent) + its segment of p_x0; otherwise
+/// `record_x0` unchanged.
+template <typename T>
+std::vector<Vec<T>> record_initial_states(const LpvModel<T>& model, const std::vector<Vec<T>>& record_x0,
+                                          const ParameterLayout& layout, const Vec<T>& p);
 
 }  // namespace lpvid
