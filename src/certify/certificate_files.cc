@@ -13,8 +13,9 @@ std::string lower_certificate_path(const std::string& certificate_path) {
 }
 
 void write_certificate_at(const Certificate& c, const std::string& path) {
-  if (c.data_sha256.empty())
-    throw InputError(path + ": the certificate names no data file (its experiment was not read from a file)");
+  bool named = c.records.empty() ? !c.data_sha256.empty() : true;
+  for (const CertificateRecord& r : c.records) named = named && r.data.has_file();
+  if (!named) throw InputError(path + ": the certificate names no data file (its experiment was not read from a file)");
   write_certificate(path, placed_at(c, path));
 }
 

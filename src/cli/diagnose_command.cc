@@ -74,10 +74,11 @@ int benchmark_warmup(const std::string& name) {
 /// Column map of the validation data: est column name → validation name.
 /// The records' roles as the options give them (diagnose/record_roles.h).
 /// The estimation records of the command line: each --data with its --rows
-/// (path, rows text). Today one; with repeatable --data (several records),
-/// one entry per --data in order.
+/// (path, rows text), one entry per --data in order.
 std::vector<std::pair<std::string, std::string>> estimation_records(const DiagnoseArgs& a) {
-  return {{a.common.data_path, a.common.rows_text}};
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const RecordOption& r : data_records(a.common)) out.emplace_back(r.path, r.rows_text);
+  return out;
 }
 
 RolePlan role_plan(const DiagnoseArgs& a, int warmup) {

@@ -124,7 +124,8 @@ int run_identify(IdentifyArgs& a) {
   report["theta"] = theta_json(in.model_d, res.layout, id.fixed.value);
   report["samples"] = in.exp_q.n();
   // each record's figures for the identified model (θ folded in, x0 as identified)
-  std::cout << add_record_figures(report, in.records, convert_model<double>(id.fixed.model), in.exp_d, b);
+  std::cout << add_record_figures(report, in.records, convert_model<double>(id.fixed.model),
+                                  nearest_double(with_fixed_initial_states(in.exp_q, id.fixed)), b);
   if (in.objective.kind != BoundObjective::Kind::kFeasibility) {
     report["interval"] = interval_json(b, in.objective, files);
     report["interval"]["scope"] = "the model with the identified theta fixed (not the model class)";

@@ -1,5 +1,7 @@
 #include "cli/report.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -94,10 +96,16 @@ nlohmann::ordered_json theta_json(const LpvModel<double>& model, const Parameter
     j["offset_phi"] = phi;
   }
   if (layout.n_x0 > 0) {
-    nlohmann::ordered_json v = nlohmann::ordered_json::array();
-    for (Eigen::Index r = 0; r < layout.n_x0; ++r)  // the identified x0 = the model's x0 + its change p
-      v.push_back((model.x0.size() == layout.n_x0 ? model.x0(r) : 0.0) + p(at++));
-    j["x0"] = v;
+    // the identified x0 = the model's x0 + its change p; several records: one per record
+    const Eigen::Index K = std::max<Eigen::Index>(1, layout.x0_records), nx = layout.n_x0 / K;
+    nlohmann::ordered_json all = nlohmann::ordered_json::array();
+    for (Eigen::Index k = 0; k < K; ++k) {
+      nlohmann::ordered_json v = nlohmann::ordered_json::array();
+      for (Eigen::Index r = 0; r < nx; ++r) v.push_back((model.x0.size() == nx ? model.x0(r) : 0.0) + p(at++));
+      all.push_back(v);
+    }
+    if (K == 1) j["x0"] = all[0];
+    else j["x0_records"] = all;
   }
   return j;
 }

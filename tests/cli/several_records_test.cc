@@ -214,9 +214,8 @@ TEST_F(SeveralRecordsCli, CompareScoresEachRecordFromItsOwnStartAndPoolsThem) {
   EXPECT_NE(output().find("--out"), std::string::npos) << output();
 }
 
-// The certificate of several records: needs the record-aware Delta-form
-// solver (src/lmi); enable once it is merged.
-TEST_F(SeveralRecordsCli, DISABLED_TheCertificateNamesBothRecordsAndVerifies) {
+// The certificate of several records names every record and verifies.
+TEST_F(SeveralRecordsCli, TheCertificateNamesBothRecordsAndVerifies) {
   ASSERT_EQ(invalidate(two_records(), file("r.json")), 0) << output();
   const nlohmann::json c = read_json(file("c.json"));
   ASSERT_TRUE(c.contains("records")) << c.dump(1);
@@ -227,7 +226,7 @@ TEST_F(SeveralRecordsCli, DISABLED_TheCertificateNamesBothRecordsAndVerifies) {
   EXPECT_EQ(run_program(verify_exe, "certificate " + file("c.json")), 0) << output();
 }
 
-TEST_F(SeveralRecordsCli, DISABLED_TheOrderOfTheRecordsDoesNotChangeTheBounds) {
+TEST_F(SeveralRecordsCli, TheOrderOfTheRecordsDoesNotChangeTheBounds) {
   ASSERT_EQ(invalidate(two_records(), file("r1.json")), 0) << output();
   ASSERT_EQ(invalidate("--data " + file("b.csv") + " --rows 0:80 --data " + file("a.csv"), file("r2.json")), 0) << output();
   const nlohmann::json r1 = read_json(file("r1.json")), r2 = read_json(file("r2.json"));

@@ -246,10 +246,9 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
   }
 }
 
-// Enabled when the record-aware Δ-form solvers land (issue 35 item 1): the
-// solvers on this branch take the horizon of the stacked rows (200) instead
-// of the longest record's (100), and the exact check refuses the certificate.
-TEST(SeveralRecordsDiagnose, DISABLED_JointBoundCertificateListsBothRecordsAndVerifies) {
+// The joint bound window of two records: one certificate naming both
+// records' rows, checked from the files.
+TEST(SeveralRecordsDiagnose, JointBoundCertificateListsBothRecordsAndVerifies) {
   TwoRecords c;
   auto solver = make_solver("csdp");
   CertifyOptions o = diagnose_policy(c.options.certify);
