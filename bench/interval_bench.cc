@@ -32,22 +32,15 @@
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
 #include "verify/certificate/certificate_check.h"
+#include "bench_measure.h"
 
 using namespace lpvid;
+using bench::int_list;
+using bench::kilobytes;
+using bench::peak_mb;
+using bench::seconds_since;
 
 namespace {
-
-std::vector<int> sizes(const char* text) {
-  std::vector<int> out;
-  std::stringstream ss(text);
-  for (std::string b; std::getline(ss, b, ',');)
-    if (!b.empty()) out.push_back(std::atoi(b.c_str()));
-  return out;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 void write_data(const std::string& path, const LpvModel<Rational>& m, const Experiment<Rational>& e) {
   std::vector<TextColumn> cols;
@@ -112,21 +105,6 @@ struct Row {
   std::string upper_ok = "-", lower_ok = "-", verdict = "-";
   long horizon = 0;
 };
-
-double kilobytes(const std::string& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  return ec ? 0.0 : static_cast<double>(size) / 1024.0;
-}
-
-/// Peak resident memory of this process so far (VmHWM), MB.
-double peak_mb() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
-  return 0.0;
-}
 
 Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const std::string& data, double delta,
         const std::filesystem::path& dir, const std::string& tag) {
@@ -193,12 +171,12 @@ void print(const char* sys, int n, const Row& r) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<int> siso = sizes(argc > 1 ? argv[1] : "100,200,400");
-  const std::vector<int> mimo = sizes(argc > 2 ? argv[2] : "60,100");
+  const std::vector<int> siso = int_list(argc > 1 ? argv[1] : "100,200,400");
+  const std::vector<int> mimo = int_list(argc > 2 ? argv[2] : "60,100");
   const double delta_siso = argc > 3 ? std::atof(argv[3]) : 0.45;
   const double delta_2x2 = argc > 4 ? std::atof(argv[4]) : 1.0;
   // 3×3 at δ = 0.2, below the part of the data the delayed Δ (norm ≈ 0.4) explains.
-  const std::vector<int> mimo3 = sizes(argc > 5 ? argv[5] : "");
+  const std::vector<int> mimo3 = int_list(argc > 5 ? argv[5] : "");
   const auto dir = std::filesystem::temp_directory_path() / "lpvid_interval_bench";
   std::filesystem::create_directories(dir);
   std::printf("Certified interval of min dmax^2 at fixed delta (SISO delta = %g, 2x2 delta = %g), default options\n",

@@ -32,35 +32,15 @@
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
 #include "verify/certificate/certificate_check.h"
+#include "bench_measure.h"
 
 using namespace lpvid;
+using bench::int_list;
+using bench::kilobytes;
+using bench::peak_mb;
+using bench::seconds_since;
 
 namespace {
-
-std::vector<int> list(const char* text) {
-  std::vector<int> out;
-  std::stringstream ss(text);
-  for (std::string b; std::getline(ss, b, ',');)
-    if (!b.empty()) out.push_back(std::atoi(b.c_str()));
-  return out;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-double peak_mb() {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
-  return 0.0;
-}
-
-double kilobytes(const std::string& path) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  return ec ? 0.0 : static_cast<double>(size) / 1024.0;
-}
 
 /// SISO record k: one Δ (0.48 at delay 20) for every record.
 Experiment<Rational> siso_record(const LpvModel<Rational>& model, int n, int k) {
@@ -147,7 +127,7 @@ void print(const char* sys, int k, const Row& r) {
 
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 200;
-  const std::vector<int> counts = list(argc > 2 ? argv[2] : "1,2,4,8");
+  const std::vector<int> counts = int_list(argc > 2 ? argv[2] : "1,2,4,8");
   const double delta_siso = argc > 3 ? std::atof(argv[3]) : 0.45;
   const double delta_2x2 = argc > 4 ? std::atof(argv[4]) : 1.0;
   const std::string systems = argc > 5 ? argv[5] : "siso,2x2";

@@ -155,6 +155,29 @@ class Bindings(unittest.TestCase):
         self.assertTrue(0 < lower <= upper <= truth, (lower, upper, truth))
         self.certificates.extend(r.certificates)
 
+    def test_two_records_pool_the_noise_bound_exactly(self):
+        # Two records of one system (the halves of the data), each simulated
+        # from rest: at delta = 0 the smallest d_max^2 is the mean of
+        # (y - y_model)^2 over every sample of both records, exactly.
+        h = N // 2
+        records = [{"u": self.u[:h], "y": self.y[:h], "rho": self.rho[:h]},
+                   (self.u[h:], self.y[h:], self.rho[h:])]
+        r = lpvid.invalidate(None, None, None, true_model(), delta=0, records=records, out_dir=self.out("two_records"))
+        self.assertEqual(r.code, 0, r.output + r.messages)
+        paths = [os.path.join(r.out_dir, "data1.csv"), os.path.join(r.out_dir, "data2.csv")]
+        per_record = [exact_min_dmax2(p) for p in paths]
+        truth = (per_record[0] * h + per_record[1] * (N - h)) / N
+        lower, upper = lpvid.exact(r.interval["lower_exact"]), lpvid.exact(r.interval["upper_exact"])
+        self.assertLessEqual(lower, truth)
+        self.assertLessEqual(truth, upper)
+        self.assertEqual([e["samples"] for e in r.report["records"]], [h, N - h])
+        # record 2 starts from rest although the data ran on: its transient makes it worse than the noise
+        self.assertGreater(per_record[1], per_record[0])
+        self.assertTrue(lpvid.verify(r.certificate))
+        self.certificates.extend(r.certificates)
+        with self.assertRaises(lpvid.LpvidError):
+            lpvid.invalidate(self.u, self.y, self.rho, true_model(), delta=0, records=records)
+
     def test_wrong_gain_is_invalidated(self):
         wrong = copy.deepcopy(true_model())
         wrong["initial"]["C"] = [{"basis": "1", "value": text_matrix([[3 * c for c in C0[0]]])},
