@@ -77,7 +77,11 @@ int benchmark_warmup(const std::string& name) {
 /// (path, rows text), one entry per --data in order.
 std::vector<std::pair<std::string, std::string>> estimation_records(const DiagnoseArgs& a) {
   std::vector<std::pair<std::string, std::string>> out;
-  for (const RecordOption& r : data_records(a.common)) out.emplace_back(r.path, r.rows_text);
+  for (const RecordOption& r : data_records(a.common)) {
+    if (!r.x0_text.empty())
+      throw InputError("--x0 " + r.x0_text + ": diagnose identifies each record's initial state itself (no --x0)");
+    out.emplace_back(r.path, r.rows_text);
+  }
   return out;
 }
 

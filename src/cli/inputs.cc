@@ -29,6 +29,11 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
                       o.data_path = o.data_paths.empty() ? std::string() : o.data_paths.front();
                       if (o.data_paths.size() == 1 && o.rows_texts.size() == 1) o.rows_text = o.rows_texts.front();
                     });
+  app.add_option("--x0", o.x0_texts,
+                 "initial state V1,V2,... (exact numbers, one per state) of the --data before it (one --data: anywhere); "
+                 "default the model's x0")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--model", o.model_path, "model file (lpvid-model/1 JSON)")->required();
   app.add_option("--names", o.names, "column names for a headerless whitespace data file (every record)")->delimiter(',');
   app.add_option("--toeplitz", o.toeplitz, "T_z mode: signal (default: T_z from the simulated z) or paper (T_G12 T_u)")
@@ -113,41 +118,73 @@ void add_data_and_rows(CLI::App& app, std::vector<std::string>& paths, std::vect
                        const std::string& data_help, const std::string& rows_help, std::function<void()> then) {
   app.add_option("--data", paths, data_help)->required()->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--rows", rows, rows_help)->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app.parse_complete_callback([&app, &order, then] {  // the order of --data and --rows pairs them
+  app.parse_complete_callback([&app, &order, then] {  // the order of --data, --rows and --x0 pairs them
     order.clear();
-    for (const CLI::Option* opt : app.parse_order())
-      if (opt->check_name("--data") || opt->check_name("--rows")) order += opt->check_name("--data") ? 'd' : 'r';
+    for (const CLI::Option* opt : app.parse_order()) {
+      if (opt->check_name("--data")) order += 'd';
+      if (opt->check_name("--rows")) order += 'r';
+      if (opt->check_name("--x0")) order += 'x';
+    }
     if (then) then();
   });
 }
 
+namespace {
+
+/// `texts` given at most once (one --data): its only entry, or "".
+std::string at_most_once(const std::vector<std::string>& texts, const char* flag) {
+  if (texts.size() > 1)
+    throw InputError(std::string(flag) + " is given " + std::to_string(texts.size()) + " times for one --data (one per --data)");
+  return texts.empty() ? std::string() : texts.front();
+}
+
+}  // namespace
+
 std::vector<RecordOption> pair_data_and_rows(const std::vector<std::string>& paths, const std::vector<std::string>& rows,
-                                             const std::string& order) {
-  if (paths.size() <= 1) {
-    if (rows.size() > 1)
-      throw InputError("--rows is given " + std::to_string(rows.size()) + " times for one --data (one window per --data)");
-    return {{paths.empty() ? std::string() : paths.front(), rows.empty() ? std::string() : rows.front()}};
-  }
+                                             const std::string& order, const std::vector<std::string>& x0s) {
+  if (paths.size() <= 1)
+    return {{paths.empty() ? std::string() : paths.front(), at_most_once(rows, "--rows"), at_most_once(x0s, "--x0")}};
   std::vector<RecordOption> out;
-  size_t d = 0, r = 0;
+  size_t d = 0, r = 0, x = 0;
   for (const char c : order) {
     if (c == 'd') {
-      out.push_back({paths.at(d++), ""});
+      out.push_back({paths.at(d++), "", ""});
       continue;
     }
-    const std::string& text = rows.at(r++);
-    if (out.empty()) throw InputError("--rows " + text + ": given before the first --data (a --rows belongs to the --data before it)");
-    if (!out.back().rows_text.empty())
-      throw InputError("--rows " + text + ": " + out.back().path + " has a --rows already (" + out.back().rows_text +
-                       "); give each --data at most one --rows, after it");
-    out.back().rows_text = text;
+    const std::string flag = c == 'r' ? "--rows" : "--x0";
+    const std::string& text = c == 'r' ? rows.at(r++) : x0s.at(x++);
+    if (out.empty())
+      throw InputError(flag + " " + text + ": given before the first --data (a " + flag + " belongs to the --data before it)");
+    std::string& slot = c == 'r' ? out.back().rows_text : out.back().x0_text;
+    if (!slot.empty())
+      throw InputError(flag + " " + text + ": " + out.back().path + " has a " + flag + " already (" + slot +
+                       "); give each --data at most one " + flag + ", after it");
+    slot = text;
   }
   return out;
 }
 
+Vec<Rational> parse_x0(const std::string& text, Eigen::Index nx) {
+  std::vector<std::string> parts(1);
+  for (const char ch : text) {
+    if (ch == ',') parts.emplace_back();
+    else if (ch != ' ') parts.back() += ch;
+  }
+  if (static_cast<Eigen::Index>(parts.size()) != nx)
+    throw InputError("--x0 " + text + ": " + std::to_string(parts.size()) + " value(s), the model has " + std::to_string(nx) +
+                     " state(s) (give V1,V2,... one exact number per state)");
+  Vec<Rational> x0(nx);
+  for (Eigen::Index i = 0; i < nx; ++i) {
+    const std::string& part = parts[static_cast<size_t>(i)];
+    if (auto why = number_text_problem(part)) throw InputError("--x0 " + text + ": value " + std::to_string(i + 1) + " '" + part + "': " + *why);
+    x0(i) = rational_from_text(part);
+  }
+  return x0;
+}
+
 std::vector<RecordOption> data_records(const CommonOptions& o) {
-  if (o.data_paths.empty()) return {{o.data_path, o.rows_text}};  // options set in code (one record)
-  return pair_data_and_rows(o.data_paths, o.rows_texts, o.data_rows_order);
+  if (o.data_paths.empty()) return {{o.data_path, o.rows_text, ""}};  // options set in code (one record)
+  return pair_data_and_rows(o.data_paths, o.rows_texts, o.data_rows_order, o.x0_texts);
 }
 
 namespace {
@@ -158,13 +195,15 @@ struct LoadedRecord {
   Experiment<double> d;
   DataReference ref;
   std::vector<std::string> header;
+  Vec<Rational> x0;  ///< --x0 (empty: the model's)
 };
 
 LoadedRecord load_record(const RecordOption& r, const CommonOptions& o, const LpvModel<Rational>& model_q,
                          const LpvModel<double>& model_d) {
   const DataTable data = o.names.empty() ? read_data_table(r.path) : read_data_table(r.path, o.names);
   LoadedRecord rec{make_experiment<Rational>(data.table, model_q.columns), make_experiment<double>(data.table, model_d.columns),
-                   data.reference, data.table.header};
+                   data.reference, data.table.header, {}};
+  if (!r.x0_text.empty()) rec.x0 = parse_x0(r.x0_text, model_q.nx);
   if (r.rows_text.empty()) return rec;
   const auto [b, e] = parse_row_range(r.rows_text, "--rows");
   if (e > rec.q.n())
@@ -174,6 +213,23 @@ LoadedRecord load_record(const RecordOption& r, const CommonOptions& o, const Lp
   rec.d = select_rows(rec.d, b, e);
   rec.ref = rec.ref.rows(b, e);
   return rec;
+}
+
+/// The --x0 of the records: one record's replaces the model's x0 (its
+/// certificate keeps the one-record form); several records' go to
+/// Experiment::record_x0 (an empty entry: the model's x0).
+void set_initial_states(const std::vector<LoadedRecord>& recs, Inputs& in) {
+  const bool any = std::any_of(recs.begin(), recs.end(), [](const LoadedRecord& r) { return r.x0.size() != 0; });
+  if (!any) return;
+  if (recs.size() == 1) {
+    in.model_q.x0 = recs.front().x0;
+    in.model_d.x0 = nearest_double(Mat<Rational>(recs.front().x0)).col(0);
+    return;
+  }
+  for (const LoadedRecord& r : recs) {
+    in.exp_q.record_x0.push_back(r.x0);
+    in.exp_d.record_x0.push_back(r.x0.size() ? Vec<double>(nearest_double(Mat<Rational>(r.x0)).col(0)) : Vec<double>());
+  }
 }
 
 /// The records side by side in `in` (exp_q, exp_d stacked; one reference each).
@@ -191,6 +247,7 @@ void stack_into(const std::vector<LoadedRecord>& recs, Inputs& in) {
   in.exp_q = stack_records(qs);
   in.exp_d = stack_records(ds);
   in.data = in.records.front();
+  set_initial_states(recs, in);
 }
 
 }  // namespace

@@ -22,16 +22,17 @@
 namespace lpvid::cli {
 
 /// One record of the command line: a --data file and the --rows window
-/// that follows it (empty: all rows).
+/// that follows it (empty: all rows) and its --x0 (empty: the model's x0).
 struct RecordOption {
-  std::string path, rows_text;
+  std::string path, rows_text, x0_text;
 };
 
 struct CommonOptions {
   std::string data_path, model_path;     ///< data_path: the first --data
   std::vector<std::string> data_paths;   ///< every --data, in order (several: several records)
   std::vector<std::string> rows_texts;   ///< every --rows, in order
-  std::string data_rows_order;           ///< 'd' per --data, 'r' per --rows, in the order given
+  std::vector<std::string> x0_texts;     ///< every --x0, in order (each record's own initial state)
+  std::string data_rows_order;           ///< 'd' per --data, 'r' per --rows, 'x' per --x0, in the order given
   std::vector<std::string> names;        ///< --names for headerless data files (every record)
   long row_begin = 0, row_end = -1;      ///< --rows B:E window (one record)
   std::string rows_text;                 ///< the --rows of one record
@@ -74,11 +75,16 @@ struct Inputs {
 void add_data_and_rows(CLI::App& app, std::vector<std::string>& paths, std::vector<std::string>& rows, std::string& order,
                        const std::string& data_help, const std::string& rows_help, std::function<void()> then = {});
 
-/// Each --data with the --rows after it (`order` as add_data_and_rows
-/// records it). One --data: its --rows anywhere (at most one). Throws
-/// InputError for a --rows before the first --data or two for one --data.
+/// Each --data with the --rows and --x0 after it (`order` as
+/// add_data_and_rows records it, 'x' per --x0). One --data: its --rows and
+/// --x0 anywhere (at most one each). Throws InputError for a --rows or --x0
+/// before the first --data or two of them for one --data.
 std::vector<RecordOption> pair_data_and_rows(const std::vector<std::string>& paths, const std::vector<std::string>& rows,
-                                             const std::string& order);
+                                             const std::string& order, const std::vector<std::string>& x0s = {});
+
+/// The exact initial state of --x0 `text` ("V1,V2,..."), `nx` values;
+/// throws InputError naming --x0 and the text otherwise.
+Vec<Rational> parse_x0(const std::string& text, Eigen::Index nx);
 
 /// The records of the command line: each --data with the --rows after it
 /// (before the next --data). One --data: today's single window, its --rows

@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "cli/inputs.h"
+#include "cli/jobs_joint_check.h"
 #include "cli/jobs_plan.h"
 #include "cli/jobs_window_check.h"
 #include "cli/report.h"
@@ -29,6 +30,7 @@ namespace fs = std::filesystem;
 struct PlanArgs {
   long window = kDefaultWindowLength, min_last = kDefaultMinLastWindow;
   std::string dir, lpvid;
+  bool joint = false;  ///< --joint: one more job, every window a record of one claim
 };
 
 std::string window_name(int k, const char* suffix) {
@@ -53,6 +55,23 @@ std::string forwarded_options(const CommonOptions& c) {
   return s;
 }
 
+/// The job of `plan --joint`: one `lpvid invalidate` with every window of
+/// the plan as a record (--data F --rows b:e --x0 <the window's x0>) and the
+/// plan's model.
+JointJob joint_job(const JobPlan& plan, const fs::path& dir, const std::string& program, const std::string& options) {
+  JointJob j{"", "joint.cert.json", "joint.report.json"};
+  j.command = shell_quote(program) + " invalidate --quiet";
+  for (const JobWindow& w : plan.windows) {
+    std::string x0;
+    for (const std::string& v : w.x0) x0 += (x0.empty() ? "" : ",") + v;
+    j.command += " --data " + shell_quote(plan.data_path) + " --rows " + std::to_string(w.file_begin) + ":" +
+                 std::to_string(w.file_end) + (x0.empty() ? "" : " --x0 " + shell_quote(x0));
+  }
+  j.command += " --model " + shell_quote(plan.model_path) + " --certificate " + shell_quote((dir / j.certificate).string()) +
+               " --report " + shell_quote((dir / j.report).string()) + options;
+  return j;
+}
+
 int run_plan(CommonOptions& c, const PlanArgs& a) {
   if (!c.certificate_path.empty() || !c.report_path.empty() || !c.write_sdpa.empty())
     throw InputError("jobs plan: --certificate, --report and --write-sdpa belong to the jobs (one per window); "
@@ -66,6 +85,11 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
     throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" (the jobs run 'lpvid invalidate')");
   const long first_row = c.rows_text.empty() ? 0 : c.row_begin;
   const std::vector<RowWindow> windows = tile_windows(in.exp_q.n(), a.window, a.min_last);
+  if (a.joint && windows.size() < 2)
+    throw InputError("jobs plan --joint: the record makes " + std::to_string(windows.size()) +
+                     " window; the joint claim needs at least 2 (a smaller --window)");
+  if (a.joint && c.toeplitz != "signal")
+    throw InputError("jobs plan --joint: several records are certified in --toeplitz signal only");
 
   JobPlan plan;
   plan.data_path = fs::absolute(c.data_path).lexically_normal().string();
@@ -115,6 +139,10 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
     job_lines += w.command + "\n";
     plan.windows.push_back(w);
   }
+  if (a.joint) {
+    plan.joint = joint_job(plan, dir, program, options);
+    job_lines += plan.joint->command + "\n";
+  }
   write_text_file((dir / "jobs.txt").string(), job_lines, "job list");
   write_text_file((dir / "plan.json").string(), plan_json(plan).dump(1) + "\n", "job plan");
 
@@ -124,11 +152,14 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
             << "  " << (dir / "jobs.txt").string() << ": one 'lpvid invalidate' per line; each window starts from the\n"
             << "  model's own simulated state (declared as x0 in its model file " << window_name(0, ".model.json")
             << ", ...)\n"
+            << (a.joint ? "  and last the joint job: every window a record of ONE claim (one Delta, one noise bound; "
+                          "each window from its declared x0)\n"
+                        : "")
             << "time one window first:   sed -n 1p " << jobs << " | (time bash)\n"
             << "then run them with any batch engine, e.g.\n"
             << "  GNU parallel:  parallel -j 2 < " << jobs << "\n"
             << "  xargs:         xargs -P 2 -d '\\n' -n 1 sh -c < " << jobs << "\n"
-            << "  Slurm array:   sbatch --array=1-" << windows.size() << " --wrap \"sed -n \\${SLURM_ARRAY_TASK_ID}p "
+            << "  Slurm array:   sbatch --array=1-" << windows.size() + (a.joint ? 1 : 0) << " --wrap \"sed -n \\${SLURM_ARRAY_TASK_ID}p "
             << jobs << " | bash\"\n"
             << "and assemble:    lpvid jobs merge --dir " << shell_quote(dir.string())
             << "   (re-checks every certificate exactly)\n";
@@ -140,6 +171,34 @@ struct Merged {
   JobWindow w;
   WindowResult r;
 };
+
+/// The joint claim of `plan --joint`: judged, printed, and its entry of
+/// merged.json ("joint").
+nlohmann::ordered_json merge_joint(const PlannedClaim& planned, const JobPlan& plan, const LpvModel<Rational>& model,
+                                   const fs::path& dir, WindowStatus& status) {
+  const WindowResult r = judge_joint(planned, plan, model, (dir / plan.joint->certificate).string());
+  status = r.status;
+  const bool ok = r.status == WindowStatus::kVerified || r.status == WindowStatus::kInvalidated;
+  nlohmann::ordered_json j = {{"certificate", plan.joint->certificate}, {"status", to_string(r.status)}, {"verified", ok}};
+  std::cout << "joint claim (the " << plan.windows.size() << " windows as records of one claim: one Delta, one noise bound): "
+            << to_string(r.status);
+  if (r.status == WindowStatus::kVerified) {
+    j["delta2_exact"] = rational_to_text(r.delta2);
+    j["dmax2_exact"] = rational_to_text(r.dmax2);
+    j["delta"] = upper_sqrt_text(r.delta2);
+    j["dmax"] = upper_sqrt_text(r.dmax2);
+    std::cout << ", delta <= " << upper_sqrt_text(r.delta2) << ", dmax <= " << upper_sqrt_text(r.dmax2);
+  }
+  if (r.status == WindowStatus::kInvalidated) j["verdict"] = "invalidated";
+  if (!r.reason.empty()) {
+    j["reason"] = r.reason;
+    std::cout << ": " << r.reason;
+  }
+  std::cout << "\n";
+  j["meaning"] = "one Delta (acting on each window from rest, each window from its declared x0) and one noise bound on "
+                 "the RMS over all samples of all windows explain every window (Theorem 2.1 over several records)";
+  return j;
+}
 
 int run_merge(const std::string& dir_text, std::string report_path, bool quiet) {
   const JobPlan plan = read_plan(dir_text);
@@ -254,16 +313,22 @@ int run_merge(const std::string& dir_text, std::string report_path, bool quiet) 
                 << ") on a window: " << lower_text(best_lower) << " (no Delta within the bound does better there)\n";
   }
   report["windows"] = windows;
+  WindowStatus joint = WindowStatus::kVerified;
+  if (plan.joint) report["joint"] = merge_joint(planned, plan, planned_model, dir, joint);
+  if (joint == WindowStatus::kInvalidated) ++invalidated;
+  if (joint == WindowStatus::kMissing) ++missing;
+  if (joint == WindowStatus::kRefused) ++refused;
   if (report_path.empty()) report_path = (dir / "merged.json").string();
   write_json(report_path, report);
   std::cout << "report " << report_path << "\n";
   if (invalidated > 0) {
-    std::cout << "-> INVALIDATED on " << invalidated << " window(s): the model (with the state declared there) cannot "
-              << "explain those rows within the given bounds\n";
+    std::cout << "-> INVALIDATED on " << invalidated << (joint == WindowStatus::kInvalidated ? " claim(s)" : " window(s)")
+              << ": the model (with the state declared there) cannot explain those rows within the given bounds\n";
     return kExitInvalidated;
   }
   if (missing + refused > 0) {
-    std::cout << "-> INCOMPLETE: " << missing + refused << " window(s) without a certificate that passed\n";
+    std::cout << "-> INCOMPLETE: " << missing + refused << (plan.joint ? " claim(s) (windows or the joint one)" : " window(s)")
+              << " without a certificate that passed\n";
     return kExitNotVerified;
   }
   return kExitOk;
@@ -284,10 +349,13 @@ Runner add_jobs_command(CLI::App& app) {
   p->add_option("--window", plan->window, "rows per window (default 200)");
   p->add_option("--min-last", plan->min_last, "a last window shorter than this joins the one before (default 50)");
   p->add_option("--lpvid", plan->lpvid, "the lpvid program the jobs run (default: this one, by absolute path)");
+  p->add_flag("--joint", plan->joint,
+              "one more job (last in jobs.txt): every window as a record of ONE claim (one Delta for all windows, each "
+              "from rest and from its declared x0, one noise bound on the RMS over all samples); merge judges it too");
   auto merge_dir = std::make_shared<std::string>();
   auto merge_report = std::make_shared<std::string>();
   auto merge_quiet = std::make_shared<bool>(false);
-  CLI::App* m = jobs->add_subcommand("merge", "Compare every window's certificate with the plan, re-check it exactly, assemble the report");
+  CLI::App* m = jobs->add_subcommand("merge", "Compare every window's certificate (and the joint one of 'plan --joint') with the plan, re-check each exactly, assemble the report");
   m->add_option("--dir", *merge_dir, "the folder of 'lpvid jobs plan'")->required();
   m->add_option("--report", *merge_report, "where to write the merged report (default <dir>/merged.json)");
   m->add_flag("--quiet", *merge_quiet, "no progress lines on stderr");

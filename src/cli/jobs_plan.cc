@@ -26,6 +26,8 @@ nlohmann::ordered_json plan_json(const JobPlan& p) {
                             {"report", w.report},
                             {"x0", w.x0},
                             {"command", w.command}});
+  if (p.joint)
+    j["joint"] = {{"command", p.joint->command}, {"certificate", p.joint->certificate}, {"report", p.joint->report}};
   return j;
 }
 
@@ -97,6 +99,11 @@ JobPlan read_plan(const std::string& dir) {
       jw.x0.push_back(v.get<std::string>());
     }
     p.windows.push_back(jw);
+  }
+  if (j.contains("joint")) {
+    const nlohmann::json& joint = j.at("joint");
+    p.joint = JointJob{text_of(joint, "command", "joint."), text_of(joint, "certificate", "joint."),
+                       text_of(joint, "report", "joint.")};
   }
   return p;
 }

@@ -13,7 +13,15 @@
 /// bound claims: on exactly these rows, this model with this initial state
 /// explains the data with ‖Δ‖ ≤ δ and noise RMS ≤ d_max (Theorem 2.1). The
 /// windows' Δ are separate; nothing is claimed across window borders.
+///
+/// `plan --joint` adds one job: every window as a record of ONE claim (one
+/// Δ for all windows, acting on each from rest, and one noise bound on the
+/// RMS over all their samples: Theorem 2.1 over several records), each
+/// window from the x0 declared for it (`lpvid invalidate --data F --rows
+/// b:e --x0 … --data F …`). Merge judges it beside the windows
+/// (cli/jobs_joint_check.h).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +42,11 @@ struct JobWindow {
   std::vector<std::string> x0;
 };
 
+/// The joint job of `plan --joint` (file names relative to the plan's folder).
+struct JointJob {
+  std::string command, certificate, report;
+};
+
 /// The plan: what `merge` needs to judge the certificates it finds.
 struct JobPlan {
   std::string data_path;     ///< absolute
@@ -46,6 +59,7 @@ struct JobPlan {
   std::string delta_text, dmax_text, lambda_text;  ///< as given
   long window = 0, min_last = 0;
   std::vector<JobWindow> windows;
+  std::optional<JointJob> joint;  ///< plan --joint
 };
 
 nlohmann::ordered_json plan_json(const JobPlan& plan);

@@ -27,23 +27,28 @@ std::string differs(const char* name, const Rational& have, const Rational& plan
   return std::string(name) + " = " + rational_to_text(have) + ", the plan's is " + rational_to_text(planned);
 }
 
-std::string x0_text(const Vec<Rational>& x0) {
+std::string model_mismatch(const LpvModel<Rational>& planned, const LpvModel<Rational>& have) {
+  if (write_model_json(have) == write_model_json(planned)) return "";
+  if (std::string why = model_besides_x0_mismatch(planned, have); !why.empty()) return why;
+  return "certifies the model with x0 = [" + exact_x0_text(have.x0) + "], the plan's x0 for this window is [" +
+         exact_x0_text(planned.x0) + "]";
+}
+
+}  // namespace
+
+std::string exact_x0_text(const Vec<Rational>& x0) {
   std::string s;
   for (Eigen::Index i = 0; i < x0.size(); ++i) s += (i ? " " : "") + rational_to_text(x0(i));
   return s;
 }
 
-std::string model_mismatch(const LpvModel<Rational>& planned, const LpvModel<Rational>& have) {
-  if (write_model_json(have) == write_model_json(planned)) return "";
+std::string model_besides_x0_mismatch(const LpvModel<Rational>& planned, const LpvModel<Rational>& have) {
   LpvModel<Rational> a = planned, b = have;
   a.x0.resize(0);
   b.x0.resize(0);
-  if (write_model_json(a) != write_model_json(b)) return "certifies another model than the planned one";
-  return "certifies the model with x0 = [" + x0_text(have.x0) + "], the plan's x0 for this window is [" +
-         x0_text(planned.x0) + "]";
+  return write_model_json(a) == write_model_json(b) ? "" : "certifies another model than the planned one";
 }
 
-/// The claim of the window's certificate against the plan's objective.
 std::string certificate_claim_mismatch(const PlannedClaim& p, const Certificate& c) {
   const bool invalidated = c.claim == CertificateClaim::kInvalidated;
   if (c.claim == CertificateClaim::kLowerBound || c.claim == CertificateClaim::kNotAWitness)
@@ -56,6 +61,17 @@ std::string certificate_claim_mismatch(const PlannedClaim& p, const Certificate&
   if (why.empty() && p.dmax2) why = differs("dmax^2", c.dmax2, *p.dmax2);
   return why.empty() ? "" : std::string("claims \"") + to_string(c.claim) + "\" at " + why;
 }
+
+FileState file_state(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (st.type() == fs::file_type::not_found) return {true, ""};
+  if (ec) return {false, "unreadable: " + path + ": " + ec.message()};
+  if (st.type() != fs::file_type::regular) return {false, "unreadable: " + path + ": not a regular file"};
+  return {};
+}
+
+namespace {
 
 DualClaim dual_claim_of(BoundObjective::Kind kind) {
   switch (kind) {
@@ -110,21 +126,6 @@ std::string read_and_check(const PlannedClaim& p, const JobWindow& w, const LpvM
   } catch (const std::runtime_error& e) {
     return std::string("cannot be checked: ") + e.what();
   }
-}
-
-/// What a job left at a path: nothing, or a file, or something that cannot
-/// be read as one (a link loop, a folder): `problem` says why.
-struct FileState {
-  bool missing = false;
-  std::string problem;
-};
-FileState file_state(const std::string& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (st.type() == fs::file_type::not_found) return {true, ""};
-  if (ec) return {false, "unreadable: " + path + ": " + ec.message()};
-  if (st.type() != fs::file_type::regular) return {false, "unreadable: " + path + ": not a regular file"};
-  return {};
 }
 
 /// The lower end beside a verified window's certificate, when there is one.
@@ -235,7 +236,7 @@ WindowResult judge_window(const PlannedClaim& p, const JobWindow& w, const LpvMo
   o.kind = p.objective;
   o.lambda = nearest_double(p.lambda);
   r.upper = objective_at(o, c.delta2, c.dmax2);
-  r.x0 = x0_text(c.model.x0);
+  r.x0 = exact_x0_text(c.model.x0);
   judge_lower_end(p, w, model, certificate_path, data_path, r);
   return r;
 }

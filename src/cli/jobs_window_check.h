@@ -52,6 +52,24 @@ BoundObjective::Kind objective_kind_of(const std::string& name);
 /// window's declared x0 (throws InputError when x0 has the wrong size).
 LpvModel<Rational> window_model(const LpvModel<Rational>& planned, const JobWindow& w);
 
+/// The exact texts of `x0`, separated by spaces.
+std::string exact_x0_text(const Vec<Rational>& x0);
+
+/// "" when `have` is the `planned` model apart from x0, else the reason.
+std::string model_besides_x0_mismatch(const LpvModel<Rational>& planned, const LpvModel<Rational>& have);
+
+/// Why the claim of `c` (its kind and fixed δ², d_max²) is not what the plan
+/// asks of a certificate ("" when it is).
+std::string certificate_claim_mismatch(const PlannedClaim& p, const Certificate& c);
+
+/// What a job left at a path: nothing, or a file, or something that cannot
+/// be read as one (a link loop, a folder): `problem` says why.
+struct FileState {
+  bool missing = false;
+  std::string problem;
+};
+FileState file_state(const std::string& path);
+
 /// Which file of a window is judged.
 enum class WindowFile { kCertificate, kLowerEnd };
 

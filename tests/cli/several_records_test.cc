@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/number_text.h"
 #include "support/cli_runner.h"
 
 namespace lpvid {
@@ -231,6 +232,81 @@ TEST_F(SeveralRecordsCli, TheOrderOfTheRecordsDoesNotChangeTheBounds) {
   ASSERT_EQ(invalidate("--data " + file("b.csv") + " --rows 0:80 --data " + file("a.csv"), file("r2.json")), 0) << output();
   const nlohmann::json r1 = read_json(file("r1.json")), r2 = read_json(file("r2.json"));
   EXPECT_NEAR(r1["delta"].get<double>(), r2["delta"].get<double>(), 1e-6 * r1["delta"].get<double>());
+}
+
+// --x0 on the command line: each record's own initial state, paired with the
+// --data before it like --rows. Known answers by construction: two records
+// made by the model x+ = x/2 + u, y = x itself from x0 = 2 and x0 = -3 (y
+// written with 6 decimals), so with each record's own x0 the residual is
+// rounding only and the model is consistent at tiny bounds; from the model's
+// x0 = 0 each record keeps the transient 2·(1/2)^k (resp. −3·(1/2)^k), noise
+// RMS about 0.3 ≫ 0.001, which no Δ with δ = 0.001 explains.
+
+/// n rows of the model itself from x(0) = x0, amplitude `amp`.
+std::string record_csv(double x0, double amp, int n) {
+  std::string s = "u,y\n";
+  double x = x0;
+  for (int k = 0; k < n; ++k) {
+    char u[32], line[80];
+    std::snprintf(u, sizeof u, "%.6f", amp * std::sin(0.4 * k + amp));
+    std::snprintf(line, sizeof line, "%s,%.6f\n", u, x);
+    s += line;
+    x = 0.5 * x + std::stod(u);
+  }
+  return s;
+}
+
+Rational exact(const nlohmann::json& v) { return rational_from_text(v.is_string() ? v.get<std::string>() : v.dump()); }
+
+struct RecordInitialState : CliRunner {
+  void SetUp() override {
+    CliRunner::SetUp();
+    if (IsSkipped()) return;
+    write_text(file("model.json"), kFirstOrderModel);
+    write_text(file("a.csv"), record_csv(2, 1.0, 50));
+    write_text(file("b.csv"), record_csv(-3, 2.0, 70));
+  }
+  int invalidate(const std::string& data) {
+    return run("invalidate", "--quiet " + data + " --model " + file("model.json") +
+                                 " --delta 0.001 --dmax 0.001 --certificate " + file("c.json") + " --report " + file("r.json"));
+  }
+};
+
+TEST_F(RecordInitialState, EachRecordFromItsOwnX0IsConsistentAndTheCertificateCarriesIt) {
+  ASSERT_EQ(invalidate("--data " + file("a.csv") + " --x0 2 --data " + file("b.csv") + " --x0=-3"), 0) << output();
+  const nlohmann::json c = read_json(file("c.json"));
+  ASSERT_EQ(c["records"].size(), 2u) << c.dump(1);
+  EXPECT_EQ(exact(c["records"][0]["x0"][0]), Rational(2));
+  EXPECT_EQ(exact(c["records"][1]["x0"][0]), Rational(-3));
+  EXPECT_EQ(run_program(verify_exe, "certificate " + file("c.json")), 0) << output();
+  // the same data from the model's x0 = 0: not consistent at these bounds
+  EXPECT_EQ(invalidate("--data " + file("a.csv") + " --data " + file("b.csv")), 1) << output();
+  // --x0 after --rows and a negative value as its own word
+  EXPECT_EQ(invalidate("--data " + file("a.csv") + " --x0 2 --data " + file("b.csv") + " --rows 0:60 --x0 -3"), 0)
+      << output();
+}
+
+TEST_F(RecordInitialState, OneRecordWithX0KeepsTheOneRecordCertificate) {
+  EXPECT_EQ(invalidate("--data " + file("a.csv")), 1) << output();
+  ASSERT_EQ(invalidate("--x0 2 --data " + file("a.csv")), 0) << output();
+  const nlohmann::json c = read_json(file("c.json"));
+  EXPECT_FALSE(c.contains("records")) << c.dump(1);
+  EXPECT_TRUE(c.contains("data")) << c.dump(1);
+  EXPECT_EQ(exact(c["model"]["x0"][0]), Rational(2)) << c["model"].dump();
+  EXPECT_EQ(run_program(verify_exe, "certificate " + file("c.json")), 0) << output();
+}
+
+TEST_F(RecordInitialState, ABadX0IsNamedAndNothingIsWritten) {
+  EXPECT_EQ(invalidate("--data " + file("a.csv") + " --x0 1,2 --data " + file("b.csv")), 2) << output();
+  EXPECT_NE(output().find("--x0 1,2: 2 value(s), the model has 1 state(s)"), std::string::npos) << output();
+  EXPECT_EQ(invalidate("--data " + file("a.csv") + " --data " + file("b.csv") + " --x0 two"), 2) << output();
+  EXPECT_NE(output().find("--x0 two"), std::string::npos) << output();
+  EXPECT_EQ(invalidate("--x0 1 --data " + file("a.csv") + " --data " + file("b.csv")), 2) << output();
+  EXPECT_NE(output().find("before the first --data"), std::string::npos) << output();
+  EXPECT_EQ(invalidate("--data " + file("a.csv") + " --x0 1 --x0 2 --data " + file("b.csv")), 2) << output();
+  EXPECT_NE(output().find("has a --x0 already"), std::string::npos) << output();
+  EXPECT_FALSE(std::filesystem::exists(file("r.json")));
+  EXPECT_FALSE(std::filesystem::exists(file("c.json")));
 }
 
 }  // namespace
