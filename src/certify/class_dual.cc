@@ -41,7 +41,7 @@ ClassLeafBuild build_class_leaf(const ClassSignals& s, const Vec<Rational>& cent
     const double c = nearest_double(p.bilinear), e = nearest_double(epsilon);
     return std::make_pair(c / (2 * e), nearest_double(p.linear) + c * e / 2);
   };
-  PathDualBuild b = build_path_dual(z, r, s.horizon, solution, claim, fixed, project, shift);
+  PathDualBuild b = build_path_dual(z, r, s.horizon, solution, claim, fixed, project, shift, s.a.records);
   if (!b.problem.empty()) return out.problem = b.problem, out;
   const ClassPenalty pen = class_penalty(s, radius, b.g_effective);
   if (!pen.problem.empty()) return out.problem = pen.problem, out;

@@ -47,7 +47,7 @@ Vec<double> to_double(const Vec<Rational>& v) {
 std::string evaluate(const Search& q, TreeNode& node) {
   const Vec<double> c = to_double(node.center);
   const Mat<double> z = unstack_rows(q.a.z(c), q.a.nz), r = unstack_rows(q.a.r(c), q.a.ny);
-  const DeltaFormSolution sol = solve_delta_form_barrier(z, r, q.objective, BarrierOptions{}, q.free_columns);
+  const DeltaFormSolution sol = solve_delta_form_barrier(z, r, q.objective, BarrierOptions{}, q.free_columns, q.a.records);
   const bool answered = has_solution(sol.solve.status) ||
                         (q.claim == DualClaim::kInvalidated && sol.solve.status == SolveStatus::kPrimalInfeasible);
   if (!answered) return "the structured solver gave no answer at a leaf's centre: " + sol.solve.message;
@@ -210,7 +210,7 @@ std::string certify_tree(const LpvModel<Rational>& model_q, const Experiment<Rat
   c.region.radius = tree[0].radius;
   c.region.horizon = q.s.horizon;
   preorder(tree, 0, c.region.nodes);
-  set_data_reference(c, certify.data);
+  name_certificate_data(c, certify, exp_q);
   c.info["tool"] = "lpvid";
   c.info["objective"] = certify.objective.describe();
   c.info["box_fraction"] = o.box_fraction;

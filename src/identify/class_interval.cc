@@ -10,10 +10,6 @@ ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& mode
                              const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                              const CertifyOptions& certify, ClassBoundOptions options, SdpSolver& solver) {
   ClassInterval out;
-  if (several_records(exp_q.records)) {  // the leaf dual is built for one record: no number rather than a wrong one
-    out.bound.reason = "no class bound: several records (not implemented)";
-    return out;
-  }
   options.upper = nearest_double(id.bounds.upper);
   try {
     out.bound = class_lower_bound(model_q, model_d, exp_q, exp_d, id.fixed.value, certify, options);
@@ -27,8 +23,9 @@ ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& mode
   if (!out.bound.certified) return out;
   if (out.bound.whole_class && out.bound.best_p.size() == id.fixed.value.size() &&
       out.bound.best_objective < options.upper) {
-    FixedParameters optimum = fix_parameters(model_q, id.fit.layout, out.bound.best_p, certify.digits);
-    CertifiedBounds b = certify_identified(optimum.model, exp_q, Mat<double>(), certify, solver);
+    FixedParameters optimum = fix_parameters(model_q, id.fit.layout, out.bound.best_p, certify.digits, exp_q.record_x0);
+    CertifiedBounds b =
+        certify_identified(optimum.model, with_fixed_initial_states(exp_q, optimum), Mat<double>(), certify, solver);
     if (b.verified && b.upper < id.bounds.upper) {
       id.fixed = std::move(optimum);
       id.bounds = std::move(b);

@@ -144,8 +144,7 @@ CertificateVerdict check_claim(const Certificate& c, Experiment<Rational> exp, s
     details << exp.records.size() << " records under one Delta (rows";
     for (const Eigen::Index l : exp.records) details << " " << l;
     details << "); ";
-    // The one-record Gram forms and the class claims are not defined across records here.
-    if (is_class_claim(c.claim)) return invalid_verdict("class claims are about one record");
+    // The one-record Gram forms are not defined across records here.
     if (c.mode != ToeplitzMode::kSignal) return invalid_verdict("several records need toeplitz mode \"signal\"");
     if (c.form == CertificateForm::kW) return invalid_verdict("several records need form \"delta\" (one Delta for every record)");
   }

@@ -22,11 +22,11 @@ struct LeafValue {
 
 /// The dense form at (z, r) with the projected g: dual equality, terms, Y1 ⪰ 0.
 std::string dense_leaf_terms(const DualPoint& d, const Mat<Rational>& z, const Mat<Rational>& r, const Mat<Rational>& g,
-                             Eigen::Index ny, Eigen::Index nz, DualTerms<Rational>& terms) {
+                             Eigen::Index ny, Eigen::Index nz, DualTerms<Rational>& terms, const RecordLengths& records) {
   const Eigen::Index L = d.horizon;
   if (d.Y1.rows() != L * (ny + nz)) return "Y1 does not have horizon*(ny+nz) rows";
   const Mat<Rational> omega = block_diagonal_sums(d.Y1, L, ny, nz);
-  const Mat<Rational> adj = fir_adjoint(g, z, L);
+  const Mat<Rational> adj = fir_adjoint_records(g, z, L, records);
   if (omega != adj) return "the dual equality Omega_l(W) = C_l(g) fails (exact comparison, g projected)";
   terms = dual_terms(d.Y1, g, d.sigma, r, L);
   const PsdResult psd = decide_psd(d.Y1);
@@ -36,7 +36,7 @@ std::string dense_leaf_terms(const DualPoint& d, const Mat<Rational>& z, const M
 
 /// The compact form: Y1 rebuilt from the recipe, E within the floor, U − γI ⪰ 0.
 std::string path_leaf_terms(const DualPoint& d, const Mat<Rational>& z, const Mat<Rational>& r, const Mat<Rational>& g,
-                            Eigen::Index ny, Eigen::Index nz, DualTerms<Rational>& terms) {
+                            Eigen::Index ny, Eigen::Index nz, DualTerms<Rational>& terms, const RecordLengths& records) {
   const PathDualRecipe& p = d.path;
   if (p.taps.rows() != d.horizon) return "the recipe's taps do not have horizon rows";
   require_dual_order(static_cast<long>(d.horizon * ny));
@@ -44,7 +44,7 @@ std::string path_leaf_terms(const DualPoint& d, const Mat<Rational>& z, const Ma
   if (!grid.problem.empty()) return "the dual recipe gives no point: " + grid.problem;
   const PathDualSums sums = path_dual_sums(p, grid.U, ny, nz);
   if (!sums.problem.empty()) return "the dual recipe gives no point: " + sums.problem;
-  const PathDualValue v = path_dual_value(p, sums, fir_adjoint(g, z, d.horizon), g, d.sigma, r, ny, nz);
+  const PathDualValue v = path_dual_value(p, sums, fir_adjoint_records(g, z, d.horizon, records), g, d.sigma, r, ny, nz);
   if (v.E_norm2 > p.x * p.floor)
     return "the correction E of the dual equality is too large for the floor: ||E||_F^2 = " + approx_text(v.E_norm2, 8) +
            " > x*u_floor = " + approx_text(p.x * p.floor, 8);
@@ -79,8 +79,9 @@ LeafValue leaf_value(const Certificate& c, const ClassSignals& s, const ClassNod
   const Mat<Rational> z = class_z(s, point), r = class_r(s, point);
   const Mat<Rational> g = project_out_free(leaf.dual.g, s.free_columns);
   DualTerms<Rational> terms;
-  const std::string why = c.form == CertificateForm::kDualDeltaPath ? path_leaf_terms(leaf.dual, z, r, g, ny, nz, terms)
-                                                                    : dense_leaf_terms(leaf.dual, z, r, g, ny, nz, terms);
+  const std::string why = c.form == CertificateForm::kDualDeltaPath
+                              ? path_leaf_terms(leaf.dual, z, r, g, ny, nz, terms, s.a.records)
+                              : dense_leaf_terms(leaf.dual, z, r, g, ny, nz, terms, s.a.records);
   if (!why.empty()) return {why, {}};
   const ClassPenalty pen = class_penalty(s, reach, g);
   if (!pen.problem.empty()) return {pen.problem, {}};

@@ -1,25 +1,39 @@
 #include "verify/certificate/class_terms.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
+#include "toeplitz/record_segments.h"
 #include "toeplitz/signal_toeplitz.h"
 
 namespace lpvid {
 namespace {
 
-/// Leading samples where z0 and every column of Jz vanish (z(p)_k = 0 for every p).
-Eigen::Index common_leading_zeros(const AffineResidual<Rational>& a) {
-  const Eigen::Index n = a.n, nz = a.nz;
-  for (Eigen::Index k = 0; k < n; ++k)
+/// Leading samples of the record [first, first + count) where z0 and every
+/// column of Jz vanish (z(p)_k = 0 for every p).
+Eigen::Index common_leading_zeros(const AffineResidual<Rational>& a, Eigen::Index first, Eigen::Index count) {
+  const Eigen::Index nz = a.nz;
+  for (Eigen::Index k = 0; k < count; ++k)
     for (Eigen::Index j = 0; j < nz; ++j) {
-      const Eigen::Index row = k * nz + j;
+      const Eigen::Index row = (first + k) * nz + j;
       if (a.z0(row) != 0) return k;
       for (Eigen::Index c = 0; c < a.Jz.cols(); ++c)
         if (a.Jz(row, c) != 0) return k;
     }
-  return n;
+  return count;
+}
+
+/// The class's horizon: the longest record's samples from the first one where
+/// some parameter makes z non-zero (one record: n − common leading zeros).
+Eigen::Index class_horizon(const AffineResidual<Rational>& a) {
+  const RecordLengths lengths = record_lengths_of(a.records, a.n);
+  const std::vector<Eigen::Index> start = record_starts(lengths);
+  Eigen::Index L = 0;
+  for (size_t k = 0; k < lengths.size(); ++k)
+    L = std::max(L, lengths[k] - common_leading_zeros(a, start[k], lengths[k]));
+  return L;
 }
 
 /// A solution x of the consistent system G x = b (G symmetric PSD, possibly
@@ -67,7 +81,7 @@ std::string class_signals(AffineResidual<Rational> a, const std::vector<long>& f
     if (!is_free[static_cast<size_t>(i)]) out.boxed.push_back(i);
   out.free_columns = Mat<Rational>(a.Jr.rows(), static_cast<Eigen::Index>(free.size()));
   for (size_t c = 0; c < free.size(); ++c) out.free_columns.col(static_cast<Eigen::Index>(c)) = a.Jr.col(free[c]);
-  out.horizon = a.n - common_leading_zeros(a);
+  out.horizon = class_horizon(a);
   out.a = std::move(a);
   if (out.horizon == 0 || out.a.nz == 0) return "z is identically zero for every parameter: the Delta form has no horizon";
   return "";
