@@ -66,7 +66,7 @@ TEST_F(JobsJoint, PlanListsTheJointJobLastWithEveryWindowAsARecord) {
   EXPECT_NE(output().find("--joint"), std::string::npos) << output();
 }
 
-TEST_F(JobsJoint, MergeVerifiesTheJointClaimAndRefusesOneThatNamesOtherRecords) {
+TEST_F(JobsJoint, MergeChecksTheJointClaimAndRefusesOneThatNamesOtherRecords) {
   plan_joint();
   ASSERT_EQ(run_program("bash", file("J/jobs.txt")), 0) << output();
   ASSERT_EQ(run("jobs", "merge --dir " + file("J")), 0) << output();
