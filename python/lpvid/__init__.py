@@ -2,21 +2,51 @@
 with exactly verified certificates.
 
     import lpvid
-    r = lpvid.invalidate(u, y, rho, model_dict, delta=0)   # min dmax at delta = 0
-    r.dmax, r.dmax2_exact, r.certificate                   # certified, with its certificate
-    lpvid.verify(r.certificate).ok                         # rechecked exactly
+    before = lpvid.fit_linear(u=u, y=y, order=2)                     # a Model
+    d = lpvid.diagnose(u, y, None, before, test=(u_test, y_test))     # a Diagnosis
+    d.rms_before, d.rms_after, d.model, d.certificates
+    lpvid.compare(u=u_test, y=y_test, models={"before": before, "after": d.model}).scores
+    all(lpvid.verify(c) for c in d.certificates)                     # rechecked exactly
 
-The functions run the same code as the `lpvid` and `lpvid-verify` programs,
-in this process (lpvid._lpvid), on files they write into one folder: the
-arrays become data.csv (exact round-trip text) because a certificate names
-its data file by path and SHA-256. Exit codes 0 and 1 are answers; every
-other code raises LpvidError (README "Exit codes").
+One function per command of the `lpvid` program (fit_linear, simulate,
+compare, generate, invalidate, certify, identify, select_basis, tradeoff,
+diagnose, oracle) and verify for `lpvid-verify`. They run the same C++ code
+as the programs, in this process, on arrays, DataFrames, Model objects or
+files; nothing is left on disk unless out_dir= is given. Progress lines go
+to the logger "lpvid" (INFO; lpvid.log_to_stderr() shows them) and to a
+progress= callback; Ctrl-C stops a running call. Exit codes 0 and 1 are
+answers; every other code raises LpvidError (with .code and .message).
+The API reference is docs/python.md.
 """
 
-from ._commands import Result, Verification, diagnose, exact, identify, invalidate, verify
+import logging
+
+from . import benchmarks  # noqa: F401  (lpvid.benchmarks.cascaded_tanks(...), ...)
+from ._commands import (certify, compare, diagnose, fit_linear, generate, identify, invalidate, oracle, read_table,
+                        select_basis, simulate, tradeoff)
 from ._errors import EXIT_CODES, LpvidError
 from ._lpvid import run_lpvid, run_lpvid_verify, version
+from .certificate import Certificate, Verification, verify
+from .model import Model
+from .results import (BasisSelection, Bounds, Comparison, Diagnosis, Generated, Identification, Interval, ModelScore,
+                      OracleRun, Result, Simulation, Tradeoff, TradeoffPoint, exact)
 
-__all__ = ["invalidate", "identify", "diagnose", "verify", "exact", "Result", "Verification", "LpvidError",
-           "EXIT_CODES", "run_lpvid", "run_lpvid_verify", "version"]
+
+def log_to_stderr(level=logging.INFO):
+    """Shows lpvid's progress lines on stderr (a handler on the logger "lpvid")."""
+    logger = logging.getLogger("lpvid")
+    if not any(getattr(h, "_lpvid", False) for h in logger.handlers):
+        handler = logging.StreamHandler()
+        handler.setFormatter(logging.Formatter("%(message)s"))
+        handler._lpvid = True
+        logger.addHandler(handler)
+    logger.setLevel(level)
+    return logger
+
+
+__all__ = ["fit_linear", "simulate", "compare", "generate", "invalidate", "certify", "identify", "select_basis",
+           "tradeoff", "diagnose", "oracle", "verify", "Model", "Certificate", "Verification", "Result", "Bounds",
+           "Identification", "BasisSelection", "Tradeoff", "TradeoffPoint", "Diagnosis", "Comparison", "ModelScore",
+           "Simulation", "Generated", "OracleRun", "Interval", "LpvidError", "EXIT_CODES", "exact", "read_table",
+           "log_to_stderr", "benchmarks", "run_lpvid", "run_lpvid_verify", "version"]
 __version__ = version()

@@ -1,42 +1,64 @@
-"""Running the command lines in this process and capturing what they print.
+"""Running the command lines in this process: capture, progress, Ctrl-C.
 
 The extension runs the C++ code of `lpvid` and `lpvid-verify` directly; it
 prints to the process's file descriptors 1 and 2, not to Python's
 sys.stdout/sys.stderr. While a run lasts both descriptors are pointed at
 pipes whose reader threads keep the text (lpvid's error message becomes the
-LpvidError's message) and, unless quiet, pass it on as it comes.
+LpvidError's message) and pass every line of stderr on, as it comes, to the
+logger "lpvid" (level INFO) and to the caller's `progress` callback.
+
+The run itself goes on in a worker thread (the extension releases the
+interpreter while it computes); the calling thread waits in short steps, so
+that Ctrl-C (KeyboardInterrupt) reaches it at once. It then asks the run to
+stop (lpvid's own stop request, checked between solver steps, fit steps,
+windows and pivots of the exact checks), waits for it to return (exit code
+130, its outputs removed) and raises the KeyboardInterrupt again.
 """
 
 import codecs
 import contextlib
+import logging
 import os
 import sys
 import threading
 
 from . import _lpvid
-from ._files import number_text
+
+logger = logging.getLogger("lpvid")
 
 
 class _Reader:
-    """Drains one pipe into a buffer, echoing to `echo_fd` (or not)."""
+    """Drains one pipe into a buffer; every complete line goes to `on_line`."""
 
-    def __init__(self, read_fd, echo_fd):
-        self._fd, self._echo = read_fd, echo_fd
+    def __init__(self, read_fd, on_line):
+        self._fd, self._on_line = read_fd, on_line
         self._decoder = codecs.getincrementaldecoder("utf-8")(errors="replace")
         self._parts = []
+        self._pending = ""
         self._thread = threading.Thread(target=self._drain, daemon=True)
         self._thread.start()
+
+    def _lines(self, text):
+        if self._on_line is None:
+            return
+        self._pending += text
+        *complete, self._pending = self._pending.split("\n")
+        for line in complete:
+            if line.strip():
+                with contextlib.suppress(Exception):  # a failing callback must not stop the capture
+                    self._on_line(line)
 
     def _drain(self):
         while True:
             data = os.read(self._fd, 65536)
             if not data:
                 break
-            self._parts.append(self._decoder.decode(data))
-            if self._echo is not None:
-                with contextlib.suppress(OSError):
-                    os.write(self._echo, data)
-        self._parts.append(self._decoder.decode(b"", final=True))
+            text = self._decoder.decode(data)
+            self._parts.append(text)
+            self._lines(text)
+        tail = self._decoder.decode(b"", final=True)
+        self._parts.append(tail)
+        self._lines(tail + "\n")
         os.close(self._fd)
 
     def text(self):
@@ -45,7 +67,7 @@ class _Reader:
 
 
 @contextlib.contextmanager
-def _captured(echo):
+def _captured(on_stderr_line):
     """Points fds 1 and 2 at pipes for the duration; yields a dict that
     holds 'stdout' and 'stderr' text afterwards."""
     for stream in (sys.stdout, sys.stderr):
@@ -62,7 +84,7 @@ def _captured(echo):
             r, w = os.pipe()
             os.dup2(w, fd)
             os.close(w)
-            readers[name] = _Reader(r, saved[fd] if echo else None)
+            readers[name] = _Reader(r, on_stderr_line if name == "stderr" else None)
         yield out
     finally:
         # Restoring closes the pipes' last write ends: the readers see EOF.
@@ -80,40 +102,70 @@ def _captured(echo):
 _one_run = threading.Lock()
 
 
-def run_captured(program, args, echo):
-    """Runs `program` ('lpvid' or 'lpvid-verify') with `args` in-process;
-    returns (exit code, stdout text, stderr text). Ctrl-C takes effect when
-    the run returns (the C++ code does not look at Python's signals)."""
-    run = _lpvid.run_lpvid if program == "lpvid" else _lpvid.run_lpvid_verify
-    with _one_run, _captured(echo) as out:
-        code = run([str(a) for a in args])
-    return code, out["stdout"], out["stderr"]
-
-
-def option_words(options):
-    """Keyword options as command-line words, named exactly as the CLI's
-    options with '_' for '-' (max_taps=0 -> --max-taps 0). True: a flag;
-    False or None: left out; a list: the option followed by its values; a
-    list of lists: the option repeated, each value list joined by commas
-    (diagnose --test-columns uVal,yVal)."""
-    words = []
-    for key, value in options.items():
-        flag = "--" + key.rstrip("_").replace("_", "-")
-        if value is None or value is False:
-            continue
-        if isinstance(value, os.PathLike):
-            value = os.fspath(value)
-        if value is True:
-            words.append(flag)
-        elif isinstance(value, (list, tuple)):
-            if value and all(isinstance(v, (list, tuple)) for v in value):
-                for group in value:
-                    words += [flag, ",".join(number_text(v) for v in group)]
-            else:
-                words += [flag] + [number_text(v) for v in value]
+def _line_handler(progress):
+    def on_line(line):
+        if line.startswith(("lpvid: ", "lpvid-verify: ")) and ("error" in line or "removed" in line):
+            logger.warning(line)
         else:
-            words += [flag, number_text(value)]
-    return words
+            logger.info(line)
+        if progress is not None:
+            progress(line)
+    return on_line
+
+
+def _stop_requested_run():
+    """Asks the running call to stop (lpvid's cooperative stop request)."""
+    request = getattr(_lpvid, "request_stop", None)
+    if request is not None:
+        request()
+
+
+def _clear_stop():
+    clear = getattr(_lpvid, "clear_stop", None)
+    if clear is not None:
+        clear()
+
+
+def _run_in_worker(run, args):
+    """run(args) in a worker thread; the calling thread stays responsive to
+    KeyboardInterrupt, which stops the run and is raised again."""
+    box = {}
+
+    def work():
+        try:
+            box["code"] = run(args)
+        except BaseException as e:  # noqa: BLE001 - handed to the caller
+            box["error"] = e
+
+    worker = threading.Thread(target=work, name="lpvid-run", daemon=True)
+    worker.start()
+    try:
+        while worker.is_alive():
+            worker.join(0.05)
+    except KeyboardInterrupt:
+        _stop_requested_run()
+        while worker.is_alive():  # a second Ctrl-C does not abandon the run half-stopped
+            with contextlib.suppress(KeyboardInterrupt):
+                worker.join(0.05)
+        _clear_stop()
+        raise
+    if "error" in box:
+        raise box["error"]
+    return box["code"]
+
+
+def run_captured(program, args, progress=None):
+    """Runs `program` ('lpvid' or 'lpvid-verify') with `args` in-process;
+    returns (exit code, stdout text, stderr text). stderr lines go to the
+    logger "lpvid" and to progress(line) as they come."""
+    run = _lpvid.run_lpvid if program == "lpvid" else _lpvid.run_lpvid_verify
+    words = [str(a) for a in args]
+    logger.debug("%s %s", program, " ".join(words))
+    with _one_run:
+        _clear_stop()
+        with _captured(_line_handler(progress)) as out:
+            code = _run_in_worker(run, words)
+    return code, out["stdout"], out["stderr"]
 
 
 def error_message(stdout, stderr, fallback):

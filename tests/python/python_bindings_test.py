@@ -121,37 +121,39 @@ class Bindings(unittest.TestCase):
         self.assertEqual(r.verdict, "consistent")
         self.assertTrue(r.consistent)
         self.assertTrue(os.path.isfile(r.certificate))
-        self.assertEqual(r.data_path, os.path.join(r.out_dir, "data.csv"))
+        self.assertTrue(os.path.isfile(os.path.join(r.out_dir, "data.csv")))
         self.certificates.extend(r.certificates)
 
     def test_min_dmax_at_delta_zero_brackets_the_exact_answer(self):
         r = lpvid.invalidate(self.u, self.y, self.rho, true_model(), delta=0, out_dir=self.out("min_dmax"))
         self.assertEqual(r.code, 0, r.output + r.messages)
         interval = r.interval
-        self.assertEqual(interval["of"], "dmax^2")
-        self.assertTrue(interval["upper_verified"] and interval["lower_verified"], interval)
-        truth = exact_min_dmax2(r.data_path)
+        self.assertEqual(interval.of, "dmax^2")
+        self.assertTrue(interval.upper_verified and interval.lower_verified, interval)
+        truth = exact_min_dmax2(os.path.join(r.out_dir, "data.csv"))
         # the written y differs from the float sum by rounding only
         self.assertAlmostEqual(float(truth) ** 0.5, NOISE_RMS, delta=NOISE_RMS * 1e-12)
         # exact comparisons: the certified interval contains the exact optimum
-        lower, upper = lpvid.exact(interval["lower_exact"]), lpvid.exact(interval["upper_exact"])
+        lower, upper = interval.lower, interval.upper
+        self.assertIsInstance(lower, Fraction)
         self.assertGreaterEqual(lower, 0)
         self.assertLessEqual(lower, truth)
         self.assertLessEqual(truth, upper)
-        self.assertEqual(lpvid.exact(r.dmax2_exact), upper)
+        self.assertEqual(r.dmax2, upper)
+        self.assertIn(truth, interval)
         # the reported bound: at least the optimum, at most the true noise RMS (to the solver's accuracy)
         self.assertGreaterEqual(r.dmax, float(truth) ** 0.5)
         self.assertLessEqual(r.dmax, NOISE_RMS * (1 + 1e-9))
-        self.assertIsNotNone(r.lower_certificate)
+        self.assertIsNotNone(r.interval.lower_certificate)
         self.assertIn(r.certificate, r.certificates)
-        self.assertIn(r.lower_certificate, r.certificates)
+        self.assertIn(r.interval.lower_certificate, r.certificates)
         self.certificates.extend(r.certificates)
 
         # A Delta allowed (delta > 0) can only lower the smallest d_max:
         # both certified ends at delta = 0.01 lie below the answer at 0.
         r = lpvid.invalidate(self.u, self.y, self.rho, true_model(), delta="0.01", out_dir=self.out("min_dmax_001"))
         self.assertEqual(r.code, 0, r.output + r.messages)
-        lower, upper = lpvid.exact(r.interval["lower_exact"]), lpvid.exact(r.interval["upper_exact"])
+        lower, upper = r.interval.lower, r.interval.upper
         self.assertTrue(0 < lower <= upper <= truth, (lower, upper, truth))
         self.certificates.extend(r.certificates)
 
@@ -167,7 +169,7 @@ class Bindings(unittest.TestCase):
         paths = [os.path.join(r.out_dir, "data1.csv"), os.path.join(r.out_dir, "data2.csv")]
         per_record = [exact_min_dmax2(p) for p in paths]
         truth = (per_record[0] * h + per_record[1] * (N - h)) / N
-        lower, upper = lpvid.exact(r.interval["lower_exact"]), lpvid.exact(r.interval["upper_exact"])
+        lower, upper = r.interval.lower, r.interval.upper
         self.assertLessEqual(lower, truth)
         self.assertLessEqual(truth, upper)
         self.assertEqual([e["samples"] for e in r.report["records"]], [h, N - h])
@@ -196,7 +198,7 @@ class Bindings(unittest.TestCase):
         start["correction"] = {"basis": ["rho1"]}
         r = lpvid.identify(self.u, self.y, self.rho, start, delta=0, out_dir=self.out("identify"))
         self.assertEqual(r.code, 0, r.output + r.messages)
-        self.assertEqual(r.model["format"], "lpvid-model/1")
+        self.assertEqual(r.model.document["format"], "lpvid-model/1")
         theta = r.report["theta"]["rho1"]["C"][0]
         self.assertAlmostEqual(theta[0], float(C1[0][0]), delta=0.02)
         self.assertAlmostEqual(theta[1], float(C1[0][1]), delta=0.02)
@@ -257,7 +259,7 @@ class Bindings(unittest.TestCase):
             lpvid.invalidate(self.u, self.y, self.rho, true_model(), delta=0, out_dir=self.out("option"),
                              no_such_option=1)
         self.assertEqual(e.exception.code, 2)
-        self.assertIn("--no-such-option", e.exception.message)
+        self.assertIn("no_such_option", e.exception.message)
 
     def test_z_every_certificate_verifies(self):
         # named to run last (unittest sorts by name): the other tests collect the certificates
