@@ -109,6 +109,7 @@ class CascadedTanksReal(unittest.TestCase):
             for k in (0, -1):
                 self.assertEqual(rec.u[k, 0], t[u][k])
                 self.assertEqual(rec.y[k, 0], t[y][k])
+            self.assertEqual((rec.u[:, 0].tolist(), rec.y[:, 0].tolist()), (t[u], t[y]))
             self.assertEqual((rec.u_names, rec.y_names), ((u,), (y,)))
 
     def test_file_folder_and_name(self):
@@ -272,6 +273,20 @@ class Refusals(unittest.TestCase):
             with self.assertRaises(ValueError) as c:
                 B.coupled_electric_drives(d)
         self.assertIn("DATAUNIF.csv:8: column 'u12': 'abc' is not a number", str(c.exception))
+
+    def test_value_after_empty_cell_refused(self):
+        with tempfile.TemporaryDirectory() as d:
+            f = write_csv(os.path.join(d, "WienerHammerBenchmark.csv"),
+                          {"uBenchMark": [1.0, 2.0, 3.0], "yBenchMark": [1.0, 2.0, 3.0], "fs": [51200.0]})
+            with open(f) as g:
+                text = g.read().splitlines()
+            text[3] = "3.0,3.0,51200.0"  # fs again on line 4 after the empty cell on line 3
+            with open(f, "w") as g:
+                g.write("\n".join(text) + "\n")
+            with self.assertRaises(ValueError) as c:
+                B.wiener_hammerstein(f)
+        self.assertIn("WienerHammerBenchmark.csv:4: column 'fs' has a value after the empty cell on line 3",
+                      str(c.exception))
 
     def test_short_file_refused(self):
         with tempfile.TemporaryDirectory() as d:
