@@ -1,0 +1,171 @@
+"""The Python API (one function per command, Model, Certificate, options,
+folders, progress, Ctrl-C) against answers known by construction.
+
+- fit_linear on a noise-free first-order record returns a Model whose
+  simulation reproduces the record (the system is in the model class);
+- compare scores two models on columns named differently from theirs: the
+  true model's RMS is 0 and the wrong gain's RMS equals the one computed
+  here with numpy;
+- diagnose with test arrays finds the undeclared output offset of a
+  generated effect case (the error on the test record drops);
+- an in-memory certificate verifies, survives save/load, and a changed
+  claim is refused; no call leaves a folder behind;
+- a misspelt option is refused with "did you mean";
+- Ctrl-C (SIGINT) during a run raises KeyboardInterrupt, leaves nothing,
+  and the next call answers as before.
+
+Usage: api_test.py SCRATCH_DIR (with the package on PYTHONPATH).
+"""
+
+import logging
+import os
+import signal
+import sys
+import tempfile
+import threading
+import time
+import unittest
+
+import numpy as np
+
+import lpvid
+
+SCRATCH = None
+
+
+def first_order(u, a=0.5, b=1.0):
+    """y_k = x_k, x_{k+1} = a x_k + b u_k, x_0 = 0."""
+    x, y = 0.0, []
+    for uk in u:
+        y.append(x)
+        x = a * x + b * uk
+    return np.array(y)
+
+
+def lti_model(a, b, u_name="u", y_name="y"):
+    """The first-order system as an lpvid model (no scheduling)."""
+    return {"format": "lpvid-model/1", "states": 1, "inputs": 1, "outputs": 1, "scheduling": [],
+            "columns": {"u": [u_name], "y": [y_name], "rho": []},
+            "initial": {"A": [{"basis": "1", "value": [[str(a)]]}], "B": [{"basis": "1", "value": [[str(b)]]}],
+                        "C": [{"basis": "1", "value": [["1"]]}]},
+            "uncertainty": {"structure": "additive", "weight": "1/10"}}
+
+
+def leftovers():
+    return sorted(n for n in os.listdir(tempfile.gettempdir()) if n.startswith("lpvid-"))
+
+
+class Api(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rng = np.random.default_rng(7)
+        cls.u = rng.standard_normal(150)
+        cls.y = first_order(cls.u)
+
+    def setUp(self):
+        self.before = leftovers()
+
+    def tearDown(self):
+        self.assertEqual(leftovers(), self.before, "a call left a folder behind")
+
+    def test_fit_linear_returns_a_model_that_reproduces_the_record(self):
+        m = lpvid.fit_linear(u=self.u, y=self.y, order=1)
+        self.assertIsInstance(m, lpvid.Model)
+        self.assertEqual((m.states, m.inputs, m.outputs), (1, 1, 1))
+        sim = m.simulate(self.u)
+        self.assertEqual(sim.y.shape, (150, 1))
+        np.testing.assert_allclose(sim.y[:, 0], self.y, atol=1e-8)
+        self.assertIsNotNone(m.report)
+
+    def test_compare_scores_two_models_on_other_columns(self):
+        table = {"uVal": self.u, "yVal": self.y}
+        true, wrong = lti_model("1/2", 1), lti_model("1/2", 2)
+        c = lpvid.compare(data=table, u="uVal", y="yVal", models={"true": true, "wrong": wrong})
+        self.assertEqual([s.name for s in c.scores], ["true", "wrong"])
+        self.assertLess(c.score("true").rms, 1e-12)
+        expected = np.sqrt(np.mean((first_order(self.u, 0.5, 2.0) - self.y) ** 2))
+        self.assertAlmostEqual(c.score("wrong").rms, expected, delta=1e-9 * expected)
+        # the same with arrays (the models' own column names do not matter)
+        c2 = lpvid.compare(u=self.u, y=self.y, models=[true, wrong])
+        self.assertAlmostEqual(c2.scores[1].rms, expected, delta=1e-9 * expected)
+
+    def test_certificate_in_memory_save_load_verify(self):
+        r = lpvid.invalidate(self.u, self.y, None, lti_model("1/2", 1), delta=0, dmax="1/100")
+        self.assertTrue(r.consistent)
+        cert = r.certificate
+        self.assertIsInstance(cert, lpvid.Certificate)
+        self.assertIsNone(cert.path)
+        self.assertEqual(cert.dmax2, lpvid.exact("1/10000"))
+        self.assertTrue(lpvid.verify(cert))
+        path = cert.save(os.path.join(SCRATCH, "saved", "c.json"))
+        self.assertTrue(os.path.isfile(os.path.join(SCRATCH, "saved", "data.csv")))
+        self.assertTrue(lpvid.Certificate.load(path).verify())
+        self.assertTrue(lpvid.verify(path))
+        # a claim the data do not support: d_max^2 ten thousand times smaller, at delta = 0
+        self.assertIn('"dmax2": "0.0001"', cert.text)
+        bad = lpvid.Certificate(cert.text.replace('"dmax2": "0.0001"', '"dmax2": "0.00000001"'), cert.files)
+        self.assertIsNone(bad.path)
+        self.assertFalse(lpvid.verify(bad))
+
+    def test_misspelt_and_managed_options_are_refused(self):
+        with self.assertRaises(lpvid.LpvidError) as e:
+            lpvid.diagnose(self.u, self.y, None, lti_model("1/2", 1), holdot=0.3)
+        self.assertEqual(e.exception.code, 2)
+        self.assertIn("did you mean holdout=", e.exception.message)
+        with self.assertRaises(lpvid.LpvidError) as e:
+            lpvid.invalidate(self.u, self.y, None, lti_model("1/2", 1), report="r.json")
+        self.assertIn("out_dir=", e.exception.message)
+
+    def test_progress_goes_to_logging_and_the_callback(self):
+        lines = []
+        with self.assertLogs("lpvid", level="INFO") as logs:
+            lpvid.invalidate(self.u, self.y, None, lti_model("1/2", 1), delta=0, progress=lines.append)
+        self.assertTrue(lines)
+        self.assertEqual([r.getMessage() for r in logs.records if r.levelno == logging.INFO],
+                         [ln for ln in lines if ln in [r.getMessage() for r in logs.records]])
+
+    def test_diagnose_with_test_arrays_finds_the_offset(self):
+        g = lpvid.generate("effect-case", effect="output_offset", n=200)
+        d, v = g.data, g.validation
+        r = lpvid.diagnose(d["u1"], d["y1"], d["rho1"], g.model, test=(v["u1"], v["y1"], v["rho1"]),
+                           max_effects=1, quiet=True)
+        self.assertIsInstance(r.model, lpvid.Model)
+        self.assertLess(r.rms_after, 0.5 * r.rms_before)
+        self.assertTrue(r.certificates)
+        for c in r.certificates:
+            self.assertTrue(lpvid.verify(c), c)
+
+    def test_ctrl_c_stops_a_run_and_leaves_nothing(self):
+        rng = np.random.default_rng(3)
+        u = rng.standard_normal(1200)
+        y = first_order(u) + 0.01 * rng.standard_normal(1200)
+        model = lti_model("1/2", 1)
+        sent = {}
+
+        def interrupt():
+            sent["at"] = time.monotonic()
+            os.kill(os.getpid(), signal.SIGINT)
+
+        lines = []
+        timer = threading.Timer(1.0, interrupt)
+        start = time.monotonic()
+        timer.start()
+        with self.assertRaises(KeyboardInterrupt):
+            # Theorem 3.1 with iterations on 1200 samples: far longer than a second
+            lpvid.identify(u, y, None, dict(model, correction={"basis": ["1"]}), delta="1/100", iterate=True,
+                           progress=lines.append)
+        stopped = time.monotonic() - sent["at"]
+        print(f"\n  Ctrl-C after {sent['at'] - start:.2f} s; KeyboardInterrupt {stopped:.3f} s later",
+              file=sys.stderr)
+        self.assertTrue(any("interrupted" in ln for ln in lines), lines[-3:])  # the run itself was stopped
+        # the run after the interrupt answers as a run never interrupted
+        a = lpvid.invalidate(self.u, self.y, None, model, delta=0, dmax="1/100")
+        self.assertTrue(a.consistent)
+
+
+if __name__ == "__main__":
+    SCRATCH = sys.argv[1]
+    os.makedirs(os.path.join(SCRATCH, "tmp"), exist_ok=True)
+    os.environ["TMPDIR"] = os.path.join(SCRATCH, "tmp")
+    tempfile.tempdir = None
+    unittest.main(argv=sys.argv[:1], verbosity=2)
