@@ -68,9 +68,24 @@ std::string short_number(double x) {
   return buf;
 }
 
+/// The column name of a title: a closing remark " (…)" dropped (a remark
+/// inside the name stays: "y1 (last fold) before" -> y1_last_fold_before,
+/// so that the before and after columns differ), every run of other
+/// characters than letters and digits one '_'.
 std::string sanitise(const std::string& title) {
+  std::string name = title;
+  if (!name.empty() && name.back() == ')') {
+    int depth = 0;
+    for (size_t i = name.size(); i-- > 0;) {
+      depth += name[i] == ')' ? 1 : name[i] == '(' ? -1 : 0;
+      if (depth == 0) {
+        if (i > 0 && name[i - 1] == ' ') name.erase(i - 1);
+        break;
+      }
+    }
+  }
   std::string out;
-  for (char c : title.substr(0, title.find(" ("))) {
+  for (char c : name) {
     if (std::isalnum(static_cast<unsigned char>(c))) out += c;
     else if (!out.empty() && out.back() != '_') out += '_';
   }

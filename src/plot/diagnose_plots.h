@@ -78,8 +78,9 @@ PlotSpec output_fit_plot_spec(const Mat<double>& y, const Mat<double>& yhat_befo
 
 /// The CSV table of a plot whose series share their x values: column
 /// `x_name`, then one column per series and one per horizontal line, named
-/// by the titles up to a " (" remark, with spaces and symbols replaced by
-/// '_' ("y1 before (Q 12.3)" -> y1_before).
+/// by the titles without a closing " (…)" remark, with spaces and symbols
+/// replaced by '_' ("y1 before (Q 12.3)" -> y1_before, "y1 (last fold)
+/// before" -> y1_last_fold_before).
 std::vector<TextColumn> plot_table(const PlotSpec& spec, const std::string& x_name);
 
 /// png_path with its extension replaced by ".csv".

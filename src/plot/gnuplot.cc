@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "plot/plot_sidecar.h"
+
 namespace lpvid {
 namespace {
 
@@ -171,11 +173,14 @@ PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
     out.message = "nothing to plot (no points)";
     return out;
   }
+  const std::string sidecar_error = write_plot_sidecar(spec, png_path);
+  if (sidecar_error.empty()) out.sidecar = plot_sidecar_path(png_path);
+  const std::string sidecar_note = sidecar_error.empty() ? "" : "; figure description not written: " + sidecar_error;
   out.terminal = gnuplot_png_terminal();
   if (out.terminal.empty()) {
     out.message = "gnuplot ('" + gnuplot_program() +
                   "') could not be run or has no PNG terminal; install gnuplot-nox (or set LPVID_GNUPLOT) "
-                  "for the plot";
+                  "for the plot" + sidecar_note;
     return out;
   }
   const fs::path dir = make_temp_dir();
@@ -218,7 +223,8 @@ PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
     out.ok = true;
     const std::string svg = svg_path_of(png_path);
     if (fs::exists(svg, ec) && fs::file_size(svg, ec) > 0) out.svg = svg;
-    out.message = "wrote " + png_path + (out.svg.empty() ? "" : " and " + out.svg) + " (gnuplot, terminal " + out.terminal + ")";
+    out.message = "wrote " + png_path + (out.svg.empty() ? "" : " and " + out.svg) + " (gnuplot, terminal " + out.terminal + ")" +
+                  sidecar_note;
   }
   fs::remove_all(dir, ec);
   return out;

@@ -51,6 +51,7 @@ struct PlotSpec {
 struct PlotOutcome {
   bool ok = false;    ///< the PNG was written
   std::string svg;    ///< the SVG written beside it (same stem), "" if none
+  std::string sidecar;  ///< the figure description beside it (plot_sidecar.h), "" if none
   std::string message;   ///< why not, or what was written
   std::string terminal;  ///< "pngcairo" or "png"
 };
@@ -64,6 +65,9 @@ std::string gnuplot_png_terminal();
 
 /// Writes the plot as a PNG file and, from the same script, as an SVG file
 /// beside it (png_path with extension .svg; vector graphics for papers).
+/// First, whether or not gnuplot can be run, the figure's description
+/// (every number and label drawn) as png_path with extension .plot.json
+/// (plot/plot_sidecar.h), from which other front ends draw the same figure.
 /// Never throws for a missing or failing gnuplot (ok = false and the
 /// message; gnuplot's own error text included).
 PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path);

@@ -105,6 +105,17 @@ TEST(DiagnosePlots, WritesCsvAndPngOrSaysWhyNot) {
   for (const char* f : {"acf.png", "res.png", "fit.png"}) EXPECT_TRUE(is_png(dir.file(f))) << f;
 }
 
+TEST(DiagnosePlots, CsvColumnsOfNamesWithARemarkDiffer) {
+  // diagnose names the held-out rows "y1 (last fold)": before and after must stay two columns
+  ScratchDir dir("diagnose-plots-remark");
+  const Mat<double> before = gaussian(40, 1, 16, 1.0), after = gaussian(40, 1, 17, 0.3);
+  plot_residual(before, after, dir.file("res.png"), {"y1 (last fold)"});
+  EXPECT_EQ(first_line(dir.file("res.csv")), "sample,y1_last_fold_before,y1_last_fold_after");
+  plot_residual_autocorrelation(before, after, dir.file("acf.png"), {"y1 (held out)"});
+  EXPECT_EQ(first_line(dir.file("acf.csv")),
+            "lag,y1_held_out_before,y1_held_out_after,band_99_upper,band_99_lower,band_95_upper,band_95_lower");
+}
+
 TEST(DiagnosePlots, TestRecordFigureHasTimeUnitsAndTheBand) {
   TestRecordPlot t;
   t.u = gaussian(60, 1, 11, 1.0);

@@ -1,0 +1,273 @@
+"""The CLI's figures in memory, and drawn again with matplotlib.
+
+Every plot the command line writes (``lpvid diagnose --plots DIR``,
+``lpvid tradeoff --plot FILE``, ...) comes with a figure description beside
+its PNG: ``<stem>.plot.json`` (docs/plots.md, "The figure description"),
+written from the same specification gnuplot draws. It holds every number
+drawn and the layout: title, panels, axis labels with units, which series is
+a line, points or a band, their colours, shaded blocks and horizontal lines.
+
+    plots = lpvid.plots.read_plots("diag_plots")   # {"record": Plot, "residual": Plot, ...}
+    fig = plots["record"].figure()                 # a matplotlib Figure
+    fig.savefig("record.png")
+
+read_plots copies everything into memory (numpy arrays), so the folder may
+be deleted afterwards. matplotlib is imported only by figure(): this module
+and ``import lpvid`` work without it (Debian: python3-matplotlib).
+"""
+
+import csv
+import json
+import os
+import warnings
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional
+
+import numpy as np
+
+SIDECAR_SUFFIX = ".plot.json"
+FORMAT = "lpvid-plot"
+VERSION = 1
+
+
+@dataclass
+class Series:
+    """One curve of a panel. kind "line": y against x, drawn with `style`
+    (gnuplot's lines, points or linespoints); kind "band": the area between
+    y and y_high filled (a confidence band, or a shaded block of rows).
+    `labels` (or None): a text next to each point. An empty title is not in
+    the legend."""
+
+    title: str
+    x: np.ndarray
+    y: np.ndarray
+    kind: str = "line"
+    style: str = "lines"
+    color: str = ""
+    y_high: Optional[np.ndarray] = None
+    labels: Optional[List[str]] = None
+
+
+@dataclass
+class HLine:
+    """A horizontal line y = value across the panel; dashtype 1 solid, 2
+    dashed, 3 dotted (gnuplot's)."""
+
+    y: float
+    title: str = ""
+    color: str = "#000000"
+    dashtype: int = 1
+
+
+@dataclass
+class Panel:
+    """One axes of a figure (panels are stacked top to bottom and share x).
+    key: where the legend goes, in gnuplot's words ("top right", "outside
+    right top", "bottom left")."""
+
+    title: str
+    xlabel: str
+    ylabel: str
+    series: List[Series]
+    hlines: List[HLine] = field(default_factory=list)
+    logx: bool = False
+    logy: bool = False
+    key: str = "top right"
+
+
+@dataclass
+class Plot:
+    """One figure of a run: its panels (one for a simple plot), its title,
+    size in pixels, and the table of its CSV (column -> array; text columns
+    as arrays of str), when the CSV was beside it."""
+
+    name: str
+    title: str
+    panels: List[Panel]
+    width: int = 900
+    height: int = 650
+    table: Dict[str, np.ndarray] = field(default_factory=dict)
+
+    @property
+    def series(self):
+        """Every series of every panel, top to bottom."""
+        return [s for p in self.panels for s in p.series]
+
+    def figure(self):
+        """The figure as a matplotlib.figure.Figure (see figure())."""
+        return figure(self)
+
+
+# --- reading ------------------------------------------------------------------------------------
+
+
+def _array(values, where):
+    try:
+        return np.array([np.nan if v is None else v for v in values], dtype=float)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"{where}: not a list of numbers ({e})") from None
+
+
+def _series(js, xs, where):
+    i = js.get("x")
+    if not isinstance(i, int) or not 0 <= i < len(xs):
+        raise ValueError(f"{where}: 'x' must index x_values (0..{len(xs) - 1}), got {i!r}")
+    y = _array(js["y"], where + ".y")
+    if len(y) != len(xs[i]):
+        raise ValueError(f"{where}: {len(y)} y values for {len(xs[i])} x values")
+    y_high = _array(js["y_high"], where + ".y_high") if "y_high" in js else None
+    return Series(title=js.get("title", ""), x=xs[i].copy(), y=y, kind=js.get("kind", "line"),
+                  style=js.get("style", "lines"), color=js.get("color", ""), y_high=y_high,
+                  labels=list(js["labels"]) if "labels" in js else None)
+
+
+def _panel(js, xs, where):
+    series = [_series(s, xs, f"{where}.series[{k}]") for k, s in enumerate(js.get("series", []))]
+    hlines = [HLine(y=float(h["y"]), title=h.get("title", ""), color=h.get("color", "#000000"),
+                    dashtype=int(h.get("dashtype", 1))) for h in js.get("hlines", [])]
+    return Panel(title=js.get("title", ""), xlabel=js.get("xlabel", ""), ylabel=js.get("ylabel", ""),
+                 series=series, hlines=hlines, logx=bool(js.get("logx", False)), logy=bool(js.get("logy", False)),
+                 key=js.get("key", "top right"))
+
+
+def _csv_table(path):
+    """The CSV's columns: numbers as float arrays (an empty cell: NaN),
+    any other column as an array of str."""
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        return {}
+    header, body = rows[0], rows[1:]
+    table = {}
+    for j, name in enumerate(header):
+        cells = [r[j] if j < len(r) else "" for r in body]
+        try:
+            table[name] = np.array([float(c) if c != "" else np.nan for c in cells], dtype=float)
+        except ValueError:
+            table[name] = np.array(cells, dtype=str)
+    return table
+
+
+def read_plot(path):
+    """One figure from its description `<stem>.plot.json` (or the PNG or
+    CSV of the same stem). The CSV's table is read too when it is there."""
+    stem = str(path)
+    for suffix in (SIDECAR_SUFFIX, ".png", ".svg", ".csv"):
+        if stem.endswith(suffix):
+            stem = stem[: -len(suffix)]
+            break
+    sidecar = stem + SIDECAR_SUFFIX
+    try:
+        with open(sidecar, encoding="utf-8") as f:
+            js = json.load(f)
+    except FileNotFoundError:
+        raise FileNotFoundError(f"{sidecar}: no figure description (written by lpvid since the figure "
+                                f"descriptions were added; run the command again)") from None
+    except json.JSONDecodeError as e:
+        raise ValueError(f"{sidecar}: not JSON ({e})") from None
+    if not isinstance(js, dict) or js.get("format") != FORMAT or js.get("version") != VERSION:
+        raise ValueError(f"{sidecar}: not an {FORMAT} version {VERSION} figure description")
+    try:
+        xs = [_array(x, f"{sidecar}: x_values[{k}]") for k, x in enumerate(js["x_values"])]
+        panels = [_panel(p, xs, f"{sidecar}: panels[{k}]") for k, p in enumerate(js["panels"])]
+    except KeyError as e:
+        raise ValueError(f"{sidecar}: missing field {e}") from None
+    csv_path = stem + ".csv"
+    table = _csv_table(csv_path) if os.path.isfile(csv_path) else {}
+    return Plot(name=os.path.basename(stem), title=js.get("title", ""), panels=panels,
+                width=int(js.get("width", 900)), height=int(js.get("height", 650)), table=table)
+
+
+def read_plots(folder):
+    """Every figure a run wrote into `folder`, by file stem ("record",
+    "residual", "test", ...), read into memory. A PNG without a figure
+    description (written by an older lpvid) is skipped with a warning."""
+    names = sorted(os.listdir(folder))
+    plots = {}
+    for name in names:
+        if name.endswith(SIDECAR_SUFFIX):
+            p = read_plot(os.path.join(folder, name))
+            plots[p.name] = p
+    for name in names:
+        if name.endswith(".png") and name[: -len(".png")] not in plots:
+            warnings.warn(f"{os.path.join(folder, name)} has no figure description ({name[:-4]}{SIDECAR_SUFFIX}); "
+                          "not read", stacklevel=2)
+    return plots
+
+
+# --- drawing ------------------------------------------------------------------------------------
+
+_DASHES = {1: "-", 2: "--", 3: ":", 4: "-.", 5: (0, (5, 2, 1, 2, 1, 2))}
+
+
+def _figure_class():
+    try:
+        from matplotlib.figure import Figure
+    except ImportError as e:
+        raise ImportError("lpvid's figures need matplotlib, which is not installed "
+                          "(Debian: apt install python3-matplotlib; or pip install matplotlib)") from e
+    return Figure
+
+
+def _legend(ax, key):
+    """gnuplot's `set key` position as a matplotlib legend."""
+    handles, _ = ax.get_legend_handles_labels()
+    if not handles:
+        return
+    words = key.split()
+    if "outside" in words:
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize="small")
+        return
+    vertical = "lower" if "bottom" in words else "center" if "center" in words and "top" not in words else "upper"
+    horizontal = "left" if "left" in words else "right"
+    ax.legend(loc=f"{vertical} {horizontal}", fontsize="small", framealpha=1.0)
+
+
+def _draw_series(ax, s):
+    label = s.title if s.title else "_nolegend_"
+    if s.kind == "band":
+        ax.fill_between(s.x, s.y, s.y_high, color=s.color or None, alpha=0.4, linewidth=0, label=label)
+        return
+    marker = "o" if s.style in ("points", "linespoints") else None
+    linestyle = "none" if s.style == "points" else "-"
+    ax.plot(s.x, s.y, linestyle=linestyle, marker=marker, markersize=5, linewidth=1.5, color=s.color or None,
+            label=label)
+    for x, y, text in zip(s.x, s.y, s.labels or []):
+        if text:
+            ax.annotate(text, (x, y), xytext=(8, 6), textcoords="offset points", fontsize=8)
+
+
+def _draw_panel(ax, panel, title, fix_x):
+    for s in panel.series:
+        _draw_series(ax, s)
+    for h in panel.hlines:
+        ax.axhline(h.y, color=h.color, linestyle=_DASHES.get(h.dashtype, "--"), linewidth=1.2,
+                   label=h.title if h.title else "_nolegend_")
+    if panel.logx:
+        ax.set_xscale("log")
+    if panel.logy:
+        ax.set_yscale("log")
+    if fix_x:  # panels over one time axis: no padding in x (gnuplot's autoscale xfix)
+        ax.margins(x=0)
+    ax.set_title(title, fontsize="medium")
+    ax.set_xlabel(panel.xlabel)
+    ax.set_ylabel(panel.ylabel)
+    ax.grid(True, alpha=0.4)
+    _legend(ax, panel.key)
+
+
+def figure(plot):
+    """A matplotlib.figure.Figure with the content of the CLI's PNG of
+    `plot`: the same panels, series, bands, horizontal lines, labels, title
+    and colours. Made without pyplot (no global state: headless and in
+    notebooks; display it there as the cell's value, or fig.savefig(path)).
+    Raises ImportError naming python3-matplotlib when matplotlib is missing."""
+    Figure = _figure_class()
+    fig = Figure(figsize=(plot.width / 100.0, plot.height / 100.0), dpi=100, layout="constrained")
+    many = len(plot.panels) > 1
+    axes = fig.subplots(len(plot.panels), 1, sharex=many, squeeze=False)[:, 0]
+    for ax, panel in zip(axes, plot.panels):
+        _draw_panel(ax, panel, panel.title if many else plot.title, fix_x=many)
+    if many:
+        fig.suptitle(plot.title, fontsize="medium")
+    return fig

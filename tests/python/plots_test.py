@@ -1,0 +1,166 @@
+"""lpvid.plots: the CLI's figures read into memory and drawn with matplotlib.
+
+    PYTHONPATH=build/python python3 tests/python/plots_test.py <lpvid program> <scratch dir>
+
+Runs the real `lpvid diagnose --plots DIR` (fold mode: the record's shaded
+blocks; a test record: the band) and `lpvid tradeoff` on a small generated
+case, reads every figure with read_plots, and checks it against the CSV
+written beside each PNG, parsed here independently: every series' numbers
+equal the CSV column named by its title, every PNG has a Plot, the folder
+can be deleted afterwards, and figure() draws one matplotlib line per line
+series, one filled area per band, one per horizontal line, and the title.
+Without matplotlib the drawing checks are skipped (exit 0, with a message).
+Exits non-zero on the first failed check.
+"""
+
+import csv
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+import lpvid.plots as lp
+
+LPVID, SCRATCH = sys.argv[1], sys.argv[2]
+ENV = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+checks = 0
+
+
+def check(condition, what):
+    global checks
+    checks += 1
+    if not condition:
+        sys.exit(f"FAILED: {what}")
+
+
+def run(*args):
+    r = subprocess.run([LPVID, *args], cwd=SCRATCH, env=ENV, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"FAILED: lpvid {' '.join(args)} -> exit {r.returncode}\n{r.stdout}\n{r.stderr}")
+
+
+def csv_columns(path):
+    """The CSV as {column: list of text}, read with the csv module only."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return {name: [r[j] for r in rows[1:]] for j, name in enumerate(rows[0])}
+
+
+def column_name(title):
+    """The CSV column of a series: its title without a closing " (...)"
+    remark, every run of other characters than letters and digits one '_'
+    (the CLI's naming, restated)."""
+    return re.sub(r"[^0-9A-Za-z]+", "_", re.sub(r" \([^()]*\)$", "", title)).strip("_") or "value"
+
+
+def floats(texts):
+    return np.array([float(t) for t in texts])
+
+
+# --- the runs --------------------------------------------------------------------------------------
+shutil.rmtree(SCRATCH, ignore_errors=True)
+os.makedirs(os.path.join(SCRATCH, "curve"))
+run("generate", "effect-case", "--effect", "output_offset", "--n", "200", "--out", "est.csv",
+    "--validation-out", "val.csv", "--model-out", "m.json")
+run("diagnose", "--data", "est.csv", "--model", "m.json", "--folds", "2", "--test", "val.csv", "--window", "0:80",
+    "--max-taps", "16", "--max-windows", "1", "--max-effects", "1", "--plots", "plots", "--report", "r.json")
+run("tradeoff", "--data", "est.csv", "--model", "m.json", "--lambdas", "0.1,0.5,0.9", "--max-taps", "16",
+    "--csv", "curve/tradeoff.csv", "--certificate", "curve/t.cert.json", "--quiet")
+
+plots_dir, curve_dir = os.path.join(SCRATCH, "plots"), os.path.join(SCRATCH, "curve")
+plots = lp.read_plots(plots_dir)
+curve = lp.read_plots(curve_dir)
+pngs = sorted(f[:-4] for f in os.listdir(plots_dir) if f.endswith(".png"))
+check(sorted(plots) == pngs, f"a Plot per PNG: {sorted(plots)} vs {pngs}")
+check({"record", "residual", "autocorrelation", "output", "test"} <= set(plots), f"the diagnose plots: {sorted(plots)}")
+check(list(curve) == ["tradeoff"], f"the trade-off plot: {list(curve)}")
+tables = {name: csv_columns(os.path.join(plots_dir, name + ".csv")) for name in plots}
+curve_csv = csv_columns(os.path.join(curve_dir, "tradeoff.csv"))
+
+# --- the numbers equal the CSV's ---------------------------------------------------------------------
+for name, p in plots.items():
+    table = tables[name]
+    x = floats(next(iter(table.values())))  # the first column: time, sample, lag, ...
+    for s in p.series:
+        where = f"{name}: series {s.title!r}"
+        if s.kind == "band" and name == "record":  # a shaded block of rows (not in the CSV)
+            check(len(s.x) > 0 and all(np.isin(s.x, x)), f"{where}: its x are rows of the CSV")
+            continue
+        check(np.array_equal(s.x, x), f"{where}: x equals the CSV's first column")
+        if s.kind == "band":
+            for edge, values in (("lower", s.y), ("upper", s.y_high)):
+                col = column_name(s.title) + "_" + edge
+                check(col in table and np.array_equal(values, floats(table[col])), f"{where}: {edge} edge = CSV {col}")
+        else:
+            col = column_name(s.title)
+            check(col in table and np.array_equal(s.y, floats(table[col])), f"{where}: y = CSV column {col}")
+    # the Plot's own copy of the table is the CSV's
+    check(sorted(p.table) == sorted(table), f"{name}: table columns")
+    for col, texts in table.items():
+        check(np.array_equal(p.table[col], floats(texts)), f"{name}: table column {col}")
+
+acf = plots["autocorrelation"].panels[0]
+check([h.dashtype for h in acf.hlines] == [2, 2, 3, 3, 1], "autocorrelation: the two bands and the zero line")
+for h, col in zip(acf.hlines, ["band_99_upper", "band_99_lower", "band_95_upper", "band_95_lower"]):
+    check(np.all(floats(tables["autocorrelation"][col]) == h.y), f"autocorrelation: line {h.y} = CSV {col}")
+
+record = plots["record"]
+check([pn.title for pn in record.panels] == ["input", "output"], "record: the input and output panels")
+blocks = [s for s in record.panels[0].series if s.kind == "band"]
+check([b.title for b in blocks] == ["fold 1", "fold 2"], f"record: the 2 folds shaded: {[b.title for b in blocks]}")
+check(all(np.all(b.y <= b.y_high) for b in blocks), "record: a block spans from below to above")
+
+test = plots["test"]
+band = [s for s in test.panels[1].series if s.kind == "band"]
+check(len(band) == 1 and np.allclose(band[0].y_high - band[0].y, band[0].y_high[0] - band[0].y[0]),
+      "test: one band of constant width (model after +- d_max)")
+check(test.panels[1].series[1].color == "#000000", "test: the measured output in black")
+
+t = curve["tradeoff"]
+ser = t.series[0]
+verified = [i for i, v in enumerate(curve_csv["verified"]) if v == "true"]
+check(np.array_equal(ser.x, floats([curve_csv["dmax"][i] for i in verified])), "tradeoff: x = the CSV's dmax")
+check(np.array_equal(ser.y, floats([curve_csv["delta"][i] for i in verified])), "tradeoff: y = the CSV's delta")
+check(ser.labels == ["λ=" + curve_csv["lambda"][i] for i in verified], f"tradeoff: labels {ser.labels}")
+
+# --- nothing refers to the files -------------------------------------------------------------------
+shutil.rmtree(plots_dir)
+shutil.rmtree(curve_dir)
+plots.update(curve)
+
+# --- without matplotlib: importing works, figure() names the package --------------------------------
+probe = ("import sys; sys.modules['matplotlib'] = None; sys.modules['matplotlib.figure'] = None\n"
+         "import lpvid, lpvid.plots as lp\n"
+         "p = lp.Plot(name='p', title='t', panels=[])\n"
+         "try:\n    p.figure()\nexcept ImportError as e:\n    print(e)\n")
+r = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, env=ENV)
+check(r.returncode == 0 and "python3-matplotlib" in r.stdout, f"no matplotlib: {r.stdout}{r.stderr}")
+
+# --- the figures ------------------------------------------------------------------------------------
+try:
+    import matplotlib  # noqa: F401
+except ImportError:
+    print(f"plots_test: {checks} checks passed; matplotlib is not installed (Debian: python3-matplotlib): "
+          "the figures are not drawn")
+    sys.exit(0)
+from matplotlib.figure import Figure  # noqa: E402
+
+out = os.path.join(SCRATCH, "figures")
+os.makedirs(out)
+for name, p in plots.items():
+    fig = p.figure()
+    check(isinstance(fig, Figure), f"{name}: a matplotlib Figure")
+    check(len(fig.axes) == len(p.panels), f"{name}: {len(fig.axes)} axes for {len(p.panels)} panels")
+    for ax, panel in zip(fig.axes, p.panels):
+        lines = sum(s.kind == "line" for s in panel.series) + len(panel.hlines)
+        bands = sum(s.kind == "band" for s in panel.series)
+        check(len(ax.lines) == lines, f"{name}: {len(ax.lines)} lines drawn for {lines} line series and lines")
+        check(len(ax.collections) == bands, f"{name}: {len(ax.collections)} areas for {bands} bands")
+        check(ax.get_xlabel() == panel.xlabel and ax.get_ylabel() == panel.ylabel, f"{name}: axis labels")
+    shown = fig._suptitle.get_text() if len(p.panels) > 1 else fig.axes[0].get_title()
+    check(shown == p.title, f"{name}: title {shown!r}")
+    fig.savefig(os.path.join(out, name + ".png"))
+print(f"plots_test: {checks} checks passed; figures in {out}")
