@@ -1,20 +1,25 @@
-// lpvid compare: a model's free-run output against measured data (RMS and
-// fit % per output, the rows compared, the initial state used), the figure
-// a user checks before and after a change of the model.
+// lpvid compare: models' free-run (or k-step-ahead) output against measured
+// data (RMS and fit % per output, the rows compared, the initial state
+// used), the figure a user checks before and after a change of the model.
+// Several --model give one table; --u/--y/--rho map the models' columns to
+// the data's in memory (cli/compare_columns.h).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/compare_columns.h"
+#include "cli/compare_output.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
+#include "cli/signal_info_options.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "data/csv_reader.h"
-#include "data/csv_writer.h"
 #include "data/experiment_builder.h"
+#include "fit/k_step_prediction.h"
 #include "fit/output_error_fit.h"
 #include "fit/output_score.h"
 #include "model/model_file.h"
@@ -24,11 +29,16 @@ namespace lpvid::cli {
 namespace {
 
 struct CompareArgs {
-  std::string model, out, report, model_out, x0;  ///< x0: "" (not given), model or fit
-  std::vector<std::string> data_paths, rows_texts;             ///< every --data / --rows (several records)
+  std::vector<std::string> models;                ///< every --model, in order
+  std::string out, report, model_out, x0, plot;   ///< x0: "" (not given), model or fit
+  std::vector<std::string> data_paths, rows_texts;  ///< every --data / --rows (several records)
   std::string data_rows_order;
   std::vector<std::string> names;
   long warmup = 0;
+  long predict = 0;         ///< --predict K: k-step-ahead (0: free run)
+  long predict_window = 0;  ///< --predict-window M (0: the model's order)
+  ColumnMappingArgs columns;
+  SignalInfoArgs signal_info;
 };
 
 std::string percent_text(double x) {
@@ -38,21 +48,47 @@ std::string percent_text(double x) {
   return buf;
 }
 
-/// One record compared: its rows (first: the file row of its row 0), the
-/// model with its own x0 (fitted or as in the file), the free run and scores.
+/// One model on one record: its rows (first: the file row of its row 0), the
+/// model with its own x0 (fitted or as in the file), the compared output
+/// (free run or k-step prediction) and the scores.
 struct ComparedRecord {
   std::string file;
   long first = 0;
   Eigen::Index skip = 0;
   Experiment<double> exp;
   LpvModel<double> model;
-  Simulation<double> sim;
+  Mat<double> yhat;
   OutputScores s;
 };
 
-ComparedRecord compare_record(const CompareArgs& a, const LpvModel<double>& model, const RecordOption& r, bool fit_x0) {
+/// One --model: its path, its model with the column mapping applied, and its
+/// comparison on each record.
+struct ComparedModel {
+  std::string path, name;
+  LpvModel<double> model;
+  std::vector<ComparedRecord> records;
+  OutputScores pooled;
+  Eigen::Index samples = 0;
+};
+
+TextTable read_record(const CompareArgs& a, const RecordOption& r) {
+  try {
+    return a.names.empty() ? read_table(r.path) : read_table(r.path, a.names);
+  } catch (const InputError& e) {
+    if (!a.columns.given() || !a.names.empty()) throw;
+    throw InputError(std::string(e.what()) + "; --u/--y/--rho name columns of a header: give --names for a headerless file");
+  }
+}
+
+Eigen::Index state_window(const CompareArgs& a, const LpvModel<double>& m) {
+  return a.predict_window > 0 ? a.predict_window : std::max(1, m.nx);
+}
+
+ComparedRecord compare_record(const CompareArgs& a, const std::string& path, const LpvModel<double>& model,
+                              const RecordOption& r, bool fit_x0) {
   ComparedRecord c{r.path, 0, a.warmup, {}, model, {}, {}};
-  const TextTable table = a.names.empty() ? read_table(r.path) : read_table(r.path, a.names);
+  const TextTable table = read_record(a, r);
+  check_mapped_columns(a.columns, table.header, r.path);
   c.exp = make_experiment<double>(table, model.columns);
   if (!r.rows_text.empty()) {
     const auto [b, e] = parse_row_range(r.rows_text, "--rows");
@@ -69,13 +105,20 @@ ComparedRecord compare_record(const CompareArgs& a, const LpvModel<double>& mode
   // warm-up rows, or on all compared rows without --warmup
   if (fit_x0) {
     const FitResult f = fit_initial_state(c.model, c.exp, a.warmup > 0 ? a.warmup : c.exp.n());
-    if (!f.finite) throw InputError(a.model + ": no initial state keeps the simulation finite on the rows of " + r.path);
+    if (!f.finite) throw InputError(path + ": no initial state keeps the simulation finite on the rows of " + r.path);
     c.model.x0 = f.model.x0;
   }
-  c.sim = simulate(c.model, c.exp);
+  c.yhat = a.predict > 0 ? k_step_prediction(c.model, c.exp, a.predict, state_window(a, c.model), c.skip)
+                         : simulate(c.model, c.exp).output;
   const Eigen::Index scored = c.exp.n() - c.skip;
-  c.s = score_outputs(c.exp.y.bottomRows(scored), c.sim.output.bottomRows(scored));
+  c.s = score_outputs(c.exp.y.bottomRows(scored), c.yhat.bottomRows(scored));
   return c;
+}
+
+std::string prediction_text(const CompareArgs& a, const LpvModel<double>& m) {
+  if (a.predict == 0) return "free run";
+  return std::to_string(a.predict) + "-step-ahead prediction, state re-fitted on " + std::to_string(state_window(a, m)) +
+         " output samples ending " + std::to_string(a.predict) + " rows before each";
 }
 
 void print_scores(const OutputScores& s, const std::vector<std::string>& names) {
@@ -85,13 +128,13 @@ void print_scores(const OutputScores& s, const std::vector<std::string>& names) 
   if (s.rms.size() > 1) std::printf("  %-16s %14.6g %10s\n", "all outputs", s.rms_all, percent_text(s.fit_percent_all).c_str());
 }
 
-void print_record(const CompareArgs& a, const ComparedRecord& c, bool fit_x0) {
+void print_record(const CompareArgs& a, const std::string& path, const ComparedRecord& c, bool fit_x0) {
   const Eigen::Index scored = c.exp.n() - c.skip;
-  std::cout << "lpvid compare: " << a.model << " on " << c.file << " rows " << c.first + c.skip << ":" << c.first + c.exp.n()
+  std::cout << "lpvid compare: " << path << " on " << c.file << " rows " << c.first + c.skip << ":" << c.first + c.exp.n()
             << " (" << scored << " samples";
   if (c.skip > 0) std::cout << "; x0 fitted on the " << c.skip << " rows before them";
   else std::cout << (fit_x0 ? "; x0 fitted on these rows" : "; x0 as in the model file");
-  std::cout << ", free run)\n";
+  std::cout << ", " << prediction_text(a, c.model) << ")\n";
   print_scores(c.s, c.model.columns.y);
   std::cout << "  (fit % = 100*(1 - ||y - yhat|| / ||y - mean(y)||): 100 perfect, 0 no better than the mean)\n";
   if (fit_x0) {
@@ -101,26 +144,19 @@ void print_record(const CompareArgs& a, const ComparedRecord& c, bool fit_x0) {
   }
 }
 
-void write_series(const std::string& path, const ComparedRecord& c) {
-  std::vector<TextColumn> cols;
-  std::vector<std::string> row;
-  for (Eigen::Index k = 0; k < c.exp.n(); ++k) row.push_back(std::to_string(c.first + k));
-  cols.push_back({"row", row});
-  const Mat<double> resid = c.exp.y - c.sim.output;
-  for (Eigen::Index i = 0; i < c.exp.y.cols(); ++i) {
-    const std::string& name = c.model.columns.y[static_cast<size_t>(i)];
-    cols.push_back({name, column_text(c.exp.y, i)});
-    cols.push_back({name + "_model", column_text(c.sim.output, i)});
-    cols.push_back({name + "_residual", column_text(resid, i)});
-  }
-  write_csv(path, cols);
+/// The prediction and column fields of a model's report.
+void add_model_fields(nlohmann::ordered_json& r, const CompareArgs& a, const LpvModel<double>& m) {
+  r["prediction"] = a.predict > 0 ? "k_step" : "free_run";
+  r["predict_steps"] = a.predict;
+  if (a.predict > 0) r["state_window"] = state_window(a, m);
+  r["columns"] = {{"u", m.columns.u}, {"y", m.columns.y}, {"rho", m.columns.rho}};
 }
 
 /// The report fields of one record (the whole report for one --data).
-nlohmann::ordered_json record_json(const CompareArgs& a, const ComparedRecord& c, bool fit_x0) {
+nlohmann::ordered_json record_json(const CompareArgs& a, const std::string& path, const ComparedRecord& c, bool fit_x0) {
   nlohmann::ordered_json r;
   r["data"] = c.file;
-  r["model"] = a.model;
+  r["model"] = path;
   r["rows"] = {c.first + c.skip, c.first + c.exp.n()};
   r["warmup_rows"] = c.skip;
   r["x0"] = fit_x0 ? (c.skip > 0 ? "fitted on the warm-up rows" : "fitted on the compared rows") : "model file";
@@ -132,90 +168,215 @@ nlohmann::ordered_json record_json(const CompareArgs& a, const ComparedRecord& c
   r["rms"] = c.s.rms_all;
   r["fit_percent"] = c.s.fit_percent_all;
   r["finite"] = c.s.finite;
+  add_model_fields(r, a, c.model);
   return r;
 }
 
-/// Several records: each compared on its own (its own x0), then every scored
-/// sample of every record pooled.
-int compare_records(const CompareArgs& a, const LpvModel<double>& model, const std::vector<RecordOption>& recs, bool fit_x0) {
-  if (!a.out.empty() || !a.model_out.empty())
-    throw InputError("--out and --model-out take one --data (one record); give the records one at a time");
-  std::vector<ComparedRecord> done;
-  for (const RecordOption& r : recs) done.push_back(compare_record(a, model, r, fit_x0));
-  Eigen::Index n = 0;
-  for (const ComparedRecord& c : done) n += c.exp.n() - c.skip;
-  Mat<double> y(n, model.ny), yhat(n, model.ny);
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+/// Each record compared on its own (its own x0), then every scored sample of
+/// every record pooled.
+ComparedModel compare_model(const CompareArgs& a, const std::string& path, const LpvModel<double>& model,
+                            const std::vector<RecordOption>& recs, bool fit_x0) {
+  ComparedModel m{path, "", model, {}, {}, 0};
+  for (const RecordOption& r : recs) m.records.push_back(compare_record(a, path, model, r, fit_x0));
+  for (const ComparedRecord& c : m.records) m.samples += c.exp.n() - c.skip;
+  Mat<double> y(m.samples, model.ny), yhat(m.samples, model.ny);
   Eigen::Index at = 0;
-  for (const ComparedRecord& c : done) {
+  for (const ComparedRecord& c : m.records) {
     const Eigen::Index scored = c.exp.n() - c.skip;
     y.middleRows(at, scored) = c.exp.y.bottomRows(scored);
-    yhat.middleRows(at, scored) = c.sim.output.bottomRows(scored);
+    yhat.middleRows(at, scored) = c.yhat.bottomRows(scored);
     at += scored;
-    print_record(a, c, fit_x0);
-    list.push_back(record_json(a, c, fit_x0));
   }
-  const OutputScores s = score_outputs(y, yhat);
-  std::cout << "pooled: " << done.size() << " records, " << n << " samples (each record from its own x0)\n";
-  print_scores(s, model.columns.y);
-  nlohmann::ordered_json r;
-  r["data"] = a.data_paths;
-  r["model"] = a.model;
-  r["samples"] = n;
-  r["rms"] = s.rms_all;
-  r["fit_percent"] = s.fit_percent_all;
-  r["finite"] = s.finite;
-  r["records"] = list;
-  write_json(a.report, r);
-  return s.finite ? kExitOk : kExitSolver;
+  m.pooled = score_outputs(y, yhat);
+  return m;
 }
 
-int run_compare(const CompareArgs& a) {
+/// One model's report: the one-record report, or the pooled report with
+/// its records.
+nlohmann::ordered_json model_json(const CompareArgs& a, const ComparedModel& m, bool fit_x0) {
+  if (m.records.size() == 1) return record_json(a, m.path, m.records.front(), fit_x0);
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const ComparedRecord& c : m.records) list.push_back(record_json(a, m.path, c, fit_x0));
+  nlohmann::ordered_json r;
+  r["data"] = a.data_paths;
+  r["model"] = m.path;
+  r["samples"] = m.samples;
+  r["rms"] = m.pooled.rms_all;
+  r["fit_percent"] = m.pooled.fit_percent_all;
+  r["finite"] = m.pooled.finite;
+  r["records"] = list;
+  add_model_fields(r, a, m.model);
+  return r;
+}
+
+void print_model(const CompareArgs& a, const ComparedModel& m, bool fit_x0) {
+  for (const ComparedRecord& c : m.records) print_record(a, m.path, c, fit_x0);
+  if (m.records.size() == 1) return;
+  std::cout << "pooled: " << m.records.size() << " records, " << m.samples << " samples (each record from its own x0)\n";
+  print_scores(m.pooled, m.model.columns.y);
+}
+
+/// The table of several models: one row per model, RMS and fit % per output.
+void print_table(const std::vector<ComparedModel>& ms) {
+  const std::vector<std::string>& outs = ms.front().model.columns.y;
+  std::printf("\n  %-24s", "model");
+  for (const std::string& o : outs) std::printf(" %14s %8s", ("RMS " + o).c_str(), "fit %");
+  if (outs.size() > 1) std::printf(" %14s %8s", "RMS all", "fit %");
+  std::printf("\n");
+  for (const ComparedModel& m : ms) {
+    std::printf("  %-24s", m.name.c_str());
+    for (size_t i = 0; i < outs.size(); ++i)
+      std::printf(" %14.6g %8s", m.pooled.rms[i], percent_text(m.pooled.fit_percent[i]).c_str());
+    if (outs.size() > 1) std::printf(" %14.6g %8s", m.pooled.rms_all, percent_text(m.pooled.fit_percent_all).c_str());
+    std::printf("\n");
+  }
+}
+
+/// The sample time and units: the options over the first model's.
+SignalInfo compare_signal_info(const CompareArgs& a, const std::vector<LpvModel<double>>& models) {
+  SignalInfo base = models.front().signal_info;
+  for (const LpvModel<double>& m : models) {
+    if (base.sample_time == 0) base.sample_time = m.signal_info.sample_time;
+    for (const auto& [col, unit] : m.signal_info.units)
+      if (base.unit_of(col).empty()) base.units.emplace_back(col, unit);
+  }
+  return signal_info_of(a.signal_info, models.front().columns, base);
+}
+
+void check_options(const CompareArgs& a, bool fit_x0, size_t records) {
   check_output_file(a.out, "--out");
   check_output_file(a.report, "--report");
   check_output_file(a.model_out, "--model-out");
+  check_output_file(a.plot, "--plot");
   if (a.warmup < 0) throw InputError("--warmup must be >= 0");
-  const bool fit_x0 = a.x0 == "fit" || a.warmup > 0;
+  if (a.predict_window > 0 && a.predict == 0) throw InputError("--predict-window goes with --predict K");
   if (a.x0 == "model" && a.warmup > 0)
     throw InputError("--warmup fits x0 on the first rows: it cannot go with --x0 model (leave --x0 out)");
   if (!a.model_out.empty() && !fit_x0) throw InputError("--model-out writes the fitted x0: give --x0 fit or --warmup");
-  const LpvModel<double> model = read_model_file<double>(a.model);
-  if (!model.offset.basis.empty() && model.offset.values.empty())
-    throw InputError(a.model + ": offset: the offset values are unknown; give \"values\" (or identify them first)");
-  const std::vector<RecordOption> recs = pair_data_and_rows(a.data_paths, a.rows_texts, a.data_rows_order);
-  if (recs.size() > 1) return compare_records(a, model, recs, fit_x0);
-  const ComparedRecord c = compare_record(a, model, recs.front(), fit_x0);
-  print_record(a, c, fit_x0);
+  if (!a.model_out.empty() && a.models.size() > 1) throw InputError("--model-out takes one --model");
+  if (records > 1 && (!a.out.empty() || !a.model_out.empty() || !a.plot.empty()))
+    throw InputError("--out, --plot and --model-out take one --data (one record); give the records one at a time");
+}
+
+std::vector<LpvModel<double>> read_models(const CompareArgs& a) {
+  std::vector<LpvModel<double>> out;
+  for (const std::string& path : a.models) {
+    const LpvModel<double> model = read_model_file<double>(path);
+    if (!model.offset.basis.empty() && model.offset.values.empty())
+      throw InputError(path + ": offset: the offset values are unknown; give \"values\" (or identify them first)");
+    out.push_back(map_model_columns(model, a.columns, path));
+    if (out.back().columns.y != out.front().columns.y)
+      throw InputError("--model " + path + " reads the outputs " + out.back().columns.y.front() + "... but --model " +
+                       a.models.front() + " reads " + out.front().columns.y.front() +
+                       "...: the models must score the same output columns (map them with --y)");
+  }
+  return out;
+}
+
+/// --out, --plot, --model-out of one record.
+void write_record_files(const CompareArgs& a, const std::vector<ComparedModel>& ms, const SignalInfo& info,
+                        nlohmann::ordered_json& report) {
+  const ComparedRecord& c0 = ms.front().records.front();
+  const ComparedRows rows{c0.first, c0.skip, c0.exp.y, c0.model.columns.y, info};
+  std::vector<ComparedSeries> series;
+  for (const ComparedModel& m : ms) series.push_back({m.name, m.records.front().yhat});
   if (!a.out.empty()) {
-    write_series(a.out, c);
-    std::cout << "  series      " << a.out << " (row, and per output: measured, model, residual)\n";
+    write_compare_series(a.out, rows, series);
+    std::cout << "  series      " << a.out << " (row" << (info.sample_time > 0 ? ", time_s" : "")
+              << ", scored, and per output: measured, model, residual)\n";
+    report["series"] = a.out;
+  }
+  const std::string plotted = plot_compare(a.plot, rows, series, "lpvid compare on " + c0.file + " (" + prediction_text(a, c0.model) + ")");
+  if (!plotted.empty()) {
+    std::cout << "  plot        " << plotted << "\n";
+    report["plot"] = plotted.rfind("no plot", 0) == 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(a.plot);
   }
   if (!a.model_out.empty()) {
-    write_model_file(a.model_out, c.model);
+    write_model_file(a.model_out, c0.model);
     std::cout << "  model       " << a.model_out << " (the model with the fitted x0)\n";
   }
-  write_json(a.report, record_json(a, c, fit_x0));
-  return c.s.finite ? kExitOk : kExitSolver;
+}
+
+int run_compare(const CompareArgs& a) {
+  const bool fit_x0 = a.x0 == "fit" || a.warmup > 0;
+  const std::vector<RecordOption> recs = pair_data_and_rows(a.data_paths, a.rows_texts, a.data_rows_order);
+  check_options(a, fit_x0, recs.size());
+  const std::vector<LpvModel<double>> models = read_models(a);
+  const SignalInfo info = compare_signal_info(a, models);
+  const std::vector<std::string> names = model_names(a.models);
+  std::vector<ComparedModel> ms;
+  bool finite = true;
+  for (size_t i = 0; i < models.size(); ++i) {
+    ms.push_back(compare_model(a, a.models[i], models[i], recs, fit_x0));
+    ms.back().name = names[i];
+    print_model(a, ms.back(), fit_x0);
+    finite = finite && ms.back().pooled.finite;
+  }
+  nlohmann::ordered_json report;
+  if (ms.size() == 1) {
+    report = model_json(a, ms.front(), fit_x0);
+  } else {
+    print_table(ms);
+    report["data"] = recs.size() == 1 ? nlohmann::ordered_json(recs.front().path) : nlohmann::ordered_json(a.data_paths);
+    report["warmup_rows"] = a.warmup;
+    report["prediction"] = a.predict > 0 ? "k_step" : "free_run";
+    report["predict_steps"] = a.predict;
+    report["models"] = nlohmann::ordered_json::array();
+    for (const ComparedModel& m : ms) {
+      nlohmann::ordered_json j = model_json(a, m, fit_x0);
+      j["name"] = m.name;
+      report["models"].push_back(j);
+    }
+  }
+  if (info.sample_time > 0) report["sample_time"] = info.sample_time;
+  if (!info.units.empty())
+    for (const auto& [col, unit] : info.units) report["units"][col] = unit;
+  if (recs.size() == 1) write_record_files(a, ms, info, report);
+  write_json(a.report, report);
+  return finite ? kExitOk : kExitSolver;
 }
 
 }  // namespace
 
 Runner add_compare_command(CLI::App& app) {
   auto a = std::make_shared<CompareArgs>();
-  CLI::App* cmd =
-      app.add_subcommand("compare", "A model's free-run output against measured data: RMS and fit % per output, CSV");
+  CLI::App* cmd = app.add_subcommand(
+      "compare", "Models' free-run (or k-step-ahead) output against measured data: RMS and fit % per output, CSV, plot");
   add_data_and_rows(*cmd, a->data_paths, a->rows_texts, a->data_rows_order,
                     "data file; repeat for several records (each compared from its own x0, then pooled)",
                     "window of data rows B:E (0-based, E exclusive) of the --data before it; the state starts at B");
-  cmd->add_option("--model", a->model, "model file")->required();
+  cmd->add_option("--model", a->models, "model file; repeat to compare several models on the same rows (one table)")
+      ->required();
+  cmd->add_option("--u", a->columns.u,
+                  "data column(s) playing the model's input columns, in the model's order (the model file is not "
+                  "edited; scheduling columns on an input follow it)")
+      ->delimiter(',');
+  cmd->add_option("--y", a->columns.y, "data column(s) playing the model's output columns, in the model's order")
+      ->delimiter(',');
+  cmd->add_option("--rho", a->columns.rho,
+                  "data column(s) playing the model's scheduling columns read from data (not the @x state forms), "
+                  "in the model's order")
+      ->delimiter(',');
   cmd->add_option("--names", a->names, "column names for a headerless whitespace data file (every record)")->delimiter(',');
   cmd->add_option("--x0", a->x0, "initial state: model (as in the model file; default) or fit (least squares, multi-start)")
       ->check(CLI::IsMember({"model", "fit"}));
   cmd->add_option("--warmup", a->warmup,
                   "fit x0 on the first K compared rows and score only the rows after them (a benchmark protocol)");
-  cmd->add_option("--out", a->out, "CSV: row, and per output the measured, model and residual series");
-  cmd->add_option("--report", a->report, "JSON report");
-  cmd->add_option("--model-out", a->model_out, "write the model with the fitted x0");
+  cmd->add_option("--predict", a->predict,
+                  "K >= 1: k-step-ahead prediction instead of the free run: for each row t the state is re-fitted "
+                  "(least squares, no observer) on the measured outputs of the --predict-window rows ending at t-K, "
+                  "then the model runs K steps on the measured inputs")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--predict-window", a->predict_window,
+                  "output rows the state of each k-step prediction is fitted on (default: the model's order)")
+      ->check(CLI::PositiveNumber);
+  add_signal_info_options(*cmd, a->signal_info);
+  cmd->add_option("--out", a->out,
+                  "CSV: row, time_s (with a sample time), scored (0 for warm-up rows), and per output the measured, "
+                  "model and residual series (several models: <model>.yhat.<output>, <model>.residual.<output>)");
+  cmd->add_option("--plot", a->plot, "PNG figure (gnuplot): measured output and each model's, warm-up rows in grey");
+  cmd->add_option("--report", a->report, "JSON report (several models: a \"models\" list of one-model reports)");
+  cmd->add_option("--model-out", a->model_out, "write the model with the fitted x0 (one --model)");
   return [cmd, a] { return cmd->parsed() ? run_compare(*a) : -1; };
 }
 
