@@ -528,7 +528,7 @@ def compare(u=None, y=None, models=None, rho=None, *, data=None, model=None, pre
             words += ["--x0", x0]
         report_path, series = os.path.join(ws, "compare.json"), os.path.join(ws, "compare.csv")
         words += ["--report", report_path, "--out", series]
-        if figures and "plot" in command_options("compare"):
+        if figures:
             words += ["--plot", os.path.join(ws, "compare.png")]
         code, output, messages = _run("compare", "compare", words, options, progress=progress, quiet=quiet)
         _raise_unless_answer(code, output, messages)
@@ -542,22 +542,21 @@ def compare(u=None, y=None, models=None, rho=None, *, data=None, model=None, pre
 
 
 def _fill_scores(result, report, table, names):
+    """Scores per model from the report (one model: the report itself;
+    several: its "models" list) and their series from the CSV (measured
+    column <out>; one model: <out>_model, several: <name>.yhat.<out>)."""
     entries = report.get("models") if isinstance(report.get("models"), list) else [report]
-    measured = [k for k in table if k.endswith("_measured") or k.endswith(".measured")]
+    one = len(entries) == 1
+    outs = [o.get("name") for o in (entries[0].get("outputs") or [])] if entries else []
+    stack = (lambda keys: np.column_stack([table[c] for c in keys]) if keys and all(c in table for c in keys)
+             else None)
+    result.y = stack(outs)
     for k, entry in enumerate(entries):
-        name = names[k] if k < len(names) else entry.get("name", f"model{k + 1}")
-        outputs = entry.get("outputs") or []
-        yhat_keys = [c for c in table if c.startswith(f"{name}.") and ("yhat" in c or "model" in c)]
-        if not yhat_keys and len(entries) == 1:
-            yhat_keys = [c for c in table if c.endswith("_model")]
-        yhat = np.column_stack([table[c] for c in yhat_keys]) if yhat_keys else None
-        result.scores.append(ModelScore(name=name, rms=entry.get("rms"), fit_percent=entry.get("fit_percent"),
-                                        outputs=outputs, yhat=yhat))
-    if not measured:
-        out_names = [o.get("name") for o in (entries[0].get("outputs") or [])] if entries else []
-        measured = [n for n in out_names if n in table]
-    if measured:
-        result.y = np.column_stack([table[c] for c in measured])
+        name = entry.get("name") or (names[k] if k < len(names) else f"model{k + 1}")
+        keys = [f"{o}_model" if one else f"{name}.yhat.{o}" for o in outs]
+        result.scores.append(ModelScore(name=names[k] if one and k < len(names) else name, rms=entry.get("rms"),
+                                        fit_percent=entry.get("fit_percent"), outputs=entry.get("outputs") or [],
+                                        yhat=stack(keys)))
 
 
 # -- data sets and the oracle ----------------------------------------------------------------

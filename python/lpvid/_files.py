@@ -78,6 +78,8 @@ def model_columns(model):
 def _as_rows(name, values, width):
     """values (1-D: one channel; 2-D: samples x channels) as a list of rows
     of `width` cells; a mismatch is an error naming the argument."""
+    if hasattr(values, "to_numpy"):  # a pandas Series or DataFrame: its values, not its labels
+        values = values.to_numpy()
     if hasattr(values, "tolist"):
         values = values.tolist()
     values = list(values)

@@ -94,6 +94,8 @@ def data_files(folder, model_doc, u, y, rho, data=None, records=None, stem="data
 
 def width(values):
     """Channels of a 1-D (one) or 2-D (samples x channels) array-like."""
+    if hasattr(values, "to_numpy"):
+        values = values.to_numpy()
     if hasattr(values, "shape"):
         return 1 if len(values.shape) == 1 else int(values.shape[1])
     first = list(values)[0] if len(values) else 0
@@ -114,6 +116,8 @@ def generic_table(u, y, rho):
     for prefix, values in (("u", u), ("y", y), ("rho", rho)):
         if values is None:
             continue
+        if hasattr(values, "to_numpy"):
+            values = values.to_numpy()
         rows = values.tolist() if hasattr(values, "tolist") else list(values)
         w = width(values)
         for j in range(w):

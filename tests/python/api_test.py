@@ -77,6 +77,16 @@ class Api(unittest.TestCase):
         np.testing.assert_allclose(sim.y[:, 0], self.y, atol=1e-8)
         self.assertIsNotNone(m.report)
 
+    def test_pandas_frame_in_series_in(self):
+        try:
+            import pandas as pd
+        except ImportError:
+            self.skipTest("pandas (Debian: python3-pandas) is not installed")
+        frame = pd.DataFrame({"uEst": self.u, "yEst": self.y})
+        m = lpvid.fit_linear(data=frame, u="uEst", y="yEst", order=1)
+        self.assertEqual(m.columns[:2], (["uEst"], ["yEst"]))
+        np.testing.assert_allclose(m.simulate(frame["uEst"]).y[:, 0], self.y, atol=1e-8)
+
     def test_compare_scores_two_models_on_other_columns(self):
         table = {"uVal": self.u, "yVal": self.y}
         true, wrong = lti_model("1/2", 1), lti_model("1/2", 2)
