@@ -79,6 +79,9 @@ class CMakeBuild(build_ext):
         if not (build_dir / "CMakeCache.txt").is_file():
             sys.exit(f"setup.py: LPVID_CMAKE_BUILD_DIR={build_dir} is not a configured CMake build tree "
                      "(no CMakeCache.txt)")
+        if cached_value(build_dir, "LPVID_BUILD_PYTHON") != "ON":
+            sys.exit(f"setup.py: LPVID_CMAKE_BUILD_DIR={build_dir} does not build the Python module "
+                     "(LPVID_BUILD_PYTHON is not ON in its CMakeCache.txt)")
         python = cached_value(build_dir, "_Python3_EXECUTABLE")
         print(f"reusing the CMake build tree {build_dir} (LPVID_CMAKE_BUILD_DIR), "
               f"configured for the Python {python}", flush=True)
