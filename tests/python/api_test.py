@@ -19,6 +19,7 @@ Usage: api_test.py SCRATCH_DIR (with the package on PYTHONPATH).
 
 import logging
 import os
+import re
 import signal
 import sys
 import tempfile
@@ -100,20 +101,24 @@ class Api(unittest.TestCase):
         self.assertAlmostEqual(c2.scores[1].rms, expected, delta=1e-9 * expected)
 
     def test_certificate_in_memory_save_load_verify(self):
-        r = lpvid.invalidate(self.u, self.y, None, lti_model("1/2", 1), delta=0, dmax="1/100")
+        # a gain twice the true one: at delta = 0 the smallest d_max is the RMS of y (the error is y itself)
+        rms = float(np.sqrt(np.mean(self.y ** 2)))
+        self.assertTrue(0.2 < rms < 2.5, rms)
+        r = lpvid.invalidate(self.u, self.y, None, lti_model("1/2", 2), delta=0, dmax="5/2")
         self.assertTrue(r.consistent)
         cert = r.certificate
         self.assertIsInstance(cert, lpvid.Certificate)
         self.assertIsNone(cert.path)
-        self.assertEqual(cert.dmax2, lpvid.exact("1/10000"))
+        self.assertEqual(cert.dmax2, lpvid.exact("25/4"))
         self.assertTrue(lpvid.verify(cert))
         path = cert.save(os.path.join(SCRATCH, "saved", "c.json"))
         self.assertTrue(os.path.isfile(os.path.join(SCRATCH, "saved", "data.csv")))
         self.assertTrue(lpvid.Certificate.load(path).verify())
         self.assertTrue(lpvid.verify(path))
-        # a claim the data do not support: d_max^2 ten thousand times smaller, at delta = 0
-        self.assertIn('"dmax2": "0.0001"', cert.text)
-        bad = lpvid.Certificate(cert.text.replace('"dmax2": "0.0001"', '"dmax2": "0.00000001"'), cert.files)
+        # the same certificate claiming d_max = 0.1, far below the RMS of the error: false
+        text, n = re.subn(r'"dmax2": [^,\n]+', '"dmax2": "1/100"', cert.text)
+        self.assertEqual(n, 1)
+        bad = lpvid.Certificate(text, cert.files)
         self.assertIsNone(bad.path)
         self.assertFalse(lpvid.verify(bad))
 
