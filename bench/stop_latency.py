@@ -80,13 +80,13 @@ def main():
          ["invalidate", "--data", f("long.csv"), "--model", f("long.json"), "--delta", "0.5", "--quiet",
           "--certificate", f("c.json"), "--report", f("r.json")], [f("c.json"), f("r.json")]),
         ("identify n=2000", _lpvid.run_lpvid,
-         ["identify", "--data", f("long.csv"), "--model", f("long.json"), "--quiet", "--iterate", "3",
+         ["identify", "--data", f("long.csv"), "--model", f("long.json"), "--quiet", "--iterate",
           "--certificate", f("ic.json"), "--model-out", f("im.json")], [f("ic.json"), f("im.json")]),
         ("diagnose n=400", _lpvid.run_lpvid,
          ["diagnose", "--data", f("est.csv"), "--model", f("declared.json"), "--test", f("test.csv"),
           "--warmup", "10", "--threads", "1", "--report", f("d.json"), "--model-out", f("after.json")],
          [f("d.json"), f("after.json")]),
-        ("verify psd 700x700 exact", _lpvid.run_lpvid_verify, ["psd", "--exact-only", "--threads", "1", f("m.txt")], []),
+        ("verify psd 700x700 exact", _lpvid.run_lpvid_verify, ["--max-exact-work", "1e13", "psd", "--exact-only", "--threads", "1", f("m.txt")], []),
     ]
     print(f"wait before request_stop: {WAIT} s")
     for name, run, args, outputs in cases:
