@@ -90,24 +90,45 @@ class WorkLimitsRestorer {
   lpvid::VerifyWorkLimits saved_;
 };
 
+/// The whole command line: the app with its two subcommands and the limit
+/// options, and the arguments they fill. Built in place: the options hold
+/// pointers to its members.
+struct VerifyCommandLine {
+  CLI::App app{"lpvid-verify: exact verifier for lpvid (no floating-point answer is trusted)"};
+  PsdArgs psd_args;
+  CertificateArgs certificate_args;
+  CLI::App* psd = nullptr;
+  CLI::App* certificate = nullptr;
+
+  VerifyCommandLine() {
+    app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("lpvid-verify ") + LPVID_VERSION);
+    lpvid::add_limit_options(app);
+    add_work_limit_options(app);
+    psd = add_psd_subcommand(app, psd_args);
+    certificate = add_certificate_subcommand(app, certificate_args);
+  }
+  VerifyCommandLine(const VerifyCommandLine&) = delete;
+  VerifyCommandLine& operator=(const VerifyCommandLine&) = delete;
+};
+
 }  // namespace
 
 namespace lpvid {
+
+OptionTable lpvid_verify_option_table() {
+  const VerifyCommandLine line;
+  OptionTable table;
+  add_option_table(line.app, "lpvid-verify", table);
+  return table;
+}
 
 int run_lpvid_verify(const std::vector<std::string>& args, const std::string& program) {
   // A previous call in the same process may have changed the limits.
   input_limits() = InputLimits{};
   const WorkLimitsRestorer work_limits;  // lpvid-verify's defaults for this run
-  CLI::App app{"lpvid-verify: exact verifier for lpvid (no floating-point answer is trusted)"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("lpvid-verify ") + LPVID_VERSION);
-  add_limit_options(app);
-  add_work_limit_options(app);
-
-  PsdArgs psd_args;
-  CLI::App* psd = add_psd_subcommand(app, psd_args);
-  CertificateArgs certificate_args;
-  CLI::App* certificate = add_certificate_subcommand(app, certificate_args);
+  VerifyCommandLine line;
+  CLI::App& app = line.app;
 
   ArgvWords argv(program, args);  // parsed as main()'s argv is
   try {
@@ -118,8 +139,9 @@ int run_lpvid_verify(const std::vector<std::string>& args, const std::string& pr
   }
 
   // Dispatch: one branch per subcommand.
-  if (psd->parsed()) return run_psd_command(psd_args.file, std::cout, std::cerr, psd_args.options);
-  if (certificate->parsed()) return run_certificate_command(certificate_args.file, std::cout, std::cerr, certificate_args.data);
+  if (line.psd->parsed()) return run_psd_command(line.psd_args.file, std::cout, std::cerr, line.psd_args.options);
+  if (line.certificate->parsed())
+    return run_certificate_command(line.certificate_args.file, std::cout, std::cerr, line.certificate_args.data);
 
   std::cerr << "lpvid-verify: no subcommand\n";
   return kPsdExitBadInput;

@@ -14,6 +14,48 @@
 
 namespace lpvid::cli {
 
+namespace {
+
+/// The whole command line: the app with every subcommand and the top-level
+/// options, and one runner per subcommand (the one parsed runs). Built in
+/// place: the options hold pointers to its members.
+struct LpvidCommandLine {
+  CLI::App app{"lpvid: robust LPV identification/invalidation with exactly verified bounds"};
+  std::vector<Runner> runners;
+  double timeout = 0;
+
+  LpvidCommandLine() {
+    app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("lpvid ") + LPVID_VERSION);
+    lpvid::add_limit_options(app);
+    app.add_option("--timeout", timeout,
+                   "stop after SECONDS of wall-clock time: the run ends 'timed out' (exit 124) and removes its outputs "
+                   "(default: none; nothing else depends on the wall clock, so a loaded machine only takes longer)")
+        ->check(CLI::PositiveNumber);
+    runners = {add_invalidate_command(app), add_identify_command(app), add_simulate_command(app),
+               add_generate_command(app)};
+    runners.push_back(add_select_basis_command(app));
+    runners.push_back(add_tradeoff_command(app));
+    runners.push_back(add_diagnose_command(app));
+    runners.push_back(add_fit_linear_command(app));
+    runners.push_back(add_certify_command(app));
+    runners.push_back(add_jobs_command(app));
+    runners.push_back(add_compare_command(app));
+    runners.push_back(add_oracle_command(app));
+  }
+  LpvidCommandLine(const LpvidCommandLine&) = delete;
+  LpvidCommandLine& operator=(const LpvidCommandLine&) = delete;
+};
+
+}  // namespace
+
+OptionTable lpvid_option_table() {
+  const LpvidCommandLine line;
+  OptionTable table;
+  add_option_table(line.app, "", table);
+  return table;
+}
+
 int run_lpvid(const std::vector<std::string>& args, const std::string& program) {
   // A previous call in the same process may have changed the limits or left
   // its outputs recorded; this call must neither inherit the one nor delete
@@ -21,26 +63,8 @@ int run_lpvid(const std::vector<std::string>& args, const std::string& program) 
   lpvid::input_limits() = lpvid::InputLimits{};
   lpvid::keep_outputs_of_this_run();
 
-  CLI::App app{"lpvid: robust LPV identification/invalidation with exactly verified bounds"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("lpvid ") + LPVID_VERSION);
-  lpvid::add_limit_options(app);
-  double timeout = 0;
-  app.add_option("--timeout", timeout,
-                 "stop after SECONDS of wall-clock time: the run ends 'timed out' (exit 124) and removes its outputs "
-                 "(default: none; nothing else depends on the wall clock, so a loaded machine only takes longer)")
-      ->check(CLI::PositiveNumber);
-  std::vector<Runner> runners = {add_invalidate_command(app), add_identify_command(app), add_simulate_command(app),
-                                 add_generate_command(app)};
-  runners.push_back(add_select_basis_command(app));
-  runners.push_back(add_tradeoff_command(app));
-  runners.push_back(add_diagnose_command(app));
-  runners.push_back(add_fit_linear_command(app));
-  runners.push_back(add_certify_command(app));
-  runners.push_back(add_jobs_command(app));
-  runners.push_back(add_compare_command(app));
-  runners.push_back(add_oracle_command(app));
-
+  LpvidCommandLine line;
+  CLI::App& app = line.app;
   ArgvWords argv(program, args);  // parsed as main()'s argv is
   try {
     app.parse(argv.argc(), argv.argv());
@@ -48,7 +72,7 @@ int run_lpvid(const std::vector<std::string>& args, const std::string& program) 
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }
-  lpvid::set_deadline(timeout);  // 0: none
+  lpvid::set_deadline(line.timeout);  // 0: none
   struct ClearDeadline {
     ~ClearDeadline() { lpvid::clear_deadline(); }  // in-process callers (the Python module) run again without it
   } clear_at_return;
@@ -61,10 +85,12 @@ int run_lpvid(const std::vector<std::string>& args, const std::string& program) 
     return code;
   };
   try {
-    for (auto& run : runners) {
+    for (auto& run : line.runners) {
       const int code = run();
       if (code >= 0) return code;
     }
+  } catch (const lpvid::Interrupted& e) {
+    return fail(e.what(), kExitInterrupted);  // a requested stop (core/stop_request.h)
   } catch (const lpvid::TimedOut& e) {
     return fail(e.what(), kExitTimedOut);
   } catch (const lpvid::InputError& e) {

@@ -2,10 +2,14 @@
 /// The whole `lpvid` command line as a function, so that it runs in another
 /// process's code too (the Python module runs it in-process): parse the
 /// options, run the one subcommand given, map an exception to its exit code
-/// (README "Exit codes") and remove the outputs of a run that failed.
+/// (README "Exit codes") and remove the outputs of a run that failed. A run
+/// stopped from another thread (core/stop_request.h) ends with exit 130 and
+/// its outputs removed, like Ctrl-C of the program.
 
 #include <string>
 #include <vector>
+
+#include "core/option_table.h"
 
 namespace lpvid::cli {
 
@@ -16,5 +20,10 @@ namespace lpvid::cli {
 /// that a failing call removes only what it wrote itself. Not reentrant:
 /// the limits and the record of outputs are per process.
 int run_lpvid(const std::vector<std::string>& args, const std::string& program = "lpvid");
+
+/// The options run_lpvid accepts, read from the app it parses with: "" the
+/// top-level options (--timeout, the input limits), then one entry per
+/// command path ("invalidate", "jobs plan", ...).
+OptionTable lpvid_option_table();
 
 }  // namespace lpvid::cli

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/number_text.h"
+#include "core/stop_request.h"
 #include "verify/certificate/certificate_check.h"
 
 namespace lpvid::cli {
@@ -62,6 +63,8 @@ WindowResult judge_joint(const PlannedClaim& p, const JobPlan& plan, const LpvMo
       r.reason = "the exact check refused it: " + v.reason;
       return r;
     }
+  } catch (const RunStopped&) {
+    throw;  // a requested stop or the --timeout ends the run, not this window's check
   } catch (const std::runtime_error& e) {
     r.reason = std::string("unreadable or cannot be checked: ") + e.what();
     return r;

@@ -7,6 +7,7 @@
 #include "certify/certify.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "core/stop_request.h"
 #include "model/model_file.h"
 #include "verify/certificate/certificate_check.h"
 
@@ -123,6 +124,8 @@ std::string read_and_check(const PlannedClaim& p, const JobWindow& w, const LpvM
   try {
     const CertificateVerdict v = check_certificate(c, fs::path(path).parent_path().string(), data_path);
     return v.holds ? "" : "the exact check refused it: " + v.reason;
+  } catch (const RunStopped&) {
+    throw;  // a requested stop or the --timeout ends the run, not this window's check
   } catch (const std::runtime_error& e) {
     return std::string("cannot be checked: ") + e.what();
   }

@@ -55,6 +55,7 @@ std::string timed_out_message() {
 }
 
 void check_deadline(const char* stage) {
+  check_stop();  // one atomic load: cheap enough for every step
   if (!deadline_passed()) return;
   throw TimedOut(timed_out_message() + (stage != nullptr ? std::string(" while ") + stage : std::string()));
 }

@@ -11,16 +11,20 @@
 /// the watched solver's polling, bound windows, fits); a step in progress
 /// finishes first. The executables add a backstop (enforce_deadline in
 /// core/file_io.h) for a step that runs long without a check.
+///
+/// check_deadline() is also where a stop requested by another thread
+/// (core/stop_request.h) is noticed: it throws Interrupted first.
 
-#include <stdexcept>
 #include <string>
+
+#include "core/stop_request.h"
 
 namespace lpvid {
 
 /// Thrown by check_deadline once the deadline has passed.
-class TimedOut : public std::runtime_error {
+class TimedOut : public RunStopped {
  public:
-  using std::runtime_error::runtime_error;
+  using RunStopped::RunStopped;
 };
 
 /// Sets the deadline `seconds` from now (process-wide); seconds ≤ 0 or not
@@ -42,8 +46,9 @@ bool deadline_passed();
 /// "timed out after N s (--timeout N)", the message of TimedOut.
 std::string timed_out_message();
 
-/// Throws TimedOut (timed_out_message, then " while " + `stage` when given)
-/// once the deadline has passed.
+/// Throws Interrupted once a stop was requested (core/stop_request.h), and
+/// TimedOut (timed_out_message, then " while " + `stage` when given) once
+/// the deadline has passed.
 void check_deadline(const char* stage = nullptr);
 
 }  // namespace lpvid

@@ -6,6 +6,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/stop_request.h"
+
 namespace lpvid {
 
 unsigned default_thread_count() { return std::max(1u, std::thread::hardware_concurrency()); }
@@ -20,7 +22,10 @@ std::size_t worker_count(std::size_t count, unsigned threads) {
 void run_jobs(std::size_t count, unsigned threads, const std::function<void(std::size_t, std::size_t)>& job) {
   const std::size_t workers = worker_count(count, threads);
   if (workers <= 1) {
-    for (std::size_t i = 0; i < count; ++i) job(0, i);
+    for (std::size_t i = 0; i < count; ++i) {
+      check_stop();
+      job(0, i);
+    }
     return;
   }
   std::vector<std::exception_ptr> errors(count);
@@ -28,6 +33,7 @@ void run_jobs(std::size_t count, unsigned threads, const std::function<void(std:
   const auto worker = [&](std::size_t w) {
     for (std::size_t i = next++; i < count; i = next++) {
       try {
+        check_stop();  // a requested stop: no new job starts
         job(w, i);
       } catch (...) {
         errors[i] = std::current_exception();

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "core/deadline.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/limits.h"
@@ -15,6 +16,9 @@
 
 namespace lpvid {
 namespace {
+
+/// Rows read between two looks at the --timeout and a requested stop.
+constexpr long kRowsBetweenChecks = 4096;
 
 bool is_blank_char(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -148,6 +152,7 @@ TextTable csv_rows(const std::vector<Line>& lines, size_t first, std::vector<std
   table.header = std::move(header);
   const size_t width = table.header.size();
   for (size_t k = first; k < lines.size(); ++k) {
+    if (static_cast<long>(k) % kRowsBetweenChecks == 0) check_deadline("a data file was read");  // a big file: --timeout or a stop
     if (is_blank_line(lines[k].text) || (skip_comments && is_comment_line(lines[k].text))) continue;
     std::vector<std::string> cells = split_csv_line(lines[k], name);
     drop_one_trailing_empty(cells, width);
@@ -227,6 +232,7 @@ TextTable parse_whitespace_table(std::string_view text, const std::string& name,
   table.file = name;
   table.header = names;
   for (const Line& line : split_lines(text)) {
+    if (line.number % kRowsBetweenChecks == 0) check_deadline("a data file was read");
     if (is_blank_line(line.text) || is_comment_line(line.text)) continue;
     std::vector<std::string_view> cells = split_whitespace(line.text);
     if (cells.size() != names.size())

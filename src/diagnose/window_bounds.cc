@@ -58,8 +58,8 @@ WindowBounds certify_window(const LpvModel<double>& model, const Experiment<doub
     const Vec<double> xb = model.nx > 0 ? Vec<double>(sim.x.row(begin).transpose()) : Vec<double>();
     w.model = exact_model(model, xb);
     w.bounds = certify_fixed_model(w.model, select_rows(est_q, begin, end), options, solver);
-  } catch (const TimedOut&) {
-    throw;  // the user's --timeout ends the run, not a window or a stage
+  } catch (const RunStopped&) {
+    throw;  // the user's --timeout or a requested stop ends the run, not a window or a stage
   } catch (const std::exception& e) {
     // this window's failure (a diverging free run, z = 0 on its rows, a solver
     // error): not verified, with the reason; the other windows and every
@@ -129,7 +129,7 @@ WindowBounds certify_joint_window(const LpvModel<double>& model, const Experimen
   try {
     const Experiment<Rational> data = joint_data(model, est_d, est_q, pieces, w.model);
     w.bounds = certify_fixed_model(w.model, data, options, solver);
-  } catch (const TimedOut&) {
+  } catch (const RunStopped&) {
     throw;
   } catch (const std::exception& e) {
     w.bounds = CertifiedBounds{};

@@ -65,8 +65,8 @@ WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, cons
                                             long file_row_offset, const CertifyOptions& options, SdpSolver& solver) {
   try {
     return identify_on_window(fitted, est_d, est_q, begin, end, file_row_offset, options, solver);
-  } catch (const TimedOut&) {
-    throw;  // the user's --timeout ends the run, not a window or a stage
+  } catch (const RunStopped&) {
+    throw;  // the user's --timeout or a requested stop ends the run, not a window or a stage
   } catch (const std::exception& e) {
     WindowIdentification failed;
     failed.applicable = true;

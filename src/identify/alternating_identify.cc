@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/deadline.h"
 #include "lmi/delta_form_solve.h"
 #include "lmi/delta_kyp_lmi.h"
 #include "toeplitz/fir.h"
@@ -142,6 +143,7 @@ int descend(const AffineResidual<double>& a, const BoundObjective& inner, const 
   const Mat<double> E = joint_regressors(a);
   int accepted = -1;
   for (int it = 0; it < std::max(1, options.max_iterations); ++it) {
+    check_deadline("the alternating identification was iterating");  // --timeout or a requested stop
     out.iterates.push_back(alternating_iterate(a, p, E, inner, options, solver, out, it));
     const IterateRecord& rec = out.iterates.back();
     if (!has_solution(rec.status)) break;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "certify/class_dual.h"
+#include "core/deadline.h"
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "lmi/delta_form_barrier.h"
@@ -171,6 +172,7 @@ std::string branch_and_bound(const Search& q, const ClassBoundOptions& o, std::v
                              const std::function<void(const std::string&)>& progress) {
   int leaves = 1;
   while (leaves < o.max_leaves) {
+    check_deadline("the class bound was branching");  // the user's --timeout or a requested stop, between leaves
     const int at = lowest_leaf(tree);
     const double low = nearest_double(tree[at].leaf.bound);
     if (o.upper > 0 && low >= (1 - o.stop_rel_gap) * o.upper) break;

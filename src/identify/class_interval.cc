@@ -13,8 +13,8 @@ ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& mode
   options.upper = nearest_double(id.bounds.upper);
   try {
     out.bound = class_lower_bound(model_q, model_d, exp_q, exp_d, id.fixed.value, certify, options);
-  } catch (const TimedOut&) {
-    throw;  // the user's --timeout ends the command
+  } catch (const RunStopped&) {
+    throw;  // the user's --timeout or a requested stop ends the command
   } catch (const std::exception& e) {
     // the found θ and its bounds stand; only the class's lower end is missing
     out.bound.reason = std::string("the class bound failed: ") + e.what();

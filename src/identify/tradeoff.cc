@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/deadline.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "identify/fix_and_certify.h"
@@ -90,6 +91,7 @@ std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, con
   const bool unknowns = has_unknowns(model_d, o.unknowns);
   std::vector<TradeoffPoint> out;
   for (size_t k = 0; k < lambdas.size(); ++k) {
+    check_deadline("the trade-off curve was traced");  // the user's --timeout or a requested stop, between points
     const auto t0 = std::chrono::steady_clock::now();
     TradeoffPoint pt;
     pt.lambda = lambdas[k];

@@ -19,6 +19,10 @@ namespace lpvid {
 
 namespace {
 
+/// The longest wait between two looks at the child: a requested stop kills
+/// it within this time (the CPU budget is judged on CPU time, never on it).
+constexpr double kStopPollSeconds = 0.2;
+
 /// The child's CPU time (user + system, all threads) in seconds; NaN when it
 /// cannot be read.
 double cpu_seconds_of(const clockid_t* clock) {
@@ -49,7 +53,8 @@ int poll_milliseconds(const Heartbeat& h, const WatchdogOptions& o, double cpu_n
   double wait = 1.0;
   if (h.heard && std::isfinite(cpu_now)) wait = std::min(wait, h.budget(o) - (cpu_now - h.at_last));
   wait = std::min(wait, seconds_to_deadline());
-  return static_cast<int>(std::clamp(wait, 0.01, 1.0) * 1000.0);
+  // at most kStopPollSeconds: a requested stop (core/stop_request.h) is seen that soon
+  return static_cast<int>(std::clamp(wait, 0.01, kStopPollSeconds) * 1000.0);
 }
 
 void run_child(const std::function<void(std::FILE* result)>& work, std::FILE* result, int fds[2], pid_t parent) {
@@ -76,7 +81,7 @@ void watch(pid_t pid, int fd, const WatchdogOptions& options, WatchdogOutcome& o
     const int ready = poll(&pfd, 1, poll_milliseconds(beat, options, cpu_seconds_of(cpu_clock)));
     if (ready < 0 && errno == EINTR) continue;
     const double cpu = cpu_seconds_of(cpu_clock);
-    if (deadline_passed()) {
+    if (deadline_passed() || stop_requested()) {  // the caller's check_deadline throws TimedOut or Interrupted
       kill(pid, SIGKILL);
       out.timed_out = true;
       return;

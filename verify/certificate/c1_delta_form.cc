@@ -29,6 +29,7 @@
 #include <utility>
 
 #include "core/number_text.h"
+#include "core/stop_request.h"
 #include "verify/certificate/c1_check.h"
 #include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
@@ -81,6 +82,7 @@ Mat<Rational> schur_complement(const Mat<Rational>& taps, Eigen::Index L, Eigen:
   Mpq g;
   for (Eigen::Index a = 0; a < L; ++a)
     for (Eigen::Index c = a; c < std::min(L, a + K); ++c) {
+      if (c == a) check_stop();  // a requested stop, once a block row
       // T Tᵀ block (a, c) = Σ_b Δ_{a−b} Δ_{c−b}ᵀ over b ≤ a with c − b < K;
       // TᵀT block (a, c) = Σ_r Δ_{r−a}ᵀ Δ_{r−c} over r ≥ c with r − a < K.
       for (Eigen::Index p = 0; p < m; ++p)

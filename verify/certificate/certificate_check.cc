@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "core/sha256.h"
+#include "core/stop_request.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "model/simulate.h"
@@ -340,6 +341,9 @@ int run_certificate_command(const std::string& path, std::ostream& out, std::ost
     out << "invalid: " << v.reason << "\n";
     if (!v.details.empty()) out << v.details << "\n";
     return kExitInvalidated;  // the claim does not hold
+  } catch (const Interrupted&) {
+    err << "lpvid-verify: interrupted\n";  // a requested stop (core/stop_request.h): nothing checked
+    return kExitInterrupted;
   } catch (const InputError& e) {
     err << "lpvid-verify: " << e.what() << "\n";
     return kExitBadInput;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/gmp_raii.h"
+#include "core/stop_request.h"
 
 namespace lpvid {
 
@@ -36,6 +37,7 @@ Mat<Rational> column_gram(const Mat<Rational>& T) {
   Mpq g;
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = i; j < n; ++j) {
+      if (j == i) check_stop();  // a requested stop, once a row
       const std::size_t ii = static_cast<std::size_t>(i), jj = static_cast<std::size_t>(j);
       mpz_set_ui(dot.z, 0);
       for (Eigen::Index k = std::max(first[ii], first[jj]); k < rows; ++k)

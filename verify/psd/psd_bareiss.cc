@@ -12,6 +12,7 @@
 
 #include "core/number_text.h"
 #include "core/parallel_for.h"
+#include "core/stop_request.h"
 #include "verify/psd/psd_internal.h"
 
 namespace lpvid {
@@ -76,6 +77,7 @@ class Bareiss {
 
   PsdResult run(const Mat<Rational>& M) {
     for (std::size_t k = 0; k < n_; ++k) {
+      check_stop();  // a requested stop, between pivots
       // 1. Negative Schur diagonal (smallest original index) ⇒ NOT_PSD.
       std::size_t neg = n_, pos = n_;
       for (std::size_t i = k; i < n_; ++i) {

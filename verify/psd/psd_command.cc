@@ -8,9 +8,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/exit_codes.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "core/stop_request.h"
 #include "verify/psd/exact_psd.h"
 #include "verify/psd/rational_matrix_io.h"
 #include "verify/psd/work_limits.h"
@@ -84,6 +86,9 @@ int run_psd_command(const std::string& path, std::ostream& out, std::ostream& er
                     const PsdCommandOptions& options) {
   try {
     return decide_and_print(path, out, options);
+  } catch (const Interrupted&) {
+    err << "lpvid-verify psd: interrupted\n";  // a requested stop (core/stop_request.h): nothing decided
+    return kExitInterrupted;
   } catch (const InputError& e) {
     err << "lpvid-verify psd: error: " << e.what() << '\n';
   } catch (const IoError& e) {

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "core/parallel_for.h"
+#include "core/stop_request.h"
 #include "verify/psd/psd_internal.h"
 #include "verify/psd/psd_modular_arith.h"
 
@@ -108,6 +109,7 @@ bool eliminate_leading_mod(std::vector<Word>& a, std::size_t m, std::size_t K, W
   piv.assign(K, 0);
   inv.assign(K, 0);
   for (std::size_t k = 0; k < K; ++k) {
+    check_stop();  // a requested stop, between pivots
     if (a[k * m + k] == 0 || !inv_mod(a[k * m + k], p, &inv[k])) return false;
     piv[k] = a[k * m + k];
     modular_step(a.data(), m, k, inv[k], p);
@@ -132,6 +134,7 @@ void choose_pivots_mod(const IntegerMatrix& A, Word p, std::vector<long>* perm, 
   ints.fill(leading_rows(n), p, a);
   auto at = [&](std::size_t i, std::size_t j) -> Word& { return a[i * n + j]; };
   for (std::size_t k = 0; k < n; ++k) {
+    check_stop();
     std::size_t pos = n;
     for (std::size_t i = k; i < n; ++i)
       if (at(i, i) != 0 && (pos == n || (*perm)[i] < (*perm)[pos])) pos = i;

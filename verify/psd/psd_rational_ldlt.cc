@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/number_text.h"
+#include "core/stop_request.h"
 #include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
 
@@ -34,6 +35,7 @@ class RationalLdlt {
   /// positive one. All n pivots positive ⇒ PD.
   PsdResult run() {
     for (std::size_t k = 0;; ++k) {
+      check_stop();  // a requested stop, between pivots
       if (rem_.empty()) {
         PsdResult r = step_result(k);
         r.verdict = PsdVerdict::kPositiveDefinite;
