@@ -9,13 +9,12 @@ plot tables) into the result, and removes the private folder. Exit codes 0
 and 1 are answers; any other code raises LpvidError with lpvid's message.
 """
 
-import csv
 import os
 
 import numpy as np
 
 from ._errors import EXIT_CODES, LpvidError
-from ._files import number_text, read_json, write_data, write_model
+from ._files import number_text, read_json, read_table, write_data, write_model
 from ._inputs import as_names, data_files, generic_names, generic_table, is_names, write_table
 from ._options import check, command_options, option_words
 from ._run import error_message, run_captured
@@ -106,23 +105,6 @@ def _plots(folder):
     except ImportError:
         return {}
     return read_plots(folder)
-
-
-def read_table(path):
-    """A CSV file as {column: numpy array} (numbers as floats; text kept)."""
-    with open(path, newline="", encoding="utf-8") as f:
-        rows = list(csv.reader(f))
-    if not rows:
-        return {}
-    header, body = rows[0], rows[1:]
-    table = {}
-    for j, name in enumerate(header):
-        cells = [r[j] if j < len(r) else "" for r in body]
-        try:
-            table[name] = np.array([float(c) for c in cells])
-        except ValueError:
-            table[name] = np.array(cells, dtype=object)
-    return table
 
 
 def _model_file(folder, model, name="model.json"):

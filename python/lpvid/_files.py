@@ -6,6 +6,7 @@ stays beside the certificates, with text that reads back as exactly the
 same double (the shortest round-trip form, Python's repr).
 """
 
+import csv
 import json
 import math
 import numbers
@@ -134,3 +135,22 @@ def write_data(path, model, u, y, rho):
         f.write("\n".join(lines) + "\n")
     os.replace(tmp, path)
     return n or 0
+
+
+def read_table(path):
+    """A CSV file as {column: array}: numbers as float arrays (an empty
+    cell: NaN), any other column as an array of str."""
+    import numpy as np
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        return {}
+    header, body = rows[0], rows[1:]
+    table = {}
+    for j, name in enumerate(header):
+        cells = [r[j] if j < len(r) else "" for r in body]
+        try:
+            table[name] = np.array([float(c) if c != "" else np.nan for c in cells], dtype=float)
+        except ValueError:
+            table[name] = np.array(cells, dtype=str)
+    return table

@@ -16,7 +16,6 @@ be deleted afterwards. matplotlib is imported only by figure(): this module
 and ``import lpvid`` work without it (Debian: python3-matplotlib).
 """
 
-import csv
 import json
 import os
 import warnings
@@ -24,6 +23,8 @@ from dataclasses import dataclass, field
 from typing import Dict, List, Optional
 
 import numpy as np
+
+from ._files import read_table
 
 SIDECAR_SUFFIX = ".plot.json"
 FORMAT = "lpvid-plot"
@@ -131,21 +132,8 @@ def _panel(js, xs, where):
 
 
 def _csv_table(path):
-    """The CSV's columns: numbers as float arrays (an empty cell: NaN),
-    any other column as an array of str."""
-    with open(path, newline="", encoding="utf-8") as f:
-        rows = list(csv.reader(f))
-    if not rows:
-        return {}
-    header, body = rows[0], rows[1:]
-    table = {}
-    for j, name in enumerate(header):
-        cells = [r[j] if j < len(r) else "" for r in body]
-        try:
-            table[name] = np.array([float(c) if c != "" else np.nan for c in cells], dtype=float)
-        except ValueError:
-            table[name] = np.array(cells, dtype=str)
-    return table
+    """The CSV's columns (lpvid._files.read_table)."""
+    return read_table(path)
 
 
 def read_plot(path):

@@ -460,6 +460,7 @@ class BarrierRun {
       x_(nt_) = 2.0 * norm2 + 1e-9 * (1.0 + norm2);
       mu_ = p_.ct * x_(nt_) / Ly_;
       for (int it = 0; it < 60 && !evaluate(p_, x_, mu_).interior; ++it) {
+        check_deadline("the structured barrier was starting");  // a stop request or --timeout: one factorisation late at most
         x_(nt_) *= 2.0;
         mu_ = p_.ct * x_(nt_) / Ly_;
       }
@@ -549,6 +550,7 @@ class BarrierRun {
   /// decides the step).
   std::string newton_direction(Vecd& dx, double& dec2) {
     derivatives(p_, pt_, mu_, grid_, g_, H_, P_, Q_, R_);
+    check_deadline("the structured barrier was solving");  // the derivatives take seconds on long records
     bool solved = false;
     const double scale_h = std::max(H_.diagonal().cwiseAbs().maxCoeff(), 1e-300);
     for (int shift = 0; shift < 8 && !solved; ++shift) {
@@ -575,6 +577,7 @@ class BarrierRun {
     double alpha = p_.nz > 1 ? std::min(1.0, options_.damping / (1.0 + lambda)) : 1.0;
     Point trial;
     for (int ls = 0; ls < 60; ++ls, alpha *= 0.5) {
+      check_deadline("the structured barrier was solving");  // each trial is one factorisation of the horizon
       trial = evaluate(p_, x_ + alpha * dx, mu_);
       if (trial.interior && (dec2 < 1e-6 || trial.value - pt_.value <= -0.25 * alpha * dec2)) break;
     }
@@ -596,6 +599,7 @@ class BarrierRun {
     pt_ = evaluate(p_, x_, mu_);
     double beta = 1.0;
     for (int k = 0; k < 12 && step.size() == p_.dim(); ++k, beta *= 0.5) {
+      check_deadline("the structured barrier was solving");
       Point trial = evaluate(p_, x_ + beta * step, mu_);
       if (trial.interior && trial.value < pt_.value) {
         x_ += beta * step;

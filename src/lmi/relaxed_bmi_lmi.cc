@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lmi/noise_block.h"
+#include "core/deadline.h"
 #include "core/rms.h"
 #include "core/input_error.h"
 #include "lmi/delta_form_lmi.h"
@@ -84,7 +85,8 @@ void add_c1_block(Layout& f, const AffineSignals& sig, const Mat<double>& zbar, 
   }
   const double kz = f.sigma_z / f.sigma_r;
   const double t_fixed = obj.delta * obj.delta * kz * kz;
-  for (Eigen::Index a = 0; a < f.L; ++a)
+  for (Eigen::Index a = 0; a < f.L; ++a) {
+    check_deadline("the relaxed program was built");  // O(L^2) entries: a stop request is seen once per row
     for (Eigen::Index i = 0; i < f.ny; ++i) {
       const int row = static_cast<int>(f.L + a * f.ny + i);
       if (f.t >= 0)
@@ -94,6 +96,7 @@ void add_c1_block(Layout& f, const AffineSignals& sig, const Mat<double>& zbar, 
       for (Eigen::Index b = 0; b <= a; ++b)
         p.add_entry(A, static_cast<int>(f.w0 + (a - b) * f.ny + i), static_cast<int>(b), row, 1.0);
     }
+  }
 }
 
 Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObjective& obj) {

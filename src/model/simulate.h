@@ -28,6 +28,7 @@
 
 #include "core/input_error.h"
 #include "core/scalar.h"
+#include "core/stop_request.h"
 #include "data/experiment.h"
 #include "model/lpv_model.h"
 #include "model/monomial.h"
@@ -261,6 +262,7 @@ Simulation<T> simulate_one_record(const LpvModel<T>& model, const Experiment<T>&
   const Mat<T> u_model = model.statics.model_input(exp.u);  // u' = g_in(u_{k−d})
   Vec<T> x = model.x0.size() == 0 ? Vec<T>(Vec<T>::Zero(model.nx)) : model.x0;
   for (Eigen::Index k = 0; k < n; ++k) {
+    if ((k & 255) == 0) check_stop();  // an exact simulation of a long record takes seconds: a stop is seen within 256 rows
     Vec<T> rho = detail::rho_at(exp.rho, k);
     for (const StateScheduled<T>& f : own) {
       rho(f.j) = state_function_value(f.function, T(x(f.i)), f.shift);

@@ -26,13 +26,16 @@ std::string matrix_label(const LmiProgram& p, int var) {
 
 void check_entry(const LmiProgram& p, int b, int var, int i, int j, double value, bool require_upper) {
   const LmiBlock& blk = p.blocks[static_cast<std::size_t>(b)];
+  const bool outside = i < 0 || j < 0 || i >= blk.size || j >= blk.size;
+  const bool lower = require_upper && i > j;
+  const bool off_diagonal = blk.diagonal && i != j;
+  if (!outside && !lower && !off_diagonal && std::isfinite(value)) return;  // the message is built only for a bad entry
   std::ostringstream where;
   where << block_label(p, b) << ", " << matrix_label(p, var) << ", entry (" << i << ", " << j << ") = " << value;
-  if (i < 0 || j < 0 || i >= blk.size || j >= blk.size)
-    fail(where.str() + ": index outside the block of size " + std::to_string(blk.size));
-  if (require_upper && i > j) fail(where.str() + ": stored entries need i <= j");
-  if (blk.diagonal && i != j) fail(where.str() + ": off-diagonal entry in a diagonal block");
-  if (!std::isfinite(value)) fail(where.str() + ": value is not finite");
+  if (outside) fail(where.str() + ": index outside the block of size " + std::to_string(blk.size));
+  if (lower) fail(where.str() + ": stored entries need i <= j");
+  if (off_diagonal) fail(where.str() + ": off-diagonal entry in a diagonal block");
+  fail(where.str() + ": value is not finite");
 }
 
 }  // namespace
