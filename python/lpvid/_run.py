@@ -19,6 +19,7 @@ import codecs
 import contextlib
 import logging
 import os
+import signal
 import sys
 import threading
 
@@ -128,25 +129,33 @@ def _clear_stop():
 
 def _run_in_worker(run, args):
     """run(args) in a worker thread; the calling thread stays responsive to
-    KeyboardInterrupt, which stops the run and is raised again."""
+    KeyboardInterrupt, which stops the run and is raised again once the run
+    has returned. The wait is on an Event, not Thread.join: a join that a
+    KeyboardInterrupt interrupts can mark a running thread as stopped
+    (CPython gh-90882), and the run would go on after the call returned."""
     box = {}
+    done = threading.Event()
 
     def work():
         try:
+            # Ctrl-C belongs to the calling thread: blocked here (and so in every
+            # thread the run starts), it cannot interrupt a system call of the run.
+            signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
             box["code"] = run(args)
         except BaseException as e:  # noqa: BLE001 - handed to the caller
             box["error"] = e
+        finally:
+            done.set()
 
-    worker = threading.Thread(target=work, name="lpvid-run", daemon=True)
-    worker.start()
+    threading.Thread(target=work, name="lpvid-run", daemon=True).start()
     try:
-        while worker.is_alive():
-            worker.join(0.05)
+        while not done.wait(0.05):
+            pass
     except KeyboardInterrupt:
         _stop_requested_run()
-        while worker.is_alive():  # a second Ctrl-C does not abandon the run half-stopped
+        while not done.is_set():  # a second Ctrl-C does not abandon the run half-stopped
             with contextlib.suppress(KeyboardInterrupt):
-                worker.join(0.05)
+                done.wait(0.05)
         _clear_stop()
         raise
     if "error" in box:
