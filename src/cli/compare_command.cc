@@ -5,6 +5,7 @@
 // the data's in memory (cli/compare_columns.h).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -286,7 +287,7 @@ void write_record_files(const CompareArgs& a, const std::vector<ComparedModel>& 
               << ", scored, and per output: measured, model, residual)\n";
     report["series"] = a.out;
   }
-  const std::string plotted = plot_compare(a.plot, rows, series, "lpvid compare on " + c0.file + " (" + prediction_text(a, c0.model) + ")");
+  const std::string plotted = plot_compare(a.plot, rows, series, "lpvid compare on " + std::filesystem::path(c0.file).filename().string() + " (" + prediction_text(a, c0.model) + ")");
   if (!plotted.empty()) {
     std::cout << "  plot        " << plotted << "\n";
     report["plot"] = plotted.rfind("no plot", 0) == 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(a.plot);
