@@ -127,7 +127,8 @@ int run_diagnose(DiagnoseArgs& a) {
   check_output_file(a.model_out, "model");
   check_output_directory(a.plots_dir, "plots");
   const auto started = std::chrono::steady_clock::now();
-  const auto progress = [started](const std::string& status) {
+  const auto progress = [started, quiet = a.common.quiet](const std::string& status) {
+    if (quiet) return;  // --quiet: no progress lines (errors and the report are still printed)
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     std::fprintf(stderr, "[diagnose %6.1f s] %s\n", s, status.c_str());
   };

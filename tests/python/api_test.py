@@ -142,8 +142,10 @@ class Api(unittest.TestCase):
     def test_diagnose_with_test_arrays_finds_the_offset(self):
         g = lpvid.generate("effect-case", effect="output_offset", n=200)
         d, v = g.data, g.validation
+        lines = []
         r = lpvid.diagnose(d["u1"], d["y1"], d["rho1"], g.model, test=(v["u1"], v["y1"], v["rho1"]),
-                           max_effects=1, quiet=True)
+                           max_effects=1, quiet=True, progress=lines.append)
+        self.assertFalse([ln for ln in lines if ln.startswith("[diagnose")], "quiet=True: no progress lines")
         self.assertIsInstance(r.model, lpvid.Model)
         self.assertLess(r.rms_after, 0.5 * r.rms_before)
         self.assertTrue(r.certificates)
