@@ -11,6 +11,7 @@ the verifier's exact arithmetic (lpvid-verify, in this process).
 import dataclasses
 import json
 import os
+import re
 from fractions import Fraction
 from typing import Optional
 
@@ -26,6 +27,15 @@ def _data_entries(document):
         return [e for e in document["records"] if isinstance(e, dict)]
     data = document.get("data")
     return [data] if isinstance(data, dict) else []
+
+
+def _rewrite_file_references(text, renamed):
+    """The certificate's text with the values of its "file" keys replaced
+    as `renamed` says, and nothing else touched."""
+    def replace(m):
+        ref = json.loads(m.group(2))
+        return m.group(1) + json.dumps(renamed.get(ref, ref), ensure_ascii=False)
+    return re.sub(r'("file"\s*:\s*)("(?:[^"\\]|\\.)*")', replace, text)
 
 
 def _exact(text):
@@ -125,35 +135,32 @@ class Certificate(os.PathLike):
 
     def save(self, path):
         """Writes the certificate to `path` and its data file(s) beside it
-        (by their base names; the references are rewritten to those names,
-        which changes no checked number: a data file is identified by its
-        SHA-256). Returns the path; the Certificate then refers to it."""
+        (by their base names). Only the "file" references change, in the text
+        itself: every number keeps its exact text (a JSON round trip through
+        floats could change a certified number), and a data file is identified
+        by its SHA-256. Returns the path; the Certificate then refers to it."""
         path = os.path.abspath(os.fspath(path))
         folder = os.path.dirname(path)
         os.makedirs(folder, exist_ok=True)
-        document = json.loads(self.text)
-        entries = _data_entries(document)
-        used, files = set(), {}
-        for k, entry in enumerate(entries):
+        renamed, files = {}, {}
+        for k, entry in enumerate(_data_entries(self.document)):
             ref = entry.get("file")
             if ref not in self.files:
                 raise LpvidError(2, f"certificate: the bytes of its data file {ref!r} are not held; load it "
                                     "from a folder that has the file")
             name = os.path.basename(ref)
-            if name in used and files.get(name) != self.files[ref]:
+            if name in files and files[name] != self.files[ref]:
                 stem, ext = os.path.splitext(name)
                 name = f"{stem}.{k + 1}{ext}"
-            used.add(name)
-            files[name] = self.files[ref]
-            entry["file"] = name
+            renamed[ref], files[name] = name, self.files[ref]
         for name, data in files.items():
             with open(os.path.join(folder, name), "wb") as f:
                 f.write(data)
-        text = self.text if not entries else json.dumps(document, indent=2) + "\n"
+        text = _rewrite_file_references(self.text, renamed)
         with open(path, "w", encoding="utf-8") as f:
             f.write(text)
-        self.text, self.document, self.path = text, document, path
-        self.files = {name: files[name] for name in files}
+        self.text, self.document, self.path = text, json.loads(text), path
+        self.files = files
         return path
 
     def verify(self, data=None, **options):

@@ -115,6 +115,15 @@ class Api(unittest.TestCase):
         self.assertTrue(os.path.isfile(os.path.join(SCRATCH, "saved", "data.csv")))
         self.assertTrue(lpvid.Certificate.load(path).verify())
         self.assertTrue(lpvid.verify(path))
+        # saving changes the data reference only: every number keeps its exact text
+        crafted = lpvid.Certificate('{"format": "lpvid-certificate/1", "data": {"file": "sub/d.csv", '
+                                    '"sha256": "00"}, "dmax2": 0.10000000000000001}', {"sub/d.csv": b"u,y\n"})
+        crafted.save(os.path.join(SCRATCH, "crafted", "c.json"))
+        with open(os.path.join(SCRATCH, "crafted", "c.json")) as f:
+            self.assertEqual(f.read(), '{"format": "lpvid-certificate/1", "data": {"file": "d.csv", '
+                                       '"sha256": "00"}, "dmax2": 0.10000000000000001}')
+        with open(os.path.join(SCRATCH, "crafted", "d.csv"), "rb") as f:
+            self.assertEqual(f.read(), b"u,y\n")
         # the same certificate claiming d_max = 0.1, far below the RMS of the error: false
         text, n = re.subn(r'"dmax2": [^,\n]+', '"dmax2": "1/100"', cert.text)
         self.assertEqual(n, 1)
