@@ -11,11 +11,10 @@ records=[{"u":.., "y":.., "rho":..}, (u, y, rho), ...] gives several records
 of one system under one Delta (one file each).
 """
 
-import numbers
 import os
 
 from ._errors import LpvidError
-from ._files import model_columns, number_text, write_data
+from ._files import number_text, write_data
 
 
 def _is_frame(x):
@@ -134,11 +133,3 @@ def is_names(x):
 
 def as_names(x):
     return [x] if isinstance(x, str) else list(x)
-
-
-def model_column_names(model_doc):
-    return model_columns(model_doc)
-
-
-def is_number(x):
-    return isinstance(x, numbers.Number) and not isinstance(x, bool)

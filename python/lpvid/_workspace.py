@@ -33,9 +33,3 @@ def workspace(command, out_dir=None):
 def read_bytes(path):
     with open(path, "rb") as f:
         return f.read()
-
-
-def remove_if_present(*paths):
-    for p in paths:
-        if p and os.path.isfile(p):
-            os.remove(p)
