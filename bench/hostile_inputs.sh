@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Times hostile and mistaken inputs against the built binaries and prints a
 # table: case, exit code, wall seconds, first line of the message. Every case
-# must end within 10 s with its documented exit code (README "Exit codes").
+# must end within 10 s with its documented exit code (docs/exit_codes.md).
 #   bash bench/hostile_inputs.sh [build-dir]      (default: build)
 set -uo pipefail
 cd "$(dirname "$0")/.."

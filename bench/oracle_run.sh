@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times `lpvid oracle` on N random cases against the README's ten-line outside
+# Times `lpvid oracle` on N random cases against docs/oracle.md's ten-line outside
 # implementation (examples/oracle/my_impl.py, which itself runs lpvid), and
 # prints the oracle's table and the wall time. Target (lpvid as the
 # oracle): 100 SISO cases with n <= 200 within 5 minutes on 2 cores.

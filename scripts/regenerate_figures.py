@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerates the measured result figures of README.md and bench/README.md
+"""Regenerates the measured result figures of README.md, docs/benchmarks.md, docs/oracle.md and bench/README.md
 and prints each beside the documented one.
 
     python3 scripts/regenerate_figures.py --list              # the runs and what they measure
@@ -7,7 +7,7 @@ and prints each beside the documented one.
     python3 scripts/regenerate_figures.py --max-cost medium   # every cheap and medium run
     python3 scripts/regenerate_figures.py                     # everything (about an hour on 2 cores)
 
-Each run is one command (the README's or bench/README's own, from the
+Each run is one command (the documented one, from the
 repository root, with the build in build/); each figure is extracted from
 that run's output or report and compared with the documented value within a
 stated tolerance:
@@ -106,10 +106,10 @@ RUNS = [
         "cmd": "build/lpvid fit-linear --data " + TANKS + " --u uEst --y yEst --rows 0:716 "
                "--validation-rows 716:1024 --order auto --offset --out $TMP/tanks_linear.json",
         "figures": [
-            F("order chosen", rx(r"^\s+(\d+)\s+\S+\s+\S+\s+<- chosen", cast=int), 2, 0, "README Measured data"),
-            F("rms_estimation (order 2)", rx(r"^\s+2\s+(\S+)\s+\S+"), 0.4562, 1e-4, "README Measured data"),
-            F("rms on rows 716:1024 (order 2)", rx(r"^\s+2\s+\S+\s+(\S+)"), 0.7870, 1e-4, "README Measured data"),
-            F("order 5 score on 716:1024", rx(r"^\s+5\s+\S+\s+(\S+)"), 1.253, 1e-3, "README Measured data"),
+            F("order chosen", rx(r"^\s+(\d+)\s+\S+\s+\S+\s+<- chosen", cast=int), 2, 0, "docs/benchmarks.md Linear starts and diagnoses"),
+            F("rms_estimation (order 2)", rx(r"^\s+2\s+(\S+)\s+\S+"), 0.4562, 1e-4, "docs/benchmarks.md Linear starts and diagnoses"),
+            F("rms on rows 716:1024 (order 2)", rx(r"^\s+2\s+\S+\s+(\S+)"), 0.7870, 1e-4, "docs/benchmarks.md Linear starts and diagnoses"),
+            F("order 5 score on 716:1024", rx(r"^\s+5\s+\S+\s+(\S+)"), 1.253, 1e-3, "docs/benchmarks.md Linear starts and diagnoses"),
         ],
     },
     {
@@ -117,9 +117,9 @@ RUNS = [
         "cmd": "build/lpvid fit-linear --data " + DRYER + " --names u,y --rows 0:500 --validation-rows 500:1000 "
                "--order auto --offset --out $TMP/dryer_linear.json",
         "figures": [
-            F("order chosen", rx(r"^\s+(\d+)\s+\S+\s+\S+\s+<- chosen", cast=int), 3, 0, "README Measured data"),
-            F("rms_estimation (order 3)", rx(r"^\s+3\s+(\S+)\s+\S+"), 0.0909, 1e-4, "README Measured data"),
-            F("rms_validation (order 3)", rx(r"^\s+3\s+\S+\s+(\S+)"), 0.1184, 1e-4, "README Measured data"),
+            F("order chosen", rx(r"^\s+(\d+)\s+\S+\s+\S+\s+<- chosen", cast=int), 3, 0, "docs/benchmarks.md Linear starts and diagnoses"),
+            F("rms_estimation (order 3)", rx(r"^\s+3\s+(\S+)\s+\S+"), 0.0909, 1e-4, "docs/benchmarks.md Linear starts and diagnoses"),
+            F("rms_validation (order 3)", rx(r"^\s+3\s+\S+\s+(\S+)"), 0.1184, 1e-4, "docs/benchmarks.md Linear starts and diagnoses"),
         ],
     },
     {
@@ -127,11 +127,11 @@ RUNS = [
         "cmd": "LPVID_DATA=/nonexistent bash scripts/demo.sh",
         "figures": [
             F("effect chosen first", js(GEN_REPORT, "effects", 0, "kind"), "output_polynomial", None,
-              "README What the demo shows"),
-            F("test RMS before", js(GEN_REPORT, "test", "rms_before"), 7.88, 0.01, "README What the demo shows"),
-            F("test RMS after", js(GEN_REPORT, "test", "rms_after"), 0.0208, 1e-4, "README What the demo shows"),
+              "docs/benchmarks.md The cascaded tanks demo"),
+            F("test RMS before", js(GEN_REPORT, "test", "rms_before"), 7.88, 0.01, "docs/benchmarks.md The cascaded tanks demo"),
+            F("test RMS after", js(GEN_REPORT, "test", "rms_after"), 0.0208, 1e-4, "docs/benchmarks.md The cascaded tanks demo"),
             F("'after' certificates consistent", rx(r"(\d+) of \d+ after checks consistent", cast=int), 2, 0,
-              "README What the demo shows"),
+              "docs/benchmarks.md The cascaded tanks demo"),
             F("time", wall, 0, "timing", "not documented"),
         ],
         # the demo prints one line per certificate; count the consistent ones
@@ -147,20 +147,20 @@ RUNS = [
               "state_nonlinearity hinge of the upstream level x1 (feeds x2), states in cascade form: "
               "e*max(x - c, 0) (overflow at level c); basis_term uEst^2 in C, D (scheduled on the measured input "
               "uEst); output_piecewise_linear (6 knots)", None,
-              "README What the demo shows"),
-            F("test RMS before [V]", js(TANKS_REPORT, "test", "rms_before"), 0.6936, 1e-4, "README table"),
-            F("test fit % before", js(TANKS_REPORT, "test", "fit_percent_before"), 67.3, 0.1, "README table"),
-            F("test RMS after [V]", js(TANKS_REPORT, "test", "rms_after"), 0.4195, 1e-4, "README table"),
-            F("test fit % after", js(TANKS_REPORT, "test", "fit_percent_after"), 80.2, 0.1, "README table"),
+              "docs/benchmarks.md The cascaded tanks demo"),
+            F("test RMS before [V]", js(TANKS_REPORT, "test", "rms_before"), 0.6936, 1e-4, "docs/benchmarks.md tanks table"),
+            F("test fit % before", js(TANKS_REPORT, "test", "fit_percent_before"), 67.3, 0.1, "docs/benchmarks.md tanks table"),
+            F("test RMS after [V]", js(TANKS_REPORT, "test", "rms_after"), 0.4195, 1e-4, "docs/benchmarks.md tanks table"),
+            F("test fit % after", js(TANKS_REPORT, "test", "fit_percent_after"), 80.2, 0.1, "docs/benchmarks.md tanks table"),
             F("held-out RMS before (4 folds)", rx(r"held-out RMS per fold: before ([\d.]+)"), 1.13, 0.01,
-              "README table (fold 1)"),
+              "docs/benchmarks.md tanks table (fold 1)"),
             F("held-out RMS after (pooled)", js(TANKS_REPORT, "after", "rms_validation"), 0.5058, 1e-4,
-              "README table"),
+              "docs/benchmarks.md tanks table"),
             F("round 1: store cascade's rank", rx(r"^\s+(\d+)\s+state_nonlinearity\s+\S+.*store cascade", cast=int),
-              15, 0, "README What the demo shows"),
+              15, 0, "docs/benchmarks.md The cascaded tanks demo"),
             F("window bounds not verified (of 10)", rx(r"^(\d+) window bounds NOT verified", cast=int), 0, 0,
-              "README What the demo shows"),
-            F("time", wall, 0, "timing", "README (the whole demo 15 min 34 s on a loaded machine)"),
+              "docs/benchmarks.md The cascaded tanks demo"),
+            F("time", wall, 0, "timing", "docs/benchmarks.md (the whole demo 15 min 34 s on a loaded machine)"),
         ],
         # diagnose's progress (merged into the output) names each window bound it could not verify
         "post": lambda out: out + "\n%d window bounds NOT verified\n" % len(
@@ -173,9 +173,9 @@ RUNS = [
                "build/lpvid diagnose --data " + DRYER + " --names u,y --rows 0:500 --model $TMP/dryer_linear.json "
                "--validation " + DRYER + " --validation-names u,y --validation-rows 500:1000 --report $TMP/dryer.json",
         "figures": [
-            F("effects chosen", js("$TMP/dryer.json", effect_labels), "input_delay...", None, "README Measured data"),
+            F("effects chosen", js("$TMP/dryer.json", effect_labels), "input_delay...", None, "docs/benchmarks.md Linear starts and diagnoses"),
             F("validation RMS after", js("$TMP/dryer.json", "after", "rms_validation"), 0.0692, 1e-4,
-              "README Measured data"),
+              "docs/benchmarks.md Linear starts and diagnoses"),
         ],
     },
     {
@@ -209,8 +209,8 @@ RUNS = [
         "name": "oracle", "cost": "medium", "data": False,
         "cmd": "bash bench/oracle_run.sh build 100 --siso --max-n 200",
         "figures": [
-            F("cases confirmed", rx(r"(\d+)\s+confirmed", cast=int), 100, 0, "README oracle"),
-            F("time", wall, 66.5, "timing", "README oracle (66.5 s)"),
+            F("cases confirmed", rx(r"(\d+)\s+confirmed", cast=int), 100, 0, "docs/oracle.md Measured"),
+            F("time", wall, 66.5, "timing", "docs/oracle.md Measured (66.5 s)"),
         ],
     },
     {
