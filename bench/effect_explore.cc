@@ -1,6 +1,6 @@
 // effect_explore: which effect does the linear model miss on real data
 // (cascaded tanks, dryer)? Fits the linear starting model (fit/linear_fit.h)
-// on the estimation data, adds each candidate effect of SPEC §6/§8 (and chosen
+// on the estimation data, adds each candidate effect of docs/design.md §9.2 (and chosen
 // combinations) around it (explore/block_model.h), fits on estimation data
 // only and prints the free-run RMS on estimation and validation data:
 //   "A,B fixed": the denominator a and B of the linear fit stay, D, x0, c and

@@ -1,4 +1,4 @@
-// lpvid-verify: the exact verifier's command line (SPEC §7, §8), as a function
+// lpvid-verify: the exact verifier's command line (docs/design.md §10, §11), as a function
 // (verify_command_line.h); verify_main.cc is the program.
 //
 //   lpvid-verify psd M.txt [--exact-only] [--threads N]

@@ -1,6 +1,6 @@
 #pragma once
 /// The linear starting model (observer_form.h) with the candidate effects of
-/// SPEC §6/§8 around it, simulated in free run and fitted by output error.
+/// docs/design.md §9.2 around it, simulated in free run and fitted by output error.
 /// This is the evidence engine of bench/effect_explore.cc:
 /// which effect, added to the linear model, lowers the validation error.
 ///
@@ -13,7 +13,7 @@
 ///                                                    x_{k+1} = A x_k + Σ_r B_r φ_{k,r}, i.e. B(ρ)
 ///                                                    polynomial in ρ = u' (basis_term in B)
 ///   x_{k+1} = A x_k + B φ_k,  ℓ_k = C x_k + D φ_k      linear part (observer form)
-///   ŷ_k  = ℓ_k + (ρ_k − ρ̄)(C₁ x_k + D₁ u'_k)         LPV output term (SPEC §2 eq. 10
+///   ŷ_k  = ℓ_k + (ρ_k − ρ̄)(C₁ x_k + D₁ u'_k)         LPV output term (docs/design.md §5 eq. 10
 ///                                                    with f(ρ) = ρ − ρ̄: basis_term in C, D)
 ///   y_k  = g_out(ŷ_k) + c                            static output block + offset:
 ///            ŷ + Σ_{q=2..Q} β_q (ŷ − ȳ)^q             output_polynomial

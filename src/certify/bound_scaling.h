@@ -2,7 +2,7 @@
 /// Signals scaled to unit size before the bound search (docs/bound_scaling.md
 /// has the derivation).
 ///
-/// Theorem 2.1 in the Δ form (paper eq. 4–7 with G11 = 0, SPEC §4; lmi/
+/// Theorem 2.1 in the Δ form (paper eq. 4–7 with G11 = 0, docs/design.md §7; lmi/
 /// delta_form_lmi.h) sees the data only through z (the uncertainty channel's
 /// input) and r = y − ŷ − Φ. Divide y (with ŷ, Φ: every output-side
 /// quantity, so r by the same) by s_y = 10^b, the power of ten nearest the

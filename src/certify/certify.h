@@ -1,5 +1,5 @@
 #pragma once
-/// From a floating answer to an exactly verified certificate (SPEC §7).
+/// From a floating answer to an exactly verified certificate (docs/design.md §10.3).
 ///
 /// The model is FIXED here (θ, φ, x0 already rounded to short rationals and
 /// folded in). Then:

@@ -1,5 +1,5 @@
 #pragma once
-/// The lpvid subcommands (SPEC §8). Each registers itself on the app and
+/// The lpvid subcommands (docs/design.md §11.2). Each registers itself on the app and
 /// returns a runner; main() dispatches to the one that was parsed.
 
 #include <functional>

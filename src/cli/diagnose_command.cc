@@ -1,5 +1,5 @@
 // lpvid diagnose: residual → missing effect → better model, before/after
-// (SPEC §6, §8). See src/diagnose/effect_ranking.h for the method.
+// (docs/design.md §9, §11). See src/diagnose/effect_ranking.h for the method.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -60,10 +60,10 @@ struct DiagnoseArgs {
   int threads = static_cast<int>(default_thread_count());
   int folds = RankingOptions{}.folds;
   int warmup = -1;            ///< --warmup (test part and folds); -1: from --benchmark or the default
-  std::string benchmark;      ///< --benchmark: sets the warm-up of SPEC §6
+  std::string benchmark;      ///< --benchmark: sets the warm-up of docs/design.md §9.5
 };
 
-/// The test warm-up of SPEC §6 per benchmark (the nonlinear_benchmarks
+/// The test warm-up of docs/design.md §9.5 per benchmark (the nonlinear_benchmarks
 /// loader, version 1.0.1): used for x0, left out of the RMS.
 int benchmark_warmup(const std::string& name) {
   if (name == "cascaded-tanks" || name == "silverbox") return 50;

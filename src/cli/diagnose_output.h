@@ -1,5 +1,5 @@
 #pragma once
-/// The report of `lpvid diagnose` (SPEC §8: effects, before, after, plots):
+/// The report of `lpvid diagnose` (docs/design.md §11.4: effects, before, after, plots):
 /// printed in a readable form and written as JSON.
 
 #include "diagnose/record_roles.h"

@@ -1,4 +1,4 @@
-// lpvid fit-linear: the linear starting model of diagnose (SPEC §6): ARX,
+// lpvid fit-linear: the linear starting model of diagnose (docs/design.md §9): ARX,
 // then output-error refinement (fit/linear_fit.h), written as an
 // lpvid-model/1 file with "scheduling": [].
 #include <iomanip>

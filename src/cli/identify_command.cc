@@ -1,4 +1,4 @@
-// lpvid identify: Theorem 3.1 (SPEC §5) + certificate (SPEC §7).
+// lpvid identify: Theorem 3.1 (docs/design.md §8) + certificate (docs/design.md §10).
 #include <algorithm>
 #include <cmath>
 #include <iostream>

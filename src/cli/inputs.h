@@ -1,7 +1,7 @@
 #pragma once
 /// What every lpvid command reads: the data file (both as doubles and as
 /// exact rationals, from the same text), the model, the data window, and the
-/// common options of SPEC §8. Defaults live here, in one place (DESIGN §7).
+/// common options of docs/design.md §11.2. Defaults live here, in one place (docs/design.md §13.7).
 
 #include <functional>
 #include <optional>
@@ -107,7 +107,7 @@ std::pair<long, long> parse_row_range(const std::string& text, const std::string
 /// The printed data line(s): the file and its --rows, or one line per record.
 std::string data_lines(const CommonOptions& o, const Inputs& in);
 
-/// Prints the options a command ran with (DESIGN §7).
+/// Prints the options a command ran with (docs/design.md §13.7).
 void print_options(const CommonOptions& o, const Inputs& in, const std::string& command);
 
 /// The certificate path to use.

@@ -1,4 +1,4 @@
-// lpvid invalidate: Theorem 2.1 for a fixed model (SPEC §4) + certificate.
+// lpvid invalidate: Theorem 2.1 for a fixed model (docs/design.md §7) + certificate.
 #include <iostream>
 #include <memory>
 

@@ -1,4 +1,4 @@
-// lpvid: robust identification and invalidation of LPV systems (SPEC §8).
+// lpvid: robust identification and invalidation of LPV systems (docs/design.md §11.2).
 // The command line itself is cli/command_line.h (the Python module runs it
 // in-process); only the interrupt handler belongs to the program.
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-/// The report of SPEC §8: JSON (written by --report) and a readable form.
+/// The report (docs/design.md §11.4): JSON (written by --report) and a readable form.
 
 #include <string>
 

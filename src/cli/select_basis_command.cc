@@ -1,4 +1,4 @@
-// lpvid select-basis: the paper's Appendix algorithm (SPEC §5 last item):
+// lpvid select-basis: the paper's Appendix algorithm (docs/design.md §8.5):
 // grow the correction basis until a model is consistent at the given bounds,
 // then prune it. The rules are in identify/basis_selection.h.
 #include <cstdio>

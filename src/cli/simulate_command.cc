@@ -1,4 +1,4 @@
-// lpvid simulate: the model output along the data's u and rho, as CSV (SPEC §8).
+// lpvid simulate: the model output along the data's u and rho, as CSV (docs/design.md §11.2).
 #include <iostream>
 #include <memory>
 

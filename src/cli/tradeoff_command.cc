@@ -1,4 +1,4 @@
-// lpvid tradeoff: the delta–dmax trade-off curve (SPEC §4 last item; a
+// lpvid tradeoff: the delta–dmax trade-off curve (docs/design.md §7.6; a
 // command of its own, not an "identify --tradeoff" option): identify and
 // certify for each lambda of a grid, print the table, write the curve as
 // CSV and plot it with gnuplot.

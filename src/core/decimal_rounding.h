@@ -1,6 +1,6 @@
 #pragma once
 /// Decimal rounding to exact rationals: how solver doubles become the short
-/// rational numbers a certificate states (SPEC §7) and how exact bounds are
+/// rational numbers a certificate states (docs/design.md §10.3) and how exact bounds are
 /// rounded outwards (δ², d_max² up; a lower end down), all in one place.
 
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-/// Errors for bad input (DESIGN §2, §6): every message names the file, the
+/// Errors for bad input (docs/design.md §13.2, §13.6): every message names the file, the
 /// line (1-based) and/or the field, and the reason.
 
 #include <stdexcept>

@@ -10,7 +10,7 @@
 ///
 /// Sizes of real inputs, for scale: the cascaded-tanks CSV is 60 KB; a dual
 /// ("lower bound") certificate of a 400-sample window is 220 MB with entries
-/// of 16 000 digits; polynomial degrees in SPEC §6 are ≤ 5.
+/// of 16 000 digits; polynomial degrees of diagnose's effects (docs/design.md §9.2) are ≤ 5.
 
 #include <cstdint>
 #include <string>

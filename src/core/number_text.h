@@ -1,5 +1,5 @@
 #pragma once
-/// Numbers as text (SPEC §1, §7, §8).
+/// Numbers as text (docs/design.md §4, §10, §11).
 ///
 /// Data and model files hold numbers as decimal text ("0.1", "-2.5e-3") or as
 /// exact fractions ("1/3"). The exact path reads them as exact rationals

@@ -2,7 +2,7 @@
 /// Root mean square over all entries of a matrix or vector: √(‖m‖_F² / size),
 /// 0 for an empty one. The one definition used for residuals, signal scales
 /// (certify/bound_scaling.h, the σ_z, σ_r of the LMI builders) and the
-/// output RMS a noise bound is compared with (SPEC §4 normalises over n·ny
+/// output RMS a noise bound is compared with (docs/design.md §7.4 normalises over n·ny
 /// entries the same way).
 
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-/// Scalar types shared by the double and the exact-rational paths (DESIGN §4).
+/// Scalar types shared by the double and the exact-rational paths (docs/design.md §13.4).
 ///
 /// Everything that builds Toeplitz matrices or LMIs is written once as
 /// `template <typename T>` and instantiated for `double` and `Rational`.

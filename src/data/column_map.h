@@ -1,5 +1,5 @@
 #pragma once
-/// Which data columns hold u, y and ρ (SPEC §8 `columns`), and the name
+/// Which data columns hold u, y and ρ (docs/design.md §11.1 `columns`), and the name
 /// forms that are not data columns: a scheduling variable computed from the
 /// model's own simulated state i (model/state_scheduling.h computes it):
 ///

@@ -1,5 +1,5 @@
 #pragma once
-/// Reading data tables as text (SPEC §1, §8: "Data files are CSV with a
+/// Reading data tables as text (docs/design.md §4, §11.3: "Data files are CSV with a
 /// header; columns are found by name"). Cells stay text so that the double
 /// path and the exact verifier each read the numbers in their own scalar
 /// (see experiment_builder.h). Every error is an InputError naming the file

@@ -2,7 +2,7 @@
 /// Where an experiment's rows came from, made where the data is read: the
 /// file as it was opened, the sha256 of the very bytes that were parsed, the
 /// column names of a headerless file and the window of rows. Certificates
-/// carry it (SPEC §7 "data") so that the verifier re-reads the same rows;
+/// carry it (docs/design.md §10.1) so that the verifier re-reads the same rows;
 /// nothing that computes a number looks at it.
 
 #include <optional>

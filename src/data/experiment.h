@@ -1,5 +1,5 @@
 #pragma once
-/// Measured data (SPEC §1): n samples of u (nu), y (ny) and ρ (nρ).
+/// Measured data (docs/design.md §4): n samples of u (nu), y (ny) and ρ (nρ).
 
 #include <string>
 #include <vector>

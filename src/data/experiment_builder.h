@@ -1,6 +1,6 @@
 #pragma once
-/// From a text table to an Experiment (SPEC §1): the model's `columns`
-/// (SPEC §8) name which columns hold u, y and ρ; each cell of a used column
+/// From a text table to an Experiment (docs/design.md §4): the model's `columns`
+/// (docs/design.md §11.1) name which columns hold u, y and ρ; each cell of a used column
 /// is read in the scalar T (double: nearest double; Rational: exactly, so
 /// "0.1" is 1/10).
 

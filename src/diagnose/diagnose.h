@@ -1,5 +1,5 @@
 #pragma once
-/// The closed loop of SPEC §6 as one library call (`lpvid diagnose` is a
+/// The closed loop of docs/design.md §9 as one library call (`lpvid diagnose` is a
 /// front end to it, other programs can call it directly):
 ///
 ///   1. rank effects: every candidate is fitted and scored on held-out folds
@@ -12,7 +12,7 @@
 ///      (diagnose/window_bounds.h), then Theorem 3.1 on the first window
 ///      (diagnose/window_identification.h);
 ///   4. test: only now, and only if a test set is given, the two chosen
-///      models are scored on it by the benchmark protocol of SPEC §6: x0
+///      models are scored on it by the benchmark protocol of docs/design.md §9.5: x0
 ///      from the first `test_warmup` samples, RMS and fit % over the rest.
 ///      It is the last step and nothing above reads it.
 ///
@@ -75,7 +75,7 @@ struct DiagnoseOptions {
   /// job). Results do not depend on it.
   unsigned threads = 1;
   std::function<std::unique_ptr<SdpSolver>()> make_solver;
-  /// The test part's warm-up (SPEC §6: cascaded tanks 50, Silverbox 50,
+  /// The test part's warm-up (docs/design.md §9.5: cascaded tanks 50, Silverbox 50,
   /// coupled electric drives 10): used for x0, left out of the RMS.
   Eigen::Index test_warmup = kValidationInitSamples;
 };

@@ -302,7 +302,7 @@ void output_offset_candidates(const CandidateContext& cx, std::vector<EffectCand
     s.offset.values.push_back(Vec<double>::Zero(base.ny));
     out.push_back(make("output_offset", "output_offset phi (constant)", base.ny, {s}));
   }
-  // Φ(ρ) = Σ_j h_j(ρ) φ_j (eq. 20, SPEC §2) over {1, ρ_i, …, ρ_i^max_degree} for
+  // Φ(ρ) = Σ_j h_j(ρ) φ_j (eq. 20, docs/design.md §5.4) over {1, ρ_i, …, ρ_i^max_degree} for
   // each measured scheduling variable ρ_i (not an input, not the model's state)
   for (size_t i = 0; i < base.scheduling.size(); ++i) {
     const std::string& col = base.columns.rho[i];

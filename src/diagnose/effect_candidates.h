@@ -1,6 +1,6 @@
 #pragma once
-/// The library of candidate effects that `lpvid diagnose` tries (SPEC §6,
-/// effect kinds of SPEC §8). Each candidate is the current
+/// The library of candidate effects that `lpvid diagnose` tries (docs/design.md §9,
+/// effect kinds of docs/design.md §11.5). Each candidate is the current
 /// model with ONE effect added at a starting guess, plus the slots the fit
 /// may move (the effect's own parameters, the output map C, D, the offset
 /// and x0: adding an effect re-fits the output map, A and B stay).
@@ -60,7 +60,7 @@ struct CandidateOptions {
 };
 
 struct EffectCandidate {
-  std::string kind;     ///< SPEC §8 effect kind
+  std::string kind;     ///< effect kind (docs/design.md §11.5)
   std::string label;    ///< e.g. "basis_term rho1^2 (C, D)", "input_delay 2"
   int effect_parameters = 0;            ///< parameters the effect adds
   std::vector<LpvModel<double>> starts; ///< the model with the effect at each starting guess

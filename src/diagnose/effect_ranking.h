@@ -1,5 +1,5 @@
 #pragma once
-/// Residual → missing effect (SPEC §6 steps 2–3). Two ways to hold data out:
+/// Residual → missing effect (docs/design.md §9.2–9.3). Two ways to hold data out:
 ///
 /// FOLDS (the default of `lpvid diagnose`, val empty): K blocked folds of
 /// the estimation record (diagnose/fold_plan.h). Every candidate, and the

@@ -1,5 +1,5 @@
 #pragma once
-/// Blocked cross-validation of the estimation record (SPEC §6 "held-out
+/// Blocked cross-validation of the estimation record (docs/design.md §9.3 "held-out
 /// folds"): the effects of `lpvid diagnose` are ranked and
 /// accepted by free-run error on blocks of the estimation record that the
 /// fit did not see, so that one lucky block of held-out rows cannot decide.

@@ -1,5 +1,5 @@
 #pragma once
-/// The records of `lpvid diagnose` in their roles (SPEC §6): the estimation
+/// The records of `lpvid diagnose` in their roles (docs/design.md §9): the estimation
 /// record (every fit), the selection record (which effects are kept) and the
 /// test records (scored once, at the end), read from the data files and
 /// named for the report. One plan, three ways to select:

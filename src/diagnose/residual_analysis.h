@@ -1,5 +1,5 @@
 #pragma once
-/// Residual analysis for closing the loop on measured data (SPEC §6 step 1).
+/// Residual analysis for closing the loop on measured data (docs/design.md §9.1).
 ///
 /// The residual of a model on data is r = y − ŷ − Φ (n samples × ny
 /// outputs, one column per output). If the model explains everything but

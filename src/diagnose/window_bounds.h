@@ -1,5 +1,5 @@
 #pragma once
-/// Verified bounds of a fitted model on a window of a long record (SPEC §4,
+/// Verified bounds of a fitted model on a window of a long record (docs/design.md §7,
 /// §7). The LMIs of Theorem 2.1 have blocks of size ~2n, so
 /// they are solved on a window [begin, end) of the estimation record, not on
 /// all of it. The initial state of the window is the model's own state at
@@ -40,7 +40,7 @@ struct WindowBounds {
   /// A verified bound can still say nothing. The best CONSTANT model
   /// (ŷ = each output's mean on the window, Δ = 0) already meets
   /// d_max = rms_variation, the RMS of the measured output's deviation from
-  /// its mean (all n·ny entries, SPEC §4's normalisation); so the bound is
+  /// its mean (all n·ny entries, the normalisation of docs/design.md §7.4); so the bound is
   /// informative only when it is verified and d_max < rms_variation. (The
   /// RMS of y itself, rms_output, includes the mean: an output around
   /// 100 °C would make almost any d_max look informative.) `note` says why not.

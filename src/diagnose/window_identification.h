@@ -1,5 +1,5 @@
 #pragma once
-/// Theorem 3.1 again, after diagnosis (SPEC §5): on a bound
+/// Theorem 3.1 again, after diagnosis (docs/design.md §9.4): on a bound
 /// window, the fitted model's output map is identified robustly. The
 /// correction S_C (eq. 10) gets the basis {1} ∪ {the basis terms the model
 /// has in C, D}, its C_i, D_i are unknowns on top of the least-squares

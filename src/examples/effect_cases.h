@@ -41,7 +41,7 @@ struct EffectCase {
 };
 
 /// The effect kinds the generator knows (the list above).
-/// The SPEC §8 effect kind diagnose should report for a generated kind.
+/// The effect kind (docs/design.md §11.5) diagnose should report for a generated kind.
 std::string reported_effect_kind(const std::string& kind);
 const std::vector<std::string>& effect_case_kinds();
 

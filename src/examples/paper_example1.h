@@ -5,7 +5,7 @@
 ///   x_{k+1} = [0 1; −(0.3 + 0.01ρ1) −(0.6 + 0.6ρ2)] x_k + I u_k
 ///   y_k     = [ρ2² 0; 0 1] x_k (+ noise)
 ///
-/// The paper's Figure 2 shows a decreasing trajectory; SPEC §9 warns that ρ1
+/// The paper's Figure 2 shows a decreasing trajectory; docs/design.md §12 warns that ρ1
 /// and ρ2 must not be functions of each other, so here ρ1 decreases linearly
 /// from 1 to 0 while ρ2 = 0.5 + 0.45 sin(2πk/17) oscillates. The input is a
 /// random ±1 pulse train (hold times 1–5 samples) in each channel.

@@ -3,7 +3,7 @@
 /// generators of the test suite (tests/support/gen_identify.h draws through
 /// them with rapidcheck) and of `lpvid generate random --seed S`.
 ///
-/// What is generated (SPEC §2, §4):
+/// What is generated (docs/design.md §5, §7):
 ///  - random_model: a small LPV (or LTI) model with short decimal entries
 ///    whose A(ρ) is a contraction for |ρ| ≤ 1 (‖A(ρ)‖∞ ≤ 0.8, so long records
 ///    stay bounded) and whose uncertainty channel z is never identically
@@ -21,7 +21,7 @@
 ///    Toeplitz matrix), and ‖d‖ = 0.9·d_max·√(n·ny) in double.
 ///
 /// Why the truth is consistent at (δ, d_max) EXACTLY (Theorem 2.1, eq. 11–12
-/// in the non-strict form of SPEC §4): the taps are doubles, hence exact
+/// in the non-strict form of docs/design.md §7): the taps are doubles, hence exact
 /// rationals, and the exact ‖T_Δ‖ differs from the floating SVD by ~1e-15
 /// relative, far inside the 1e-6 slack, so (C1) holds with w = Δ∗z. The
 /// exact d = y − g_out(ŷ + Φ) − w differs from the double d by the double
@@ -30,13 +30,13 @@
 /// far below the 10 % slack and (C2) holds. The uncertainty and the noise
 /// enter after the static output map (model/static_blocks.h), so static
 /// blocks change nothing in this argument: the residual is y − g_out(ŷ + Φ).
-/// A horizon shortened by leading zero samples of z (SPEC §9) only drops
+/// A horizon shortened by leading zero samples of z (docs/design.md §7.3) only drops
 /// rows and columns of T_Δ, which cannot raise its norm.
 ///
 /// Options beyond the test suite's historical distribution (all off by
 /// default, and then nothing is drawn for them):
 ///  - leading_zero_inputs = m: the first m' ∈ [0, m] samples of u are 0, so
-///    with x0 = 0 z_0 … z_{m'−1} = 0 (SPEC §9); the first nonzero sample keeps
+///    with x0 = 0 z_0 … z_{m'−1} = 0 (docs/design.md §7.3); the first nonzero sample keeps
 ///    the nonzero-gain property above, so z is still not identically zero
 ///    (m' ≤ n − 2 leaves room for the path through the state);
 ///  - max_delay = j: Δ's first j' ∈ [0, j] taps are zero (a delayed Δ), with

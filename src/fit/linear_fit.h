@@ -1,5 +1,5 @@
 #pragma once
-/// The linear starting model of `lpvid diagnose` (SPEC §6):
+/// The linear starting model of `lpvid diagnose` (docs/design.md §9):
 /// an LTI state-space model of chosen order fitted to measured data.
 ///
 ///  1. ARX least squares (Ljung, System Identification, 2nd ed., 1999, §7.3,
@@ -31,7 +31,7 @@ constexpr int kMaxLinearOrder = 30;
 
 struct LinearFitOptions {
   int order = 2;        ///< n >= 1
-  bool offset = false;  ///< fit a constant output offset c (SPEC §2 Φ, basis "1")
+  bool offset = false;  ///< fit a constant output offset c (Φ of eq. 20 with basis "1")
   LmOptions lm{};       ///< output-error refinement
   /// A second starting denominator (size `order`; empty: none): steps 2–3 run
   /// from it too and the fit with the lower estimation RMS is kept. choose_order

@@ -1,6 +1,6 @@
 #pragma once
 /// The continuous parameters that `lpvid diagnose` fits by least squares
-/// (SPEC §6): named slots pointing into an LpvModel<double>.
+/// (docs/design.md §9): named slots pointing into an LpvModel<double>.
 ///
 /// A slot is one scalar of the model: an entry of a C or D term (the output
 /// map C(ρ) = Σ_i f_i(ρ) C_i of eq. 8–10, including correction terms that

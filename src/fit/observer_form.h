@@ -9,7 +9,7 @@
 ///
 /// so that ŷ = (D + C (zI − A)⁻¹ B) u has denominator zⁿ + a_1 zⁿ⁻¹ + … + a_n
 /// (its roots are the eigenvalues of A), and c is an optional constant output
-/// offset (SPEC §2 Φ with basis "1"). Every (a, B, D) is a minimal-parameter
+/// offset (Φ of eq. 20 with basis "1"). Every (a, B, D) is a minimal-parameter
 /// description of an order-n transfer function, which is what output-error
 /// refinement needs (no redundant directions).
 
@@ -63,7 +63,7 @@ double spectral_radius(const Vec<double>& a);
 /// result is an admissible start for the output-error fit.
 Vec<double> stabilise_denominator(const Vec<double>& a, double max_radius = 0.998);
 
-/// The model as an LpvModel with "scheduling": [] (SPEC §8): one term "1" per
+/// The model as an LpvModel with "scheduling": [] (docs/design.md §11.1): one term "1" per
 /// matrix, offset {"basis": ["1"], "values": [[c]]} when present, x0.
 LpvModel<double> to_lpv_model(const ObserverForm& f, const ColumnMap& columns);
 

@@ -75,7 +75,7 @@ FitResult fit_initial_state(const LpvModel<double>& model, const Experiment<doub
 double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
                       Mat<double>* yhat = nullptr);
 
-/// A free-run score under the benchmark protocol of SPEC §6 (the
+/// A free-run score under the benchmark protocol of docs/design.md §9.5 (the
 /// nonlinear_benchmarks loader since version 1.0.1): x0 fitted on the first
 /// `warmup` samples only (fit_initial_state), the RMS and the fit % over the samples after them:
 ///   fit % = 100 · (1 − ‖y − ŷ‖ / ‖y − ȳ‖),  ȳ the mean of the scored y.

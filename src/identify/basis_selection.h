@@ -1,6 +1,6 @@
 #pragma once
 /// Selection of the correction basis F^N: the algorithm of the paper's
-/// Appendix ("Practical implementation issues"), SPEC §5 last item.
+/// Appendix ("Practical implementation issues"), docs/design.md §8.5.
 ///
 ///  0. Test S_I alone with Theorem 2.1 at the given δ, d_max (certified with
 ///     BoundObjective kFeasibility: verified ⇒ consistent; otherwise see
@@ -141,7 +141,7 @@ struct BasisStep {
 };
 
 struct BasisSelectionOptions {
-  double delta = 0, dmax = 0;        ///< the given bounds (d_max RMS, SPEC §4)
+  double delta = 0, dmax = 0;        ///< the given bounds (d_max RMS, docs/design.md §7.4)
   std::string delta_text, dmax_text; ///< their exact text for the certificate (empty: the doubles)
   int max_degree = 2;
   bool iterate = false;

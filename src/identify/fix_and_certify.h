@@ -3,7 +3,7 @@
 /// used by identify, tradeoff, select-basis and the diagnose windows):
 ///   fix:     θ (with φ, x0) rounded to CertifyOptions::digits significant
 ///            digits and folded into the exact model, so that the model the
-///            certificate names is a short rational one (SPEC §7);
+///            certificate names is a short rational one (docs/design.md §10.3);
 ///   certify: the identification's own Δ taps first when it has them (no
 ///            re-solve: certify_with_taps), else Theorem 2.1 solved again for
 ///            the fixed model (certify_fixed_model); when the taps certified
@@ -48,7 +48,7 @@ CertifiedBounds certify_identified(const LpvModel<Rational>& fixed, const Experi
                                    const Mat<double>& taps, const CertifyOptions& options, SdpSolver& solver,
                                    std::string* note = nullptr);
 
-/// fit → fix → certify (SPEC §5, §7): identify() on the double data, θ fixed
+/// fit → fix → certify (docs/design.md §8, §10): identify() on the double data, θ fixed
 /// to `certify.digits` digits in the exact model, the fixed model certified
 /// on the exact data. When the fit ends without a solution, `fixed` and
 /// `bounds` are left empty (not verified) and `fit.status` says why.

@@ -46,7 +46,7 @@ ReducedProblem reduce_problem(const LpvModel<double>& model, const Experiment<do
   const Mat<double> z0 = unstack_rows(a.z0, a.nz);
   const std::vector<Eigen::Index> pinned = pinned_samples_of(z0, a.records);
   rp.pinned = static_cast<Eigen::Index>(pinned.size());
-  // Directions that keep z_k = 0 at the pinned samples (SPEC §9: the relaxation
+  // Directions that keep z_k = 0 at the pinned samples (docs/design.md §8.4: the relaxation
   // at a point with z̄_k = 0 forces it): the null space of those rows of Jz.
   const Mat<double> lead = pinned_jacobian_rows(a, pinned);
   if (P == 0) {

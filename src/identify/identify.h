@@ -1,5 +1,5 @@
 #pragma once
-/// Identification, Theorem 3.1 (SPEC §5): the correction S_C(ρ) (eq. 10),
+/// Identification, Theorem 3.1 (docs/design.md §8): the correction S_C(ρ) (eq. 10),
 /// the offset φ (eq. 20) and optionally x0, with the smallest consistent
 /// bounds, by the paper's relaxation (one linearisation at the initial
 /// model, after eq. 16) or, with `iterate`, by re-linearising at each

@@ -1,6 +1,6 @@
 #pragma once
 /// The trade-off curve between the uncertainty bound δ and the noise bound
-/// d_max (SPEC §4 last item: "sweeping λ gives the trade-off curve").
+/// d_max (docs/design.md §7.6: sweeping λ gives the curve).
 ///
 /// For each λ of a grid: identify with BoundObjective kWeighted(λ), i.e.
 /// minimise λ·δ² + (1−λ)·d_max² (Theorem 3.1, relaxation at S_I or iterated),

@@ -1,5 +1,5 @@
 #pragma once
-/// What a bound search minimises (SPEC §4): δ for a given d_max, d_max for a
+/// What a bound search minimises (docs/design.md §7.6): δ for a given d_max, d_max for a
 /// given δ, the weighted λ·δ² + (1−λ)·d_max², or nothing (decide consistency
 /// for given δ and d_max). d_max is the RMS bound ‖d‖₂ ≤ d_max·√(n·ny).
 

@@ -1,6 +1,6 @@
 #pragma once
 /// Theorem 2.1 for a FIXED model in the well-conditioned Δ form (Poolla et
-/// al.; SPEC §4):
+/// al.; docs/design.md §7.5):
 ///
 ///   w = Δ ∗ z with a causal FIR Δ (taps h_0 … h_{L−1}, each ny × nz), and
 ///   (C1')  [ t·I      T_Δ ]
@@ -15,7 +15,7 @@
 /// the square of the data's.
 ///
 /// Leading zeros: if z_0 = … = z_{m−1} = 0 then (C1) forces w_0 … w_{m−1} = 0
-/// and the problem lives on the horizon L = n − m (SPEC §9): w_k =
+/// and the problem lives on the horizon L = n − m (docs/design.md §7.3): w_k =
 /// Σ_{l=0}^{k−m} h_l z_{k−l}, and only the taps h_0 … h_{L−1} matter.
 ///
 /// Several records (toeplitz/record_segments.h): z and r stack K records of

@@ -1,6 +1,6 @@
 #pragma once
 /// The one entry to Theorem 2.1's Δ form in floating point (eq. 11–12 with
-/// w = Δ ∗ z, SPEC §4): which solver runs, and the fall-back between them.
+/// w = Δ ∗ z, docs/design.md §7.5): which solver runs, and the fall-back between them.
 ///
 ///  - kStructured: on the full horizon (taps = 0) and where the structured
 ///    barrier applies (lmi/delta_form_barrier.h: ny = nz = 1), the barrier;

@@ -17,7 +17,7 @@ struct SignalScaling {
 };
 SignalScaling signal_scaling(const Mat<double>& z, const Mat<double>& r);
 
-/// (C2) of SPEC §4 as the LMI block [N·s, dᵀ; d, I] ⪰ 0 (the Schur
+/// (C2) of docs/design.md §7.1 as the LMI block [N·s, dᵀ; d, I] ⪰ 0 (the Schur
 /// complement of ‖d‖² ≤ N·s, N = n·ny rows of d): adds the block
 /// "C2_noise", its corner N·s (s the variable `s_var`, or when s_var < 0
 /// the constant `fixed_s`), the identity, and the constant part of d, the

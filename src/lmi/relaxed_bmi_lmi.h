@@ -1,5 +1,5 @@
 #pragma once
-/// Theorem 3.1 (eq. 11–12) with the BMI relaxed by linearisation (SPEC §5),
+/// Theorem 3.1 (eq. 11–12) with the BMI relaxed by linearisation (docs/design.md §8.2),
 /// in the w form of Theorem 2.1:
 ///
 ///   (C1)  [ Lin(q)   T_wᵀ ]
@@ -10,12 +10,12 @@
 /// with z(q) = zb + Z q, r(q) = rb − R q (affine in the unknowns q), T̄ =
 /// T_z(q̄) at the linearisation point q̄. With q̄ = 0 and the initial model
 /// this is exactly the paper's relaxation (after eq. 16); re-linearising at
-/// the last solution is the convex–concave iteration (SPEC §5). Because
+/// the last solution is the convex–concave iteration (docs/design.md §8.3). Because
 /// Lin ⪯ T_zᵀT_z, every feasible point is feasible for the true BMI.
 /// When Z = 0 (additive uncertainty, or invalidation of a fixed model) Lin =
 /// T_zᵀT_z and the program IS Theorem 2.1 / 3.1, not a relaxation.
 ///
-/// Leading zeros (SPEC §9): if z_0 … z_{m−1} = 0 at q̄, the relaxation forces
+/// Leading zeros (docs/design.md §7.3): if z_0 … z_{m−1} = 0 at q̄, the relaxation forces
 /// them to stay 0 and forces w_0 … w_{m−1} = 0; callers keep those samples
 /// at zero by construction (the columns of Z at those rows must vanish), and
 /// the program lives on the horizon L = n − m.

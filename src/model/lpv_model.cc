@@ -19,7 +19,7 @@ const char* to_string(UncertaintyStructure s) {
   return "unknown";
 }
 
-/// SPEC §2: nz = ny (multiplicative, z = W·ŷ), nu (additive, z = W·u), or the
+/// docs/design.md §5: nz = ny (multiplicative, z = W·ŷ), nu (additive, z = W·u), or the
 /// rows of the given C1/D1 (general). A 0×0 C1 or D1 without terms counts as
 /// "not given" (identically zero), so only the other one fixes nz.
 template <typename T>

@@ -1,5 +1,5 @@
 #pragma once
-/// The LPV model of SPEC §2 (paper eq. 1 with G11 = 0, G21 = I, and eq. 8–10):
+/// The LPV model of docs/design.md §5 (paper eq. 1 with G11 = 0, G21 = I, and eq. 8–10):
 ///
 ///   x_{k+1} = A(ρ_k) x_k + B(ρ_k) u_k + E(ρ_k)   (E: state_offset, zero by default)
 ///   z_k     = C1(ρ_k) x_k + D1(ρ_k) u_k      (uncertainty channel)
@@ -33,7 +33,7 @@ const char* to_string(UncertaintyStructure s);
 template <typename T>
 struct Uncertainty {
   UncertaintyStructure structure = UncertaintyStructure::kMultiplicative;
-  T weight = T(1);        ///< W (SPEC §9: "weight": 0.01 means 1 % relative)
+  T weight = T(1);        ///< W (docs/design.md §5.3: "weight": 0.01 means 1 % relative)
   ParamMatrix<T> C1, D1;  ///< only for kGeneral (nz × nx, nz × nu)
 };
 
@@ -64,7 +64,7 @@ struct Offset {
   std::vector<Vec<T>> values;
 };
 
-/// Affine term of the state equation (beyond SPEC §2):
+/// Affine term of the state equation (beyond the paper, docs/design.md §5.4):
 /// E(ρ) = Σ_j h_j(ρ) e_j, e_j ∈ R^nx, so x_{k+1} = A(ρ_k) x_k + B(ρ_k) u'_k + E(ρ_k).
 /// With a scheduling column "@sqrt(x1-c)" (model/state_scheduling.h) a basis
 /// term ρ with value e adds e·√|x1 − c|: a tank's outflow. The values are

@@ -1,5 +1,5 @@
 #pragma once
-/// The model file (SPEC §8, JSON, "format": "lpvid-model/1"), read into an
+/// The model file (docs/design.md §11.1, JSON, "format": "lpvid-model/1"), read into an
 /// LpvModel<T> for T = double and T = Rational, and written back with exact
 /// number text so that write → read gives exactly the same model.
 ///
@@ -10,7 +10,7 @@
 /// exact rational (0.1 is 1/10); the double reader gives the nearest double of
 /// the same text. Neither goes through nlohmann's double. JSON numbers that
 /// overflow a double (1e400) are a syntax error: write them as strings.
-/// `//` and `/* */` comments are ignored, so SPEC §8's example reads as is.
+/// `//` and `/* */` comments are ignored, so docs/design.md §11.1's example reads as is.
 ///
 /// Keys (unknown keys are rejected everywhere, with the list of allowed keys,
 /// because a misspelt optional key would silently change the model):
@@ -80,7 +80,7 @@
 
 namespace lpvid {
 
-/// The format string of SPEC §8.
+/// The format string (docs/design.md §11.1).
 inline constexpr const char* kModelFormat = "lpvid-model/1";
 
 /// Largest states/inputs/outputs/nz accepted (guards against a corrupted size

@@ -1,6 +1,6 @@
 #pragma once
-/// JSON with exact number text (SPEC §7, §8: "the verifier reads both
-/// exactly"). nlohmann::json's DOM stores numbers as double/int64; this tree
+/// JSON with exact number text (docs/design.md §11.1: numbers "the exact reader
+/// reads from their text"). nlohmann::json's DOM stores numbers as double/int64; this tree
 /// keeps each number as the text written in the file, so that the exact path
 /// never goes through double. Built with nlohmann's SAX interface.
 ///
@@ -42,7 +42,7 @@ const char* kind_name(JsonNode::Kind kind);
 constexpr int kMaxJsonDepth = 64;
 
 /// Parses JSON text into a JsonNode tree. `//` and `/* */` comments are
-/// allowed and ignored (SPEC §8's example carries them). Throws InputError
+/// allowed and ignored (the example of docs/design.md §11.1 carries them). Throws InputError
 /// "name:line: JSON syntax error (column c): reason" for malformed JSON
 /// (including invalid UTF-8, trailing text and numbers that overflow a
 /// double: write those as strings), and for duplicate object keys or nesting

@@ -1,5 +1,5 @@
 #pragma once
-/// Basis functions of the scheduling parameter (SPEC §2, §8; paper eq. 10 and
+/// Basis functions of the scheduling parameter (docs/design.md §5, §11; paper eq. 10 and
 /// the Appendix): products of non-negative integer powers of the scheduling
 /// variables, written `1`, `rho1`, `rho1*rho2`, `rho2^2`, `rho1^2*rho2`.
 

@@ -1,5 +1,5 @@
 /// parse_monomial (declared in model/monomial.h): basis-function text such as
-/// `1`, `rho1`, `rho1*rho2`, `rho2^2`, `rho1^2*rho2` (SPEC §2, §8).
+/// `1`, `rho1`, `rho1*rho2`, `rho2^2`, `rho1^2*rho2` (docs/design.md §5, §11).
 ///
 /// Grammar (spaces and tabs allowed around every token):
 ///   monomial := "1" | factor ("*" factor)*

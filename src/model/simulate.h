@@ -1,5 +1,5 @@
 #pragma once
-/// Simulation of the LPV model of SPEC §2 (paper eq. 1 with G11 = 0, G21 = I,
+/// Simulation of the LPV model of docs/design.md §5 (paper eq. 1 with G11 = 0, G21 = I,
 /// and eq. 8–10) along a measured trajectory, and the data that makes the
 /// model output affine in the unknown correction θ (Theorem 3.1, eq. 14–15).
 ///
@@ -19,7 +19,7 @@
 /// is affine in θ (output_jacobian below gives the exact linear part).
 ///
 /// Everything is templated on the scalar (double or Rational) and uses only
-/// +, −, ×: no tolerance, no sqrt (DESIGN §4); the one root, of a
+/// +, −, ×: no tolerance, no sqrt (docs/design.md §13.4); the one root, of a
 /// "@sqrt(x<i>-c)" column, is the exact rounded root of model/state_scheduling.h.
 
 #include <stdexcept>
@@ -40,7 +40,7 @@ namespace lpvid {
 
 /// The matrices of the model as functions of ρ, checked and with the fixed
 /// correction A_i, B_i folded into A and B. C, D are C2, D2 (the output ŷ);
-/// C1, D1 the uncertainty channel z (SPEC §2).
+/// C1, D1 the uncertainty channel z (docs/design.md §5).
 template <typename T>
 struct SystemMatrices {
   ParamMatrix<T> A;   ///< nx × nx: A_0(ρ) + Σ_i f_i(ρ) A_i
@@ -96,7 +96,7 @@ Mat<T> correction_matrix(const std::vector<Mat<T>>& list, size_t i, size_t n_bas
 
 /// Checks every size of the model (matrices, terms, basis functions against
 /// nρ, correction A_i/B_i, offset, x0, uncertainty channel) and returns the
-/// matrices of SPEC §2 as functions of ρ. Throws std::invalid_argument with
+/// matrices of docs/design.md §5 as functions of ρ. Throws std::invalid_argument with
 /// the offending sizes. A 0×0 matrix without terms is read as zero.
 template <typename T>
 SystemMatrices<T> system_matrices(const LpvModel<T>& model) {
@@ -220,7 +220,7 @@ struct Simulation {
   Mat<T> rho;     ///< n × nρ: the scheduling used, "@x<i>" columns from the state (model/state_scheduling.h)
 };
 
-/// Simulates the model (SPEC §2, paper eq. 1 / 8–10) along the experiment's u
+/// Simulates the model (docs/design.md §5, paper eq. 1 / 8–10) along the experiment's u
 /// and ρ from x_0 = model.x0 (zero if empty). The LPV part sees the input
 /// u' = g_in(u_{k−d}) of the model's static blocks (identity unless declared),
 /// plus the state offset E(ρ_k) (model.state_offset);
@@ -391,7 +391,7 @@ std::vector<Mat<T>> correction_regressors(const LpvModel<T>& model, const Experi
 /// correction θ (layout: CorrectionLayout{N, n_out, nx, nu}):
 /// (n·n_out) × (N·n_out·(nx+nu)), row k·n_out + r, with
 ///   ∂out_k(r)/∂C_i(r, c) = f_i(ρ_k) x_k(c),  ∂out_k(r)/∂D_i(r, c) = f_i(ρ_k) u_k(c),
-/// all other entries zero. Exact: out(θ) = out(0) + J θ (stacked as in SPEC §1).
+/// all other entries zero. Exact: out(θ) = out(0) + J θ (stacked as in docs/design.md §4).
 /// n_out = ny gives output_jacobian; n_out = nz gives the Jacobian of z for
 /// the general structure's own C1_i, D1_i.
 template <typename T>
@@ -415,7 +415,7 @@ Mat<T> correction_jacobian(const LpvModel<T>& model, const Experiment<T>& exp, c
 ///   stack(ŷ(θ)) = stack(sim.yhat) + J θ,
 /// J is (n·ny) × (N·ny·(nx+nu)), θ ordered as output_correction_layout:
 /// basis i major, then C_i row-major, then D_i row-major.
-/// For the multiplicative structure (C1_i = W·C_i, D1_i = W·D_i, SPEC §2)
+/// For the multiplicative structure (C1_i = W·C_i, D1_i = W·D_i, docs/design.md §5)
 /// stack(z(θ)) = stack(sim.z) + W·J θ; for the additive structure z does not
 /// depend on θ.
 template <typename T>
@@ -449,7 +449,7 @@ LpvModel<T> fold_correction(const LpvModel<T>& model, const Vec<T>& theta) {
   return out;
 }
 
-/// Jacobian of the offset Φ in its unknown values φ_j (paper eq. 20, SPEC §2)
+/// Jacobian of the offset Φ in its unknown values φ_j (paper eq. 20, docs/design.md §5)
 /// when `model.offset.values` is empty: (n·ny) × (M·ny), M = offset basis
 /// size, column j·ny + r holds h_j(ρ_k) in row k·ny + r. So
 /// stack(Φ) = J_Φ [φ_1; …; φ_M].

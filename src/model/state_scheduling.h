@@ -1,7 +1,7 @@
 #pragma once
 /// Scheduling on the model's own simulated state: a quasi-LPV embedding of
 /// a state-dependent nonlinearity (cubic stiffness, √level outflow,
-/// overflow) in the model of SPEC §2.
+/// overflow) in the model of docs/design.md §5.
 ///
 /// A scheduling variable whose data column is a state form of
 /// data/column_map.h is not read from the data file: at sample k it is a

@@ -1,5 +1,5 @@
 #pragma once
-/// Static blocks around the LPV part (SPEC §6, §8 effect kinds): an input
+/// Static blocks around the LPV part (docs/design.md §5.5; effect kinds §11.5): an input
 /// delay, a static input map before the LPV system and a static output map
 /// after it. They are what `lpvid diagnose` adds when the residual points to
 /// a saturation, dead-zone, |·|, polynomial or delay; the model

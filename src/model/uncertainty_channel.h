@@ -1,9 +1,9 @@
 #pragma once
-/// The uncertainty channel z of SPEC §2 (paper eq. 1 with G11 = 0, eq. 8–10):
+/// The uncertainty channel z of docs/design.md §5 (paper eq. 1 with G11 = 0, eq. 8–10):
 ///
 ///   z_k = C1(ρ_k) x_k + D1(ρ_k) u_k          (nz rows)
 ///
-/// by uncertainty structure (paper Section 3.1, SPEC §2 and §9):
+/// by uncertainty structure (paper Section 3.1, docs/design.md §5.3):
 ///   multiplicative:  C1 = W·C,  D1 = W·D   so z = W·ŷ   (ŷ = C x + D u,
 ///                    *without* the output offset Φ; nz = ny)
 ///   additive:        C1 = 0,    D1 = W·I   so z = W·u   (nz = nu)
@@ -55,7 +55,7 @@ ParamMatrix<T> given_or_zero(const ParamMatrix<T>& m, Eigen::Index rows, Eigen::
 
 }  // namespace detail
 
-/// C1(ρ) of SPEC §2, nz × nx (see the file comment for each structure).
+/// C1(ρ) of docs/design.md §5, nz × nx (see the file comment for each structure).
 template <typename T>
 ParamMatrix<T> uncertainty_C1(const LpvModel<T>& model) {
   const Eigen::Index nz = model.nz();
@@ -70,7 +70,7 @@ ParamMatrix<T> uncertainty_C1(const LpvModel<T>& model) {
   throw std::invalid_argument("unknown uncertainty structure");
 }
 
-/// D1(ρ) of SPEC §2, nz × nu (see the file comment for each structure).
+/// D1(ρ) of docs/design.md §5, nz × nu (see the file comment for each structure).
 template <typename T>
 ParamMatrix<T> uncertainty_D1(const LpvModel<T>& model) {
   const Eigen::Index nz = model.nz();

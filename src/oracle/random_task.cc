@@ -24,7 +24,7 @@ GeneratedCase random_oracle_case(uint64_t seed, const RandomTaskOptions& o) {
   t.kind = o.kinds[static_cast<size_t>(draw.integer(0, static_cast<int>(o.kinds.size()) - 1))];
   RandomCaseOptions cases = o.cases;
   if (t.kind == TaskKind::kIdentify) {
-    // a correction basis with a true θ to find; θ of the output only (SPEC §5)
+    // a correction basis with a true θ to find; θ of the output only (docs/design.md §8)
     cases.model.min_correction = std::max(cases.model.min_correction, 1);
     cases.model.max_correction = std::max(cases.model.max_correction, 2);
     cases.model.allow_general = false;

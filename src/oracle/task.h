@@ -16,7 +16,7 @@
 ///    "info": {…}}          // free (seed, sizes, the generating truth)
 ///
 /// "identify" (Theorem 3.1): the model has a correction basis f_i(ρ) with
-/// unknown C_i, D_i (SPEC §8 "correction"); the task is to find them and the
+/// unknown C_i, D_i (docs/design.md §11.1 "correction"); the task is to find them and the
 /// least d_max at the fixed δ. The answer expected back is described in
 /// oracle/answer.h.
 

@@ -1,5 +1,5 @@
 #pragma once
-/// The plots of `lpvid diagnose` (SPEC §6 step 4), drawn by
+/// The plots of `lpvid diagnose` (docs/design.md §9.4), drawn by
 /// gnuplot through plot/gnuplot.h:
 ///  (a) the residual r = y − ŷ − Φ before and after adding the effect, per
 ///      sample;

@@ -1,5 +1,5 @@
 #pragma once
-/// A solver-neutral LMI program (DESIGN §1: problem, solver, result apart).
+/// A solver-neutral LMI program (docs/design.md §13.1: problem, solver, result apart).
 ///
 ///     minimise    cᵀx
 ///     subject to  F0_b + Σ_i x_i F_i,b  ⪰ 0      for every block b
@@ -15,7 +15,7 @@
 /// Builders (Theorem 2.1 / 3.1 assembly) fill a program with add_block /
 /// add_entry / add_scalar_inequality; a solver backend (solvers/) turns it
 /// into its own structures in one place. Misuse throws std::invalid_argument
-/// naming the block, the variable and the entry (DESIGN §2).
+/// naming the block, the variable and the entry (docs/design.md §13.2).
 
 #include <cstddef>
 #include <string>

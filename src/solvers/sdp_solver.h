@@ -1,5 +1,5 @@
 #pragma once
-/// The solver interface (DESIGN §1, §2, §7): an LmiProgram goes in, a
+/// The solver interface (docs/design.md §13.1, §13.2, §13.7): an LmiProgram goes in, a
 /// SolveResult with one SolveStatus comes out. Backends: "csdp"
 /// (csdp_backend.h), "sdpa" (sdpa_backend.h); sdpa_file.h writes any program
 /// for an outside solver and reads its answer back.
@@ -52,7 +52,7 @@ const char* to_string(SolveStatus status);
 bool has_solution(SolveStatus status);
 
 /// Options common to all backends. These initialisers are THE defaults
-/// (DESIGN §7); the CLI prints the values it ran with.
+/// (docs/design.md §13.7); the CLI prints the values it ran with.
 struct SolverOptions {
   /// Relative duality gap |cᵀx − dual| / (1 + |cᵀx| + |dual|) to stop at.
   /// CSDP: objtol. SDPA: epsilonStar. 1e-7 is SDPA's default and about

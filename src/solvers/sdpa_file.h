@@ -1,5 +1,5 @@
 #pragma once
-/// SDPA sparse files (".dat-s") for outside solvers (DESIGN §1: "any program
+/// SDPA sparse files (".dat-s") for outside solvers (docs/design.md §13.1: "any program
 /// can be written as an SDPA file"), and their answers read back.
 ///
 /// The SDPA sparse format, as written here (and read by SDPA, CSDP, SeDuMi's

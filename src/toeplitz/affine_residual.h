@@ -1,6 +1,6 @@
 #pragma once
 /// The model-dependent signals of Theorems 2.1 and 3.1 as affine functions
-/// of the unknown parameters p (SPEC §2, §5):
+/// of the unknown parameters p (docs/design.md §5, §8):
 ///
 ///   z(p) = z0 + Jz p        stacked uncertainty-channel signal (n·nz)
 ///   r(p) = r0 − Jr p        stacked residual y − ŷ − Φ (n·ny), = w + d
@@ -64,7 +64,7 @@ struct AffineResidual {
   Vec<T> r(const Vec<T>& p) const { return p.size() ? Vec<T>(r0 - Jr * p) : r0; }
 };
 
-/// Builds z0, r0, Jz, Jr for the model along the experiment (SPEC §2, §5).
+/// Builds z0, r0, Jz, Jr for the model along the experiment (docs/design.md §5, §8).
 /// Throws InputError for an LTI/LPV mismatch and std::invalid_argument for
 /// inconsistent sizes.
 template <typename T>

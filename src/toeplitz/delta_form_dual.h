@@ -1,5 +1,5 @@
 #pragma once
-/// The Lagrange dual of Theorem 2.1 in the full-horizon Δ form (SPEC §4): it
+/// The Lagrange dual of Theorem 2.1 in the full-horizon Δ form (docs/design.md §7.5): it
 /// certifies "invalidated" and lower bounds (the mathematics is written out
 /// in docs/dual_certificates.md).
 /// Templated on the scalar: the certificate builder evaluates it in doubles

@@ -1,7 +1,7 @@
 #pragma once
-/// Causal FIR filters on signals: the Δ of the Poolla form of (C1) (SPEC §4)
+/// Causal FIR filters on signals: the Δ of the Poolla form of (C1) (docs/design.md §7.5)
 /// acting on the uncertainty channel z, and the leading
-/// zero samples that causality pins (SPEC §9). Templated on the scalar.
+/// zero samples that causality pins (docs/design.md §7.3). Templated on the scalar.
 
 #include "core/scalar.h"
 #include "toeplitz/record_segments.h"

@@ -1,6 +1,6 @@
 #pragma once
-/// Signal Toeplitz matrices (paper eq. 3, SPEC §3) and the stacked-vector
-/// convention of SPEC §1. Templated on the scalar; no tolerance (DESIGN §4).
+/// Signal Toeplitz matrices (paper eq. 3, docs/design.md §6.1) and the stacked-vector
+/// convention of docs/design.md §4. Templated on the scalar; no tolerance (docs/design.md §13.4).
 ///
 /// A signal h_0 … h_{n−1} with h_k ∈ R^p is held as an n × p matrix whose
 /// row k is h_kᵀ (as in Experiment and Simulation).
@@ -27,7 +27,7 @@ Mat<T> signal_toeplitz(const Mat<T>& h) {
 }
 
 /// Stacked vector [h_0; h_1; …; h_{n−1}] (length n·p) of an n × p signal
-/// (SPEC §1). Column 0 of signal_toeplitz(h) equals stack_rows(h).
+/// (docs/design.md §4). Column 0 of signal_toeplitz(h) equals stack_rows(h).
 template <typename T>
 Vec<T> stack_rows(const Mat<T>& h) {
   const Eigen::Index n = h.rows(), p = h.cols();

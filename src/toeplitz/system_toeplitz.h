@@ -1,6 +1,6 @@
 #pragma once
 /// System Toeplitz matrix of an LPV system along a scheduling trajectory
-/// (paper eq. 2, SPEC §3). Templated on the scalar; no tolerance (DESIGN §4).
+/// (paper eq. 2, docs/design.md §6.2). Templated on the scalar; no tolerance (docs/design.md §13.4).
 
 #include <stdexcept>
 #include <string>
@@ -14,7 +14,7 @@
 
 namespace lpvid {
 
-/// Eq. (2), SPEC §3: T_G of x_{k+1} = A(ρ_k)x_k + B(ρ_k)u_k,
+/// Eq. (2), docs/design.md §6.2: T_G of x_{k+1} = A(ρ_k)x_k + B(ρ_k)u_k,
 /// out_k = C(ρ_k)x_k + D(ρ_k)u_k along ρ (n × nρ, row k = ρ_kᵀ; pass an
 /// n × 0 matrix when nρ = 0). Returns the (n·ny) × (n·nu) block lower
 /// triangular matrix with
@@ -67,7 +67,7 @@ enum class SystemChannel {
   kUncertainty,  ///< G12: u → z with C1, D1 (model/uncertainty_channel.h)
 };
 
-/// Eq. (2) for the model (SPEC §2, with the fixed correction A_i, B_i in the
+/// Eq. (2) for the model (docs/design.md §5, with the fixed correction A_i, B_i in the
 /// state equation) along ρ (n × nρ; n × 0 when nρ = 0):
 /// T_G22 ((n·ny) × (n·nu)) or T_G12 ((n·nz) × (n·nu)). Maps u to the output
 /// from x_0 = 0, whatever model.x0 says. Throws std::invalid_argument for a

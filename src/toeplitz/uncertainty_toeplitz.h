@@ -1,6 +1,6 @@
 #pragma once
 /// T_z, the Toeplitz matrix of the uncertainty channel z (paper eq. 4 and
-/// Theorem 2.1, SPEC §3), in the two modes the project implements:
+/// Theorem 2.1, docs/design.md §6.3), in the two modes the project implements:
 ///
 ///  - `signal` (default): T_z = T_{z} (eq. 3) of the simulated z. This is the
 ///    exact condition for a causal LTI Δ mapping the recorded z to w; it is
@@ -11,9 +11,9 @@
 ///    samples along the *undelayed* ρ. For an LTI G12 (or ρ constant along
 ///    the trajectory) and x_0 = 0 both modes are equal; for an LPV model
 ///    along a varying ρ they differ in general and the paper-mode matrix is
-///    not Toeplitz (SPEC §9: its last column is D1(ρ_{n−1}) u_0, not D1(ρ_0) u_0).
+///    not Toeplitz (docs/design.md §6.3: its last column is D1(ρ_{n−1}) u_0, not D1(ρ_0) u_0).
 ///
-/// Both are (n·nz) × n. Templated on the scalar; no tolerance (DESIGN §4).
+/// Both are (n·nz) × n. Templated on the scalar; no tolerance (docs/design.md §13.4).
 
 #include <stdexcept>
 #include <string>
@@ -30,11 +30,11 @@
 namespace lpvid {
 
 enum class ToeplitzMode {
-  kSignal,  ///< T_z = signal Toeplitz of the simulated z (SPEC §3, default)
+  kSignal,  ///< T_z = signal Toeplitz of the simulated z (docs/design.md §6.3, default)
   kPaper,   ///< T_z = T_G12 · T_u (paper eq. 4, Theorem 2.1)
 };
 
-/// The default mode (SPEC §3).
+/// The default mode (docs/design.md §6.3).
 constexpr ToeplitzMode kDefaultToeplitzMode = ToeplitzMode::kSignal;
 
 /// "signal" or "paper" (the CLI's --toeplitz values and the certificate field).

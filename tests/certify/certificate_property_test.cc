@@ -1,7 +1,7 @@
-// Certificates (SPEC §7): every certificate the pipeline writes verifies,
+// Certificates (docs/design.md §10): every certificate the pipeline writes verifies,
 // and a perturbation beyond its stated margin is rejected with the failing
 // constraint named; the signal (Δ form) and paper (w form) Toeplitz modes
-// agree for LTI models (SPEC §3).
+// agree for LTI models (docs/design.md §6.3).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
@@ -272,7 +272,7 @@ RC_GTEST_PROP(CertificateProperty, WFormPerturbationsAreRejected, ()) {
   }
 }
 
-// Both Toeplitz modes agree for LTI models (SPEC §3): the Δ form (signal,
+// Both Toeplitz modes agree for LTI models (docs/design.md §6.3): the Δ form (signal,
 // full horizon) and the w form (paper, T_z = T_G12·T_u) have the same
 // minimal δ at a fixed d_max. For SISO T_z is invertible after the leading
 // zeros, so the problems are equivalent; for MIMO the Δ form is exact as

@@ -1,7 +1,7 @@
 // `lpvid diagnose` end to end (the real binary): on generated data with an
 // undeclared output offset it must name `output_offset`, lower the
 // validation RMS, report verified bounds whose certificates the independent
-// verifier accepts, write the SPEC §8 report fields and the plots; bad input
+// verifier accepts, write the report fields of docs/design.md §11.4 and the plots; bad input
 // ends with exit code 2 and a message naming the problem, before any work.
 #include <filesystem>
 #include <fstream>

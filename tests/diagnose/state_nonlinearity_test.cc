@@ -1,4 +1,4 @@
-// The state_nonlinearity effect (SPEC §6, §8): candidates
+// The state_nonlinearity effect (docs/design.md §9, §11): candidates
 // e·f(x_i − c) in the state equation, f = √|·|, |·|, max(·, 0), with the
 // shift c and the state offset e as fit slots (fit/model_parameters.h).
 //

@@ -4,7 +4,7 @@
 // certificate path (certify_with_taps with the generating taps, verified
 // again from the file), not by the generator's own double arithmetic.
 // The options beyond the historical distribution: leading zero inputs
-// (SPEC §9), a delayed Δ, static blocks (model/static_blocks.h).
+// (docs/design.md §7.3), a delayed Δ, static blocks (model/static_blocks.h).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
@@ -99,7 +99,7 @@ TEST(RandomCase, SeedOneIsPinned) {
 }
 
 /// The truth certified at exactly the generating (δ, d_max) from the
-/// generating taps: no solve, the exact verifier decides (SPEC §7).
+/// generating taps: no solve, the exact verifier decides (docs/design.md §10).
 CertifiedBounds certify_truth(const RandomCase& c, const ScratchDir& dir) {
   const std::string data = dir.file("data.csv");
   write_experiment_csv(data, c.truth, c.exp);

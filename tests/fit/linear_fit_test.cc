@@ -1,4 +1,4 @@
-// fit/linear_fit.h: ARX + output-error fit of an LTI model (SPEC §6).
+// fit/linear_fit.h: ARX + output-error fit of an LTI model (docs/design.md §9).
 // Properties on noise-free data from random stable systems
 // (tests/support/gen_lti.h): the true order reproduces the free-run output,
 // A is stable, the order rule picks the true order, the model file round

@@ -1,7 +1,7 @@
 // `lpvid identify --method alternating` through the real binary (when built
 // in the same tree): Example 1 fixture, noise-free, full basis → exit 0, a
 // report with verified: true and both bounds ≤ 1e-4, a certificate that the
-// verifier accepts; bad option combinations → exit 2 (SPEC §8 exit codes).
+// verifier accepts; bad option combinations → exit 2 (src/core/exit_codes.h).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

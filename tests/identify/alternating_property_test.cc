@@ -122,7 +122,7 @@ RC_GTEST_PROP(AlternatingProperty, EveryIterateCertifiesAndTheObjectiveNeverRise
   RC_TAG(to_string(c.model.uncertainty.structure), res.iterates.size() > 2 ? "3+ Delta steps" : "1-2 Delta steps");
 }
 
-// Fixed bounds. Minimising d_max at a fixed δ (SPEC §4): every iterate
+// Fixed bounds. Minimising d_max at a fixed δ (docs/design.md §7.6): every iterate
 // certifies with that δ exactly (its taps are shrunk onto δ if the solver's
 // tolerance put them above) and a certified d_max² at most the iterate's;
 // deciding consistency at bounds slightly above a certified weighted result

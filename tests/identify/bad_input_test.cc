@@ -1,4 +1,4 @@
-// Bad inputs (SPEC §4, §9): data that says nothing about the uncertainty
+// Bad inputs (docs/design.md §7, §12): data that says nothing about the uncertainty
 // (z ≡ 0) is an InputError naming the problem; bounds the data contradicts
 // give "not verified" with a reason and never a bound or a certificate.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Acceptance test on the paper's Example 1 (eq. 17; SPEC §5, §9) with the
+// Acceptance test on the paper's Example 1 (eq. 17; docs/design.md §8, §12) with the
 // committed noise-free fixture (n = 40, y rounded to 8–10 decimals): the
 // initial model lacks the factor ρ2² of C, the correction basis is
 // {1, ρ1, ρ2, ρ1ρ2, ρ1², ρ2²} (so C_true = I + [−1 0; 0 0]·1 + [1 0; 0 0]·ρ2²
@@ -6,7 +6,7 @@
 //  - iterated identification reaches the noise floor of the rounding: both
 //    certified bounds ≤ 1e-4;
 //  - the paper's single relaxation step is certified too but clearly worse
-//    (SPEC §9: it cannot make large corrections when the bounds are tight);
+//    (docs/design.md §12: it cannot make large corrections when the bounds are tight);
 //  - the affine basis {1, ρ1, ρ2} cannot represent ρ2²: certified, but with
 //    larger bounds than the full basis.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Identification, Theorem 3.1 (SPEC §5): the relaxation and its iteration.
+// Identification, Theorem 3.1 (docs/design.md §8): the relaxation and its iteration.
 //
 // Tolerances. The SDP backend stops at a relative duality gap of 1e-7 of
 // the SCALED objective (z and r divided by their RMS σ_z, σ_r, so the scaled

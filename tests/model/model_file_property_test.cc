@@ -1,4 +1,4 @@
-/// Properties of the model file reader/writer (SPEC §8): exact round trips
+/// Properties of the model file reader/writer (docs/design.md §11.1): exact round trips
 /// for Rational and double models, numbers in every text form read exactly,
 /// and corrupted files either read (to a model the writer accepts) or throw
 /// InputError, never anything else (run under ASan/UBSan).

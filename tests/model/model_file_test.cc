@@ -116,8 +116,8 @@ TEST(ModelFileTest, ExactNumbersDoNotGoThroughDouble) {
   EXPECT_EQ(big.offset.values[0](0), q("123456789012345678901234567890"));
 }
 
-TEST(ModelFileTest, SpecSection8ExampleReadsAsWritten) {
-  // Copied verbatim from SPEC §8, comments included.
+TEST(ModelFileTest, DesignPageExampleReadsAsWritten) {
+  // Copied verbatim from docs/design.md §11.1, comments included.
   const std::string text = R"JSON({
   "format": "lpvid-model/1",
   "states": 2, "inputs": 2, "outputs": 2,

@@ -1,5 +1,5 @@
 // A certificate of a model with state functions and a state offset E(ρ)
-// (SPEC §7): the certify path writes it, the exact verifier
+// (docs/design.md §10): the certify path writes it, the exact verifier
 // rebuilds x, z, ŷ with the rounded √ in rational arithmetic and accepts it;
 // the same certificate with E or the √ shift moved by 10^-6 is rejected.
 //

@@ -1,7 +1,7 @@
 // Static blocks (model/static_blocks.h): the maps are exact on rationals and
 // satisfy their defining identities; the model file keeps them exactly
 // (round trip) and rejects malformed ones with the field named; simulate()
-// applies them where SPEC §6 / the header say (u' before the LPV part,
+// applies them where the header says (u' before the LPV part,
 // g_out after ŷ + Φ).
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>

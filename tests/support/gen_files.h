@@ -1,5 +1,5 @@
 #pragma once
-/// Generators for input files (SPEC §1, §8): random well-formed model files
+/// Generators for input files (docs/design.md §4, §11): random well-formed model files
 /// (with every number written as a JSON number, a decimal string or a `p/q`
 /// string), random CSV tables written with the optional quoting, CRLF and
 /// trailing commas the reader accepts, and random corruptions of valid text.

@@ -1,6 +1,6 @@
 #pragma once
 /// Generators and helpers for the identification / invalidation tests
-/// (tests/identify; SPEC §2, §4, §5, §7). The cases are the library's
+/// (tests/identify; docs/design.md §5, §7, §8, §10). The cases are the library's
 /// (examples/random_case.h, which says what is generated and why the truth
 /// satisfies Theorem 2.1 at (δ, d_max) EXACTLY), drawn through rapidcheck
 /// (support/rapidcheck_draw.h): each case is replayable from rapidcheck's seed

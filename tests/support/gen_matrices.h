@@ -1,6 +1,6 @@
 #pragma once
 /// Generators for symmetric rational matrices whose PSD verdict is known by
-/// construction (DESIGN §8: no rejection sampling, sized by rapidcheck's size
+/// construction (docs/design.md §13.8: no rejection sampling, sized by rapidcheck's size
 /// so that shrinking finds small counterexamples).
 ///
 ///   psd_gram        BᵀB, B r×n: PSD; rank ≤ r, so exactly PSD (singular) when r < n

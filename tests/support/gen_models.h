@@ -1,5 +1,5 @@
 #pragma once
-/// Generators for LPV models and trajectories (SPEC §2), built by
+/// Generators for LPV models and trajectories (docs/design.md §5), built by
 /// construction (no rejection sampling) and sized by rapidcheck's size:
 /// nx 1..3, nu 1..2, ny 1..2, nρ 0..2, n 1..8, monomial bases of degree ≤ 2,
 /// 0..max_terms terms per matrix, random uncertainty structure. Integers
@@ -109,7 +109,7 @@ struct ModelOptions {
   int max_correction = 2;                  ///< correction basis functions N
 };
 
-/// A random LPV model (SPEC §2): random sizes, terms, correction basis with
+/// A random LPV model (docs/design.md §5): random sizes, terms, correction basis with
 /// fixed A_i, B_i (empty list, or per-function zero or random), uncertainty
 /// structure and weight, optional known offset, optional x0.
 inline rc::Gen<LpvModel<Rational>> lpv_model(ModelOptions o = {}) {

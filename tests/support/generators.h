@@ -1,5 +1,5 @@
 #pragma once
-/// The one header of rapidcheck generators for lpvid tests (DESIGN §8).
+/// The one header of rapidcheck generators for lpvid tests (docs/design.md §13.8).
 /// Objects are built by construction (no rejection sampling) and sized by
 /// rapidcheck's size parameter so that shrinking finds tiny counterexamples.
 /// Each area keeps its generators in a gen_*.h file included from here.

@@ -54,7 +54,7 @@ TEST(SystemToeplitzTest, RejectsInconsistentSizes) {
   EXPECT_THROW(system_toeplitz(A2, m.B, m.C, m.D, Mat<Rational>(3, 1)), std::invalid_argument);
 }
 
-// SPEC §3: the model output from x_0 = 0 is ŷ = T_G u, for random LPV models
+// docs/design.md §6.2: the model output from x_0 = 0 is ŷ = T_G u, for random LPV models
 // (with fixed correction A_i, B_i), exactly over ℚ. Likewise z = T_G12 u.
 // T_G is block lower triangular (causal).
 RC_GTEST_PROP(SystemToeplitzProperty, SystemToeplitzTimesInputIsSimulatedOutput, ()) {
@@ -79,7 +79,7 @@ RC_GTEST_PROP(SystemToeplitzProperty, SystemToeplitzTimesInputIsSimulatedOutput,
 
 // For an LTI G (every term constant, nρ possibly > 0): T_G · T_u = T_{Gu},
 // the signal Toeplitz of the output, exactly. (False for LPV along a varying
-// ρ, SPEC §3.) Also for the uncertainty channel: T_G12 · T_u = T_z.
+// ρ, docs/design.md §6.3.) Also for the uncertainty channel: T_G12 · T_u = T_z.
 RC_GTEST_PROP(SystemToeplitzProperty, LtiSystemToeplitzTimesInputToeplitzIsOutputToeplitz, ()) {
   gen::ModelOptions o;
   o.entry = gen::rational_entry(3, 3);

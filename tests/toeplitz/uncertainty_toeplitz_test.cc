@@ -64,7 +64,7 @@ TEST(UncertaintyToeplitzTest, ModeNamesRoundTrip) {
   EXPECT_THROW(toeplitz_mode_from_string(""), InputError);
 }
 
-// SPEC §3/§9: an LPV case where the modes differ. Static z_k = ρ_k u_k along
+// docs/design.md §6.3: an LPV case where the modes differ. Static z_k = ρ_k u_k along
 // ρ = (1, 2), u = (1, 0): paper-mode T_z = T_G12 T_u = diag(1, 2) is not
 // Toeplitz; its last column is D(ρ_{n−1}) u_0 = 2, not D(ρ_0) u_0 = 1.
 TEST(UncertaintyToeplitzTest, PaperAndSignalDifferForStaticLpvGain) {
@@ -101,7 +101,7 @@ TEST(UncertaintyToeplitzTest, PaperModeRejectsNonZeroInitialState) {
   EXPECT_NO_THROW(T_z(m, e, ToeplitzMode::kPaper));
 }
 
-// SPEC §3: the modes coincide for an LTI G12 (x_0 = 0), exactly.
+// docs/design.md §6.3: the modes coincide for an LTI G12 (x_0 = 0), exactly.
 RC_GTEST_PROP(UncertaintyToeplitzProperty, PaperEqualsSignalForLtiModels, ()) {
   gen::ModelOptions o;
   o.entry = gen::rational_entry(3, 3);

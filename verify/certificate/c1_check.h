@@ -1,6 +1,6 @@
 #pragma once
-/// (C1) of Theorem 2.1 (SPEC §4) for a certificate, decided exactly
-/// (SPEC §7). Both forms end in the exact PSD decision of verify/psd/exact_psd.h
+/// (C1) of Theorem 2.1 (docs/design.md §7.1) for a certificate, decided exactly
+/// (docs/design.md §10.2). Both forms end in the exact PSD decision of verify/psd/exact_psd.h
 /// on a matrix with the same PSD verdict as (C1); the text names that matrix.
 ///
 ///  - form "w" (verify/certificate/c1_w_form.cc): (C1) is

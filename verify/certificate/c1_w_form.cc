@@ -1,7 +1,7 @@
 /// (C1) of Theorem 2.1 for form "w" (verify/certificate/c1_check.h).
 ///
 /// EQUIVALENCE USED. Let G = T_zᵀT_z (n × n), T_w (n·ny × n), δ² ≥ 0 and
-///   M = [G, T_wᵀ; T_w, δ²I]   ((C1) of Theorem 2.1 with G11 = 0, SPEC §4).
+///   M = [G, T_wᵀ; T_w, δ²I]   ((C1) of Theorem 2.1 with G11 = 0, docs/design.md §7.1).
 ///  (a) T_w = 0: M = diag(G, δ²I) ⪰ 0, because G is a Gram matrix and δ² ≥ 0.
 ///      T_w = 0 ⇔ w = 0 (column 0 of T_w is the stacked w, eq. 3).
 ///  (b) δ² = 0, T_w ≠ 0: M is not PSD. With T_w's entry b ≠ 0 in row r,

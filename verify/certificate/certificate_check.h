@@ -1,15 +1,15 @@
 #pragma once
-/// Exact check of a certificate (SPEC §7): from the data text to the PSD
+/// Exact check of a certificate (docs/design.md §10.2): from the data text to the PSD
 /// decision, in rational arithmetic, without tolerance and without solver.
 ///
 ///  1. the data file's bytes must hash to the certificate's sha256;
 ///  2. u, y, ρ are read as exact rationals, the window selected;
 ///  3. x, ŷ, z, Φ are rebuilt by exact simulation of the certificate's model
-///     (SPEC §2, model/simulate.h);
+///     (docs/design.md §5, model/simulate.h);
 ///  4. w: form "w" as given; form "delta": w = Δ ∗ z exactly, which requires
 ///     z_k = 0 for every sample before the Δ horizon (k < n − L);
 ///  5. (C2): ‖d‖₂² ≤ n·ny·d_max², d = y − ŷ − Φ − w, exactly. This is the
-///     LMI [n·ny·d_max², dᵀ; d, I] ⪰ 0 of SPEC §4 (Schur complement on I ≻ 0);
+///     LMI [n·ny·d_max², dᵀ; d, I] ⪰ 0 of docs/design.md §7.1 (Schur complement on I ≻ 0);
 ///  6. (C1): form "w": [T_zᵀT_z, T_wᵀ; T_w, δ²I] ⪰ 0 decided exactly, on
 ///     its Schur complement δ²T_zᵀT_z − T_wᵀT_w (n × n; w = 0 and δ² = 0
 ///     apart; verify/certificate/c1_check.h);

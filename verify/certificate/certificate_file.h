@@ -1,5 +1,5 @@
 #pragma once
-/// The certificate file (SPEC §7), JSON, "format": "lpvid-certificate/1".
+/// The certificate file (docs/design.md §10.1), JSON, "format": "lpvid-certificate/1".
 ///
 ///   {
 ///     "format": "lpvid-certificate/1",
@@ -13,7 +13,7 @@
 ///                  optional]}, …]  (two or more, instead of "data"),
 ///     "model": { … lpvid-model/1, with θ, φ and x0 folded in: no unknowns … },
 ///     "toeplitz_mode": "signal" | "paper",
-///     "noise_normalisation": "rms",          // ‖d‖₂² ≤ n·ny·d_max²  (SPEC §4)
+///     "noise_normalisation": "rms",          // ‖d‖₂² ≤ n·ny·d_max²  (docs/design.md §7.4)
 ///     "delta2": "p/q" | decimal,  "dmax2": "p/q" | decimal,
 ///     "form": "delta" | "w",
 ///     "delta_taps": [[h_0 row-major], …, [h_{K−1}]]   // form "delta": K rows of ny·nz

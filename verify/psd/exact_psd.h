@@ -1,8 +1,8 @@
 #pragma once
 /// Exact positive (semi)definiteness of a rational symmetric matrix
-/// (SPEC §7: "PSD/PD of a rational symmetric matrix by exact LDLᵀ with
+/// (docs/design.md §10.2: "PSD/PD of a rational symmetric matrix by exact LDLᵀ with
 /// symmetric pivoting (a zero pivot needs a zero row), no tolerance anywhere";
-/// DESIGN §3: the verifier returns a verdict, never a float).
+/// docs/design.md §13.3: the verifier returns a verdict, never a float).
 ///
 /// Entry points:
 ///  - decide_psd_exact: the exact decision. Multi-modular symmetric
@@ -82,7 +82,7 @@ struct PsdResult {
   long step = -1;
 };
 
-/// "PD", "PSD" or "NOT_PSD" (the first word of `lpvid-verify psd`, SPEC §8).
+/// "PD", "PSD" or "NOT_PSD" (the first word of `lpvid-verify psd`, docs/design.md §11.2).
 const char* verdict_word(PsdVerdict v);
 
 /// Throws std::invalid_argument unless M is square and exactly symmetric
@@ -106,7 +106,7 @@ struct PsdOptions {
   int threads = 0;          ///< for the exact path (see decide_psd_exact)
 };
 
-/// Filter, then exact (DESIGN §3). Same contract as decide_psd_exact.
+/// Filter, then exact (docs/design.md §13.3). Same contract as decide_psd_exact.
 PsdResult decide_psd(const Mat<Rational>& M, const PsdOptions& options = {});
 
 /// vᵀMv, exactly.

@@ -1,5 +1,5 @@
 #pragma once
-/// `lpvid-verify psd M.txt` (SPEC §8): decides whether the exact rational
+/// `lpvid-verify psd M.txt` (docs/design.md §11.2): decides whether the exact rational
 /// symmetric matrix in M.txt is PD, PSD or not PSD.
 ///
 /// Output: the first word is `PD`, `PSD` or `NOT_PSD`, then the reason on the

@@ -1,5 +1,5 @@
 #pragma once
-/// Fast rigorous filter for positive definiteness (DESIGN §3: "a fast filter
+/// Fast rigorous filter for positive definiteness (docs/design.md §13.3: "a fast filter
 /// may answer first when it is certain; otherwise exact rationals decide").
 /// In the CGAL "filter, then exact" style it answers only "PD for sure" or
 /// "don't know". A "don't know" may carry a floating candidate v for

@@ -1,5 +1,5 @@
 #pragma once
-/// Exact matrix text files (SPEC §8, `lpvid-verify psd M.txt`).
+/// Exact matrix text files (docs/design.md §11.2, `lpvid-verify psd M.txt`).
 ///
 /// Format: one matrix row per line; entries are exact decimals ("0.1",
 /// "-2.5e-3") or fractions ("1/3"), separated by spaces and/or tabs. Blank
