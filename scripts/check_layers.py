@@ -25,6 +25,7 @@ LEVELS = [
     ("src/solvers", "SDP back ends (CSDP, SDPA, outside solvers)"),
     ("src/lmi", "the LMIs of Theorems 2.1 and 3.1 and their structured solvers"),
     ("src/certify", "Theorem 2.1 for a fixed model: certificates of the upper end, the lower end or invalidation"),
+    ("src/jobs", "a long record as one job per window: the plan, each job's certificates judged against it, the merge's verdict"),
     ("src/identify", "identification (Theorem 3.1), fit -> fix -> certify, basis selection, trade-off curves"),
     ("src/fit", "least-squares and output-error fits of model parameters"),
     ("src/diagnose", "residual -> missing effect -> re-fitted model, certified"),

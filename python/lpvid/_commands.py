@@ -264,7 +264,7 @@ def tradeoff(u=None, y=None, rho=None, model=None, *, lambdas=None, data=None, r
         words = _data_words(paths, x0) + ["--model", model_path, "--report", report_path,
                                           "--certificate", os.path.join(ws, "tradeoff.cert.json"),
                                           "--csv", os.path.join(ws, "tradeoff.csv"),
-                                          "--plot", os.path.join(ws, "tradeoff.png")]
+                                          "--plots", ws]
         if lambdas is not None:
             words += ["--lambdas"] + [number_text(v) for v in lambdas]
         code, output, messages = _run("tradeoff", "tradeoff", words, options, own=("lambdas",), progress=progress,

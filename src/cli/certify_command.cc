@@ -31,7 +31,7 @@ int run_certify(CertifyArgs& a) {
   const OutsideSolution outside = read_outside_solution(
       a.program_path, a.solution_path, a.format == "sdpa" ? SolutionFormat::kSdpa : SolutionFormat::kCsdp, a.exit_code);
   const CertifiedBounds b = certify_outside_solution(in.model_q, in.exp_q, co, outside);
-  const CertificateFiles files = write_certificates(b, certificate_path(c));
+  const CertificateFiles files = write_named_certificates(b, named_certificate_path(c));
   std::cout << "\nTheorem 2.1 (Delta form) solved outside: " << a.solution_path << " for " << a.program_path << "\n"
             << bounds_text(b, files);
   nlohmann::ordered_json report = bounds_json(b, c.toeplitz, c.solver, files);

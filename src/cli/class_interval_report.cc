@@ -62,11 +62,13 @@ nlohmann::ordered_json report_class_interval(const ClassInterval& ci, const Cert
     j["reason"] = r.reason;
     return j;
   }
-  const std::string path = class_certificate_path(certificate_path);
-  write_certificate_at(*r.certificate, path);
+  // no file unless the user named a certificate ("" from named_certificate_path)
+  const std::string path = certificate_path.empty() ? "" : class_certificate_path(certificate_path);
+  if (!path.empty()) write_certificate_at(*r.certificate, path);
   std::cout << "  [" << lower_text(r.lower, 6) << ", " << upper_text(upper.upper, 6) << "]  relative gap "
             << ci.relative_gap << "  (" << r.leaves << (r.leaves == 1 ? " leaf" : " leaves") << ", " << r.seconds << " s)\n"
-            << "  lower end   " << path << " checked exactly: no theta of the region reaches a lower objective\n";
+            << "  lower end   " << (path.empty() ? std::string("(no file written)") : path)
+            << " checked exactly: no theta of the region reaches a lower objective\n";
   if (!r.whole_class)
     std::cout << "  region      " << r.free.size() << " free parameters, " << r.names.size() - r.free.size()
               << " in a box (see the report's class_interval.region)\n";
@@ -77,7 +79,7 @@ nlohmann::ordered_json report_class_interval(const ClassInterval& ci, const Cert
   j["lower_exact"] = exact_decimal_or_fraction(r.lower);
   j["upper_exact"] = exact_decimal_or_fraction(upper.upper);
   j["relative_gap"] = ci.relative_gap;
-  j["lower_certificate"] = path;
+  j["lower_certificate"] = path.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(path);
   j["region"] = region_json(r);
   j["adopted_class_optimum"] = ci.adopted;
   j["seconds"] = r.seconds;

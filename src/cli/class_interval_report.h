@@ -22,8 +22,8 @@ void add_class_interval_options(CLI::App* cmd, ClassIntervalArgs& a);
 /// Where the class certificate of `certificate_path` goes (a.cert.json → a.cert.class.json).
 std::string class_certificate_path(const std::string& certificate_path);
 
-/// Writes the certificate (when certified), prints the interval and returns
-/// the report's "class_interval" object.
+/// Writes the certificate (when certified and `certificate_path` is not ""), prints
+/// the interval and returns the report's "class_interval" object.
 nlohmann::ordered_json report_class_interval(const ClassInterval& ci, const CertifiedBounds& upper,
                                              const std::string& certificate_path);
 

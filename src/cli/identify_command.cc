@@ -34,8 +34,25 @@ struct IdentifyArgs {
   ClassIntervalArgs class_interval;
 };
 
-int run_identify(IdentifyArgs& a) {
-  if (!a.model_out.empty()) check_output_file(a.model_out, "--model-out");
+/// The identification options of the command line.
+IdentifyOptions identify_options(const IdentifyArgs& a, const Inputs& in) {
+  IdentifyOptions opt;
+  opt.objective = in.objective;
+  opt.iterate = a.iterate;
+  opt.method = a.method == "alternating" ? IdentifyMethod::kAlternating : IdentifyMethod::kRelaxation;
+  opt.taps = a.alt_taps;
+  if (opt.method == IdentifyMethod::kAlternating && a.iterate)
+    throw InputError("--iterate belongs to --method relaxation; the alternating method always iterates");
+  opt.max_iterations = a.max_iterations;
+  opt.rel_tol = a.rel_tol;
+  opt.unknowns.x0 = a.free_x0;
+  opt.unknowns.offset = !a.no_offset;
+  opt.solver.verbose = a.common.verbose;
+  return opt;
+}
+
+/// The inputs, with --basis in place of the model's correction basis.
+Inputs identify_inputs(IdentifyArgs& a) {
   Inputs in = load_inputs(a.common);
   if (!a.basis.empty()) {
     const std::vector<Monomial> basis = parse_basis(a.basis, in.model_q.scheduling);
@@ -49,24 +66,11 @@ int run_identify(IdentifyArgs& a) {
   if (in.mode != ToeplitzMode::kSignal)
     throw InputError("--toeplitz paper is supported by 'invalidate' (fixed model) only; identification uses the "
                      "signal form (T_z built from the simulated z)");
-  IdentifyOptions opt;
-  opt.objective = in.objective;
-  opt.iterate = a.iterate;
-  opt.method = a.method == "alternating" ? IdentifyMethod::kAlternating : IdentifyMethod::kRelaxation;
-  opt.taps = a.alt_taps;
-  if (opt.method == IdentifyMethod::kAlternating && a.iterate)
-    throw InputError("--iterate belongs to --method relaxation; the alternating method always iterates");
-  opt.max_iterations = a.max_iterations;
-  opt.rel_tol = a.rel_tol;
-  opt.unknowns.x0 = a.free_x0;
-  opt.unknowns.offset = !a.no_offset;
-  opt.solver.verbose = a.common.verbose;
-  CertifyOptions co = certify_options(a.common, in);
-  co.solver = opt.solver;
-  auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
-  IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, *solver);
-  const IdentifyResult& res = id.fit;
+  return in;
+}
 
+/// Theorem 3.1's solves, printed.
+void print_solves(const IdentifyResult& res) {
   std::cout << "\nTheorem 3.1: " << res.relaxation << "\n"
             << "  unknowns    " << res.names.size() << " (" << res.free_directions << " free after pinning)\n";
   if (res.pinned_samples > 0)
@@ -75,43 +79,35 @@ int run_identify(IdentifyArgs& a) {
   for (const auto& it : res.iterates)
     std::cout << "  solve " << it.index << "     " << to_string(it.status) << "  delta = " << std::sqrt(std::max(0.0, it.delta2))
               << "  dmax = " << std::sqrt(std::max(0.0, it.dmax2)) << "  (solver values, " << it.seconds << " s)\n";
+}
+
+/// The SDP back end found no solution: no model and no bound (report and exit code).
+int render_no_solution(const IdentifiedModel& id, const IdentifyOptions& opt, const std::string& report_path) {
+  const IdentifyResult& res = id.fit;
+  std::cout << "  the SDP backend ended with '" << to_string(res.status) << "': no model and no bound\n";
   nlohmann::ordered_json report;
-  if (!has_solution(res.status)) {
-    std::cout << "  the SDP backend ended with '" << to_string(res.status) << "': no model and no bound\n";
-    report["status"] = to_string(res.status);
-    report["verified"] = false;
-    report["delta"] = nullptr;
-    report["dmax"] = nullptr;
-    report["message"] = res.message;
-    write_json(a.common.report_path, report);
-    // The relaxation (and the alternating method) are restrictions of the
-    // BMI: their infeasibility says nothing about the model class.
-    if (id.outcome == CertifyOutcome::kUndecided) {
-      report["status"] = "undecided";
-      write_json(a.common.report_path, report);
-      std::cout << "  -> UNDECIDED: the " << (opt.method == IdentifyMethod::kAlternating ? "alternating (local) method" : "relaxation")
-                << " found no consistent model at the given bounds; its infeasibility is not an invalidation of the model class\n";
-    }
-    return exit_code(id.outcome);
+  report["status"] = to_string(res.status);
+  report["verified"] = false;
+  report["delta"] = nullptr;
+  report["dmax"] = nullptr;
+  report["message"] = res.message;
+  // The relaxation (and the alternating method) are restrictions of the
+  // BMI: their infeasibility says nothing about the model class.
+  if (id.outcome == CertifyOutcome::kUndecided) {
+    report["status"] = "undecided";
+    std::cout << "  -> UNDECIDED: the " << (opt.method == IdentifyMethod::kAlternating ? "alternating (local) method" : "relaxation")
+              << " found no consistent model at the given bounds; its infeasibility is not an invalidation of the model class\n";
   }
+  write_json(report_path, report);
+  return exit_code(id.outcome);
+}
 
-  std::optional<ClassInterval> klass;
-  if (!a.class_interval.skip && id.bounds.verified && in.objective.kind != BoundObjective::Kind::kFeasibility) {
-    ClassBoundOptions cbo;
-    cbo.unknowns = opt.unknowns;
-    cbo.box_fraction = a.class_interval.box;
-    cbo.max_leaves = a.class_interval.leaves;
-    klass = class_interval(id, in.model_q, in.model_d, in.exp_q, in.exp_d, co, cbo, *solver);
-  }
+/// The report of an identification with a solution (without class interval and model file).
+nlohmann::ordered_json identify_report(const IdentifyArgs& a, const Inputs& in, const IdentifiedModel& id,
+                                       const CertificateFiles& files) {
+  const IdentifyResult& res = id.fit;
   const CertifiedBounds& b = id.bounds;
-  const CertificateFiles files = write_certificates(b, certificate_path(a.common));
-  if (!id.taps_note.empty()) std::cout << "\n  the iterate's own Delta did not certify (" << id.taps_note << "); solved again\n";
-
-  std::cout << "\nCertified bounds of the identified model (Theorem 2.1, Delta form, exact check)\n"
-            << bounds_text(b, files,
-                           "for this theta: the lower end bounds the model with the identified theta fixed, not the "
-                           "model class (another theta may do better)");
-  report = bounds_json(b, a.common.toeplitz, a.common.solver, files);
+  nlohmann::ordered_json report = bounds_json(b, a.common.toeplitz, a.common.solver, files);
   report["method"] = a.method;
   report["relaxation"] = res.relaxation;
   report["iterations"] = static_cast<int>(res.iterates.size());
@@ -130,21 +126,54 @@ int run_identify(IdentifyArgs& a) {
     report["interval"] = interval_json(b, in.objective, files);
     report["interval"]["scope"] = "the model with the identified theta fixed (not the model class)";
   }
-  if (klass) report["class_interval"] = report_class_interval(*klass, b, certificate_path(a.common));
-  if (!a.model_out.empty()) {
-    // the exact model the bounds are about: θ folded in, x0 (and φ) as identified
-    LpvModel<Rational> m = id.fixed.model;
-    // θ is folded into C and D: a correction basis with no fixed part left
-    // would only make 'invalidate' say that it ignores it
-    const auto zero = [](const std::vector<Mat<Rational>>& v) {
-      return std::all_of(v.begin(), v.end(), [](const Mat<Rational>& x) { return x.isZero(); });
-    };
-    if (zero(m.correction.A) && zero(m.correction.B)) m.correction = {};
-    write_model_file(a.model_out, m);
-    report["model_out"] = a.model_out;
-    std::cout << "  model       " << a.model_out << " (the identified model, exact; 'lpvid invalidate --model "
-              << a.model_out << "' re-certifies it)\n";
+  return report;
+}
+
+/// --model-out: the exact model the bounds are about (θ folded in, x0 and φ as identified).
+void write_identified_model(const IdentifiedModel& id, const std::string& path, nlohmann::ordered_json& report) {
+  LpvModel<Rational> m = id.fixed.model;
+  // θ is folded into C and D: a correction basis with no fixed part left
+  // would only make 'invalidate' say that it ignores it
+  const auto zero = [](const std::vector<Mat<Rational>>& v) {
+    return std::all_of(v.begin(), v.end(), [](const Mat<Rational>& x) { return x.isZero(); });
+  };
+  if (zero(m.correction.A) && zero(m.correction.B)) m.correction = {};
+  write_model_file(path, m);
+  report["model_out"] = path;
+  std::cout << "  model       " << path << " (the identified model, exact; 'lpvid invalidate --model " << path
+            << "' re-certifies it)\n";
+}
+
+int run_identify(IdentifyArgs& a) {
+  if (!a.model_out.empty()) check_output_file(a.model_out, "--model-out");
+  Inputs in = identify_inputs(a);
+  const IdentifyOptions opt = identify_options(a, in);
+  CertifyOptions co = certify_options(a.common, in);
+  co.solver = opt.solver;
+  auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
+  IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, *solver);
+  print_solves(id.fit);
+  if (!has_solution(id.fit.status)) return render_no_solution(id, opt, a.common.report_path);
+
+  std::optional<ClassInterval> klass;
+  if (!a.class_interval.skip && id.bounds.verified && in.objective.kind != BoundObjective::Kind::kFeasibility) {
+    ClassBoundOptions cbo;
+    cbo.unknowns = opt.unknowns;
+    cbo.box_fraction = a.class_interval.box;
+    cbo.max_leaves = a.class_interval.leaves;
+    klass = class_interval(id, in.model_q, in.model_d, in.exp_q, in.exp_d, co, cbo, *solver);
   }
+  const CertifiedBounds& b = id.bounds;
+  const std::string certificate = named_certificate_path(a.common);
+  const CertificateFiles files = write_named_certificates(b, certificate);
+  if (!id.taps_note.empty()) std::cout << "\n  the iterate's own Delta did not certify (" << id.taps_note << "); solved again\n";
+  std::cout << "\nCertified bounds of the identified model (Theorem 2.1, Delta form, exact check)\n"
+            << bounds_text(b, files,
+                           "for this theta: the lower end bounds the model with the identified theta fixed, not the "
+                           "model class (another theta may do better)");
+  nlohmann::ordered_json report = identify_report(a, in, id, files);
+  if (klass) report["class_interval"] = report_class_interval(*klass, b, certificate);
+  if (!a.model_out.empty()) write_identified_model(id, a.model_out, report);
   write_json(a.common.report_path, report);
   // Not exit_code(id.outcome): an "invalidated" or "undecided" certification
   // here is about the identified theta only, never the model class.

@@ -327,6 +327,10 @@ std::string certificate_path(const CommonOptions& o) {
   return "lpvid.cert.json";
 }
 
+std::string named_certificate_path(const CommonOptions& o) {
+  return o.certificate_path.empty() && o.report_path.empty() ? "" : certificate_path(o);
+}
+
 std::string stem_of(const std::string& path, const std::vector<std::string>& extensions) {
   for (const std::string& e : extensions)
     if (path.size() > e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0)

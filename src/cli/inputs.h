@@ -110,8 +110,11 @@ std::string data_lines(const CommonOptions& o, const Inputs& in);
 /// Prints the options a command ran with (docs/design.md §13.7).
 void print_options(const CommonOptions& o, const Inputs& in, const std::string& command);
 
-/// The certificate path to use.
+/// The certificate path of diagnose: as named_certificate_path, else lpvid.cert.json.
 std::string certificate_path(const CommonOptions& o);
+/// The certificate file the user named: --certificate, or <report stem>.cert.json
+/// when --report is given; "" when neither (then no certificate file is written).
+std::string named_certificate_path(const CommonOptions& o);
 
 /// `path` without the first of `extensions` it ends with ("a.cert.json" →
 /// "a"); unchanged when it ends with none of them.

@@ -15,6 +15,28 @@
 namespace lpvid::cli {
 namespace {
 
+/// The verdict at a fixed (delta, dmax): printed, and its report fields.
+void render_feasibility(nlohmann::ordered_json& report, const CertifiedBounds& b, const CertificateFiles& files,
+                        const CommonOptions& c) {
+  const CertifyOutcome outcome = b.outcome;
+  report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);
+  if (outcome != CertifyOutcome::kVerified) report["status"] = to_string(outcome);
+  if (outcome == CertifyOutcome::kInvalidated) {
+    report["certificate"] = files.certificate.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(files.certificate);
+    report["verified"] = true;
+    std::cout << "  -> INVALIDATED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
+              << ": no causal LTI Delta with ||Delta||_inf <= delta and no noise with RMS <= dmax explain the data.\n"
+              << "     certificate " << (files.certificate.empty() ? "in memory" : files.certificate)
+              << " (claim \"invalidated\", a dual point of the full-horizon "
+              << "problem), checked exactly: " << b.lower.verifier_details << "\n";
+    if (files.certificate.empty()) std::cout << "     " << kNoCertificateFile << "\n";
+  }
+  if (outcome == CertifyOutcome::kUndecided) {
+    std::cout << "  -> UNDECIDED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
+              << ": neither a consistency nor an invalidation certificate passed the exact check\n";
+  }
+}
+
 int run_invalidate(CommonOptions& c) {
   Inputs in = load_inputs(c);
   print_options(c, in, "invalidate");
@@ -32,7 +54,7 @@ int run_invalidate(CommonOptions& c) {
               << " P.sol', then 'lpvid certify' with the same options and --program, --solution\n";
   }
   const CertifiedBounds b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
-  const CertificateFiles files = write_certificates(b, certificate_path(c));
+  const CertificateFiles files = write_named_certificates(b, named_certificate_path(c));
   std::cout << "\nTheorem 2.1 (" << (in.mode == ToeplitzMode::kSignal ? "Delta form" : "w form, paper T_z")
             << "), the model as written: "
             << (in.model_q.correction.basis.empty() ? std::string("no correction")
@@ -45,25 +67,11 @@ int run_invalidate(CommonOptions& c) {
   report["iterations"] = 1;
   report["samples"] = in.exp_q.n();
   std::cout << add_record_figures(report, in.records, in.model_d, in.exp_d, b);
-  const CertifyOutcome outcome = b.outcome;
-  if (in.objective.kind == BoundObjective::Kind::kFeasibility) {
-    report["verdict"] = outcome == CertifyOutcome::kVerified ? "consistent" : to_string(outcome);
-    if (outcome != CertifyOutcome::kVerified) report["status"] = to_string(outcome);
-    if (outcome == CertifyOutcome::kInvalidated) {
-      report["certificate"] = files.certificate;
-      report["verified"] = true;
-      std::cout << "  -> INVALIDATED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
-                << ": no causal LTI Delta with ||Delta||_inf <= delta and no noise with RMS <= dmax explain the data.\n"
-                << "     certificate " << files.certificate << " (claim \"invalidated\", a dual point of the full-horizon "
-                << "problem), checked exactly: " << b.lower.verifier_details << "\n";
-    }
-    if (outcome == CertifyOutcome::kUndecided) {
-      std::cout << "  -> UNDECIDED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
-                << ": neither a consistency nor an invalidation certificate passed the exact check\n";
-    }
-  } else {
+  if (in.objective.kind == BoundObjective::Kind::kFeasibility)
+    render_feasibility(report, b, files, c);
+  else
     report["interval"] = interval_json(b, in.objective, files);
-  }
+  const CertifyOutcome outcome = b.outcome;
   write_json(c.report_path, report);
   return exit_code(outcome);
 }

@@ -1,5 +1,5 @@
 // lpvid jobs plan / lpvid jobs merge: the windows of a long record as
-// separate processes (cli/jobs_plan.h says what a window's bound claims).
+// separate processes (jobs/plan.h says what a window's bound claims).
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -9,9 +9,6 @@
 
 #include "cli/commands.h"
 #include "cli/inputs.h"
-#include "cli/jobs_joint_check.h"
-#include "cli/jobs_plan.h"
-#include "cli/jobs_window_check.h"
 #include "cli/report.h"
 #include "core/decimal_rounding.h"
 #include "core/file_io.h"
@@ -19,6 +16,9 @@
 #include "core/number_text.h"
 #include "core/sha256.h"
 #include "diagnose/bound_windows.h"
+#include "jobs/merge.h"
+#include "jobs/plan.h"
+#include "jobs/window_check.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
 
@@ -26,6 +26,21 @@ namespace lpvid::cli {
 namespace {
 
 namespace fs = std::filesystem;
+using jobs::JobPlan;
+using jobs::JobWindow;
+using jobs::JointJob;
+using jobs::MergedWindow;
+using jobs::MergeResult;
+using jobs::MergeVerdict;
+using jobs::StatusCounts;
+using jobs::VerifiedSummary;
+using jobs::WindowResult;
+using jobs::WindowStatus;
+using jobs::merge_jobs;
+using jobs::objective_name;
+using jobs::plan_json;
+using jobs::shell_quote;
+using jobs::to_string;
 
 struct PlanArgs {
   long window = kDefaultWindowLength, min_last = kDefaultMinLastWindow;
@@ -72,7 +87,8 @@ JointJob joint_job(const JobPlan& plan, const fs::path& dir, const std::string& 
   return j;
 }
 
-int run_plan(CommonOptions& c, const PlanArgs& a) {
+/// The options of `jobs plan` that cannot make a plan, refused.
+void check_plan_options(const CommonOptions& c, const PlanArgs& a) {
   if (!c.certificate_path.empty() || !c.report_path.empty() || !c.write_sdpa.empty())
     throw InputError("jobs plan: --certificate, --report and --write-sdpa belong to the jobs (one per window); "
                      "'lpvid jobs merge' writes the report");
@@ -80,17 +96,10 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
   if (a.min_last < 1) throw InputError("jobs plan: --min-last must be at least 1 row");
   if (c.data_paths.size() > 1)
     throw InputError("jobs plan: one --data (the plan tiles one record into windows); several records: 'lpvid invalidate'");
-  Inputs in = load_inputs(c);
-  if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
-    throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" (the jobs run 'lpvid invalidate')");
-  const long first_row = c.rows_text.empty() ? 0 : c.row_begin;
-  const std::vector<RowWindow> windows = tile_windows(in.exp_q.n(), a.window, a.min_last);
-  if (a.joint && windows.size() < 2)
-    throw InputError("jobs plan --joint: the record makes " + std::to_string(windows.size()) +
-                     " window; the joint claim needs at least 2 (a smaller --window)");
-  if (a.joint && c.toeplitz != "signal")
-    throw InputError("jobs plan --joint: several records are certified in --toeplitz signal only");
+}
 
+/// The plan's record, model and objective (no windows yet).
+JobPlan plan_header(const CommonOptions& c, const PlanArgs& a, const Inputs& in) {
   JobPlan plan;
   plan.data_path = fs::absolute(c.data_path).lexically_normal().string();
   plan.data_sha256 = sha256_hex(read_text_file(c.data_path));
@@ -104,19 +113,15 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
   plan.lambda_text = c.lambda ? double_to_text(*c.lambda) : "";
   plan.window = a.window;
   plan.min_last = a.min_last;
+  return plan;
+}
 
-  std::error_code ec;
-  fs::create_directories(a.dir, ec);
-  if (!fs::is_directory(a.dir)) throw IoError("jobs plan: cannot create the folder " + a.dir);
-  const fs::path dir = fs::absolute(a.dir).lexically_normal();
-  const std::string program = a.lpvid.empty() ? fs::read_symlink("/proc/self/exe", ec).string() : a.lpvid;
-  if (program.empty()) throw InputError("jobs plan: cannot find this program's path; give --lpvid");
-  const std::string options = forwarded_options(c);
-
-  // each window starts from the model's own state there (x0 of the model at
-  // the first selected row, simulated in floating point, 12 digits declared)
+/// Each window with its model file written in `dir`: the window starts from
+/// the model's own state there (x0 of the model at the first selected row,
+/// simulated in floating point, 12 digits declared).
+void plan_windows(JobPlan& plan, const std::vector<RowWindow>& windows, long first_row, const Inputs& in,
+                  const fs::path& dir, const std::string& program, const std::string& options) {
   const Simulation<double> sim = simulate(in.model_d, in.exp_d);
-  std::string job_lines;
   for (size_t k = 0; k < windows.size(); ++k) {
     const auto [b, e] = windows[k];
     JobWindow w;
@@ -136,18 +141,14 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
                 std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + " --model " +
                 shell_quote((dir / w.model).string()) + " --certificate " + shell_quote((dir / w.certificate).string()) +
                 " --report " + shell_quote((dir / w.report).string()) + options;
-    job_lines += w.command + "\n";
     plan.windows.push_back(w);
   }
-  if (a.joint) {
-    plan.joint = joint_job(plan, dir, program, options);
-    job_lines += plan.joint->command + "\n";
-  }
-  write_text_file((dir / "jobs.txt").string(), job_lines, "job list");
-  write_text_file((dir / "plan.json").string(), plan_json(plan).dump(1) + "\n", "job plan");
+}
 
+/// What was planned and how to run the jobs.
+void print_plan(const CommonOptions& c, const PlanArgs& a, const Inputs& in, size_t windows, const fs::path& dir) {
   const std::string jobs = shell_quote((dir / "jobs.txt").string());
-  std::cout << "planned " << windows.size() << " window(s) of " << a.window << " rows over " << in.exp_q.n()
+  std::cout << "planned " << windows << " window(s) of " << a.window << " rows over " << in.exp_q.n()
             << " samples of " << c.data_path << " (" << in.objective.describe() << ")\n"
             << "  " << (dir / "jobs.txt").string() << ": one 'lpvid invalidate' per line; each window starts from the\n"
             << "  model's own simulated state (declared as x0 in its model file " << window_name(0, ".model.json")
@@ -159,25 +160,48 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
             << "then run them with any batch engine, e.g.\n"
             << "  GNU parallel:  parallel -j 2 < " << jobs << "\n"
             << "  xargs:         xargs -P 2 -d '\\n' -n 1 sh -c < " << jobs << "\n"
-            << "  Slurm array:   sbatch --array=1-" << windows.size() + (a.joint ? 1 : 0) << " --wrap \"sed -n \\${SLURM_ARRAY_TASK_ID}p "
+            << "  Slurm array:   sbatch --array=1-" << windows + (a.joint ? 1 : 0) << " --wrap \"sed -n \\${SLURM_ARRAY_TASK_ID}p "
             << jobs << " | bash\"\n"
             << "and assemble:    lpvid jobs merge --dir " << shell_quote(dir.string())
             << "   (re-checks every certificate exactly)\n";
+}
+
+int run_plan(CommonOptions& c, const PlanArgs& a) {
+  check_plan_options(c, a);
+  Inputs in = load_inputs(c);
+  if (!in.model_q.offset.basis.empty() && in.model_q.offset.values.empty())
+    throw InputError(c.model_path + ": offset: the offset values are unknown; give \"values\" (the jobs run 'lpvid invalidate')");
+  const long first_row = c.rows_text.empty() ? 0 : c.row_begin;
+  const std::vector<RowWindow> windows = tile_windows(in.exp_q.n(), a.window, a.min_last);
+  if (a.joint && windows.size() < 2)
+    throw InputError("jobs plan --joint: the record makes " + std::to_string(windows.size()) +
+                     " window; the joint claim needs at least 2 (a smaller --window)");
+  if (a.joint && c.toeplitz != "signal")
+    throw InputError("jobs plan --joint: several records are certified in --toeplitz signal only");
+  JobPlan plan = plan_header(c, a, in);
+  std::error_code ec;
+  fs::create_directories(a.dir, ec);
+  if (!fs::is_directory(a.dir)) throw IoError("jobs plan: cannot create the folder " + a.dir);
+  const fs::path dir = fs::absolute(a.dir).lexically_normal();
+  const std::string program = a.lpvid.empty() ? fs::read_symlink("/proc/self/exe", ec).string() : a.lpvid;
+  if (program.empty()) throw InputError("jobs plan: cannot find this program's path; give --lpvid");
+  const std::string options = forwarded_options(c);
+  plan_windows(plan, windows, first_row, in, dir, program, options);
+  std::string job_lines;
+  for (const JobWindow& w : plan.windows) job_lines += w.command + "\n";
+  if (a.joint) {
+    plan.joint = joint_job(plan, dir, program, options);
+    job_lines += plan.joint->command + "\n";
+  }
+  write_text_file((dir / "jobs.txt").string(), job_lines, "job list");
+  write_text_file((dir / "plan.json").string(), plan_json(plan).dump(1) + "\n", "job plan");
+  print_plan(c, a, in, windows.size(), dir);
   return kExitOk;
 }
 
-/// One window of the plan and what merge found for it.
-struct Merged {
-  JobWindow w;
-  WindowResult r;
-};
-
-/// The joint claim of `plan --joint`: judged, printed, and its entry of
-/// merged.json ("joint").
-nlohmann::ordered_json merge_joint(const PlannedClaim& planned, const JobPlan& plan, const LpvModel<Rational>& model,
-                                   const fs::path& dir, WindowStatus& status) {
-  const WindowResult r = judge_joint(planned, plan, model, (dir / plan.joint->certificate).string());
-  status = r.status;
+/// The joint claim of `plan --joint`: printed, and its entry of merged.json
+/// ("joint").
+nlohmann::ordered_json render_joint(const WindowResult& r, const JobPlan& plan) {
   const bool ok = r.status == WindowStatus::kVerified || r.status == WindowStatus::kInvalidated;
   nlohmann::ordered_json j = {{"certificate", plan.joint->certificate}, {"status", to_string(r.status)}, {"verified", ok}};
   std::cout << "joint claim (the " << plan.windows.size() << " windows as records of one claim: one Delta, one noise bound): "
@@ -200,138 +224,123 @@ nlohmann::ordered_json merge_joint(const PlannedClaim& planned, const JobPlan& p
   return j;
 }
 
-int run_merge(const std::string& dir_text, std::string report_path, bool quiet) {
-  const JobPlan plan = read_plan(dir_text);
-  const fs::path dir(dir_text);
-  if (sha256_hex(read_text_file(plan.data_path)) != plan.data_sha256)
-    throw InputError(plan.data_path + ": the data changed since the plan was made (sha256 differs)");
-  if (sha256_hex(read_text_file(plan.model_path)) != plan.model_sha256)
-    throw InputError(plan.model_path + ": the model changed since the plan was made (sha256 differs)");
-  const LpvModel<Rational> planned_model = read_model_file<Rational>(plan.model_path);
-  const PlannedClaim planned = planned_claim(plan);
-  const auto started = std::chrono::steady_clock::now();
-  auto last = started;
-  std::vector<Merged> rows;
-  for (const JobWindow& w : plan.windows) {
-    const LpvModel<Rational> model = window_model(planned_model, w);
-    rows.push_back({w, judge_window(planned, w, model, (dir / w.certificate).string(), plan.data_path)});
-    const auto now = std::chrono::steady_clock::now();
-    if (!quiet && (std::chrono::duration<double>(now - last).count() > 2.0 || rows.size() == plan.windows.size())) {
-      std::fprintf(stderr, "[jobs merge %6.1f s] checked %zu of %zu windows\n",
-                   std::chrono::duration<double>(now - started).count(), rows.size(), plan.windows.size());
-      last = now;
-    }
+/// A window's entry of merged.json ("windows").
+nlohmann::ordered_json window_json(const MergedWindow& m, const std::string& objective) {
+  nlohmann::ordered_json j = {{"index", m.w.index}, {"rows", {m.w.file_begin, m.w.file_end}}, {"status", to_string(m.r.status)}};
+  if (m.r.status == WindowStatus::kVerified) {
+    j["delta2_exact"] = rational_to_text(m.r.delta2);
+    j["dmax2_exact"] = rational_to_text(m.r.dmax2);
+    j["delta"] = upper_sqrt_text(m.r.delta2);
+    j["dmax"] = upper_sqrt_text(m.r.dmax2);
+    if (objective != "feasibility") j["upper_exact"] = rational_to_text(m.r.upper);
+    if (m.r.has_lower) j["lower_exact"] = rational_to_text(m.r.lower);
+    j["x0"] = m.r.x0;
   }
+  if (!m.r.reason.empty()) j["reason"] = m.r.reason;
+  j["certificate"] = m.w.certificate;
+  return j;
+}
 
-  size_t verified = 0, invalidated = 0, missing = 0, refused = 0;
-  Rational worst_upper, worst_dmax2, worst_delta2, weighted_dmax2, best_lower;
-  long samples = 0;
-  bool any_lower = false;
-  nlohmann::ordered_json windows = nlohmann::ordered_json::array();
-  for (const Merged& m : rows) {
-    nlohmann::ordered_json j = {{"index", m.w.index}, {"rows", {m.w.file_begin, m.w.file_end}}, {"status", to_string(m.r.status)}};
-    if (m.r.status == WindowStatus::kVerified) {
-      ++verified;
-      const long n = m.w.file_end - m.w.file_begin;
-      samples += n;
-      weighted_dmax2 += Rational(n) * m.r.dmax2;
-      if (m.r.upper > worst_upper) worst_upper = m.r.upper;
-      if (m.r.dmax2 > worst_dmax2) worst_dmax2 = m.r.dmax2;
-      if (m.r.delta2 > worst_delta2) worst_delta2 = m.r.delta2;
-      j["delta2_exact"] = rational_to_text(m.r.delta2);
-      j["dmax2_exact"] = rational_to_text(m.r.dmax2);
-      j["delta"] = upper_sqrt_text(m.r.delta2);
-      j["dmax"] = upper_sqrt_text(m.r.dmax2);
-      if (plan.objective != "feasibility") j["upper_exact"] = rational_to_text(m.r.upper);
-      if (m.r.has_lower) {
-        j["lower_exact"] = rational_to_text(m.r.lower);
-        if (!any_lower || m.r.lower > best_lower) best_lower = m.r.lower;
-        any_lower = true;
-      }
-      j["x0"] = m.r.x0;
-    } else if (m.r.status == WindowStatus::kInvalidated) {
-      ++invalidated;
-    } else if (m.r.status == WindowStatus::kMissing) {
-      ++missing;
-    } else {
-      ++refused;
-    }
-    if (!m.r.reason.empty()) j["reason"] = m.r.reason;
-    j["certificate"] = m.w.certificate;
-    windows.push_back(j);
-  }
-
-  // the table: every window up to 40, else the first 10 verified ones and
-  // the first 30 that are not
-  std::cout << "lpvid jobs merge: " << plan.windows.size() << " window(s) of " << plan.data_path << ", objective "
-            << plan.objective << "; every certificate re-checked exactly\n";
+/// The table: every window up to 40, else the first 10 verified ones and
+/// the first 30 that are not; then the counts.
+void print_merge_table(const MergeResult& res) {
+  const std::vector<MergedWindow>& rows = res.windows;
+  std::cout << "lpvid jobs merge: " << res.plan.windows.size() << " window(s) of " << res.plan.data_path << ", objective "
+            << res.plan.objective << "; every certificate re-checked exactly\n";
   std::printf("%6s %15s  %-11s %12s %12s  %s\n", "window", "rows", "status", "delta <=", "dmax <=", "note");
   size_t shown = 0, shown_ok = 0, shown_other = 0;
-  for (const Merged& m : rows) {
+  for (const MergedWindow& m : rows) {
     const bool good = m.r.status == WindowStatus::kVerified;
     const bool show = rows.size() <= 40 || (good ? shown_ok < 10 : shown_other < 30);
     if (!show) continue;
     ++shown;
     ++(good ? shown_ok : shown_other);
     const std::string span = std::to_string(m.w.file_begin) + ":" + std::to_string(m.w.file_end);
-    const bool ok = m.r.status == WindowStatus::kVerified;
     std::printf("%6d %15s  %-11s %12s %12s  %s\n", m.w.index, span.c_str(), to_string(m.r.status),
-                ok ? upper_sqrt_text(m.r.delta2).c_str() : "-", ok ? upper_sqrt_text(m.r.dmax2).c_str() : "-",
+                good ? upper_sqrt_text(m.r.delta2).c_str() : "-", good ? upper_sqrt_text(m.r.dmax2).c_str() : "-",
                 m.r.reason.c_str());
   }
   if (shown < rows.size()) std::printf("   ... %zu more window(s) in the report\n", rows.size() - shown);
-  std::printf("verified %zu, invalidated %zu, missing %zu, refused %zu (of %zu)\n", verified, invalidated, missing,
-              refused, rows.size());
+  const StatusCounts& c = res.counts;
+  std::printf("verified %zu, invalidated %zu, missing %zu, refused %zu (of %zu)\n", c.verified, c.invalidated, c.missing,
+              c.refused, rows.size());
+}
 
+/// The summary over the verified windows: printed, and its entry of
+/// merged.json ("summary").
+nlohmann::ordered_json render_summary(const MergeResult& res) {
+  const VerifiedSummary& v = res.summary;
+  const std::string& objective = res.plan.objective;
+  nlohmann::ordered_json s;
+  s["largest_delta"] = upper_sqrt_text(v.worst_delta2);
+  s["largest_dmax"] = upper_sqrt_text(v.worst_dmax2);
+  // Σ_k ‖d_k‖² ≤ Σ_k n_k·ny·d_k²: the noise over the verified windows has RMS ≤ this
+  s["dmax_over_verified_windows"] = upper_sqrt_text(v.record_dmax2);
+  s["dmax2_over_verified_windows_exact"] = rational_to_text(v.record_dmax2);
+  s["samples_in_verified_windows"] = v.samples;
+  if (objective != "feasibility") s["largest_upper_end_exact"] = rational_to_text(v.worst_upper);
+  if (v.any_lower) s["largest_lower_end_exact"] = rational_to_text(v.best_lower);
+  s["meaning"] = "each window: this model with the x0 declared for it explains the window's rows with ||Delta|| <= delta "
+                 "and noise RMS <= dmax (Theorem 2.1); the windows' Delta are separate";
+  std::cout << "over the " << res.counts.verified << " verified window(s) (" << v.samples << " samples): delta <= "
+            << upper_sqrt_text(v.worst_delta2) << " on every window, dmax <= " << upper_sqrt_text(v.worst_dmax2)
+            << " on every window, noise RMS over them <= " << upper_sqrt_text(v.record_dmax2) << "\n";
+  if (v.any_lower && objective != "feasibility")
+    std::cout << "largest certified lower end of the objective ("
+              << (objective == "min_dmax" ? "dmax^2" : objective == "min_delta" ? "delta^2" : "weighted")
+              << ") on a window: " << lower_text(v.best_lower) << " (no Delta within the bound does better there)\n";
+  return s;
+}
+
+/// The verdict's closing line and exit code.
+int render_verdict(const MergeResult& res) {
+  StatusCounts all = res.counts;
+  if (res.joint) all.add(res.joint->status);
+  const bool joint_invalidated = res.joint && res.joint->status == WindowStatus::kInvalidated;
+  switch (res.verdict) {
+    case MergeVerdict::kInvalidated:
+      std::cout << "-> INVALIDATED on " << all.invalidated << (joint_invalidated ? " claim(s)" : " window(s)")
+                << ": the model (with the state declared there) cannot explain those rows within the given bounds\n";
+      return kExitInvalidated;
+    case MergeVerdict::kNotVerified:
+      std::cout << "-> INCOMPLETE: " << all.missing + all.refused
+                << (res.plan.joint ? " claim(s) (windows or the joint one)" : " window(s)")
+                << " without a certificate that passed\n";
+      return kExitNotVerified;
+    default: return kExitOk;
+  }
+}
+
+int run_merge(const std::string& dir_text, std::string report_path, bool quiet) {
+  const auto started = std::chrono::steady_clock::now();
+  auto last = started;
+  const MergeResult res = merge_jobs(dir_text, [&](size_t done, size_t total) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!quiet && (std::chrono::duration<double>(now - last).count() > 2.0 || done == total)) {
+      std::fprintf(stderr, "[jobs merge %6.1f s] checked %zu of %zu windows\n",
+                   std::chrono::duration<double>(now - started).count(), done, total);
+      last = now;
+    }
+  });
+  if (res.verdict == MergeVerdict::kDataChanged || res.verdict == MergeVerdict::kModelChanged)
+    throw InputError(res.changed);
+  print_merge_table(res);
   nlohmann::ordered_json report;
   report["format"] = "lpvid-jobs-report/1";
-  report["data"] = {{"path", plan.data_path}, {"sha256", plan.data_sha256}};
-  report["model"] = plan.model_path;
-  report["objective"] = plan.objective;
-  report["counts"] = {{"windows", rows.size()}, {"verified", verified}, {"invalidated", invalidated},
-                      {"missing", missing},      {"refused", refused}};
-  if (verified > 0) {
-    const Rational record_dmax2 = weighted_dmax2 / Rational(samples);
-    nlohmann::ordered_json s;
-    s["largest_delta"] = upper_sqrt_text(worst_delta2);
-    s["largest_dmax"] = upper_sqrt_text(worst_dmax2);
-    // Σ_k ‖d_k‖² ≤ Σ_k n_k·ny·d_k²: the noise over the verified windows has RMS ≤ this
-    s["dmax_over_verified_windows"] = upper_sqrt_text(record_dmax2);
-    s["dmax2_over_verified_windows_exact"] = rational_to_text(record_dmax2);
-    s["samples_in_verified_windows"] = samples;
-    if (plan.objective != "feasibility") s["largest_upper_end_exact"] = rational_to_text(worst_upper);
-    if (any_lower) s["largest_lower_end_exact"] = rational_to_text(best_lower);
-    s["meaning"] = "each window: this model with the x0 declared for it explains the window's rows with ||Delta|| <= delta "
-                   "and noise RMS <= dmax (Theorem 2.1); the windows' Delta are separate";
-    report["summary"] = s;
-    std::cout << "over the " << verified << " verified window(s) (" << samples << " samples): delta <= "
-              << upper_sqrt_text(worst_delta2) << " on every window, dmax <= " << upper_sqrt_text(worst_dmax2)
-              << " on every window, noise RMS over them <= " << upper_sqrt_text(record_dmax2) << "\n";
-    if (any_lower && plan.objective != "feasibility")
-      std::cout << "largest certified lower end of the objective ("
-                << (plan.objective == "min_dmax" ? "dmax^2" : plan.objective == "min_delta" ? "delta^2" : "weighted")
-                << ") on a window: " << lower_text(best_lower) << " (no Delta within the bound does better there)\n";
-  }
-  report["windows"] = windows;
-  WindowStatus joint = WindowStatus::kVerified;
-  if (plan.joint) report["joint"] = merge_joint(planned, plan, planned_model, dir, joint);
-  if (joint == WindowStatus::kInvalidated) ++invalidated;
-  if (joint == WindowStatus::kMissing) ++missing;
-  if (joint == WindowStatus::kRefused) ++refused;
-  if (report_path.empty()) report_path = (dir / "merged.json").string();
+  report["data"] = {{"path", res.plan.data_path}, {"sha256", res.plan.data_sha256}};
+  report["model"] = res.plan.model_path;
+  report["objective"] = res.plan.objective;
+  const StatusCounts& c = res.counts;
+  report["counts"] = {{"windows", res.windows.size()}, {"verified", c.verified}, {"invalidated", c.invalidated},
+                      {"missing", c.missing},          {"refused", c.refused}};
+  if (c.verified > 0) report["summary"] = render_summary(res);
+  report["windows"] = nlohmann::ordered_json::array();
+  for (const MergedWindow& m : res.windows) report["windows"].push_back(window_json(m, res.plan.objective));
+  if (res.joint) report["joint"] = render_joint(*res.joint, res.plan);
+  if (report_path.empty()) report_path = (std::filesystem::path(dir_text) / "merged.json").string();
   write_json(report_path, report);
   std::cout << "report " << report_path << "\n";
-  if (invalidated > 0) {
-    std::cout << "-> INVALIDATED on " << invalidated << (joint == WindowStatus::kInvalidated ? " claim(s)" : " window(s)")
-              << ": the model (with the state declared there) cannot explain those rows within the given bounds\n";
-    return kExitInvalidated;
-  }
-  if (missing + refused > 0) {
-    std::cout << "-> INCOMPLETE: " << missing + refused << (plan.joint ? " claim(s) (windows or the joint one)" : " window(s)")
-              << " without a certificate that passed\n";
-    return kExitNotVerified;
-  }
-  return kExitOk;
+  return render_verdict(res);
 }
 
 }  // namespace

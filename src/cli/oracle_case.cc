@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <future>
 #include <map>
+#include <optional>
 
 #include "cli/inputs.h"
 #include "core/file_io.h"
@@ -196,70 +197,113 @@ CaseCopy read_case_copy(const std::string& folder_text) {
   return copy;
 }
 
+namespace {
+
+/// Why the outside command's answer cannot be judged (and the verdict
+/// that says so); no reason when it can.
+struct NotJudged {
+  std::string reason;
+  OracleVerdict verdict = OracleVerdict::kError;
+};
+std::optional<NotJudged> not_judged(const CommandRun& run, const CaseFiles& files, const fs::path& theirs,
+                                    const fs::path& mine, const std::string& out, const OracleCaseOptions& o,
+                                    const std::string& log) {
+  const std::string changed = changed_files(files, theirs) + changed_files(files, mine);
+  if (!changed.empty())
+    return NotJudged{"the command changed the case's inputs while it ran (" + changed + "); its answer is not judged",
+                     OracleVerdict::kTampered};
+  if (!run.started) return NotJudged{"the command did not start: " + run.error};
+  if (run.timed_out) return NotJudged{"the command ran past the case time limit of " + double_to_text(o.case_timeout) + " s"};
+  if (run.exit_code != 0)
+    return NotJudged{"the command exited with code " + std::to_string(run.exit_code) + " (log " + log + ")"};
+  if (!fs::is_regular_file(out)) return NotJudged{"the command wrote no answer at " + out};
+  return std::nullopt;
+}
+
+/// A refutation's evidence is checked once more, from its file, by the verifier.
+void recheck_evidence(CaseReport& rep) {
+  if (rep.judgement.verdict != OracleVerdict::kRefuted && rep.judgement.verdict != OracleVerdict::kBadWitness) return;
+  const CertificateVerdict v = check_certificate_file(rep.judgement.evidence);
+  rep.evidence_check = v.holds ? v.claim_text : "invalid: " + v.reason;
+  if (!v.holds) {
+    rep.judgement.verdict = OracleVerdict::kUndecided;
+    rep.judgement.reason = "lpvid's evidence did not pass the verifier (" + v.reason + "); not counted: " + rep.judgement.reason;
+  }
+}
+
+/// The case's copies written (lpvid's in `mine`, the command's fresh in
+/// `theirs`), its task as the command sees it, and the report's header.
+struct CaseSetup {
+  CaseFiles files;
+  OracleTask task;
+  CommonOptions c;
+  CaseReport rep;
+};
+CaseSetup set_up_case(const CaseCopy& copy, const OracleCaseOptions& o, const fs::path& mine, const fs::path& theirs,
+                      Inputs& in) {
+  CaseSetup s;
+  // the task as the command sees it names the run's tolerance (the judge
+  // takes it from the command line, never from this file)
+  s.files = copy.files;
+  s.task = parse_task(s.files.at("task.json"), (mine / "task.json").string());
+  s.task.tolerance = o.tolerance.relative;
+  s.files["task.json"] = task_json(s.task);
+  write_case_files(s.files, mine, false);
+  s.c = task_options(s.task, mine, o.solver);
+  in = load_inputs(s.c);
+  s.rep.name = copy.name;
+  s.rep.folder = theirs.string();
+  s.rep.kind = s.task.kind;
+  s.rep.n = static_cast<long>(in.exp_q.n());
+  s.rep.nu = in.model_q.nu;
+  s.rep.ny = in.model_q.ny;
+  // the command's copy, fresh, created just before it runs
+  write_case_files(s.files, theirs, true);
+  s.rep.outside_log = (theirs / "outside.log").string();
+  return s;
+}
+
+}  // namespace
+
 CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   const fs::path work = fs::absolute(o.work).lexically_normal();
   const fs::path mine = work / (copy.name + ".lpvid"), theirs = work / copy.name;
-  // the task as the command sees it names the run's tolerance (the judge
-  // takes it from the command line, never from this file)
-  CaseFiles files = copy.files;
-  OracleTask task = parse_task(files.at("task.json"), (mine / "task.json").string());
-  task.tolerance = o.tolerance.relative;
-  files["task.json"] = task_json(task);
-  write_case_files(files, mine, false);
-  CommonOptions c = task_options(task, mine, o.solver);
-  const Inputs in = load_inputs(c);
-
-  CaseReport rep;
-  rep.name = copy.name;
-  rep.folder = theirs.string();
-  rep.kind = task.kind;
-  rep.n = static_cast<long>(in.exp_q.n());
-  rep.nu = in.model_q.nu;
-  rep.ny = in.model_q.ny;
-  // the command's copy, fresh, created just before it runs
-  write_case_files(files, theirs, true);
+  Inputs in;
+  CaseSetup s = set_up_case(copy, o, mine, theirs, in);
+  CaseReport& rep = s.rep;
+  const OracleTask& task = s.task;
   const std::string out = (theirs / "answer.json").string();
-  rep.outside_log = (theirs / "outside.log").string();
-  const std::string command = substitute_placeholders(o.command, {{"data", (theirs / "data.csv").string()},
-                                                                  {"model", (theirs / "model.json").string()},
-                                                                  {"task", (theirs / "task.json").string()},
-                                                                  {"out", out},
-                                                                  {"dir", theirs.string()}});
-
+  const std::string command = substitute_placeholders(
+      o.command, {{"data", (theirs / "data.csv").string()}, {"model", (theirs / "model.json").string()},
+                  {"task", (theirs / "task.json").string()}, {"out", out}, {"dir", theirs.string()}});
   // The outside command runs while lpvid certifies the same task.
   auto outside = std::async(std::launch::async, run_shell_command, command, o.case_timeout, rep.outside_log);
   const auto started = std::chrono::steady_clock::now();
-  auto solver = make_solver_for_cli(c.solver, "");
-  const CertifyOptions co = certify_options(c, in);
+  auto solver = make_solver_for_cli(s.c.solver, "");
+  const CertifyOptions co = certify_options(s.c, in);
   const bool identify = task.kind == TaskKind::kIdentify;
   ReferenceResult identified;
   CertifiedBounds b;
-  if (identify) identify_reference(in, c, mine, *solver, identified);
+  if (identify) identify_reference(in, s.c, mine, *solver, identified);
   else b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
   rep.lpvid_seconds = seconds_since(started);
   const CommandRun run = outside.get();
   rep.outside_seconds = run.seconds;
   rep.outside_exit = run.exit_code;
-
-  const auto error = [&rep](const std::string& why, OracleVerdict v = OracleVerdict::kError) {
-    rep.claim = "-";
-    rep.judgement.verdict = v;
-    rep.judgement.reason = why;
-    return rep;
-  };
-  const std::string changed = changed_files(files, theirs) + changed_files(files, mine);
-  if (!changed.empty())
-    return error("the command changed the case's inputs while it ran (" + changed + "); its answer is not judged",
-                 OracleVerdict::kTampered);
-  if (!run.started) return error("the command did not start: " + run.error);
-  if (run.timed_out) return error("the command ran past the case time limit of " + double_to_text(o.case_timeout) + " s");
-  if (run.exit_code != 0) return error("the command exited with code " + std::to_string(run.exit_code) + " (log " + rep.outside_log + ")");
-  if (!fs::is_regular_file(out)) return error("the command wrote no answer at " + out);
   OracleAnswer answer;
-  try {
-    answer = parse_answer(read_text_file(out), out, task, in.model_q);
-  } catch (const InputError& e) {
-    return error(std::string("malformed answer: ") + e.what());
+  std::optional<NotJudged> problem = not_judged(run, s.files, theirs, mine, out, o, rep.outside_log);
+  if (!problem) {
+    try {
+      answer = parse_answer(read_text_file(out), out, task, in.model_q);
+    } catch (const InputError& e) {
+      problem = NotJudged{std::string("malformed answer: ") + e.what()};
+    }
+  }
+  if (problem) {
+    rep.claim = "-";
+    rep.judgement.verdict = problem->verdict;
+    rep.judgement.reason = problem->reason;
+    return rep;
   }
   rep.claim = claim_words(task, answer);
   // identify: the claim is judged on the model with the claimed θ folded in
@@ -277,16 +321,7 @@ CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   ref.klass = identified.klass;
   if (identify) rep.klass = ref.klass;
   rep.judgement = judge(task, answer, ref, witness, o.tolerance);
-
-  // A refutation's evidence is checked once more, from its file, by the verifier.
-  if (rep.judgement.verdict == OracleVerdict::kRefuted || rep.judgement.verdict == OracleVerdict::kBadWitness) {
-    const CertificateVerdict v = check_certificate_file(rep.judgement.evidence);
-    rep.evidence_check = v.holds ? v.claim_text : "invalid: " + v.reason;
-    if (!v.holds) {
-      rep.judgement.verdict = OracleVerdict::kUndecided;
-      rep.judgement.reason = "lpvid's evidence did not pass the verifier (" + v.reason + "); not counted: " + rep.judgement.reason;
-    }
-  }
+  recheck_evidence(rep);
   return rep;
 }
 

@@ -41,7 +41,8 @@ nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& 
   j["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
   j["toeplitz_mode"] = toeplitz_mode;
   j["solver"] = solver;
-  j["certificate"] = b.verified ? nlohmann::ordered_json(files.certificate) : nlohmann::ordered_json(nullptr);
+  j["certificate"] = b.verified && !files.certificate.empty() ? nlohmann::ordered_json(files.certificate)
+                                                               : nlohmann::ordered_json(nullptr);
   j["verified"] = b.verified;
   if (!b.verified) j["reason"] = b.reason;
   nlohmann::ordered_json c;
@@ -144,7 +145,8 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
   if (b.lower.verified) j["lower_exact"] = exact_decimal_or_fraction(b.lower.value);
   const double gap = relative_gap(b);
   j["relative_gap"] = std::isfinite(gap) ? nlohmann::ordered_json(gap) : nlohmann::ordered_json(nullptr);
-  j["lower_certificate"] = b.lower.verified ? nlohmann::ordered_json(files.lower) : nlohmann::ordered_json(nullptr);
+  j["lower_certificate"] =
+      b.lower.verified && !files.lower.empty() ? nlohmann::ordered_json(files.lower) : nlohmann::ordered_json(nullptr);
   if (!b.lower.verified) j["lower_reason"] = b.lower.reason;
   j["full_horizon"] = b.full_horizon;
   j["note"] = b.full_horizon ? "both ends from the full-horizon program"
@@ -154,20 +156,28 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
   return j;
 }
 
+CertificateFiles write_named_certificates(const CertifiedBounds& b, const std::string& path) {
+  return path.empty() ? CertificateFiles{} : write_certificates(b, path);
+}
+
 std::string bounds_text(const CertifiedBounds& b, const CertificateFiles& files, const std::string& scope) {
   std::ostringstream o;
   if (b.verified) {
     // printed = certified: upper ends rounded up, lower ends down (core/decimal_rounding.h)
     o << "  delta       <= " << upper_sqrt_text(b.delta2) << "   (delta^2 = " << exact_decimal_or_fraction(b.delta2) << ")\n"
       << "  dmax        <= " << upper_sqrt_text(b.dmax2) << "   (dmax^2 = " << exact_decimal_or_fraction(b.dmax2) << ", RMS)\n"
-      << "  verified    true: " << files.certificate << " checked exactly by the verifier\n"
+      << "  verified    true: "
+      << (files.certificate.empty() ? std::string("checked exactly by the verifier; ") + kNoCertificateFile
+                                    : files.certificate + " checked exactly by the verifier")
+      << "\n"
       << "              " << b.verifier_details << "\n";
     if (b.lower.verified) {
       o << "  interval    [" << lower_text(b.lower.value) << ", " << upper_text(b.upper)
         << "]  relative gap " << relative_gap(b) << "  (objective; both ends verified"
         << (b.full_horizon ? ", full horizon" : ", upper end from " + std::to_string(b.taps) + " taps") << ")"
         << (scope.empty() ? "" : "\n              " + scope) << "\n"
-        << "  lower end   " << files.lower << " (dual certificate, checked exactly)\n";
+        << "  lower end   " << (files.lower.empty() ? std::string("not written") : files.lower)
+        << " (dual certificate, checked exactly)\n";
     } else if (!b.lower.reason.empty()) {
       o << "  lower end   not certified: " << b.lower.reason << "\n";
     }

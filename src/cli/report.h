@@ -46,6 +46,13 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
 /// Readable lines for the bounds ("delta <= ... (verified)").
 /// `scope`, when not empty, says what the interval's lower end is a bound
 /// FOR (identify: the model with the identified θ fixed, not the class).
+/// What the commands print when no certificate file was named.
+inline constexpr const char* kNoCertificateFile = "no certificate file written (name one with --certificate FILE)";
+
+/// write_certificates at `path`, or nothing (empty names) when `path` is ""
+/// (named_certificate_path: the user named no file).
+CertificateFiles write_named_certificates(const CertifiedBounds& b, const std::string& path);
+
 std::string bounds_text(const CertifiedBounds& b, const CertificateFiles& files, const std::string& scope = "");
 
 /// A table cell of the tradeoff and select-basis tables: x with 6

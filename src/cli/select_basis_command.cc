@@ -95,7 +95,7 @@ nlohmann::ordered_json class_json(const BasisStep& s) {
     j["reason"] = k.reason;
     return j;
   }
-  j["certificate"] = s.class_certificate;
+  j["certificate"] = s.class_certificate.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.class_certificate);
   j["region"] = k.whole_class ? "whole_class" : "box";
   j["center"] = k.whole_class ? "none" : s.class_centered_at_fit ? "identified" : "zero";
   nlohmann::ordered_json box = nlohmann::ordered_json::array();
@@ -109,24 +109,9 @@ nlohmann::ordered_json class_json(const BasisStep& s) {
   return j;
 }
 
-int run_select(SelectArgs& a) {
-  CommonOptions& c = a.common;
-  if (c.delta_text.empty() || c.dmax_text.empty())
-    throw InputError("select-basis: give both --delta and --dmax (the bounds at which consistency is decided)");
-  Inputs in = load_inputs(c);
-  if (in.mode != ToeplitzMode::kSignal)
-    throw InputError("select-basis: --toeplitz paper is not supported (identification uses the signal form)");
-  print_options(c, in, "select-basis");
-  const std::vector<Monomial> order = basis_growth_order(in.model_d.n_rho(), a.max_degree);
-  std::cout << "  growth      " << basis_text(order, in.model_d.scheduling) << " (max degree " << a.max_degree
-            << ")\n"
-            << "  method      "
-            << (a.iterate ? "Theorem 3.1, min dmax at the given delta with iterated re-linearisation (beyond the paper),"
-                            " then Theorem 2.1 certificate at the given bounds"
-                          : "Theorem 3.1 relaxation at S_I (paper) with the given bounds, then Theorem 2.1 certificate "
-                            "at the given bounds")
-            << "\n\n";
-
+/// The selection's options from the command line.
+BasisSelectionOptions selection_options(const SelectArgs& a, const Inputs& in) {
+  const CommonOptions& c = a.common;
   BasisSelectionOptions o;
   o.delta = in.objective.delta;
   o.dmax = in.objective.dmax;
@@ -144,17 +129,32 @@ int run_select(SelectArgs& a) {
   o.klass.max_leaves = a.class_leaves;
   o.solver.verbose = c.verbose;
   o.certify = certify_options(c, in);  // objective and bounds: set per step
-  const std::string final_cert = certificate_path(c);
-  const std::string stem = stem_of(final_cert, {".cert.json", ".json"});
-  const Table table(std::max<size_t>(16, std::min<size_t>(60, basis_text(order, in.model_d.scheduling).size())));
-  table.header();
-  o.on_step = [&](const BasisStep& s) { table.row(s); };
+  return o;
+}
 
-  auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
-  BasisSelectionResult r = select_basis(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
-  write_step_certificates(r, stem);
+/// The inputs, checked, the basis growth order, and the run's options printed.
+Inputs select_inputs(SelectArgs& a, std::vector<Monomial>& order) {
+  CommonOptions& c = a.common;
+  if (c.delta_text.empty() || c.dmax_text.empty())
+    throw InputError("select-basis: give both --delta and --dmax (the bounds at which consistency is decided)");
+  Inputs in = load_inputs(c);
+  if (in.mode != ToeplitzMode::kSignal)
+    throw InputError("select-basis: --toeplitz paper is not supported (identification uses the signal form)");
+  print_options(c, in, "select-basis");
+  order = basis_growth_order(in.model_d.n_rho(), a.max_degree);
+  std::cout << "  growth      " << basis_text(order, in.model_d.scheduling) << " (max degree " << a.max_degree
+            << ")\n"
+            << "  method      "
+            << (a.iterate ? "Theorem 3.1, min dmax at the given delta with iterated re-linearisation (beyond the paper),"
+                            " then Theorem 2.1 certificate at the given bounds"
+                          : "Theorem 3.1 relaxation at S_I (paper) with the given bounds, then Theorem 2.1 certificate "
+                            "at the given bounds")
+            << "\n\n";
+  return in;
+}
 
-  print_legend(c, a.iterate);
+/// The steps that are not consistent, with their reasons.
+void print_step_notes(const BasisSelectionResult& r) {
   for (const BasisStep& s : r.steps)
     if (s.verdict != BasisVerdict::kConsistent && s.same_as < 0) {
       std::cout << "  step " << s.index << ": " << s.detail << "\n";
@@ -163,78 +163,93 @@ int run_select(SelectArgs& a) {
     }
   const std::string mono = monotonicity_violation(r.steps);
   if (!mono.empty()) std::cout << "  NOTE: verdicts are not monotone (solver or relaxation effect): " << mono << "\n";
+}
 
+/// A basis was found: its certificate written (when named) and its bounds printed.
+nlohmann::ordered_json render_found(const BasisSelectionResult& r, const CommonOptions& c, const std::string& final_cert) {
+  const BasisStep& f = r.steps[static_cast<size_t>(r.final_step)];
+  const CertificateFiles files = write_named_certificates(f.bounds, final_cert);
+  std::cout << "\nSelected basis: " << f.basis_text << " (step " << f.index << ")\n"
+            << bounds_text(f.bounds, files,
+                           "for this theta: the lower end bounds the model with the selected theta fixed, not the "
+                           "model class");
+  nlohmann::ordered_json report = bounds_json(f.bounds, c.toeplitz, c.solver, files);
+  report["relaxation"] = f.relaxation;
+  return report;
+}
+
+/// No basis was found: why, printed, and the report's verdict fields.
+nlohmann::ordered_json render_not_found(const BasisSelectionResult& r, const SelectArgs& a) {
+  const CommonOptions& c = a.common;
+  std::cout << "\nNo basis up to degree " << a.max_degree << " gives a model consistent with the data at delta = "
+            << c.delta_text << ", dmax = " << c.dmax_text << "\n";
+  if (!a.iterate) std::cout << "  (the relaxation at S_I cannot make large corrections at tight bounds: try --iterate)\n";
+  bool unverified = false;
+  for (const BasisStep& s : r.steps) unverified = unverified || s.verdict == BasisVerdict::kUnverified;
+  const bool certified = certified_cannot_explain(r);
+  if (certified)
+    std::cout << "  certified: the largest basis tried (step " << r.steps.back().index
+              << ") cannot explain the data, so no basis of these terms can (class certificate)\n";
   nlohmann::ordered_json report;
+  // "cannot explain" only with a whole-class certificate of the largest basis
+  report["status"] = certified ? "cannot_explain" : unverified ? "not_verified" : "not_decided";
+  report["delta"] = nullptr;
+  report["dmax"] = nullptr;
+  report["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
+  report["toeplitz_mode"] = c.toeplitz;
+  report["solver"] = c.solver;
+  report["certificate"] = nullptr;
+  report["verified"] = false;
+  report["relaxation"] = a.iterate ? "iterated re-linearisation" : "linearised at the initial model (paper, after eq. 16)";
+  return report;
+}
+
+/// The terms of `basis` as text.
+nlohmann::ordered_json basis_json(const std::vector<Monomial>& basis, const std::vector<std::string>& scheduling) {
+  nlohmann::ordered_json b = nlohmann::ordered_json::array();
+  for (const Monomial& m : basis) b.push_back(m.text(scheduling));
+  return b;
+}
+
+/// One step's entry of the report ("steps").
+nlohmann::ordered_json step_json(const BasisStep& s, const std::vector<std::string>& scheduling) {
+  const bool v = s.verdict == BasisVerdict::kConsistent;
+  const auto or_null = [](bool has, auto value) { return has ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr); };
+  return {{"step", s.index},
+          {"phase", s.phase},
+          {"basis", basis_json(s.basis, scheduling)},
+          {"verdict", to_string(s.verdict)},
+          {"detail", s.detail},
+          {"delta", or_null(v, s.bounds.delta)},
+          {"dmax", or_null(v, s.bounds.dmax)},
+          {"dmax_relaxation", or_null(s.dmax_relaxation >= 0, s.dmax_relaxation)},
+          {"relaxation", s.relaxation},
+          {"solves", s.solves},
+          {"seconds", s.seconds},
+          {"same_as", or_null(s.same_as >= 0, s.same_as)},
+          {"kept", s.kept},
+          {"certificate", or_null(v && !s.certificate.empty(), s.certificate)},
+          {"class_certificate", class_json(s)}};
+}
+
+/// The report's fields common to both outcomes.
+void add_selection_json(nlohmann::ordered_json& report, const BasisSelectionResult& r, const SelectArgs& a,
+                        const Inputs& in) {
+  const std::vector<std::string>& scheduling = in.model_d.scheduling;
   int total_solves = 0;
   for (const BasisStep& s : r.steps) total_solves += s.solves;
-  if (r.found) {
-    const BasisStep& f = r.steps[static_cast<size_t>(r.final_step)];
-    const CertificateFiles files = write_certificates(f.bounds, final_cert);
-    std::cout << "\nSelected basis: " << f.basis_text << " (step " << f.index << ")\n"
-              << bounds_text(f.bounds, files,
-                             "for this theta: the lower end bounds the model with the selected theta fixed, not the "
-                             "model class");
-    report = bounds_json(f.bounds, c.toeplitz, c.solver, files);
-    report["relaxation"] = f.relaxation;
-  } else {
-    std::cout << "\nNo basis up to degree " << a.max_degree << " gives a model consistent with the data at delta = "
-              << c.delta_text << ", dmax = " << c.dmax_text << "\n";
-    if (!a.iterate)
-      std::cout << "  (the relaxation at S_I cannot make large corrections at tight bounds: try --iterate)\n";
-    bool unverified = false;
-    for (const BasisStep& s : r.steps) unverified = unverified || s.verdict == BasisVerdict::kUnverified;
-    const bool certified = certified_cannot_explain(r);
-    if (certified)
-      std::cout << "  certified: the largest basis tried (step " << r.steps.back().index
-                << ") cannot explain the data, so no basis of these terms can (class certificate)\n";
-    // "cannot explain" only with a whole-class certificate of the largest basis
-    report["status"] = certified ? "cannot_explain" : unverified ? "not_verified" : "not_decided";
-    report["delta"] = nullptr;
-    report["dmax"] = nullptr;
-    report["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
-    report["toeplitz_mode"] = c.toeplitz;
-    report["solver"] = c.solver;
-    report["certificate"] = nullptr;
-    report["verified"] = false;
-    report["relaxation"] = a.iterate ? "iterated re-linearisation" : "linearised at the initial model (paper, after eq. 16)";
-  }
   report["command"] = "select-basis";
   report["iterations"] = total_solves;
-  report["delta_given"] = c.delta_text;
-  report["dmax_given"] = c.dmax_text;
+  report["delta_given"] = a.common.delta_text;
+  report["dmax_given"] = a.common.dmax_text;
   report["iterate"] = a.iterate;
   report["max_degree"] = a.max_degree;
-  nlohmann::ordered_json ord = nlohmann::ordered_json::array();
-  for (const Monomial& m : r.order) ord.push_back(m.text(in.model_d.scheduling));
-  report["order"] = ord;
-  nlohmann::ordered_json steps = nlohmann::ordered_json::array();
-  for (const BasisStep& s : r.steps) {
-    nlohmann::ordered_json b = nlohmann::ordered_json::array();
-    for (const Monomial& m : s.basis) b.push_back(m.text(in.model_d.scheduling));
-    const bool v = s.verdict == BasisVerdict::kConsistent;
-    steps.push_back({{"step", s.index},
-                     {"phase", s.phase},
-                     {"basis", b},
-                     {"verdict", to_string(s.verdict)},
-                     {"detail", s.detail},
-                     {"delta", v ? nlohmann::ordered_json(s.bounds.delta) : nlohmann::ordered_json(nullptr)},
-                     {"dmax", v ? nlohmann::ordered_json(s.bounds.dmax) : nlohmann::ordered_json(nullptr)},
-                     {"dmax_relaxation",
-                      s.dmax_relaxation >= 0 ? nlohmann::ordered_json(s.dmax_relaxation) : nlohmann::ordered_json(nullptr)},
-                     {"relaxation", s.relaxation},
-                     {"solves", s.solves},
-                     {"seconds", s.seconds},
-                     {"same_as", s.same_as >= 0 ? nlohmann::ordered_json(s.same_as) : nlohmann::ordered_json(nullptr)},
-                     {"kept", s.kept},
-                     {"certificate", v ? nlohmann::ordered_json(s.certificate) : nlohmann::ordered_json(nullptr)},
-                     {"class_certificate", class_json(s)}});
-  }
-  report["steps"] = steps;
+  report["order"] = basis_json(r.order, scheduling);
+  report["steps"] = nlohmann::ordered_json::array();
+  for (const BasisStep& s : r.steps) report["steps"].push_back(step_json(s, scheduling));
   if (r.found) {
     const BasisStep& f = r.steps[static_cast<size_t>(r.final_step)];
-    nlohmann::ordered_json fb = nlohmann::ordered_json::array();
-    for (const Monomial& m : f.basis) fb.push_back(m.text(in.model_d.scheduling));
-    report["final_basis"] = fb;
+    report["final_basis"] = basis_json(f.basis, scheduling);
     report["final_step"] = f.index;
     report["theta"] = theta_json(with_correction_basis(in.model_d, f.basis), f.layout, f.p);
   } else {
@@ -242,6 +257,26 @@ int run_select(SelectArgs& a) {
     report["theta"] = nullptr;
   }
   report["samples"] = in.exp_q.n();
+}
+
+int run_select(SelectArgs& a) {
+  CommonOptions& c = a.common;
+  std::vector<Monomial> order;
+  Inputs in = select_inputs(a, order);
+  BasisSelectionOptions o = selection_options(a, in);
+  // the step certificates only under a stem the user named
+  const std::string final_cert = named_certificate_path(c);
+  const std::string stem = final_cert.empty() ? "" : stem_of(final_cert, {".cert.json", ".json"});
+  const Table table(std::max<size_t>(16, std::min<size_t>(60, basis_text(order, in.model_d.scheduling).size())));
+  table.header();
+  o.on_step = [&](const BasisStep& s) { table.row(s); };
+  auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
+  BasisSelectionResult r = select_basis(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
+  if (!stem.empty()) write_step_certificates(r, stem);
+  print_legend(c, a.iterate);
+  print_step_notes(r);
+  nlohmann::ordered_json report = r.found ? render_found(r, c, final_cert) : render_not_found(r, a);
+  add_selection_json(report, r, a, in);
   write_json(c.report_path, report);
   if (r.found) return kExitOk;
   if (report["status"] == "cannot_explain") return kExitInvalidated;

@@ -4,6 +4,7 @@
 // CSV and plot it with gnuplot.
 // The rules are in identify/tradeoff.h.
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -35,14 +36,12 @@ struct TradeoffArgs {
   bool free_x0 = false;
   bool no_offset = false;
   std::vector<std::string> basis;
-  std::string csv_path = "tradeoff.csv";
-  std::string plot_path;  ///< default: the CSV path with .png
-  bool no_plot = false;
+  std::string csv_path;   ///< --csv: the curve (none unless named)
+  std::string plots_dir;  ///< --plots DIR: DIR/tradeoff.png, .svg, .plot.json and .csv (no figure unless named)
 };
 
-int run_tradeoff(TradeoffArgs& a) {
-  check_output_file(a.csv_path, "curve");
-  check_output_file(a.plot_path, "plot");
+/// The inputs (with --basis in place of the model's) and the run's options printed.
+Inputs tradeoff_inputs(TradeoffArgs& a, const std::vector<double>& lambdas) {
   CommonOptions& c = a.common;
   Inputs in = load_inputs(c);
   if (in.mode != ToeplitzMode::kSignal)
@@ -52,7 +51,6 @@ int run_tradeoff(TradeoffArgs& a) {
     in.model_q = with_correction_basis(in.model_q, b);
     in.model_d = with_correction_basis(in.model_d, b);
   }
-  const std::vector<double> lambdas = a.lambdas.empty() ? default_lambda_grid() : a.lambdas;
   std::cout << "lpvid tradeoff\n"
             << data_lines(c, in)
             << "  model       " << c.model_path << "\n"
@@ -65,7 +63,11 @@ int run_tradeoff(TradeoffArgs& a) {
             << ", then Theorem 2.1 certificate (Delta form, exact check) per lambda\n"
             << "  solver      " << c.solver << "\n"
             << "  noise       dmax is the RMS bound: ||d||_2 <= dmax*sqrt(n*ny)\n\n";
+  return in;
+}
 
+/// The curve's options; each point printed as a table row while the run goes.
+TradeoffOptions tradeoff_options(const TradeoffArgs& a, const Inputs& in, const std::vector<double>& lambdas) {
   TradeoffOptions o;
   o.lambdas = lambdas;
   o.iterate = a.iterate;
@@ -73,12 +75,8 @@ int run_tradeoff(TradeoffArgs& a) {
   o.rel_tol = a.rel_tol;
   o.unknowns.x0 = a.free_x0;
   o.unknowns.offset = !a.no_offset;
-  o.solver.verbose = c.verbose;
-  o.certify = certify_options(c, in);  // the objective and bounds: set per step
-  const std::string stem = stem_of(certificate_path(c), {".cert.json", ".json"});
-  std::cout << std::left << std::setw(9) << "lambda" << std::setw(13) << "delta" << std::setw(13) << "dmax"
-            << std::setw(10) << "verified" << std::setw(13) << "delta_relax" << std::setw(13) << "dmax_relax"
-            << std::setw(7) << "solves" << "time[s]\n";
+  o.solver.verbose = a.common.verbose;
+  o.certify = certify_options(a.common, in);  // the objective and bounds: set per step
   o.on_point = [](const TradeoffPoint& p) {
     const bool v = p.bounds.verified;
     char t[32];
@@ -90,67 +88,110 @@ int run_tradeoff(TradeoffArgs& a) {
               << p.solves << t << (v ? "" : "   " + p.bounds.reason) << "\n"
               << std::flush;
   };
-  auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
-  std::vector<TradeoffPoint> pts = tradeoff_curve(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
-  write_tradeoff_certificates(pts, stem);
+  return o;
+}
 
-  std::cout << "\n  delta, dmax  = certified (the exact verifier accepted <stem>.lambda<k>.cert.json)\n"
-            << "  *_relax      = the identification relaxation's own values (solver)\n";
-  const std::string mono = tradeoff_monotonicity_violation(pts, 1e-3, 1e-6);
-  if (!mono.empty()) std::cout << "  NOTE: the certified curve is not monotone in lambda: " << mono << "\n";
-
-  write_text_file(a.csv_path, tradeoff_csv(pts), "trade-off CSV");
-  std::cout << "  wrote " << a.csv_path << "\n";
-  std::string plot;
-  if (!a.no_plot) {
-    const std::string png = a.plot_path.empty() ? stem_of(a.csv_path, {".csv"}) + ".png" : a.plot_path;
-    const PlotOutcome po = plot_png(tradeoff_plot(pts, "delta-dmax trade-off: " + c.data_path), png);
-    std::cout << "  " << (po.ok ? po.message : "no plot: " + po.message + " (the CSV has the curve)") << "\n";
-    if (po.ok) plot = png;
+/// The CSV (--csv) and the figure (--plots DIR), only those named; returns the PNG written ("" when none).
+std::string write_curve_files(const TradeoffArgs& a, const std::vector<TradeoffPoint>& pts) {
+  if (!a.csv_path.empty()) {
+    write_text_file(a.csv_path, tradeoff_csv(pts), "trade-off CSV");
+    std::cout << "  wrote " << a.csv_path << "\n";
   }
+  if (a.plots_dir.empty()) return "";
+  std::error_code ec;
+  std::filesystem::create_directories(a.plots_dir, ec);
+  if (!std::filesystem::is_directory(a.plots_dir)) throw IoError("tradeoff: cannot create the folder " + a.plots_dir);
+  const std::string png = (std::filesystem::path(a.plots_dir) / "tradeoff.png").string();
+  write_text_file(stem_of(png, {".png"}) + ".csv", tradeoff_csv(pts), "trade-off CSV");
+  const PlotOutcome po = plot_png(tradeoff_plot(pts, "delta-dmax trade-off: " + a.common.data_path), png);
+  std::cout << "  " << (po.ok ? po.message : "no plot: " + po.message + " (the CSV has the curve)") << "\n";
+  return po.ok ? png : "";
+}
 
+/// One point's entry of the report ("points").
+nlohmann::ordered_json point_json(const TradeoffPoint& p, const LpvModel<double>& model) {
+  const bool v = p.bounds.verified;
+  const auto or_null = [](bool has, auto value) { return has ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr); };
+  nlohmann::ordered_json j;
+  j["lambda"] = p.lambda;
+  j["verified"] = v;
+  j["delta"] = or_null(v, p.bounds.delta);
+  j["dmax"] = or_null(v, p.bounds.dmax);
+  if (v) {
+    j["delta2_exact"] = exact_decimal_or_fraction(p.bounds.delta2);
+    j["dmax2_exact"] = exact_decimal_or_fraction(p.bounds.dmax2);
+  } else {
+    j["reason"] = p.bounds.reason;
+  }
+  j["delta_solver"] = or_null(p.delta_solver >= 0, p.delta_solver);
+  j["dmax_solver"] = or_null(p.dmax_solver >= 0, p.dmax_solver);
+  j["status"] = to_string(p.status);
+  j["relaxation"] = p.relaxation;
+  j["solves"] = p.solves;
+  j["certificate"] = or_null(v && !p.certificate.empty(), p.certificate);
+  j["theta"] = p.layout.size() ? theta_json(model, p.layout, p.p) : nlohmann::ordered_json::object();
+  return j;
+}
+
+/// The report of the curve.
+nlohmann::ordered_json tradeoff_report(const TradeoffArgs& a, const Inputs& in, const std::vector<TradeoffPoint>& pts,
+                                       bool monotone, const std::string& plot) {
   nlohmann::ordered_json report;
   int verified = 0, solves = 0;
   nlohmann::ordered_json jp = nlohmann::ordered_json::array();
   for (const TradeoffPoint& p : pts) {
-    const bool v = p.bounds.verified;
-    verified += v;
+    verified += p.bounds.verified;
     solves += p.solves;
-    nlohmann::ordered_json j;
-    j["lambda"] = p.lambda;
-    j["verified"] = v;
-    j["delta"] = v ? nlohmann::ordered_json(p.bounds.delta) : nlohmann::ordered_json(nullptr);
-    j["dmax"] = v ? nlohmann::ordered_json(p.bounds.dmax) : nlohmann::ordered_json(nullptr);
-    if (v) {
-      j["delta2_exact"] = exact_decimal_or_fraction(p.bounds.delta2);
-      j["dmax2_exact"] = exact_decimal_or_fraction(p.bounds.dmax2);
-    } else {
-      j["reason"] = p.bounds.reason;
-    }
-    j["delta_solver"] = p.delta_solver >= 0 ? nlohmann::ordered_json(p.delta_solver) : nlohmann::ordered_json(nullptr);
-    j["dmax_solver"] = p.dmax_solver >= 0 ? nlohmann::ordered_json(p.dmax_solver) : nlohmann::ordered_json(nullptr);
-    j["status"] = to_string(p.status);
-    j["relaxation"] = p.relaxation;
-    j["solves"] = p.solves;
-    j["certificate"] = v ? nlohmann::ordered_json(p.certificate) : nlohmann::ordered_json(nullptr);
-    j["theta"] = p.layout.size() ? theta_json(in.model_d, p.layout, p.p) : nlohmann::ordered_json::object();
-    jp.push_back(j);
+    jp.push_back(point_json(p, in.model_d));
   }
+  const bool all = verified == static_cast<int>(pts.size());
   report["command"] = "tradeoff";
-  report["status"] = verified == static_cast<int>(pts.size()) ? "consistent" : "not_verified";
-  report["verified"] = verified == static_cast<int>(pts.size());
+  report["status"] = all ? "consistent" : "not_verified";
+  report["verified"] = all;
   report["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
-  report["toeplitz_mode"] = c.toeplitz;
-  report["solver"] = c.solver;
+  report["toeplitz_mode"] = a.common.toeplitz;
+  report["solver"] = a.common.solver;
   report["relaxation"] = pts.empty() ? "" : pts.front().relaxation;
   report["iterations"] = solves;
   report["points"] = jp;
-  report["monotone"] = mono.empty();
-  report["csv"] = a.csv_path;
+  report["monotone"] = monotone;
+  report["csv"] = a.csv_path.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(a.csv_path);
   report["plots"] = plot.empty() ? nlohmann::ordered_json::array() : nlohmann::ordered_json::array({plot});
   report["samples"] = in.exp_q.n();
-  write_json(c.report_path, report);
-  return verified == static_cast<int>(pts.size()) ? kExitOk : kExitNotVerified;
+  return report;
+}
+
+bool all_verified(const std::vector<TradeoffPoint>& pts) {
+  for (const TradeoffPoint& p : pts)
+    if (!p.bounds.verified) return false;
+  return true;
+}
+
+int run_tradeoff(TradeoffArgs& a) {
+  check_output_file(a.csv_path, "curve");
+  CommonOptions& c = a.common;
+  const std::vector<double> lambdas = a.lambdas.empty() ? default_lambda_grid() : a.lambdas;
+  const Inputs in = tradeoff_inputs(a, lambdas);
+  const TradeoffOptions o = tradeoff_options(a, in, lambdas);
+  // the per-lambda certificates only under a stem the user named
+  const std::string named = named_certificate_path(c);
+  const std::string stem = named.empty() ? "" : stem_of(named, {".cert.json", ".json"});
+  std::cout << std::left << std::setw(9) << "lambda" << std::setw(13) << "delta" << std::setw(13) << "dmax"
+            << std::setw(10) << "verified" << std::setw(13) << "delta_relax" << std::setw(13) << "dmax_relax"
+            << std::setw(7) << "solves" << "time[s]\n";
+  auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
+  std::vector<TradeoffPoint> pts = tradeoff_curve(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
+  if (!stem.empty()) write_tradeoff_certificates(pts, stem);
+  std::cout << "\n  delta, dmax  = certified (the exact verifier accepted "
+            << (stem.empty() ? std::string("the certificate in memory; ") + kNoCertificateFile + ")"
+                             : stem + ".lambda<k>.cert.json)")
+            << "\n"
+            << "  *_relax      = the identification relaxation's own values (solver)\n";
+  const std::string mono = tradeoff_monotonicity_violation(pts, 1e-3, 1e-6);
+  if (!mono.empty()) std::cout << "  NOTE: the certified curve is not monotone in lambda: " << mono << "\n";
+  const std::string plot = write_curve_files(a, pts);
+  write_json(c.report_path, tradeoff_report(a, in, pts, mono.empty(), plot));
+  return all_verified(pts) ? kExitOk : kExitNotVerified;
 }
 
 }  // namespace
@@ -170,9 +211,8 @@ Runner add_tradeoff_command(CLI::App& app) {
   cmd->add_flag("--free-x0", a->free_x0, "the initial state is an unknown too");
   cmd->add_flag("--no-offset", a->no_offset, "do not identify the offset phi even if the model declares one");
   cmd->add_option("--basis", a->basis, "correction basis, e.g. 1,rho1,rho1*rho2 (replaces the model's)")->delimiter(',');
-  cmd->add_option("--csv", a->csv_path, "where to write the curve (default tradeoff.csv)");
-  auto* plot = cmd->add_option("--plot", a->plot_path, "where to write the PNG plot (default: the CSV path with .png)");
-  cmd->add_flag("--no-plot", a->no_plot, "do not run gnuplot")->excludes(plot);
+  cmd->add_option("--csv", a->csv_path, "where to write the curve (no CSV unless named)");
+  cmd->add_option("--plots", a->plots_dir, "folder for the figure: DIR/tradeoff.png (.svg, .plot.json, .csv); no figure unless named");
   return [cmd, a] { return cmd->parsed() ? run_tradeoff(*a) : -1; };
 }
 

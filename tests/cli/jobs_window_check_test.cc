@@ -1,12 +1,12 @@
-// The judging of `lpvid jobs merge` as a library (cli/jobs_window_check.h):
+// The judging of `lpvid jobs merge` as a library (jobs/window_check.h):
 // compared as typed values, a genuine window certificate matches its plan
 // and each single change of what it claims does not.
 #include <gtest/gtest.h>
 
 #include <functional>
 
-#include "cli/jobs_plan.h"
-#include "cli/jobs_window_check.h"
+#include "jobs/plan.h"
+#include "jobs/window_check.h"
 #include "model/model_file.h"
 #include "support/jobs_windows.h"
 #include "verify/certificate/certificate_file.h"
@@ -18,13 +18,13 @@ using gen::JobsMerge;
 
 TEST_F(JobsMerge, PlanMismatchNamesEachChangedValue) {
   plan_and_run("--delta 0.45 --dmax 0.05");
-  const cli::JobPlan plan = cli::read_plan(file("J"));
-  const cli::PlannedClaim p = cli::planned_claim(plan);
-  const cli::JobWindow& w = plan.windows[0];
-  const LpvModel<Rational> model = cli::window_model(read_model_file<Rational>(plan.model_path), w);
+  const jobs::JobPlan plan = jobs::read_plan(file("J"));
+  const jobs::PlannedClaim p = jobs::planned_claim(plan);
+  const jobs::JobWindow& w = plan.windows[0];
+  const LpvModel<Rational> model = jobs::window_model(read_model_file<Rational>(plan.model_path), w);
   const Certificate genuine = read_certificate(file("J/w00000.cert.json"));
   ASSERT_EQ(genuine.claim, CertificateClaim::kConsistent);
-  EXPECT_EQ(cli::plan_mismatch(p, w, model, genuine, cli::WindowFile::kCertificate), "");
+  EXPECT_EQ(jobs::plan_mismatch(p, w, model, genuine, jobs::WindowFile::kCertificate), "");
   const std::vector<std::pair<std::function<void(Certificate&)>, std::string>> changes = {
       {[](Certificate& c) { c.delta2 = Rational(4); }, "delta^2 = 4"},
       {[](Certificate& c) { c.dmax2 = Rational(1, 4); }, "dmax^2 = 1/4"},
@@ -38,11 +38,11 @@ TEST_F(JobsMerge, PlanMismatchNamesEachChangedValue) {
   for (const auto& [change, words] : changes) {
     Certificate c = genuine;
     change(c);
-    const std::string why = cli::plan_mismatch(p, w, model, c, cli::WindowFile::kCertificate);
+    const std::string why = jobs::plan_mismatch(p, w, model, c, jobs::WindowFile::kCertificate);
     EXPECT_NE(why.find(words), std::string::npos) << words << " / " << why;
   }
   // as a lower end, a consistency claim is not one
-  EXPECT_NE(cli::plan_mismatch(p, w, model, genuine, cli::WindowFile::kLowerEnd), "");
+  EXPECT_NE(jobs::plan_mismatch(p, w, model, genuine, jobs::WindowFile::kLowerEnd), "");
 }
 
 TEST_F(JobsMerge, APlanOfAnOlderLpvidIsRefusedNotMisread) {

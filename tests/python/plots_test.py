@@ -68,7 +68,7 @@ run("generate", "effect-case", "--effect", "output_offset", "--n", "200", "--out
 run("diagnose", "--data", "est.csv", "--model", "m.json", "--folds", "2", "--test", "val.csv", "--window", "0:80",
     "--max-taps", "16", "--max-windows", "1", "--max-effects", "1", "--plots", "plots", "--report", "r.json")
 run("tradeoff", "--data", "est.csv", "--model", "m.json", "--lambdas", "0.1,0.5,0.9", "--max-taps", "16",
-    "--csv", "curve/tradeoff.csv", "--certificate", "curve/t.cert.json", "--quiet")
+    "--plots", "curve", "--certificate", "curve/t.cert.json", "--quiet")
 
 plots_dir, curve_dir = os.path.join(SCRATCH, "plots"), os.path.join(SCRATCH, "curve")
 plots = lp.read_plots(plots_dir)

@@ -1,4 +1,4 @@
-#include "cli/jobs_plan.h"
+#include "jobs/plan.h"
 
 #include <filesystem>
 
@@ -6,7 +6,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 
-namespace lpvid::cli {
+namespace lpvid::jobs {
 
 nlohmann::ordered_json plan_json(const JobPlan& p) {
   nlohmann::ordered_json j;
@@ -31,53 +31,54 @@ nlohmann::ordered_json plan_json(const JobPlan& p) {
   return j;
 }
 
-JobPlan read_plan(const std::string& dir) {
-  const std::string path = (std::filesystem::path(dir) / "plan.json").string();
-  const std::string text = read_text_file(path);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path + ": not JSON: " + e.what());
-  }
-  const auto field = [&](const nlohmann::json& obj, const char* key, const std::string& where) -> const nlohmann::json& {
+namespace {
+
+/// The fields of one plan.json, each read with its file and field name in
+/// the error.
+struct PlanFields {
+  std::string path;
+  /// For a plan of an older lpvid (no model hash, toeplitz mode or window x0),
+  /// which cannot say what its jobs must certify.
+  std::string again = " (a plan of an older lpvid: run 'lpvid jobs plan' again)";
+
+  const nlohmann::json& field(const nlohmann::json& obj, const char* key, const std::string& where) const {
     if (!obj.is_object() || !obj.contains(key)) throw InputError(path + ": " + where + key + ": missing");
     return obj.at(key);
-  };
-  const auto text_of = [&](const nlohmann::json& obj, const char* key, const std::string& where) {
+  }
+  std::string text_of(const nlohmann::json& obj, const char* key, const std::string& where) const {
     const nlohmann::json& v = field(obj, key, where);
     if (!v.is_string()) throw InputError(path + ": " + where + key + ": expected a string");
     return v.get<std::string>();
-  };
-  if (text_of(j, "format", "") != kJobsFormat)
-    throw InputError(path + ": format: expected \"" + std::string(kJobsFormat) + "\"");
-  JobPlan p;
-  const nlohmann::json& data = field(j, "data", "");
-  p.data_path = text_of(data, "path", "data.");
-  p.data_sha256 = text_of(data, "sha256", "data.");
-  for (const auto& name : field(data, "names", "data.")) p.data_names.push_back(name.get<std::string>());
-  // a plan of an older lpvid (no model hash, toeplitz mode or window x0)
-  // cannot say what its jobs must certify
-  const std::string again = " (a plan of an older lpvid: run 'lpvid jobs plan' again)";
-  const nlohmann::json& model = field(j, "model", "");
-  if (!j.contains("toeplitz") || !model.is_object() || !model.contains("sha256"))
-    throw InputError(path + ": toeplitz, model.sha256: missing" + again);
-  p.model_path = text_of(model, "path", "model.");
-  p.model_sha256 = text_of(model, "sha256", "model.");
-  p.toeplitz = text_of(j, "toeplitz", "");
-  if (p.toeplitz != "signal" && p.toeplitz != "paper") throw InputError(path + ": toeplitz: expected \"signal\" or \"paper\"");
-  const nlohmann::json& obj = field(j, "objective", "");
-  p.objective = text_of(obj, "kind", "objective.");
-  p.delta_text = text_of(obj, "delta", "objective.");
-  p.dmax_text = text_of(obj, "dmax", "objective.");
-  p.lambda_text = text_of(obj, "lambda", "objective.");
-  p.window = field(j, "window", "").get<long>();
-  p.min_last = field(j, "min_last", "").get<long>();
-  const nlohmann::json& windows = field(j, "windows", "");
-  if (!windows.is_array() || windows.empty()) throw InputError(path + ": windows: expected a non-empty array");
-  for (size_t k = 0; k < windows.size(); ++k) {
+  }
+
+  /// format, data, model, toeplitz, objective, window, min_last.
+  void read_header(const nlohmann::json& j, JobPlan& p) const {
+    if (text_of(j, "format", "") != kJobsFormat)
+      throw InputError(path + ": format: expected \"" + std::string(kJobsFormat) + "\"");
+    const nlohmann::json& data = field(j, "data", "");
+    p.data_path = text_of(data, "path", "data.");
+    p.data_sha256 = text_of(data, "sha256", "data.");
+    for (const auto& name : field(data, "names", "data.")) p.data_names.push_back(name.get<std::string>());
+    const nlohmann::json& model = field(j, "model", "");
+    if (!j.contains("toeplitz") || !model.is_object() || !model.contains("sha256"))
+      throw InputError(path + ": toeplitz, model.sha256: missing" + again);
+    p.model_path = text_of(model, "path", "model.");
+    p.model_sha256 = text_of(model, "sha256", "model.");
+    p.toeplitz = text_of(j, "toeplitz", "");
+    if (p.toeplitz != "signal" && p.toeplitz != "paper")
+      throw InputError(path + ": toeplitz: expected \"signal\" or \"paper\"");
+    const nlohmann::json& obj = field(j, "objective", "");
+    p.objective = text_of(obj, "kind", "objective.");
+    p.delta_text = text_of(obj, "delta", "objective.");
+    p.dmax_text = text_of(obj, "dmax", "objective.");
+    p.lambda_text = text_of(obj, "lambda", "objective.");
+    p.window = field(j, "window", "").get<long>();
+    p.min_last = field(j, "min_last", "").get<long>();
+  }
+
+  /// windows[k].
+  JobWindow read_window(const nlohmann::json& w, size_t k) const {
     const std::string where = "windows[" + std::to_string(k) + "].";
-    const nlohmann::json& w = windows[k];
     JobWindow jw;
     jw.index = field(w, "index", where).get<int>();
     const nlohmann::json& rows = field(w, "rows", where);
@@ -98,12 +99,29 @@ JobPlan read_plan(const std::string& dir) {
         throw InputError(path + ": " + where + "x0: expected exact numbers as text");
       jw.x0.push_back(v.get<std::string>());
     }
-    p.windows.push_back(jw);
+    return jw;
   }
+};
+
+}  // namespace
+
+JobPlan read_plan(const std::string& dir) {
+  const PlanFields f{(std::filesystem::path(dir) / "plan.json").string()};
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(read_text_file(f.path));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(f.path + ": not JSON: " + e.what());
+  }
+  JobPlan p;
+  f.read_header(j, p);
+  const nlohmann::json& windows = f.field(j, "windows", "");
+  if (!windows.is_array() || windows.empty()) throw InputError(f.path + ": windows: expected a non-empty array");
+  for (size_t k = 0; k < windows.size(); ++k) p.windows.push_back(f.read_window(windows[k], k));
   if (j.contains("joint")) {
     const nlohmann::json& joint = j.at("joint");
-    p.joint = JointJob{text_of(joint, "command", "joint."), text_of(joint, "certificate", "joint."),
-                       text_of(joint, "report", "joint.")};
+    p.joint = JointJob{f.text_of(joint, "command", "joint."), f.text_of(joint, "certificate", "joint."),
+                       f.text_of(joint, "report", "joint.")};
   }
   return p;
 }
@@ -114,4 +132,4 @@ std::string shell_quote(const std::string& text) {
   return out + "'";
 }
 
-}  // namespace lpvid::cli
+}  // namespace lpvid::jobs

@@ -11,15 +11,15 @@
 ///  - the Toeplitz mode, and the plan's model (its own x0 aside: each record
 ///    carries its own);
 ///  - the claim kind and the fixed values, as for a window
-///    (certificate_claim_mismatch of cli/jobs_window_check.h).
+///    (certificate_claim_mismatch of jobs/window_check.h).
 /// Anything else refuses the joint claim, with the reason.
 
 #include <string>
 
-#include "cli/jobs_plan.h"
-#include "cli/jobs_window_check.h"
+#include "jobs/plan.h"
+#include "jobs/window_check.h"
 
-namespace lpvid::cli {
+namespace lpvid::jobs {
 
 /// Why `c` is not the plan's joint certificate ("" when it is). Values only;
 /// the exact check is judge_joint's.
@@ -32,4 +32,4 @@ std::string joint_mismatch(const PlannedClaim& p, const JobPlan& plan, const Lpv
 WindowResult judge_joint(const PlannedClaim& p, const JobPlan& plan, const LpvModel<Rational>& model,
                          const std::string& certificate_path);
 
-}  // namespace lpvid::cli
+}  // namespace lpvid::jobs

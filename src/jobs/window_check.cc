@@ -1,4 +1,4 @@
-#include "cli/jobs_window_check.h"
+#include "jobs/window_check.h"
 
 #include <filesystem>
 #include <system_error>
@@ -11,7 +11,7 @@
 #include "model/model_file.h"
 #include "verify/certificate/certificate_check.h"
 
-namespace lpvid::cli {
+namespace lpvid::jobs {
 
 namespace {
 
@@ -244,4 +244,4 @@ WindowResult judge_window(const PlannedClaim& p, const JobWindow& w, const LpvMo
   return r;
 }
 
-}  // namespace lpvid::cli
+}  // namespace lpvid::jobs

@@ -3,7 +3,7 @@
 /// problems, so `lpvid jobs plan` writes one `lpvid invalidate` command per
 /// window (a job list any batch engine runs: GNU parallel, xargs -P, a Slurm
 /// job array, an MPI launcher) and `lpvid jobs merge` compares every
-/// certificate with the plan (cli/jobs_window_check.h), re-checks it
+/// certificate with the plan (jobs/window_check.h), re-checks it
 /// exactly and assembles the report.
 ///
 /// A window [b, e) of the record is certified for the model with its state
@@ -19,7 +19,7 @@
 /// RMS over all their samples: Theorem 2.1 over several records), each
 /// window from the x0 declared for it (`lpvid invalidate --data F --rows
 /// b:e --x0 … --data F …`). Merge judges it beside the windows
-/// (cli/jobs_joint_check.h).
+/// (jobs/joint_check.h).
 
 #include <optional>
 #include <string>
@@ -27,7 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace lpvid::cli {
+namespace lpvid::jobs {
 
 inline constexpr const char* kJobsFormat = "lpvid-jobs/1";
 
@@ -69,4 +69,4 @@ JobPlan read_plan(const std::string& dir);
 /// `text` quoted for a POSIX shell ('…', with ' written as '\'').
 std::string shell_quote(const std::string& text);
 
-}  // namespace lpvid::cli
+}  // namespace lpvid::jobs

@@ -1,4 +1,4 @@
-#include "cli/jobs_joint_check.h"
+#include "jobs/joint_check.h"
 
 #include <filesystem>
 
@@ -6,7 +6,7 @@
 #include "core/stop_request.h"
 #include "verify/certificate/certificate_check.h"
 
-namespace lpvid::cli {
+namespace lpvid::jobs {
 
 namespace {
 
@@ -75,4 +75,4 @@ WindowResult judge_joint(const PlannedClaim& p, const JobPlan& plan, const LpvMo
   return r;
 }
 
-}  // namespace lpvid::cli
+}  // namespace lpvid::jobs

@@ -24,14 +24,14 @@
 #include <optional>
 #include <string>
 
-#include "cli/jobs_plan.h"
+#include "jobs/plan.h"
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "verify/certificate/certificate_file.h"
 
-namespace lpvid::cli {
+namespace lpvid::jobs {
 
 /// What the plan fixes for every window's certificates, exact.
 struct PlannedClaim {
@@ -99,4 +99,4 @@ struct WindowResult {
 WindowResult judge_window(const PlannedClaim& plan, const JobWindow& w, const LpvModel<Rational>& model,
                           const std::string& certificate_path, const std::string& data_path);
 
-}  // namespace lpvid::cli
+}  // namespace lpvid::jobs
