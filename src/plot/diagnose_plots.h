@@ -9,7 +9,8 @@
 ///
 /// Every plot_* function writes the numbers of its plot as CSV next to the
 /// PNG (same path, extension .csv; first column the x axis, then one column
-/// per curve) and then the PNG. A missing or failing gnuplot or an
+/// per curve named "<file stem>_<plot_table's name>", unique across the plots
+/// of one folder) and then the PNG. A missing or failing gnuplot or an
 /// unwritable CSV is not an error: the PlotOutcome says what happened
 /// (ok = the PNG was written). Bad signals (empty, non-finite, mismatched
 /// shapes) throw lpvid::InputError before anything is written.

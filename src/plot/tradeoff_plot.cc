@@ -19,18 +19,30 @@ bool spans_decades(const std::vector<double>& v) {
   return *lo > 0 && *hi / *lo > 100.0;
 }
 
+/// Tick positions inside [lo, hi]: the multiples of the smallest 1-2-5 step
+/// giving at most seven ticks, or (log) the powers of ten.
+std::vector<double> round_positions(double lo, double hi, bool log) {
+  std::vector<double> at;
+  if (log && lo > 0) {
+    for (double k = std::ceil(std::log10(lo) - 1e-9); k <= std::floor(std::log10(hi) + 1e-9); ++k) at.push_back(std::pow(10.0, k));
+    if (at.size() >= 2) return at;
+    at.clear();
+  }
+  const auto first = [&](double step) { return std::ceil(lo / step - 1e-9); };
+  const auto last = [&](double step) { return std::floor(hi / step + 1e-9); };
+  double step = std::pow(10.0, std::floor(std::log10(hi - lo)) - 1);  // at least 10 ticks: widen 1, 2, 5, 10, …
+  for (int k = 0; last(step) - first(step) + 1 > 7; ++k) step *= k % 3 == 1 ? 2.5 : 2.0;
+  for (double k = first(step); k <= last(step); ++k) at.push_back(k * step);
+  return at;
+}
+
 }  // namespace
 
 std::vector<PlotTick> distinct_ticks(const std::vector<double>& values, bool log) {
   if (values.empty()) return {};
   const auto [lo_it, hi_it] = std::minmax_element(values.begin(), values.end());
-  const double lo = *lo_it, hi = *hi_it;
-  std::vector<double> at;
-  constexpr int kTicks = 5;
-  if (!(hi > lo)) at.push_back(lo);
-  for (int k = 0; hi > lo && k < kTicks; ++k)
-    at.push_back(log && lo > 0 ? lo * std::pow(hi / lo, k / double(kTicks - 1)) : lo + (hi - lo) * k / (kTicks - 1));
-  for (int digits = 2;; ++digits) {  // the fewest significant digits that tell every tick apart
+  const std::vector<double> at = *hi_it > *lo_it ? round_positions(*lo_it, *hi_it, log) : std::vector<double>{*lo_it};
+  for (int digits = 3;; ++digits) {  // the fewest significant digits that tell every tick apart
     std::vector<PlotTick> ticks;
     std::set<std::string> seen;
     for (double a : at) {

@@ -13,9 +13,11 @@
 
 namespace lpvid {
 
-/// Five ticks spread evenly (logarithmically when log) over the values'
-/// range, labelled with the fewest significant digits that keep every label
-/// distinct; one tick when all values are equal; none for no values.
+/// Ticks inside the values' range at round numbers: multiples of the smallest
+/// 1, 2 or 5 times 10^k step giving at most seven, or the powers of ten on a logarithmic axis
+/// spanning two of them; labelled with the fewest significant digits (at least
+/// 3) that keep every label distinct. One tick when all values are equal;
+/// none for no values.
 std::vector<PlotTick> distinct_ticks(const std::vector<double>& values, bool log);
 
 PlotSpec tradeoff_plot(const std::vector<TradeoffPoint>& points, const std::string& title);

@@ -10,6 +10,7 @@
 
 #include "core/input_error.h"
 #include "plot/diagnose_plots.h"
+#include "support/plot_records.h"
 #include "support/test_signals.h"
 #include "support/gen_identify.h"
 
@@ -118,18 +119,8 @@ TEST(DiagnosePlots, CsvColumnsOfNamesWithARemarkDiffer) {
 }
 
 TEST(DiagnosePlots, TestRecordFigureHasTimeUnitsAndTheBand) {
-  TestRecordPlot t;
-  t.u = gaussian(60, 1, 11, 1.0);
-  t.y = gaussian(60, 1, 12, 1.0);
-  t.yhat_before = gaussian(60, 1, 13, 1.0);
-  t.yhat_after = t.y + gaussian(60, 1, 14, 0.1);
-  t.dmax_after = 0.25;
-  t.warmup = 10;
-  t.input_columns = {"uEst"};
-  t.output_columns = {"yEst"};
-  t.info.sample_time = 4.0;
+  TestRecordPlot t = random_test_record("tanks.csv columns uVal,yVal");
   t.info.units = {{"uEst", "V"}, {"yEst", "V"}};
-  t.source = "tanks.csv columns uVal,yVal";
   const PlotSpec f = test_record_plot_spec(t);
   ASSERT_EQ(f.panels.size(), 2u);
   EXPECT_EQ(f.panels[0].xlabel, "time [s]");
