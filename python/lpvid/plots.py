@@ -20,7 +20,7 @@ import json
 import os
 import warnings
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional
+from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
@@ -74,6 +74,8 @@ class Panel:
     logx: bool = False
     logy: bool = False
     key: str = "top right"
+    xtics: List[Tuple[float, str]] = field(default_factory=list)
+    ytics: List[Tuple[float, str]] = field(default_factory=list)
 
 
 @dataclass
@@ -128,7 +130,9 @@ def _panel(js, xs, where):
                     dashtype=int(h.get("dashtype", 1))) for h in js.get("hlines", [])]
     return Panel(title=js.get("title", ""), xlabel=js.get("xlabel", ""), ylabel=js.get("ylabel", ""),
                  series=series, hlines=hlines, logx=bool(js.get("logx", False)), logy=bool(js.get("logy", False)),
-                 key=js.get("key", "top right"))
+                 key=js.get("key", "top right"),
+                 xtics=[(float(t["at"]), str(t["label"])) for t in js.get("xtics", [])],
+                 ytics=[(float(t["at"]), str(t["label"])) for t in js.get("ytics", [])])
 
 
 def _csv_table(path):
@@ -235,6 +239,14 @@ def _draw_panel(ax, panel, title, fix_x):
         ax.set_xscale("log")
     if panel.logy:
         ax.set_yscale("log")
+    if panel.xtics or panel.ytics:  # the figure's own tick marks (distinct labels)
+        ax.minorticks_off()
+    if panel.xtics:
+        ax.set_xticks([t[0] for t in panel.xtics])
+        ax.set_xticklabels([t[1] for t in panel.xtics])
+    if panel.ytics:
+        ax.set_yticks([t[0] for t in panel.ytics])
+        ax.set_yticklabels([t[1] for t in panel.ytics])
     if fix_x:  # panels over one time axis: no padding in x (gnuplot's autoscale xfix)
         ax.margins(x=0)
     ax.set_title(title, fontsize="medium")

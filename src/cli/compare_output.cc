@@ -6,11 +6,12 @@
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "plot/gnuplot.h"
+#include "plot/palette.h"
+#include "plot/plot_labels.h"
 
 namespace lpvid::cli {
 namespace {
 
-const char* const kModelColours[] = {"#cc3311", "#0077bb", "#009988", "#ee7733", "#aa3377", "#33bbee", "#bbbbbb"};
 
 std::vector<double> column_of(const Mat<double>& m, Eigen::Index j, Eigen::Index from, Eigen::Index to) {
   std::vector<double> v;
@@ -70,20 +71,21 @@ std::string plot_compare(const std::string& path, const ComparedRows& r, const s
   for (Eigen::Index i = 0; i < r.y.cols(); ++i) {
     PlotSpec p;
     p.xlabel = r.info.time_label();
-    p.ylabel = r.info.label(r.outputs[static_cast<size_t>(i)]);
+    const std::string& output = r.outputs[static_cast<size_t>(i)];
+    p.ylabel = output + unit_suffix(r.info.unit_of(output));
     if (r.warmup > 0) {
-      PlotSeries w{"measured, warm-up rows (x0 fit, not scored)", {}, {}, {}, "lines", {}, "#999999"};
+      PlotSeries w{"measured, warm-up rows (x0 fit, not scored)", {}, {}, {}, "lines", {}, palette::kWarmup};
       w.x.assign(t.begin(), t.begin() + r.warmup);
       w.y = column_of(r.y, i, 0, r.warmup);
       p.series.push_back(w);
     }
-    PlotSeries m{"measured", {}, {}, {}, "lines", {}, "#000000"};
+    PlotSeries m{"measured", {}, {}, {}, "lines", {}, palette::kMeasured};
     m.x.assign(t.begin() + r.warmup, t.end());
     m.y = column_of(r.y, i, r.warmup, n);
     p.series.push_back(m);
     for (size_t j = 0; j < models.size(); ++j) {
       PlotSeries s{models[j].name, t, column_of(models[j].yhat, i, 0, n), {}, "lines", {},
-                   kModelColours[std::min<size_t>(j, std::size(kModelColours) - 1)]};
+                   palette::kOtherModels[std::min<size_t>(j, std::size(palette::kOtherModels) - 1)]};
       p.series.push_back(s);
     }
     fig.panels.push_back(p);

@@ -4,13 +4,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 
 #include "core/file_io.h"
 #include "cli/certificate_names.h"
 #include "cli/commands.h"
-#include "cli/diagnose_output.h"
+#include "cli/diagnose_report.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
 #include "core/input_error.h"
@@ -123,16 +124,18 @@ RolePlan role_plan(const DiagnoseArgs& a, int warmup) {
   return plan;
 }
 
-int run_diagnose(DiagnoseArgs& a) {
-  check_output_file(a.model_out, "model");
-  check_output_directory(a.plots_dir, "plots");
+/// Progress lines on stderr with the seconds since the start (none with --quiet).
+std::function<void(const std::string&)> progress_printer(bool quiet) {
   const auto started = std::chrono::steady_clock::now();
-  const auto progress = [started, quiet = a.common.quiet](const std::string& status) {
+  return [started, quiet](const std::string& status) {
     if (quiet) return;  // --quiet: no progress lines (errors and the report are still printed)
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     std::fprintf(stderr, "[diagnose %6.1f s] %s\n", s, status.c_str());
   };
-  progress("reading the data and the model");
+}
+
+/// Checks the numeric options; returns the warm-up (--warmup, --benchmark or --init-samples).
+int checked_warmup(const DiagnoseArgs& a) {
   if (!(a.holdout > 0 && a.holdout < 1)) throw InputError("--holdout must be in (0, 1)");
   if (a.folds == 0 || a.folds < 1) throw InputError("--folds must be 1 (one held-out block) or at least 2");
   const int warmup = a.warmup > 0 ? a.warmup : (!a.benchmark.empty() ? benchmark_warmup(a.benchmark) : a.init_samples);
@@ -140,24 +143,11 @@ int run_diagnose(DiagnoseArgs& a) {
     throw InputError("--warmup " + std::to_string(a.warmup) + " contradicts --benchmark " + a.benchmark + " (" +
                      std::to_string(benchmark_warmup(a.benchmark)) + ")");
   if (!(a.min_gain >= 0 && a.min_gain < 1)) throw InputError("--min-gain must be in [0, 1)");
-  Inputs in = load_inputs(a.common);
-  LpvModel<double> declared = in.model_d;
-  if (a.input_scheduling) declared = with_input_scheduling(declared);
-  // the records in their roles: estimation (fit), selection, tests
-  const RolePlan plan = role_plan(a, warmup);
-  RoleRecords roles = load_role_records(plan, declared, in.model_d);
-  const long file_offset = roles.file_offset;
-  const bool by_folds = plan.selection == SelectionRole::kFolds;
-  Experiment<Rational>& est_q = roles.est_q;
-  Experiment<double>& est_d = roles.est_d;
-  std::vector<Experiment<double>> tests;
-  std::vector<std::string> test_texts;
-  for (const RoleRecord& t : roles.tests) {
-    tests.push_back(t.exp);
-    test_texts.push_back(t.text);
-  }
+  return warmup;
+}
 
-  // verified bounds before and after, on the bound windows of the estimation data
+/// The bound windows of the estimation data (--window ranges or --window-length tiles).
+std::vector<std::pair<Eigen::Index, Eigen::Index>> bound_windows(const DiagnoseArgs& a, Eigen::Index rows) {
   std::vector<std::pair<Eigen::Index, Eigen::Index>> windows;
   for (const std::string& w : a.windows) {
     const auto [b, e] = parse_row_range(w, "--window");
@@ -165,8 +155,15 @@ int run_diagnose(DiagnoseArgs& a) {
   }
   if (a.window_length > 0) {
     if (!windows.empty()) throw InputError("--window and --window-length exclude each other");
-    windows = tile_windows(est_q.n(), a.window_length, std::min<Eigen::Index>(kDefaultMinLastWindow, a.window_length / 4));
+    windows = tile_windows(rows, a.window_length, std::min<Eigen::Index>(kDefaultMinLastWindow, a.window_length / 4));
   }
+  return windows;
+}
+
+/// The library's options from the command line; certificates: the stem of the window certificates.
+DiagnoseOptions diagnose_options(const DiagnoseArgs& a, const Inputs& in, const RoleRecords& roles, int warmup,
+                                 bool by_folds, const std::string& certificates,
+                                 const std::function<void(const std::string&)>& progress) {
   DiagnoseOptions o;
   o.ranking.max_effects = a.max_effects;
   o.ranking.min_gain = a.min_gain;
@@ -180,47 +177,77 @@ int run_diagnose(DiagnoseArgs& a) {
   o.ranking.threads = static_cast<unsigned>(a.threads);
   o.ranking.progress = progress;
   o.test_warmup = warmup;
-  o.windows = windows;
+  o.windows = bound_windows(a, roles.est_q.n());
   o.max_windows = static_cast<size_t>(a.max_windows);
   o.certify = diagnose_policy(certify_options(a.common, in));
   o.certify.data = roles.data;  // the bytes est_q was parsed from; rows: set per window
   o.certify.lower_end = a.lower_ends;
-  o.file_row_offset = file_offset;
+  o.file_row_offset = roles.file_offset;
   if (roles.records.size() > 1)
     for (const EstimationRecord& r : roles.records) o.record_data.push_back(r.data);
-  const std::string certificates = certificate_path(a.common);
-  o.on_bound = [&certificates](WindowBounds& w, size_t window, size_t windows, bool after) {
+  o.on_bound = [certificates](WindowBounds& w, size_t window, size_t windows, bool after) {
     write_window_certificate(w, certificates, window, windows, after);
   };
   // --write-sdpa numbers the programs it writes in solve order: sequential then.
   o.threads = a.common.write_sdpa.empty() ? static_cast<unsigned>(a.threads) : 1u;
-  o.make_solver = [&a] { return make_solver_for_cli(a.common.solver, a.common.write_sdpa); };
-  auto solver = o.make_solver();
-  const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record
-  progress("data read (" + std::to_string(est_d.n()) + " estimation rows); fitting the declared model" +
-           (by_folds ? " on the whole record and on each fold's training rows" : ""));
-  DiagnoseResult result = diagnose(declared, est_d, est_q, by_folds ? no_selection : roles.selection.exp, tests, o, *solver);
-  write_diagnose_certificates(result, certificates);  // the Theorem 3.1 windows
+  o.make_solver = [solver = a.common.solver, sdpa = a.common.write_sdpa] { return make_solver_for_cli(solver, sdpa); };
+  return o;
+}
 
-  DiagnoseReportInputs ri;
+/// The report of the result: what the files, rows and roles are called.
+DiagnoseReport diagnose_report(const DiagnoseArgs& a, const RoleRecords& roles, const DiagnoseResult& result,
+                               const std::vector<Experiment<double>>& tests, bool by_folds, int warmup) {
+  DiagnoseReport ri;
   ri.result = &result;
   ri.command_line_data = a.common.data_path;
   ri.validation = roles.selection.text;
   ri.estimation = roles.estimation_text;
-  ri.test_sources = test_texts;
-  ri.est = &est_d;
+  for (const RoleRecord& t : roles.tests) ri.test_sources.push_back(t.text);
+  ri.est = &roles.est_d;
   ri.tests = &tests;
   ri.folds = by_folds;
   ri.fold_warmup = warmup;
   ri.test_warmup = warmup;
-  ri.file_row_offset = file_offset;
+  ri.file_row_offset = roles.file_offset;
   ri.validation_outputs = roles.selection.outputs;
   ri.records = roles.records;
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;
   ri.solver = a.common.solver;
+  score_estimation_records(ri);
+  return ri;
+}
+
+int run_diagnose(DiagnoseArgs& a) {
+  check_output_file(a.model_out, "model");
+  check_output_directory(a.plots_dir, "plots");
+  const auto progress = progress_printer(a.common.quiet);
+  progress("reading the data and the model");
+  const int warmup = checked_warmup(a);
+  const Inputs in = load_inputs(a.common);
+  const LpvModel<double> declared = a.input_scheduling ? with_input_scheduling(in.model_d) : in.model_d;
+  // the records in their roles: estimation (fit), selection, tests
+  const RolePlan plan = role_plan(a, warmup);
+  const RoleRecords roles = load_role_records(plan, declared, in.model_d);
+  const bool by_folds = plan.selection == SelectionRole::kFolds;
+  std::vector<Experiment<double>> tests;
+  for (const RoleRecord& t : roles.tests) tests.push_back(t.exp);
+  const std::string certificates = certificate_path(a.common);
+  const DiagnoseOptions o = diagnose_options(a, in, roles, warmup, by_folds, certificates, progress);
+  auto solver = o.make_solver();
+  const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record
+  progress("data read (" + std::to_string(roles.est_d.n()) + " estimation rows); fitting the declared model" +
+           (by_folds ? " on the whole record and on each fold's training rows" : ""));
+  // the one library call: verified bounds before and after, on the bound windows of the estimation data
+  DiagnoseResult result =
+      diagnose(declared, roles.est_d, roles.est_q, by_folds ? no_selection : roles.selection.exp, tests, o, *solver);
+  write_diagnose_certificates(result, certificates);  // the Theorem 3.1 windows
   if (!a.model_out.empty()) write_model_file(a.model_out, result.after.front().model);
-  print_and_write_diagnose_report(ri, a.common.report_path);
+  // the renderers: figures first (the text and the JSON list them), then the text, then the JSON
+  const DiagnoseReport report = diagnose_report(a, roles, result, tests, by_folds, warmup);
+  const DiagnoseFigures figures = draw_diagnose_figures(report);
+  print_diagnose_text(report, figures);
+  write_diagnose_json(report, figures, a.common.report_path);
   return exit_code(result.outcome());
 }
 

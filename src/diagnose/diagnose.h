@@ -17,7 +17,7 @@
 ///      It is the last step and nothing above reads it.
 ///
 /// `lpvid diagnose` parses its options into these types, calls `diagnose`
-/// and renders the result (src/cli/diagnose_output.h).
+/// and renders the result (src/cli/diagnose_report.h).
 #include <functional>
 #include <memory>
 #include <optional>

@@ -9,6 +9,8 @@
 
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "plot/palette.h"
+#include "plot/plot_labels.h"
 
 namespace lpvid {
 namespace {
@@ -49,10 +51,13 @@ std::vector<double> column(const Mat<double>& m, Eigen::Index j) {
   return v;
 }
 
-/// Adds "<name> <tag>" curves against the sample index for each column of m.
-void add_columns(PlotSpec& spec, const Mat<double>& m, const std::vector<std::string>& names, const std::string& tag) {
-  for (Eigen::Index i = 0; i < m.cols(); ++i)
+/// Adds "<name> <tag>" curves against the sample index for each column of m, in the role's colour.
+void add_columns(PlotSpec& spec, const Mat<double>& m, const std::vector<std::string>& names, const std::string& tag,
+                 const char* color) {
+  for (Eigen::Index i = 0; i < m.cols(); ++i) {
     spec.series.push_back(series(output_name(names, i) + " " + tag, range(m.rows()), column(m, i), "lines"));
+    spec.series.back().color = color;
+  }
 }
 
 /// Adds column i of m against x as a line of a fixed colour ("" for gnuplot's cycle).
@@ -100,9 +105,13 @@ std::vector<std::string> text(const std::vector<double>& v) {
   return out;
 }
 
-/// CSV (table) first, then the PNG; neither failure throws.
-PlotOutcome write_plot(const PlotSpec& spec, const std::vector<TextColumn>& table, const std::string& png_path) {
+/// CSV (table) first, then the PNG; neither failure throws. Every column
+/// but the x axis is named "<figure's file stem>_<curve>" (residual_y1_before,
+/// test2_y1_measured): unique across the plots of one directory.
+PlotOutcome write_plot(const PlotSpec& spec, std::vector<TextColumn> table, const std::string& png_path) {
   const std::string csv = plot_csv_path(png_path);
+  const std::string stem = sanitise(std::filesystem::path(png_path).stem().string());
+  for (size_t k = 1; k < table.size(); ++k) table[k].name = stem + "_" + table[k].name;
   std::string csv_note;
   try {
     write_csv(csv, table);
@@ -148,20 +157,21 @@ std::vector<TextColumn> plot_table(const PlotSpec& spec, const std::string& x_na
 }
 
 PlotSpec residual_plot_spec(const Mat<double>& before, const Mat<double>& after,
-                            const std::vector<std::string>& output_names) {
+                            const std::vector<std::string>& output_names, const std::string& output_unit) {
   check_before_after(before, after, "residual plot");
   PlotSpec spec;
   const ResidualRms rb = residual_rms(before);
-  spec.title = "Residual r = y - yhat - Phi (RMS " + short_number(rb.overall);
+  spec.title = "Residual r = y - yhat - Phi, Phi = the output of the scheduled basis terms (RMS " +
+               short_number(rb.overall);
   if (after.cols() > 0) spec.title += " before, " + short_number(residual_rms(after).overall) + " after";
   spec.title += ")";
   spec.xlabel = "sample t";
-  spec.ylabel = "residual r(t)";
+  spec.ylabel = "residual r(t)" + unit_suffix(output_unit);
   spec.width = 1100;
   spec.key = "outside right top";  // a legend inside would cover part of a long record
-  add_columns(spec, before, output_names, "before");
-  add_columns(spec, after, output_names, "after");
-  spec.hlines.push_back({0.0, "", "#000000", 1});
+  add_columns(spec, before, output_names, "before", palette::kModelBefore);
+  add_columns(spec, after, output_names, "after", palette::kModelAfter);
+  spec.hlines.push_back({0.0, "", palette::kReference, 1});
   return spec;
 }
 
@@ -178,23 +188,25 @@ PlotSpec autocorrelation_plot_spec(const Mat<double>& before, const Mat<double>&
   spec.width = 1000;
   const std::vector<double> lags = range(wb.max_lag + 1);
   for (const auto* w : {&wb, &wa}) {
-    for (size_t i = 0; i < w->outputs.size(); ++i)
+    for (size_t i = 0; i < w->outputs.size(); ++i) {
       spec.series.push_back(series(output_name(output_names, static_cast<Eigen::Index>(i)) +
                                        (w == &wb ? " before" : " after") + " (Q " + short_number(w->outputs[i].q) + ")",
                                    lags, w->outputs[i].rho, "linespoints"));
+      spec.series.back().color = w == &wb ? palette::kModelBefore : palette::kModelAfter;
+    }
   }
-  spec.xlabel = "lag k";
-  spec.ylabel = "normalised autocorrelation rho(k)";
-  spec.hlines = {{wb.band_99, "99% band +-" + short_number(wb.band_99), "#cc0000", 2},
-                 {-wb.band_99, "", "#cc0000", 2},
-                 {wb.band_95, "95% band +-" + short_number(wb.band_95), "#ff8800", 3},
-                 {-wb.band_95, "", "#ff8800", 3},
-                 {0.0, "", "#000000", 1}};
+  spec.xlabel = "lag k [samples]";
+  spec.ylabel = "normalised autocorrelation rho(k) (no unit)";
+  spec.hlines = {{wb.band_99, "99% band +-" + short_number(wb.band_99), palette::kBound, 2},
+                 {-wb.band_99, "", palette::kBound, 2},
+                 {wb.band_95, "95% band +-" + short_number(wb.band_95), palette::kSecondaryBound, 3},
+                 {-wb.band_95, "", palette::kSecondaryBound, 3},
+                 {0.0, "", palette::kReference, 1}};
   return spec;
 }
 
 PlotSpec output_fit_plot_spec(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
-                              const std::vector<std::string>& output_names) {
+                              const std::vector<std::string>& output_names, const std::string& output_unit) {
   require_signal(y, "output plot: measured output");
   check_before_after(yhat_before, yhat_after, "output plot: model output");
   if (yhat_before.rows() != y.rows() || yhat_before.cols() != y.cols())
@@ -206,16 +218,60 @@ PlotSpec output_fit_plot_spec(const Mat<double>& y, const Mat<double>& yhat_befo
   if (yhat_after.cols() > 0) spec.title += " before, " + short_number(residual_rms(y - yhat_after).overall) + " after";
   spec.title += ")";
   spec.xlabel = "sample t";
-  spec.ylabel = "output";
+  spec.ylabel = "output" + unit_suffix(output_unit);
   spec.width = 1100;
   spec.key = "outside right top";
-  add_columns(spec, y, output_names, "measured");
-  add_columns(spec, yhat_before, output_names, "model before");
-  add_columns(spec, yhat_after, output_names, "model after");
+  add_columns(spec, y, output_names, "measured", palette::kMeasured);
+  add_columns(spec, yhat_before, output_names, "model before", palette::kModelBefore);
+  add_columns(spec, yhat_after, output_names, "model after", palette::kModelAfter);
   return spec;
 }
 
-PlotSpec test_record_plot_spec(const TestRecordPlot& t) {
+namespace {
+
+/// x of samples 0..n-1 whose first is file row first_row: seconds when the sample time is known, else the row.
+std::vector<double> time_axis(const SignalInfo& info, double first_row, Eigen::Index n) {
+  std::vector<double> x(static_cast<size_t>(n));
+  for (Eigen::Index k = 0; k < n; ++k) x[static_cast<size_t>(k)] = info.time_of(first_row + static_cast<double>(k));
+  return x;
+}
+
+/// "input [V]" when the count first columns share a unit, else "input (data units)".
+std::string axis_label(const char* what, const SignalInfo& info, const std::vector<std::string>& cols, Eigen::Index count) {
+  const std::vector<std::string> first(cols.begin(), cols.begin() + std::min<Eigen::Index>(count, static_cast<Eigen::Index>(cols.size())));
+  return std::string(what) + unit_suffix(common_unit(info, first));
+}
+
+/// A panel of a stacked figure: its title and axis labels, the legend outside on the right.
+PlotSpec panel(const std::string& title, const std::string& xlabel, const std::string& ylabel) {
+  PlotSpec p;
+  p.title = title;
+  p.xlabel = xlabel;
+  p.ylabel = ylabel;
+  p.key = "outside right top";
+  return p;
+}
+
+/// Rows [first, last) shaded over the panel's range [lo, hi] (a band series).
+void shade_rows(PlotSpec& p, const std::vector<double>& x, long first, long last, double lo, double hi,
+                const std::string& title, const char* color) {
+  PlotSeries band;
+  band.title = title;
+  band.x.assign(x.begin() + first, x.begin() + last);
+  band.y.assign(band.x.size(), lo);
+  band.y_high.assign(band.x.size(), hi);
+  band.color = color;
+  p.series.push_back(std::move(band));
+}
+
+/// The name of column i: the model's column, else prefix + (i + 1) (prefix alone for one column).
+std::string signal_name(const std::vector<std::string>& cols, Eigen::Index i, Eigen::Index count, const char* prefix) {
+  if (static_cast<size_t>(i) < cols.size() && !cols[static_cast<size_t>(i)].empty()) return cols[static_cast<size_t>(i)];
+  return std::string(prefix) + (count > 1 ? std::to_string(i + 1) : "");
+}
+
+/// Checks a test record's signals (shapes, d_max, warm-up).
+void check_test_record(const TestRecordPlot& t) {
   require_signal(t.u, "test plot: input");
   require_signal(t.y, "test plot: measured output");
   check_before_after(t.yhat_before, t.yhat_after, "test plot: model output");
@@ -224,59 +280,85 @@ PlotSpec test_record_plot_spec(const TestRecordPlot& t) {
     throw InputError("test plot: the input, output and model output differ in length or width");
   if (!(t.dmax_after >= 0) || !std::isfinite(t.dmax_after)) throw InputError("test plot: d_max must be finite and >= 0");
   if (t.warmup < 0 || t.warmup >= n) throw InputError("test plot: the warm-up must leave samples to score");
-  std::vector<double> x(static_cast<size_t>(n));
-  for (Eigen::Index k = 0; k < n; ++k) x[static_cast<size_t>(k)] = t.info.time_of(static_cast<double>(k));
-  const auto name = [](const char* role, Eigen::Index i, Eigen::Index count) {
-    return std::string(role) + (count > 1 ? std::to_string(i + 1) : "");
-  };
-  const auto unit_of = [&](const std::vector<std::string>& cols, Eigen::Index i) {
-    return static_cast<size_t>(i) < cols.size() ? t.info.unit_of(cols[static_cast<size_t>(i)]) : std::string();
-  };
-  const auto axis = [&](const char* what, const std::vector<std::string>& cols, Eigen::Index count) {
-    std::string u = count > 0 ? unit_of(cols, 0) : "";
-    for (Eigen::Index i = 1; i < count; ++i)
-      if (unit_of(cols, i) != u) u.clear();
-    return std::string(what) + (u.empty() ? "" : " [" + u + "]");
-  };
-  PlotSpec fig;
-  fig.width = 1200;
-  fig.height = 800;
-  const double scored = residual_rms(t.y.bottomRows(n - t.warmup) - t.yhat_before.bottomRows(n - t.warmup)).overall;
-  // the file's name without its folders: the title must fit above the figure
-  std::string source = t.source;
-  const size_t space = source.find(' '), slash = source.substr(0, space).rfind('/');
-  if (slash != std::string::npos) source = source.substr(slash + 1);
-  fig.title = "Test record " + source + ": x0 from the first " + std::to_string(t.warmup) + " samples; RMS over the rest " +
-              short_number(scored) + " before";
-  if (t.yhat_after.cols() > 0)
-    fig.title += ", " + short_number(residual_rms(t.y.bottomRows(n - t.warmup) - t.yhat_after.bottomRows(n - t.warmup)).overall) +
-                 " after";
-  PlotSpec in;
-  in.title = "input";
-  in.xlabel = t.info.time_label();
-  in.ylabel = axis("input", t.input_columns, t.u.cols());
-  in.key = "outside right top";
-  for (Eigen::Index i = 0; i < t.u.cols(); ++i) in.series.push_back(series(name("u", i, t.u.cols()), x, column(t.u, i), "lines"));
-  PlotSpec out;
-  out.title = t.dmax_after > 0 ? "output; band: model after +- the certified d_max " + short_number(t.dmax_after) +
-                                     " (an RMS bound on the estimation windows, not a pointwise one)"
-                               : "output";
-  out.xlabel = t.info.time_label();
-  out.ylabel = axis("output", t.output_columns, t.y.cols());
-  out.key = "outside right top";
+}
+
+/// The RMS of the scored rows (after the warm-up) of y - yhat.
+double scored_rms(const TestRecordPlot& t, const Mat<double>& yhat) {
+  const Eigen::Index m = t.y.rows() - t.warmup;
+  return residual_rms(t.y.bottomRows(m) - yhat.bottomRows(m)).overall;
+}
+
+/// The test record's output panel: the d_max band, measured, model before and after per output.
+PlotSpec test_output_panel(const TestRecordPlot& t, const std::vector<double>& x) {
+  PlotSpec out = panel(t.dmax_after > 0 ? "output; band: model after +- the certified d_max " + short_number(t.dmax_after) +
+                                              " (an RMS bound on the estimation windows, not a pointwise one)"
+                                        : "output",
+                       t.info.time_label(), axis_label("output", t.info, t.output_columns, t.y.cols()));
   for (Eigen::Index i = 0; i < t.y.cols(); ++i) {
-    const std::string yi = name("y", i, t.y.cols());
+    const std::string yi = signal_name(t.output_columns, i, t.y.cols(), "y");
     if (t.yhat_after.cols() > 0 && t.dmax_after > 0) {
       PlotSeries band = series(yi + " band (after +- dmax)", x, column(t.yhat_after, i), "lines");
       band.y_high = band.y;
       for (size_t k = 0; k < band.y.size(); ++k) band.y[k] -= t.dmax_after, band.y_high[k] += t.dmax_after;
-      band.color = "#7799dd";
+      band.color = palette::kBoundBand;
       out.series.push_back(std::move(band));
     }
-    add_line(out, yi + " measured", x, t.y, i, "#000000");
-    add_line(out, yi + " model before", x, t.yhat_before, i, "#dd7711");
-    if (t.yhat_after.cols() > 0) add_line(out, yi + " model after", x, t.yhat_after, i, "#1155cc");
+    add_line(out, yi + " measured", x, t.y, i, palette::kMeasured);
+    add_line(out, yi + " model before", x, t.yhat_before, i, palette::kModelBefore);
+    if (t.yhat_after.cols() > 0) add_line(out, yi + " model after", x, t.yhat_after, i, palette::kModelAfter);
   }
+  return out;
+}
+
+/// The range [lo, hi] of the signals drawn in a panel (its lines, not its bands).
+std::pair<double, double> drawn_range(const PlotSpec& p) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const PlotSeries& ser : p.series)
+    for (size_t k = 0; k < ser.y.size(); ++k) {
+      lo = std::min({lo, ser.y[k], ser.y_high.empty() ? ser.y[k] : ser.y_high[k]});
+      hi = std::max({hi, ser.y[k], ser.y_high.empty() ? ser.y[k] : ser.y_high[k]});
+    }
+  return {lo, hi};
+}
+
+/// Shades rows [first, last) first in each panel (drawn under the lines); titled in the top panel only.
+void shade_in_panels(std::vector<PlotSpec*> panels, const std::vector<double>& x, long first, long last,
+                     const std::string& title, const char* color) {
+  for (size_t k = 0; k < panels.size(); ++k) {
+    PlotSpec& p = *panels[k];
+    const auto [lo, hi] = drawn_range(p);
+    PlotSpec shaded;
+    shade_rows(shaded, x, first, last, lo, hi, k == 0 ? title : std::string(), color);
+    p.series.insert(p.series.begin(), shaded.series.begin(), shaded.series.end());
+  }
+}
+
+/// The spec without its shaded row ranges (bands over fewer samples than the record): the CSV's series.
+PlotSpec without_shading(PlotSpec spec, size_t n) {
+  for (PlotSpec& p : spec.panels)
+    p.series.erase(std::remove_if(p.series.begin(), p.series.end(),
+                                  [n](const PlotSeries& ser) { return !ser.y_high.empty() && ser.x.size() != n; }),
+                   p.series.end());
+  return spec;
+}
+
+}  // namespace
+
+PlotSpec test_record_plot_spec(const TestRecordPlot& t) {
+  check_test_record(t);
+  const std::vector<double> x = time_axis(t.info, 0, t.y.rows());
+  PlotSpec fig;
+  fig.width = 1200;
+  fig.height = 800;
+  fig.title = "Test record " + title_without_folders(t.source) + ": x0 from the first " + std::to_string(t.warmup) +
+              " samples (shaded); RMS over the rest " + short_number(scored_rms(t, t.yhat_before)) + " before";
+  if (t.yhat_after.cols() > 0) fig.title += ", " + short_number(scored_rms(t, t.yhat_after)) + " after";
+  PlotSpec in = panel("input", t.info.time_label(), axis_label("input", t.info, t.input_columns, t.u.cols()));
+  for (Eigen::Index i = 0; i < t.u.cols(); ++i)
+    add_line(in, signal_name(t.input_columns, i, t.u.cols(), "u"), x, t.u, i, t.u.cols() == 1 ? palette::kInput : "");
+  PlotSpec out = test_output_panel(t, x);
+  if (t.warmup > 0)
+    shade_in_panels({&in, &out}, x, 0, static_cast<long>(t.warmup), "warm-up (x0 fit, not scored)", palette::kWarmup);
   fig.panels = {std::move(in), std::move(out)};
   return fig;
 }
@@ -289,56 +371,24 @@ PlotSpec record_plot_spec(const RecordPlot& r) {
     throw InputError("record plot: the input, output and model output differ in length or width");
   for (const auto& [a, b] : r.blocks)
     if (a < 0 || b > n || a >= b) throw InputError("record plot: a selection block lies outside the record");
-  std::vector<double> x(static_cast<size_t>(n));
-  for (Eigen::Index k = 0; k < n; ++k) x[static_cast<size_t>(k)] = r.info.time_of(static_cast<double>(r.first_row + k));
+  const std::vector<double> x = time_axis(r.info, static_cast<double>(r.first_row), n);
   const std::string xlabel = r.info.sample_time > 0 ? "time [s]" : "file row";
-  const auto axis = [&](const char* what, const std::vector<std::string>& cols) {
-    const std::string u = cols.empty() ? "" : r.info.unit_of(cols.front());
-    for (const std::string& c : cols)
-      if (r.info.unit_of(c) != u) return std::string(what);
-    return std::string(what) + (u.empty() ? "" : " [" + u + "]");
-  };
-  // a block shaded over the panel's range: a band from the signal's min to its max over the block's rows
-  const auto shade = [&](PlotSpec& p, const Mat<double>& m) {
-    const double lo = m.minCoeff(), hi = m.maxCoeff();
-    for (size_t b = 0; b < r.blocks.size(); ++b) {
-      const auto [first, last] = r.blocks[b];
-      PlotSeries band;
-      band.title = r.block_name + " " + std::to_string(b + 1);
-      band.x.assign(x.begin() + first, x.begin() + last);
-      band.y.assign(band.x.size(), lo);
-      band.y_high.assign(band.x.size(), hi);
-      band.color = b % 2 ? "#cfcfcf" : "#e6e6e6";
-      p.series.push_back(std::move(band));
-    }
-  };
+  PlotSpec in = panel("input", xlabel, axis_label("input", r.info, r.input_columns, r.u.cols()));
+  PlotSpec out = panel("output", xlabel, axis_label("output", r.info, r.output_columns, r.y.cols()));
+  for (Eigen::Index i = 0; i < r.u.cols(); ++i)
+    add_line(in, signal_name(r.input_columns, i, r.u.cols(), "u"), x, r.u, i, r.u.cols() == 1 ? palette::kInput : "");
+  for (Eigen::Index i = 0; i < r.y.cols(); ++i) {
+    const std::string yi = signal_name(r.output_columns, i, r.y.cols(), "y");
+    add_line(out, yi + " measured", x, r.y, i, palette::kMeasured);
+    if (r.yhat_after.cols() > 0) add_line(out, yi + " model after", x, r.yhat_after, i, palette::kModelAfter);
+  }
+  for (size_t b = r.blocks.size(); b-- > 0;)  // each inserted first: block 1 ends up first
+    shade_in_panels({&in, &out}, x, r.blocks[b].first, r.blocks[b].second, r.block_name + " " + std::to_string(b + 1),
+                    b % 2 ? palette::kSelectionAlternate : palette::kSelection);
   PlotSpec fig;
   fig.width = 1200;
   fig.height = 800;
   fig.title = r.title;
-  PlotSpec in;
-  in.title = "input";
-  in.xlabel = xlabel;
-  in.ylabel = axis("input", r.input_columns);
-  in.key = "outside right top";
-  PlotSpec out;
-  out.title = "output";
-  out.xlabel = xlabel;
-  out.ylabel = axis("output", r.output_columns);
-  out.key = "outside right top";
-  shade(out, r.yhat_after.cols() > 0 ? Mat<double>((Mat<double>(n, 2 * r.y.cols()) << r.y, r.yhat_after).finished()) : r.y);
-  for (PlotSeries& b : out.series) b.title.clear();  // one legend for the blocks: the input panel's
-  shade(in, r.u);
-  for (Eigen::Index i = 0; i < r.u.cols(); ++i) {
-    add_line(in, i < static_cast<Eigen::Index>(r.input_columns.size()) ? r.input_columns[static_cast<size_t>(i)] : "u" + std::to_string(i + 1),
-             x, r.u, i, r.u.cols() == 1 ? "#6a3d9a" : "");
-  }
-  for (Eigen::Index i = 0; i < r.y.cols(); ++i) {
-    const std::string yi = i < static_cast<Eigen::Index>(r.output_columns.size()) ? r.output_columns[static_cast<size_t>(i)]
-                                                                                  : "y" + std::to_string(i + 1);
-    add_line(out, yi + " measured", x, r.y, i, "#000000");
-    if (r.yhat_after.cols() > 0) add_line(out, yi + " model after", x, r.yhat_after, i, "#1155cc");
-  }
   fig.panels = {std::move(in), std::move(out)};
   return fig;
 }
@@ -346,10 +396,7 @@ PlotSpec record_plot_spec(const RecordPlot& r) {
 PlotOutcome plot_record(const RecordPlot& r, const std::string& png_path) {
   const PlotSpec spec = record_plot_spec(r);
   // CSV: the signals only (a shaded block is a row range, listed in the report)
-  PlotSpec signals = spec;
-  for (PlotSpec& p : signals.panels)
-    p.series.erase(std::remove_if(p.series.begin(), p.series.end(), [](const PlotSeries& ser) { return !ser.y_high.empty(); }),
-                   p.series.end());
+  const PlotSpec signals = without_shading(spec, static_cast<size_t>(r.y.rows()));
   return write_plot(spec, plot_table(signals, r.info.sample_time > 0 ? "time_s" : "file_row"), png_path);
 }
 
@@ -367,9 +414,9 @@ PlotSpec static_map_plot_spec(const StaticMap<double>& g, double lo, double hi, 
   spec.xlabel = argument;
   spec.ylabel = value;
   PlotSeries fitted = series("fitted map", v, gv, "lines");
-  fitted.color = "#1155cc";
+  fitted.color = palette::kModelAfter;
   PlotSeries identity = series("identity (no map)", v, v, "lines");
-  identity.color = "#999999";
+  identity.color = palette::kReference;
   spec.series = {std::move(fitted), std::move(identity)};
   return spec;
 }
@@ -382,7 +429,9 @@ PlotOutcome plot_static_map(const StaticMap<double>& g, double lo, double hi, co
 
 PlotOutcome plot_test_record(const TestRecordPlot& t, const std::string& png_path) {
   const PlotSpec spec = test_record_plot_spec(t);
-  return write_plot(spec, plot_table(spec, t.info.sample_time > 0 ? "time_s" : "sample"), png_path);
+  // CSV: the signals and the d_max band (the warm-up is the first t.warmup rows)
+  const PlotSpec signals = without_shading(spec, static_cast<size_t>(t.y.rows()));
+  return write_plot(spec, plot_table(signals, t.info.sample_time > 0 ? "time_s" : "sample"), png_path);
 }
 
 void use_time_axis(PlotSpec& spec, const SignalInfo& info, double first_row) {
@@ -396,8 +445,9 @@ void use_time_axis(PlotSpec& spec, const SignalInfo& info, double first_row) {
 }
 
 PlotOutcome plot_residual(const Mat<double>& before, const Mat<double>& after, const std::string& png_path,
-                          const std::vector<std::string>& output_names, const SignalInfo& info, double first_row) {
-  PlotSpec spec = residual_plot_spec(before, after, output_names);
+                          const std::vector<std::string>& output_names, const SignalInfo& info, double first_row,
+                          const std::string& output_unit) {
+  PlotSpec spec = residual_plot_spec(before, after, output_names, output_unit);
   use_time_axis(spec, info, first_row);
   std::vector<TextColumn> table = plot_table(spec, info.sample_time > 0 ? "time_s" : "sample");
   table.pop_back();  // the zero line
@@ -418,8 +468,8 @@ PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<d
 
 PlotOutcome plot_output_fit(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
                             const std::string& png_path, const std::vector<std::string>& output_names,
-                            const SignalInfo& info, double first_row) {
-  PlotSpec spec = output_fit_plot_spec(y, yhat_before, yhat_after, output_names);
+                            const SignalInfo& info, double first_row, const std::string& output_unit) {
+  PlotSpec spec = output_fit_plot_spec(y, yhat_before, yhat_after, output_names, output_unit);
   use_time_axis(spec, info, first_row);
   return write_plot(spec, plot_table(spec, info.sample_time > 0 ? "time_s" : "sample"), png_path);
 }

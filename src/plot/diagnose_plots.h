@@ -9,7 +9,8 @@
 ///
 /// Every plot_* function writes the numbers of its plot as CSV next to the
 /// PNG (same path, extension .csv; first column the x axis, then one column
-/// per curve) and then the PNG. A missing or failing gnuplot or an
+/// per curve named "<file stem>_<plot_table's name>", unique across the plots
+/// of one folder) and then the PNG. A missing or failing gnuplot or an
 /// unwritable CSV is not an error: the PlotOutcome says what happened
 /// (ok = the PNG was written). Bad signals (empty, non-finite, mismatched
 /// shapes) throw lpvid::InputError before anything is written.
@@ -28,6 +29,7 @@
 #include "model/static_blocks.h"
 #include "diagnose/residual_analysis.h"
 #include "plot/gnuplot.h"
+#include "plot/plot_labels.h"
 
 namespace lpvid {
 
@@ -36,7 +38,8 @@ namespace lpvid {
 /// after, and the after model's output ± the certified d_max as a band. The x
 /// axis is time in seconds when the sample time is known, else the sample.
 /// d_max bounds the noise's RMS on the estimation windows, so the band shows
-/// its size, not a pointwise guarantee (the title says so).
+/// its size, not a pointwise guarantee (the title says so). The warm-up rows
+/// (x0 fit, not scored) are shaded in both panels (palette::kWarmup).
 struct TestRecordPlot {
   Mat<double> u, y, yhat_before, yhat_after;  ///< yhat_after may have no columns
   double dmax_after = 0;                      ///< certified d_max of the after model; 0: no band
@@ -68,13 +71,14 @@ PlotSpec static_map_plot_spec(const StaticMap<double>& g, double lo, double hi, 
 /// The plot specifications (exposed for tests and for other front ends).
 PlotSpec record_plot_spec(const RecordPlot& r);
 PlotSpec test_record_plot_spec(const TestRecordPlot& t);
+/// output_unit: the outputs' unit (axis label "[unit]"; "" labels it "(data units)").
 PlotSpec residual_plot_spec(const Mat<double>& before, const Mat<double>& after,
-                            const std::vector<std::string>& output_names = {});
+                            const std::vector<std::string>& output_names = {}, const std::string& output_unit = "");
 PlotSpec autocorrelation_plot_spec(const Mat<double>& before, const Mat<double>& after,
                                    const std::vector<std::string>& output_names = {},
                                    const ResidualAnalysisOptions& options = {});
 PlotSpec output_fit_plot_spec(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
-                              const std::vector<std::string>& output_names = {});
+                              const std::vector<std::string>& output_names = {}, const std::string& output_unit = "");
 
 /// The CSV table of a plot whose series share their x values: column
 /// `x_name`, then one column per series and one per horizontal line, named
@@ -93,9 +97,10 @@ void use_time_axis(PlotSpec& spec, const SignalInfo& info, double first_row);
 
 /// `info` and `first_row` (the file row of the first sample): use_time_axis;
 /// the CSV's first column is then time_s (or sample, the file row).
+/// output_unit: as residual_plot_spec.
 PlotOutcome plot_residual(const Mat<double>& before, const Mat<double>& after, const std::string& png_path,
                           const std::vector<std::string>& output_names = {}, const SignalInfo& info = {},
-                          double first_row = 0);
+                          double first_row = 0, const std::string& output_unit = "");
 PlotOutcome plot_residual_autocorrelation(const Mat<double>& before, const Mat<double>& after,
                                           const std::string& png_path,
                                           const std::vector<std::string>& output_names = {},
@@ -108,6 +113,6 @@ PlotOutcome plot_static_map(const StaticMap<double>& g, double lo, double hi, co
                             const std::string& argument, const std::string& value, const std::string& png_path);
 PlotOutcome plot_output_fit(const Mat<double>& y, const Mat<double>& yhat_before, const Mat<double>& yhat_after,
                             const std::string& png_path, const std::vector<std::string>& output_names = {},
-                            const SignalInfo& info = {}, double first_row = 0);
+                            const SignalInfo& info = {}, double first_row = 0, const std::string& output_unit = "");
 
 }  // namespace lpvid

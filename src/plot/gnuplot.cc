@@ -98,6 +98,14 @@ std::vector<const PlotSeries*> drawn_series(const PlotSpec& spec) {
   return out;
 }
 
+/// `set xtics ("label" at, …)` for explicit tick marks (none: gnuplot's own).
+void tics_script(std::ostringstream& s, const char* axis, const std::vector<PlotTick>& tics) {
+  if (tics.empty()) return;
+  s << "set " << axis << "tics (";
+  for (size_t i = 0; i < tics.size(); ++i) s << (i ? ", " : "") << gp_quote(tics[i].label) << " " << number(tics[i].at);
+  s << ")\n";
+}
+
 /// One panel: its labels, key and plot command; `block` counts data blocks.
 void panel_script(std::ostringstream& s, const PlotSpec& spec, const std::string& data_path, int& block) {
   s << "set title " << gp_quote(spec.title) << "\n"
@@ -107,6 +115,8 @@ void panel_script(std::ostringstream& s, const PlotSpec& spec, const std::string
     << "set key " << spec.key << " opaque\n";
   s << (spec.logx ? "set logscale x\nset format x '%g'\n" : "unset logscale x\nset format x '% h'\n");
   s << (spec.logy ? "set logscale y\nset format y '%g'\n" : "unset logscale y\nset format y '% h'\n");
+  tics_script(s, "x", spec.xtics);
+  tics_script(s, "y", spec.ytics);
   std::vector<std::string> parts;
   for (const PlotSeries& ser : spec.series) {
     if (ser.x.empty()) continue;
@@ -143,6 +153,28 @@ std::string figure_script(const PlotSpec& spec, const std::string& data_path) {
   for (const PlotSpec& p : spec.panels) panel_script(s, p, data_path, block);
   s << "unset multiplot\nset lmargin\nset rmargin\nset autoscale x\n";
   return s.str();
+}
+
+/// The data file of the script: one block per drawn series (x y [y_high] ["label"]), two blank lines apart.
+void write_plot_data(const PlotSpec& spec, const fs::path& data) {
+  std::ofstream d(data);
+  bool first = true;
+  for (const PlotSeries* sp : drawn_series(spec)) {
+    const PlotSeries& ser = *sp;
+    if (!first) d << "\n\n";
+    first = false;
+    for (size_t i = 0; i < ser.x.size() && i < ser.y.size(); ++i) {
+      d << number(ser.x[i]) << " " << number(ser.y[i]);
+      if (!ser.y_high.empty()) d << " " << number(i < ser.y_high.size() ? ser.y_high[i] : ser.y[i]);
+      if (!ser.labels.empty()) {
+        std::string label = i < ser.labels.size() ? ser.labels[i] : "";
+        for (char& c : label)
+          if (c == '"') c = '\'';
+        d << " \"" << label << "\"";
+      }
+      d << "\n";
+    }
+  }
 }
 
 /// svg_path with the PNG's extension replaced.
@@ -189,28 +221,8 @@ PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
     return out;
   }
   const fs::path data = dir / "data.txt", script = dir / "plot.gp";
-  {
-    std::ofstream d(data);
-    bool first = true;
-    for (const PlotSeries* sp : drawn_series(spec)) {
-      const PlotSeries& ser = *sp;
-      if (!first) d << "\n\n";
-      first = false;
-      for (size_t i = 0; i < ser.x.size() && i < ser.y.size(); ++i) {
-        d << number(ser.x[i]) << " " << number(ser.y[i]);
-        if (!ser.y_high.empty()) d << " " << number(i < ser.y_high.size() ? ser.y_high[i] : ser.y[i]);
-        if (!ser.labels.empty()) {
-          std::string label = i < ser.labels.size() ? ser.labels[i] : "";
-          for (char& c : label)
-            if (c == '"') c = '\'';
-          d << " \"" << label << "\"";
-        }
-        d << "\n";
-      }
-    }
-    std::ofstream g(script);
-    g << gnuplot_script(spec, out.terminal, fs::absolute(png_path).string(), data.string());
-  }
+  write_plot_data(spec, data);
+  std::ofstream(script) << gnuplot_script(spec, out.terminal, fs::absolute(png_path).string(), data.string());
   std::error_code ec;
   fs::remove(png_path, ec);
   fs::remove(svg_path_of(png_path), ec);

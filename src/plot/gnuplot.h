@@ -35,6 +35,12 @@ struct PlotHLine {
   int dashtype = 2;               ///< gnuplot `dt`: 1 solid, 2 dashed, 3 dotted
 };
 
+/// A tick mark placed by the figure (not by gnuplot) with its label.
+struct PlotTick {
+  double at = 0;
+  std::string label;
+};
+
 struct PlotSpec {
   std::string title, xlabel, ylabel;
   std::vector<PlotSeries> series;
@@ -42,6 +48,8 @@ struct PlotSpec {
   bool logx = false, logy = false;
   std::string key = "top right";          ///< gnuplot `set key` position
   std::vector<PlotHLine> hlines;          ///< drawn after the series (need at least one series)
+  /// Tick marks of the x and y axes (distinct labels); empty: gnuplot's own.
+  std::vector<PlotTick> xtics, ytics;
   /// A figure of stacked panels (top to bottom, sharing the width): when not
   /// empty, each panel is drawn with its own title, labels, series and lines,
   /// `title` heads the figure and this spec's own series are not drawn.

@@ -31,6 +31,12 @@ nlohmann::ordered_json panel_json(const PlotSpec& p, const std::string& title,
   j["logx"] = p.logx;
   j["logy"] = p.logy;
   j["key"] = p.key;
+  for (const auto& [name, tics] : {std::pair{"xtics", &p.xtics}, std::pair{"ytics", &p.ytics}}) {
+    if (tics->empty()) continue;  // gnuplot's own ticks
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const PlotTick& t : *tics) list.push_back({{"at", t.at}, {"label", t.label}});
+    j[name] = list;
+  }
   nlohmann::ordered_json series = nlohmann::ordered_json::array();
   size_t element = 0;  // gnuplot's plot elements of this panel, as in gnuplot.cc's panel_script
   for (const PlotSeries& s : p.series) {

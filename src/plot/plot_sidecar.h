@@ -5,7 +5,8 @@
 /// without gnuplot. It holds every number drawn (not only the CSV's columns:
 /// the shaded blocks, the point labels and the horizontal lines too) and the
 /// layout: the figure's title and size, its panels top to bottom with their
-/// titles, axis labels (with units), logarithmic axes and legend position;
+/// titles, axis labels (with units), logarithmic axes, legend position and
+/// explicit tick marks (xtics, ytics: at and label; only when the figure sets them);
 /// per series its title, kind ("line", or "band": the area between y and
 /// y_high filled), gnuplot style (lines, points, linespoints) and colour — the
 /// colour gnuplot uses, its default cycle resolved when the spec names none.

@@ -23,7 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/certificate_names.h"
-#include "cli/diagnose_output.h"
+#include "cli/diagnose_report.h"
 #include "data/data_reference.h"
 #include "data/experiment_builder.h"
 #include "diagnose/diagnose.h"
@@ -222,14 +222,17 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
 
   // the report lists each estimation record; its figures are the after model's free run on
   // that record alone from the fitted x0 (recomputed here record by record)
-  cli::DiagnoseReportInputs ri;
+  cli::DiagnoseReport ri;
   ri.result = &r;
   ri.est = &c.roles.est_d;
   ri.tests = &c.tests;
   ri.folds = true;
   ri.records = c.roles.records;
   const std::string report = c.dir.file("report.json");
-  cli::print_and_write_diagnose_report(ri, report);
+  cli::score_estimation_records(ri);
+  const cli::DiagnoseFigures figures = cli::draw_diagnose_figures(ri);
+  cli::print_diagnose_text(ri, figures);
+  cli::write_diagnose_json(ri, figures, report);
   std::ifstream f(report);
   const nlohmann::json j = nlohmann::json::parse(f);
   ASSERT_TRUE(j.contains("records"));

@@ -10,6 +10,7 @@
 
 #include "core/input_error.h"
 #include "plot/diagnose_plots.h"
+#include "support/plot_records.h"
 #include "support/test_signals.h"
 #include "support/gen_identify.h"
 
@@ -56,7 +57,7 @@ TEST(DiagnosePlots, AutocorrelationScriptHasTheBandLines) {
   EXPECT_NE(script.find(lower.str()), std::string::npos) << script;
   EXPECT_NE(script.find("title '99% band +-0.129'"), std::string::npos) << script;  // 2.5758/20
   EXPECT_NE(script.find("title '95% band +-0.098'"), std::string::npos) << script;
-  EXPECT_NE(script.find("set xlabel 'lag k'"), std::string::npos);
+  EXPECT_NE(script.find("set xlabel 'lag k [samples]'"), std::string::npos);
 }
 
 TEST(DiagnosePlots, HLinesLeaveOldScriptsAlone) {
@@ -94,11 +95,11 @@ TEST(DiagnosePlots, WritesCsvAndPngOrSaysWhyNot) {
   const Mat<double> before = gaussian(300, 1, 6, 1.0), after = gaussian(300, 1, 7, 0.3);
   const PlotOutcome a = plot_residual_autocorrelation(before, after, dir.file("acf.png"));
   EXPECT_EQ(first_line(dir.file("acf.csv")),
-            "lag,y1_before,y1_after,band_99_upper,band_99_lower,band_95_upper,band_95_lower");
+            "lag,acf_y1_before,acf_y1_after,acf_band_99_upper,acf_band_99_lower,acf_band_95_upper,acf_band_95_lower");
   const PlotOutcome r = plot_residual(before, after, dir.file("res.png"));
-  EXPECT_EQ(first_line(dir.file("res.csv")), "sample,y1_before,y1_after");
+  EXPECT_EQ(first_line(dir.file("res.csv")), "sample,res_y1_before,res_y1_after");
   const PlotOutcome o = plot_output_fit(before, after, Mat<double>(), dir.file("fit.png"), {"v"});
-  EXPECT_EQ(first_line(dir.file("fit.csv")), "sample,v_measured,v_model_before");
+  EXPECT_EQ(first_line(dir.file("fit.csv")), "sample,fit_v_measured,fit_v_model_before");
   for (const PlotOutcome* p : {&a, &r, &o}) EXPECT_NE(p->message.find(".csv"), std::string::npos) << p->message;
   if (gnuplot_png_terminal().empty()) GTEST_SKIP() << "gnuplot with a PNG terminal is not installed";
   for (const PlotOutcome* p : {&a, &r, &o}) EXPECT_TRUE(p->ok) << p->message;
@@ -110,32 +111,23 @@ TEST(DiagnosePlots, CsvColumnsOfNamesWithARemarkDiffer) {
   ScratchDir dir("diagnose-plots-remark");
   const Mat<double> before = gaussian(40, 1, 16, 1.0), after = gaussian(40, 1, 17, 0.3);
   plot_residual(before, after, dir.file("res.png"), {"y1 (last fold)"});
-  EXPECT_EQ(first_line(dir.file("res.csv")), "sample,y1_last_fold_before,y1_last_fold_after");
+  EXPECT_EQ(first_line(dir.file("res.csv")), "sample,res_y1_last_fold_before,res_y1_last_fold_after");
   plot_residual_autocorrelation(before, after, dir.file("acf.png"), {"y1 (held out)"});
   EXPECT_EQ(first_line(dir.file("acf.csv")),
-            "lag,y1_held_out_before,y1_held_out_after,band_99_upper,band_99_lower,band_95_upper,band_95_lower");
+            "lag,acf_y1_held_out_before,acf_y1_held_out_after,acf_band_99_upper,acf_band_99_lower,acf_band_95_upper,"
+            "acf_band_95_lower");
 }
 
 TEST(DiagnosePlots, TestRecordFigureHasTimeUnitsAndTheBand) {
-  TestRecordPlot t;
-  t.u = gaussian(60, 1, 11, 1.0);
-  t.y = gaussian(60, 1, 12, 1.0);
-  t.yhat_before = gaussian(60, 1, 13, 1.0);
-  t.yhat_after = t.y + gaussian(60, 1, 14, 0.1);
-  t.dmax_after = 0.25;
-  t.warmup = 10;
-  t.input_columns = {"uEst"};
-  t.output_columns = {"yEst"};
-  t.info.sample_time = 4.0;
+  TestRecordPlot t = random_test_record("tanks.csv columns uVal,yVal");
   t.info.units = {{"uEst", "V"}, {"yEst", "V"}};
-  t.source = "tanks.csv columns uVal,yVal";
   const PlotSpec f = test_record_plot_spec(t);
   ASSERT_EQ(f.panels.size(), 2u);
   EXPECT_EQ(f.panels[0].xlabel, "time [s]");
   EXPECT_EQ(f.panels[0].ylabel, "input [V]");
   EXPECT_EQ(f.panels[1].ylabel, "output [V]");
-  ASSERT_EQ(f.panels[1].series.size(), 4u);  // band, measured, before, after
-  const PlotSeries& band = f.panels[1].series[0];
+  ASSERT_EQ(f.panels[1].series.size(), 5u);  // warm-up shading, band, measured, before, after
+  const PlotSeries& band = f.panels[1].series[1];
   ASSERT_EQ(band.y_high.size(), 60u);
   EXPECT_DOUBLE_EQ(band.x[7], 28.0);  // sample 7 at 4 s
   EXPECT_DOUBLE_EQ(band.y[7], t.yhat_after(7, 0) - 0.25);
@@ -143,20 +135,21 @@ TEST(DiagnosePlots, TestRecordFigureHasTimeUnitsAndTheBand) {
   // the figure's data blocks in order, both panels in one script, PNG then SVG
   const std::string script = gnuplot_script(f, "pngcairo", "/tmp/t.png", "/tmp/d.txt");
   EXPECT_NE(script.find("set multiplot layout 2,1"), std::string::npos) << script;
-  EXPECT_NE(script.find("index 1 using 1:2:3 with filledcurves"), std::string::npos) << script;
+  EXPECT_NE(script.find("index 3 using 1:2:3 with filledcurves"), std::string::npos) << script;
   EXPECT_NE(script.find("set output '/tmp/t.svg'"), std::string::npos) << script;
   // CSV: distinct names, the band's two edges
   ScratchDir dir("test-record-plot");
   const PlotOutcome o = plot_test_record(t, dir.file("test.png"));
   EXPECT_EQ(first_line(dir.file("test.csv")),
-            "time_s,u,y_band_lower,y_band_upper,y_measured,y_model_before,y_model_after");
+            "time_s,test_uEst,test_yEst_band_lower,test_yEst_band_upper,test_yEst_measured,test_yEst_model_before,"
+            "test_yEst_model_after");
   // the warm-up must leave samples to score; no sample time: the x axis counts samples
   t.warmup = 60;
   EXPECT_THROW(test_record_plot_spec(t), InputError);
   t.warmup = 10;
   t.info = {};
   EXPECT_EQ(test_record_plot_spec(t).panels[1].xlabel, "sample");
-  EXPECT_EQ(test_record_plot_spec(t).panels[0].ylabel, "input");
+  EXPECT_EQ(test_record_plot_spec(t).panels[0].ylabel, "input (data units)");
   if (gnuplot_png_terminal().empty()) GTEST_SKIP() << "gnuplot with a PNG terminal is not installed";
   EXPECT_TRUE(o.ok) << o.message;
   EXPECT_TRUE(is_png(dir.file("test.png")));
@@ -187,7 +180,7 @@ TEST(DiagnosePlots, RecordFigureShadesTheSelectionBlocks) {
   EXPECT_DOUBLE_EQ(f.panels[0].series[1].y_high.front(), r.u.maxCoeff());
   ScratchDir dir("record-plot");
   plot_record(r, dir.file("record.png"));
-  EXPECT_EQ(first_line(dir.file("record.csv")), "time_s,pump,level_measured,level_model_after");
+  EXPECT_EQ(first_line(dir.file("record.csv")), "time_s,record_pump,record_level_measured,record_level_model_after");
   r.blocks = {{70, 90}};
   EXPECT_THROW(record_plot_spec(r), InputError);
 }

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "plot/diagnose_plots.h"
+#include "plot/palette.h"
 #include "plot/plot_sidecar.h"
 #include "support/gen_identify.h"
 #include "support/test_signals.h"
@@ -37,7 +38,7 @@ TEST(PlotSidecar, RecordFigureHasItsPanelsBlocksAndOneTimeAxis) {
   EXPECT_DOUBLE_EQ(in["series"][1]["y"][0].get<double>(), r.u.minCoeff());
   EXPECT_DOUBLE_EQ(in["series"][1]["y_high"][0].get<double>(), r.u.maxCoeff());
   EXPECT_EQ(in["series"][2]["kind"], "line");
-  EXPECT_EQ(in["series"][2]["color"], "#6a3d9a");  // the spec's own colour
+  EXPECT_EQ(in["series"][2]["color"], palette::kInput);  // the spec's own colour
   EXPECT_DOUBLE_EQ(in["series"][2]["y"][7].get<double>(), r.u(7, 0));
   // x: the whole record once, each block's rows once; both panels name the same vectors
   ASSERT_EQ(j["x_values"].size(), 3u);
@@ -49,7 +50,10 @@ TEST(PlotSidecar, RecordFigureHasItsPanelsBlocksAndOneTimeAxis) {
 
 TEST(PlotSidecar, DefaultColoursAreGnuplotsCycleAndLinesAreKept) {
   const Mat<double> before = gaussian(60, 1, 33, 1.0), after = gaussian(60, 1, 34, 0.3);
-  const nlohmann::ordered_json j = plot_spec_json(autocorrelation_plot_spec(before, after));
+  PlotSpec spec = autocorrelation_plot_spec(before, after);
+  EXPECT_EQ(plot_spec_json(spec)["panels"][0]["series"][0]["color"], palette::kModelBefore);  // the spec's own
+  for (PlotSeries& ser : spec.series) ser.color.clear();  // none named: gnuplot's cycle
+  const nlohmann::ordered_json j = plot_spec_json(spec);
   ASSERT_EQ(j["panels"].size(), 1u);
   const auto& p = j["panels"][0];
   EXPECT_EQ(p["title"], "");  // a single plot: the figure's title is the plot's

@@ -86,16 +86,16 @@ for name, p in plots.items():
     x = floats(next(iter(table.values())))  # the first column: time, sample, lag, ...
     for s in p.series:
         where = f"{name}: series {s.title!r}"
-        if s.kind == "band" and name == "record":  # a shaded block of rows (not in the CSV)
+        if s.kind == "band" and len(s.x) != len(x):  # shaded rows (selection blocks, warm-up: not in the CSV)
             check(len(s.x) > 0 and all(np.isin(s.x, x)), f"{where}: its x are rows of the CSV")
             continue
         check(np.array_equal(s.x, x), f"{where}: x equals the CSV's first column")
         if s.kind == "band":
             for edge, values in (("lower", s.y), ("upper", s.y_high)):
-                col = column_name(s.title) + "_" + edge
+                col = name + "_" + column_name(s.title) + "_" + edge  # "<file stem>_<curve>"
                 check(col in table and np.array_equal(values, floats(table[col])), f"{where}: {edge} edge = CSV {col}")
         else:
-            col = column_name(s.title)
+            col = name + "_" + column_name(s.title)
             check(col in table and np.array_equal(s.y, floats(table[col])), f"{where}: y = CSV column {col}")
     # the Plot's own copy of the table is the CSV's
     check(sorted(p.table) == sorted(table), f"{name}: table columns")
@@ -104,7 +104,7 @@ for name, p in plots.items():
 
 acf = plots["autocorrelation"].panels[0]
 check([h.dashtype for h in acf.hlines] == [2, 2, 3, 3, 1], "autocorrelation: the two bands and the zero line")
-for h, col in zip(acf.hlines, ["band_99_upper", "band_99_lower", "band_95_upper", "band_95_lower"]):
+for h, col in zip(acf.hlines, ["autocorrelation_band_" + b for b in ("99_upper", "99_lower", "95_upper", "95_lower")]):
     check(np.all(floats(tables["autocorrelation"][col]) == h.y), f"autocorrelation: line {h.y} = CSV {col}")
 
 record = plots["record"]
@@ -114,10 +114,12 @@ check([b.title for b in blocks] == ["fold 1", "fold 2"], f"record: the 2 folds s
 check(all(np.all(b.y <= b.y_high) for b in blocks), "record: a block spans from below to above")
 
 test = plots["test"]
-band = [s for s in test.panels[1].series if s.kind == "band"]
+band = [s for s in test.panels[1].series if s.kind == "band" and len(s.x) == len(test.panels[1].series[-1].x)]
+warmup = [s for s in test.panels[1].series if s.kind == "band" and len(s.x) < len(test.panels[1].series[-1].x)]
+check(len(warmup) == 1 and warmup[0].x[0] == test.panels[1].series[-1].x[0], "test: the warm-up rows shaded")
 check(len(band) == 1 and np.allclose(band[0].y_high - band[0].y, band[0].y_high[0] - band[0].y[0]),
       "test: one band of constant width (model after +- d_max)")
-check(test.panels[1].series[1].color == "#000000", "test: the measured output in black")
+check(test.panels[1].series[2].color == "#000000", "test: the measured output in black")
 
 t = curve["tradeoff"]
 ser = t.series[0]

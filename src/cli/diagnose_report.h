@@ -1,0 +1,78 @@
+#pragma once
+/// The report of `lpvid diagnose` (effects, before, after, plots): one typed
+/// value, DiagnoseReport, made from the library's DiagnoseResult and the
+/// names of the files and rows, and three renderers of it, each in its own
+/// file: the readable text on stdout (diagnose_text.cc), the JSON report
+/// (diagnose_json.cc) and the figures (diagnose_figures.cc). The figures are
+/// drawn first because the text and the JSON list the files written.
+
+#include <string>
+#include <vector>
+
+#include "data/experiment.h"
+#include "diagnose/diagnose.h"
+#include "diagnose/record_roles.h"
+#include "fit/output_score.h"
+#include "plot/gnuplot.h"
+
+namespace lpvid::cli {
+
+/// One estimation record's free-run figures of the models before and after
+/// (simulated record by record from the fitted x0).
+struct EstimationRecordScore {
+  Eigen::Index samples = 0;
+  OutputScores before, after;
+};
+
+struct DiagnoseReport {
+  std::string command_line_data, validation, plots_dir, model_out, solver;
+  std::string estimation;  ///< file and rows of the fit role
+  std::vector<std::string> test_sources;  ///< each test set's file, columns and rows (as result.tests)
+  const DiagnoseResult* result = nullptr;  ///< everything computed; the rest here is what the files and rows are called
+  const Experiment<double>* est = nullptr;  ///< the estimation record (plotted)
+  const std::vector<Experiment<double>>* tests = nullptr;  ///< the test records (as result.tests), for their plots
+  /// Fold mode: the residual analysis and plots are on the estimation
+  /// record's last fold block (result->shown).
+  bool folds = false;
+  Eigen::Index fold_warmup = 0, test_warmup = 0;
+  std::string estimation_rows_text;  ///< "file rows a:b" of the estimation record (fold mode)
+  long file_row_offset = 0;
+  std::vector<std::string> validation_outputs;  ///< the validation data's output column names (plot legends)
+  /// The estimation records (two or more: the report's per-record lines and
+  /// its `records` list; one: nothing added).
+  std::vector<EstimationRecord> records;
+  /// With two or more records: each one's scores (as records), then the pooled ones
+  /// (set by score_estimation_records).
+  std::vector<EstimationRecordScore> record_scores;
+  EstimationRecordScore pooled_records;
+};
+
+/// Fills record_scores and pooled_records when there are two or more records.
+void score_estimation_records(DiagnoseReport& report);
+
+/// How a test set is scored: "free run; x0 from the first N samples (warm-up), …".
+std::string test_rule_text(const FreeRunScore& score);
+
+/// One figure written (or not) and where the text lists it.
+struct DrawnFigure {
+  std::string path;
+  PlotOutcome outcome;
+  bool test_record = false;  ///< listed under "plots (test records …)"
+};
+
+struct DiagnoseFigures {
+  bool drawn = false;          ///< --plots was given and the shown residual is finite
+  bool test_heading = false;   ///< the test-record figures were attempted
+  std::vector<DrawnFigure> list;
+};
+
+/// Draws the figures into report.plots_dir (nothing when it is empty).
+DiagnoseFigures draw_diagnose_figures(const DiagnoseReport& report);
+
+/// Prints the readable report on stdout.
+void print_diagnose_text(const DiagnoseReport& report, const DiagnoseFigures& figures);
+
+/// Writes the JSON report (nothing when report_path is empty).
+void write_diagnose_json(const DiagnoseReport& report, const DiagnoseFigures& figures, const std::string& report_path);
+
+}  // namespace lpvid::cli

@@ -1,0 +1,290 @@
+// The readable report of `lpvid diagnose` on stdout (cli/diagnose_report.h).
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include "cli/diagnose_report.h"
+#include "core/decimal_rounding.h"
+#include "diagnose/residual_analysis.h"
+
+namespace lpvid::cli {
+namespace {
+
+std::string num(double x, int digits = 4) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+/// The header line of the test role: every test set with its size.
+std::string test_roles_text(const DiagnoseReport& in) {
+  const auto& tests = in.result->tests;
+  std::string t;
+  for (size_t i = 0; i < tests.size(); ++i) {
+    if (i) t += "; ";
+    if (tests.size() > 1) t += std::to_string(i + 1) + ": ";
+    t += (i < in.test_sources.size() ? in.test_sources[i] : std::string("?")) + " (" + std::to_string(tests[i].samples) +
+         " samples)";
+  }
+  return t + (tests.size() > 1 ? "; each scored once, separately, at the end" : "; scored once, at the end");
+}
+
+/// The text flag of a verified but vacuous bound (window_bounds.h).
+std::string uninformative_mark(const WindowBounds& w) {
+  return w.informative ? "" : "  UNINFORMATIVE: dmax >= RMS of y about its mean there (" + num(w.rms_variation) + ")";
+}
+
+std::string identification_line(const WindowIdentification& id) {
+  if (!id.applicable) return "not applicable: " + id.why_not;
+  if (!id.failed.empty()) return id.failed + " (the results above stand)";
+  const CertifiedBounds& b = id.bounds.bounds;
+  std::string basis;
+  for (const auto& f : id.basis) basis += (basis.empty() ? "" : ", ") + f;
+  if (!b.verified) return "not verified (" + b.reason + ")";
+  return "delta <= " + upper_sqrt_text(b.delta2, 4) + ", dmax <= " + upper_sqrt_text(b.dmax2, 4) + " (verified; basis {" + basis + "})" +
+         uninformative_mark(id.bounds);
+}
+
+std::string folds_text(const FoldFigures& f) {
+  std::string t;
+  for (size_t j = 0; j < f.sse.size(); ++j) t += (j ? " " : "") + num(f.rms(j), 3);
+  return t;
+}
+
+std::string start_choice_text(const StartChoice& s) {
+  if (s.chosen < 0) return "";
+  std::string t = "; model from start " + std::to_string(s.chosen + 1) + " of " + std::to_string(s.starts) +
+                  ": the lowest estimation MSE + held-out MSE of its fits (held-out RMS " + num(s.held_out, 4) + ")";
+  if (s.lowest_estimation != s.chosen)
+    t += "; the lowest estimation RMS would have taken start " + std::to_string(s.lowest_estimation + 1) + " (held-out RMS " +
+         num(s.held_out_of_lowest_estimation, 4) + ")";
+  return t;
+}
+
+/// Whiteness and input correlation of a validation residual, one line.
+void print_analysis(const std::string& title, const ResidualAnalysis& a) {
+  std::cout << "  " << title << ": RMS " << num(a.rms.overall);
+  for (const AutocorrelationTest& t : a.whiteness.outputs)
+    std::cout << "; autocorrelation: " << t.outside_99 << " of " << a.whiteness.max_lag
+              << " lags outside the 99% band, Ljung-Box Q = " << num(t.q) << " (white if <= " << num(t.q_threshold)
+              << "): " << (t.white ? "white" : "NOT white");
+  for (const CrossCorrelation& c : a.input_correlation.pairs)
+    std::cout << "; with u" << c.input + 1 << ": max " << num(c.max_abs, 3) << " at lag " << c.max_lag_at
+              << (c.significant ? " (significant)" : "");
+  std::cout << "\n";
+}
+
+/// "0:256, 256:512, …" in data-file rows.
+std::string fold_rows_text(const RankingResult& r, long offset) {
+  std::string t;
+  for (const FoldBlock& b : r.fold_blocks)
+    t += (t.empty() ? "" : ", ") + std::to_string(offset + b.first) + ":" + std::to_string(offset + b.last);
+  return t;
+}
+
+std::string bound_line(const WindowBounds& w) {
+  const CertifiedBounds& b = w.bounds;
+  if (!b.verified) return "not verified (" + b.reason + ")";
+  return "delta <= " + upper_sqrt_text(b.delta2, 4) + ", dmax <= " + upper_sqrt_text(b.dmax2, 4) + " (verified, file rows " +
+         std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + ")" + uninformative_mark(w);
+}
+
+void print_header(const DiagnoseReport& in) {
+  const DiagnoseResult& res = *in.result;
+  const RankingResult& r = res.rank;
+  std::cout << "lpvid diagnose\n"
+            << "  estimation  " << (in.estimation.empty() ? in.command_line_data : in.estimation) << " ("
+            << in.est->n() << " samples)\n"
+            << (in.folds ? "  selection   " + std::to_string(r.fold_blocks.size()) +
+                               " blocked folds of the estimation record, rows " + fold_rows_text(r, in.file_row_offset) +
+                               ": each candidate is fitted " + std::to_string(r.fold_blocks.size()) +
+                               " times, each on the longer contiguous stretch beside one block, and scored on that block (x0 from its first " +
+                               std::to_string(in.fold_warmup) + " samples, RMS over the rest)\n  rule        " +
+                               acceptance_rule_text(r.fold_blocks.size(), r.min_gain) +
+                               "; the model kept is the one fitted on all estimation rows\n"
+                         : "  validation  " + in.validation + " (" + std::to_string(res.shown.data.n()) +
+                               " samples; selection: ranks the effects; x0 fitted on the first " +
+                               std::to_string(res.shown.init_samples) + ", then free-run simulation)\n")
+            << "  test        "
+            << (res.tests.empty() ? std::string("none given (--test / --test-columns): the validation figure chose the model")
+                                  : test_roles_text(in))
+            << "\n";
+}
+
+void print_round(const DiagnoseReport& in, size_t i) {
+  const RankingRound& rr = in.result->rank.rounds[i];
+  const char* what = in.folds ? "held-out RMS (all folds)" : "validation RMS";
+  std::cout << "\nround " << i + 1 << ": " << what << " of the current model " << num(rr.current_validation)
+            << ", re-fitted without a new effect " << num(rr.refit_validation) << "\n";
+  if (in.folds)
+    std::cout << "  reference per fold: " << folds_text(rr.reference_folds) << "\n"
+              << "  held-out: RMS over the held-out folds; folds: per fold, and how many the candidate wins against the "
+                 "reference\n";
+  std::cout << "  explained: share of the " << (in.folds ? "held-out" : "validation")
+            << " residual energy removed; est share: share of the estimation residual\n  energy that the candidate's "
+               "added output signal explains (least-squares projection)\n"
+            << "  rank  kind               " << (in.folds ? "held-out" : "val RMS ")
+            << "   explained  est RMS    est share  params  candidate\n";
+  const std::vector<double>& shares = in.result->estimation_shares[i];
+  for (size_t k = 0; k < rr.ranked.size(); ++k) {
+    const ScoredCandidate& c = rr.ranked[k];
+    char line[320];
+    std::snprintf(line, sizeof line, "  %-4zu  %-17s  %-9s  %-9s  %-9s  %-9s  %-6d  %s%s\n", k + 1, c.kind.c_str(),
+                  num(c.rms_validation).c_str(), (num(100 * c.explained, 3) + "%").c_str(),
+                  num(c.rms_estimation).c_str(), (num(100 * shares[k], 3) + "%").c_str(), c.effect_parameters,
+                  c.label.c_str(), static_cast<int>(k) == rr.chosen ? "   <- chosen" : "");
+    std::cout << line;
+    if (!c.reading.empty()) std::cout << "        fitted: " << c.reading << "\n";
+    if (in.folds)
+      std::cout << "        folds " << folds_text(c.folds) << "  (wins " << c.folds_won << " of " << c.folds.sse.size()
+                << (c.joint ? "; A, B re-fitted" : "") << start_choice_text(c.start) << ")\n";
+  }
+  if (rr.chosen < 0)
+    std::cout << "  -> none: no candidate " << (in.folds ? "passes the rule above against " : "lowers the validation RMS by the required share below ")
+              << num(rr.reference_validation) << "\n";
+}
+
+/// A figure padded to the table's column width.
+std::string column(double x) { return num(x) + std::string(16 - std::min<size_t>(15, num(x).size()), ' '); }
+
+void print_summary_table(const DiagnoseReport& in) {
+  const DiagnoseResult& res = *in.result;
+  const RankingResult& r = res.rank;
+  std::cout << "\neffects added: ";
+  if (r.chosen.empty()) std::cout << "none";
+  for (size_t i = 0; i < r.chosen.size(); ++i)
+    std::cout << (i ? ", " : "") << r.chosen[i].label
+              << (r.chosen[i].reading.empty() ? "" : " (fitted: " + r.chosen[i].reading + ")");
+  std::cout << "\n\n              RMS estimation  " << (in.folds ? "RMS held-out  " : "RMS validation") << "  bounds\n"
+            << "  before      " << column(r.before_estimation) << column(r.before_validation)
+            << bound_line(res.before.front()) << "\n"
+            << "  after       " << column(r.after_estimation) << column(r.after_validation)
+            << bound_line(res.after.front()) << "\n";
+  if (in.folds)
+    std::cout << "  held-out RMS per fold: before " << folds_text(r.before_folds) << "; after " << folds_text(r.after_folds)
+              << (r.chosen.empty() ? " (no effect passed: the starting model is kept)"
+                                   : " (every effect added passed the rule against the model before it)")
+              << "\n";
+}
+
+void print_windows(const DiagnoseResult& res) {
+  std::string rows;
+  for (const WindowBounds& w : res.before) rows += (rows.empty() ? "" : ", ") + std::to_string(w.begin) + ":" + std::to_string(w.end);
+  std::cout << "  bounds on " << res.before.size() << " window" << (res.before.size() == 1 ? "" : "s")
+            << " of estimation rows " << rows << " (Theorem 2.1 on each window's rows alone; window 1 above)\n";
+  for (size_t i = 1; i < res.before.size(); ++i)
+    std::cout << "  window " << i + 1 << " (estimation rows " << res.before[i].begin << ":" << res.before[i].end << ")\n"
+              << "              before: " << bound_line(res.before[i]) << "\n"
+              << "              after:  " << bound_line(res.after[i]) << "\n";
+  int uninformative = 0;
+  for (const auto* side : {&res.before, &res.after})
+    for (const WindowBounds& w : *side) uninformative += w.bounds.verified && !w.informative ? 1 : 0;
+  if (uninformative > 0)
+    std::cout << "  " << uninformative << " of " << 2 * res.before.size()
+              << " verified bounds are uninformative: dmax >= the RMS of the measured output's deviation "
+                 "from its mean on the window, which the constant model y = mean already meets\n";
+  const SignalScales& sc = res.before.front().bounds.scales;
+  if (sc.applied)
+    std::cout << "  objective on scaled signals: y / " << sc.y_scale_text() << ", z / " << sc.z_scale_text()
+              << " (window 1; lambda = " << num(sc.lambda_scaled) << " there is " << num(sc.lambda_original, 6)
+              << " in the data's units; bounds above in the data's units)\n";
+  std::cout << "  Theorem 3.1 again on file rows " << res.before.front().file_begin << ":" << res.before.front().file_end
+            << " (the first window only; the output map re-identified with x0 free, alternating method):\n"
+            << "    before    " << identification_line(res.before_id) << "\n"
+            << "    after     " << identification_line(res.after_id) << "\n";
+}
+
+void print_certificates(const DiagnoseResult& res) {
+  std::vector<std::string> written;  // only files that exist: an unverified bound has none
+  for (const auto* side : {&res.before, &res.after})
+    for (const WindowBounds& w : *side)
+      if (!w.certificate.empty()) written.push_back(w.certificate);
+  const size_t all_bounds = res.before.size() + res.after.size();
+  if (written.empty()) {
+    std::cout << "  certificates: none written (no bound was verified; the reasons are above)\n";
+    return;
+  }
+  std::cout << "  certificates " << written.front();
+  if (written.size() > 1) std::cout << ", " << written[1];
+  if (written.size() > 2) std::cout << " (and " << written.size() - 2 << " more)";
+  if (written.size() < all_bounds)
+    std::cout << "; " << all_bounds - written.size() << " of " << all_bounds
+              << " bounds were not verified and have no certificate";
+  std::cout << " (check: lpvid-verify certificate FILE)\n";
+}
+
+/// The test role: scored once per test set, for the models chosen above; then the pooled score.
+void print_tests(const DiagnoseReport& in) {
+  const DiagnoseResult& res = *in.result;
+  for (size_t t = 0; t < res.tests.size(); ++t) {
+    const TestScore& ts = res.tests[t];
+    const FreeRunScore &tb = ts.before, &ta = ts.after;
+    std::cout << "\ntest" << (res.tests.size() > 1 ? " " + std::to_string(t + 1) + " of " + std::to_string(res.tests.size()) : "")
+              << " (" << (t < in.test_sources.size() ? in.test_sources[t] : "") << ", " << ts.samples
+              << " samples): scored once, after the selection;"
+              << " no fit and no choice used it\n"
+              << "  rule: " << test_rule_text(tb) << "\n"
+              << "  before: RMS " << num(tb.rms) << ", fit " << num(tb.fit_percent, 4) << " %   after: RMS " << num(ta.rms)
+              << ", fit " << num(ta.fit_percent, 4) << " %\n";
+  }
+  if (res.tests.size() < 2) return;
+  const FreeRunScore &b = res.pooled_before, &a = res.pooled_after;
+  std::cout << "\ntests pooled (" << res.tests.size() << " sets, " << a.scored
+            << " scored samples, each set from its own warm-up): before: RMS " << num(b.rms) << ", fit "
+            << num(b.fit_percent, 4) << " %   after: RMS " << num(a.rms) << ", fit " << num(a.fit_percent, 4) << " %\n";
+}
+
+void print_residual_analysis(const DiagnoseReport& in) {
+  std::cout << (in.folds ? "\nresidual on the last fold's rows (" + in.validation +
+                               "; free run, x0 from its first samples; the final models were fitted on these rows too)\n"
+                         : std::string("\nvalidation residual (free run)\n"));
+  if (!in.result->shown.finite) return;
+  print_analysis("before", in.result->shown.before);
+  print_analysis("after ", in.result->shown.after);
+}
+
+void print_figures(const DiagnoseReport& in, const DiagnoseFigures& figures) {
+  if (!figures.drawn) return;
+  std::cout << (in.folds ? "\nplots (the last fold's rows)\n" : "\nplots (validation data)\n");
+  bool heading = false;
+  const auto test_heading = [&] {
+    if (!heading) std::cout << "plots (test records, scored once at the end)\n";
+    heading = true;
+  };
+  for (const DrawnFigure& f : figures.list) {
+    if (f.test_record) test_heading();
+    const PlotOutcome& o = f.outcome;
+    std::cout << "  " << (o.ok ? f.path + (o.svg.empty() ? "" : " (+ .svg)") : "not written: " + o.message) << "\n";
+  }
+  if (figures.test_heading) test_heading();
+}
+
+/// Several estimation records: each record's free-run figures, then the pooled line.
+void print_records(const DiagnoseReport& in) {
+  if (in.records.size() < 2) return;
+  std::cout << "\nestimation records (free run of the fitted models, each record from its start)\n";
+  const auto line = [](const EstimationRecordScore& s) {
+    return "before: RMS " + num(s.before.rms_all) + ", fit " + num(s.before.fit_percent_all, 4) + " %   after: RMS " +
+           num(s.after.rms_all) + ", fit " + num(s.after.fit_percent_all, 4) + " %\n";
+  };
+  for (size_t k = 0; k < in.records.size() && k < in.record_scores.size(); ++k)
+    std::cout << "  record " << k + 1 << " (" << in.records[k].text << ", " << in.record_scores[k].samples
+              << " samples): " << line(in.record_scores[k]);
+  std::cout << "  pooled (" << in.pooled_records.samples << " samples): " << line(in.pooled_records);
+}
+
+}  // namespace
+
+void print_diagnose_text(const DiagnoseReport& report, const DiagnoseFigures& figures) {
+  print_header(report);
+  for (size_t i = 0; i < report.result->rank.rounds.size(); ++i) print_round(report, i);
+  print_summary_table(report);
+  print_windows(*report.result);
+  print_certificates(*report.result);
+  print_tests(report);
+  print_residual_analysis(report);
+  print_figures(report, figures);
+  print_records(report);
+}
+
+}  // namespace lpvid::cli
