@@ -12,10 +12,12 @@ std::string diagnose_certificate_path(const std::string& certificate_path, size_
 }
 
 void write_window_certificate(WindowBounds& w, const std::string& certificate_path, size_t window, size_t windows, bool after) {
+  if (certificate_path.empty()) return;  // the user named no file
   w.certificate = write_certificates(w.bounds, diagnose_certificate_path(certificate_path, window, windows, after)).certificate;
 }
 
 void write_diagnose_certificates(DiagnoseResult& result, const std::string& certificate_path) {
+  if (certificate_path.empty()) return;  // the user named no file
   for (const bool after : {false, true}) {
     std::vector<WindowBounds>& side = after ? result.after : result.before;
     for (size_t i = 0; i < side.size(); ++i)

@@ -214,6 +214,7 @@ DiagnoseReport diagnose_report(const DiagnoseArgs& a, const RoleRecords& roles, 
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;
   ri.solver = a.common.solver;
+  ri.certificates_named = !named_certificate_path(a.common).empty();
   score_estimation_records(ri);
   return ri;
 }
@@ -232,7 +233,7 @@ int run_diagnose(DiagnoseArgs& a) {
   const bool by_folds = plan.selection == SelectionRole::kFolds;
   std::vector<Experiment<double>> tests;
   for (const RoleRecord& t : roles.tests) tests.push_back(t.exp);
-  const std::string certificates = certificate_path(a.common);
+  const std::string certificates = named_certificate_path(a.common);  // "": no file
   const DiagnoseOptions o = diagnose_options(a, in, roles, warmup, by_folds, certificates, progress);
   auto solver = o.make_solver();
   const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record

@@ -34,6 +34,7 @@ struct DiagnoseReport {
   /// Fold mode: the residual analysis and plots are on the estimation
   /// record's last fold block (result->shown).
   bool folds = false;
+  bool certificates_named = true;  ///< false: the user named no certificate or report file, none was written
   Eigen::Index fold_warmup = 0, test_warmup = 0;
   std::string estimation_rows_text;  ///< "file rows a:b" of the estimation record (fold mode)
   long file_row_offset = 0;

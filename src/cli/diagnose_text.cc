@@ -194,7 +194,11 @@ void print_windows(const DiagnoseResult& res) {
             << "    after     " << identification_line(res.after_id) << "\n";
 }
 
-void print_certificates(const DiagnoseResult& res) {
+void print_certificates(const DiagnoseResult& res, bool named) {
+  if (!named) {
+    std::cout << "  certificates: no file written (name them with --certificate FILE or --report FILE)\n";
+    return;
+  }
   std::vector<std::string> written;  // only files that exist: an unverified bound has none
   for (const auto* side : {&res.before, &res.after})
     for (const WindowBounds& w : *side)
@@ -280,7 +284,7 @@ void print_diagnose_text(const DiagnoseReport& report, const DiagnoseFigures& fi
   for (size_t i = 0; i < report.result->rank.rounds.size(); ++i) print_round(report, i);
   print_summary_table(report);
   print_windows(*report.result);
-  print_certificates(*report.result);
+  print_certificates(*report.result, report.certificates_named);
   print_tests(report);
   print_residual_analysis(report);
   print_figures(report, figures);

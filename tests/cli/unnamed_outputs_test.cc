@@ -1,4 +1,4 @@
-// No output file the user did not name: `invalidate` and `tradeoff` run in
+// No output file the user did not name: `invalidate`, `tradeoff` and `diagnose` run in
 // an empty folder without --certificate, --report, --csv or --plots leave it
 // empty (they used to write ./lpvid.cert.json, ./lpvid.cert.lower.json,
 // ./tradeoff.csv and ./tradeoff.png); with --report R the certificate is
@@ -75,6 +75,15 @@ TEST_F(UnnamedOutputs, TradeoffWritesTheCertificatesUnderTheReportsStemAndTheCsv
   EXPECT_TRUE(left.count("c.csv")) << output();
   EXPECT_TRUE(left.count("T.lambda1.cert.json")) << output();
   EXPECT_FALSE(left.count("c.png")) << "no figure without --plots";
+}
+
+TEST_F(UnnamedOutputs, DiagnoseNamingNoFileWritesNone) {
+  generate();
+  const int code = run_in_empty("diagnose", "--data " + file("est.csv") + " --model " + file("m.json") +
+                                                " --max-effects 1 --folds 2 --max-windows 1");
+  EXPECT_TRUE(code == 0 || code == 4) << code << "\n" << output();
+  EXPECT_EQ(files_left(), std::set<std::string>{}) << output();  // it used to write ./lpvid.cert.*.json
+  EXPECT_NE(output().find("certificates: no file written"), std::string::npos) << output();
 }
 
 }  // namespace
