@@ -15,7 +15,7 @@ n=${2:-3000}
 verifiers=${VERIFIERS:-$build/lpvid-verify}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$build/lpvid" generate example1 --n "$n" --noise-variance 0.1 --out "$work/d.csv" --truth-out "$work/t.json" \
+"$build/lpvid" generate example1 --n "$n" --noise-std 0.31622776601683794 --out "$work/d.csv" --truth-out "$work/t.json" \
   >/dev/null || { echo "generate failed"; exit 1; }
 python3 - "$work" "$n" <<'PY'
 import hashlib, json, random, sys

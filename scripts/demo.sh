@@ -49,7 +49,7 @@ fi
 #   test          uVal/yVal, scored once at the end: x0 from the first 50 samples, RMS and fit % over the rest
 echo "=== 1. Linear starting model: fit on uEst/yEst rows 0:716 (order chosen by free-run RMS on the selection rows 716:1024) ==="
 ./build/lpvid fit-linear --data "$tanks" --u uEst --y yEst --rows 0:716 --order auto --offset \
-  --validation-rows 716:1024 --sample-time 4 --unit uEst=V --unit yEst=V --out "$out/tanks_linear.json"
+  --validation-rows 716:1024 --sample-time 4 --unit uEst=V --unit yEst=V --model-out "$out/tanks_linear.json"
 echo
 echo "=== 2. Diagnose: effects chosen on 4 blocked folds of uEst/yEst; uVal/yVal scored once at the end (warm-up 50) ==="
 ./build/lpvid diagnose --data "$tanks" --model "$out/tanks_linear.json" --benchmark cascaded-tanks \

@@ -23,6 +23,7 @@
 
 #include "core/argv_words.h"
 #include "core/limit_options.h"
+#include "core/option_suggestion.h"
 #include "verify/certificate/certificate_check.h"
 #include "verify/psd/psd_command.h"
 #include "verify/psd/work_limits.h"
@@ -135,6 +136,8 @@ int run_lpvid_verify(const std::vector<std::string>& args, const std::string& pr
     app.parse(argv.argc(), argv.argv());
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // prints help or the usage error
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr)  // a misspelt option: "did you mean --x?"
+      print_option_suggestions(app, lpvid_verify_option_table(), "lpvid-verify", args, std::cerr);
     return code == 0 ? 0 : kPsdExitBadInput;
   }
 

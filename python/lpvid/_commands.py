@@ -369,7 +369,8 @@ def fit_linear(u=None, y=None, *, data=None, order=None, validation=None, out_di
     u, y: arrays (1-D or samples x channels); or data= a file, DataFrame
     or dict of columns with u=/y= the column names. order: N >= 1 or
     "auto". validation: (u_val, y_val) arrays scored after the fit (or a
-    file's path with validation_u=/validation_y= its columns).
+    file's path with validation_columns=["uVal", "yVal"] its columns, inputs
+    then output).
     options: those of `lpvid fit-linear --help` (offset=True,
     sample_time=4, unit=["uEst=V"], init_samples=5, ...)."""
     with workspace("fit-linear", out_dir) as ws:
@@ -392,7 +393,7 @@ def fit_linear(u=None, y=None, *, data=None, order=None, validation=None, out_di
         if order is not None:
             words += ["--order", number_text(order)]
         report_path, out_model = os.path.join(ws, "fit-linear.json"), os.path.join(ws, "fit-linear.model.json")
-        code, output, messages = _run("fit_linear", "fit-linear", words + ["--out", out_model, "--report",
+        code, output, messages = _run("fit_linear", "fit-linear", words + ["--model-out", out_model, "--report",
                                                                           report_path], options, progress=progress,
                                       quiet=quiet)
         _raise_unless_answer(code, output, messages)
@@ -511,7 +512,7 @@ def compare(u=None, y=None, models=None, rho=None, *, data=None, model=None, pre
         report_path, series = os.path.join(ws, "compare.json"), os.path.join(ws, "compare.csv")
         words += ["--report", report_path, "--out", series]
         if figures:
-            words += ["--plot", os.path.join(ws, "compare.png")]
+            words += ["--plots", ws]  # the figure is ws/compare.png
         code, output, messages = _run("compare", "compare", words, options, progress=progress, quiet=quiet)
         _raise_unless_answer(code, output, messages)
         report = _report(report_path)

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/refused_alias.h"
 #include "cli/inputs.h"
 #include "cli/record_figures.h"
 #include "cli/report.h"
@@ -60,6 +61,10 @@ Runner add_certify_command(CLI::App& app) {
       ->required();
   cmd->add_option("--solution-format", args->format, "csdp (default: the csdp program's .sol) or sdpa (the sdpa program's output)")
       ->check(CLI::IsMember({"csdp", "sdpa"}));
+  // The program was solved outside: no backend runs here, and the program file exists already.
+  for (const char* ignored : {"--solver", "--verbose", "--write-sdpa"})
+    refuse_shared_option(*cmd, ignored, "does nothing here: the program was solved outside (--solution); give it to "
+                                        "'lpvid invalidate --write-sdpa' instead");
   cmd->add_option("--solver-exit-code", args->exit_code,
                   "the outside solver's exit status (csdp: 0 optimal, 1 primal infeasible, 2 dual infeasible, 3 partial, ...)");
   return [cmd, args] { return cmd->parsed() ? run_certify(*args) : -1; };

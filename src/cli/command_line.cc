@@ -11,6 +11,7 @@
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/limit_options.h"
+#include "core/option_suggestion.h"
 
 namespace lpvid::cli {
 
@@ -70,6 +71,8 @@ int run_lpvid(const std::vector<std::string>& args, const std::string& program) 
     app.parse(argv.argc(), argv.argv());
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr)  // a misspelt option: "did you mean --x?"
+      print_option_suggestions(app, lpvid_option_table(), "", args, std::cerr);
     return code == 0 ? kExitOk : kExitBadInput;
   }
   lpvid::set_deadline(line.timeout);  // 0: none

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/refused_alias.h"
 #include "cli/compare_columns.h"
 #include "cli/compare_output.h"
 #include "cli/inputs.h"
@@ -31,7 +32,7 @@ namespace {
 
 struct CompareArgs {
   std::vector<std::string> models;                ///< every --model, in order
-  std::string out, report, model_out, x0, plot;   ///< x0: "" (not given), model or fit
+  std::string out, report, model_out, x0, plots_dir;   ///< x0: "" (not given), model or fit; plots_dir: --plots
   std::vector<std::string> data_paths, rows_texts;  ///< every --data / --rows (several records)
   std::string data_rows_order;
   std::vector<std::string> names;
@@ -248,15 +249,15 @@ void check_options(const CompareArgs& a, bool fit_x0, size_t records) {
   check_output_file(a.out, "--out");
   check_output_file(a.report, "--report");
   check_output_file(a.model_out, "--model-out");
-  check_output_file(a.plot, "--plot");
+  check_output_directory(a.plots_dir, "--plots");
   if (a.warmup < 0) throw InputError("--warmup must be >= 0");
   if (a.predict_window > 0 && a.predict == 0) throw InputError("--predict-window goes with --predict K");
   if (a.x0 == "model" && a.warmup > 0)
     throw InputError("--warmup fits x0 on the first rows: it cannot go with --x0 model (leave --x0 out)");
   if (!a.model_out.empty() && !fit_x0) throw InputError("--model-out writes the fitted x0: give --x0 fit or --warmup");
   if (!a.model_out.empty() && a.models.size() > 1) throw InputError("--model-out takes one --model");
-  if (records > 1 && (!a.out.empty() || !a.model_out.empty() || !a.plot.empty()))
-    throw InputError("--out, --plot and --model-out take one --data (one record); give the records one at a time");
+  if (records > 1 && (!a.out.empty() || !a.model_out.empty() || !a.plots_dir.empty()))
+    throw InputError("--out, --plots and --model-out take one --data (one record); give the records one at a time");
 }
 
 std::vector<LpvModel<double>> read_models(const CompareArgs& a) {
@@ -274,7 +275,7 @@ std::vector<LpvModel<double>> read_models(const CompareArgs& a) {
   return out;
 }
 
-/// --out, --plot, --model-out of one record.
+/// --out, --plots, --model-out of one record.
 void write_record_files(const CompareArgs& a, const std::vector<ComparedModel>& ms, const SignalInfo& info,
                         nlohmann::ordered_json& report) {
   const ComparedRecord& c0 = ms.front().records.front();
@@ -287,10 +288,12 @@ void write_record_files(const CompareArgs& a, const std::vector<ComparedModel>& 
               << ", scored, and per output: measured, model, residual)\n";
     report["series"] = a.out;
   }
-  const std::string plotted = plot_compare(a.plot, rows, series, "lpvid compare on " + std::filesystem::path(c0.file).filename().string() + " (" + prediction_text(a, c0.model) + ")");
+  const std::string png = a.plots_dir.empty() ? "" : (std::filesystem::path(a.plots_dir) / "compare.png").string();
+  if (!a.plots_dir.empty()) std::filesystem::create_directories(a.plots_dir);
+  const std::string plotted = plot_compare(png, rows, series, "lpvid compare on " + std::filesystem::path(c0.file).filename().string() + " (" + prediction_text(a, c0.model) + ")");
   if (!plotted.empty()) {
     std::cout << "  plot        " << plotted << "\n";
-    report["plot"] = plotted.rfind("no plot", 0) == 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(a.plot);
+    report["plot"] = plotted.rfind("no plot", 0) == 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(png);
   }
   if (!a.model_out.empty()) {
     write_model_file(a.model_out, c0.model);
@@ -375,7 +378,10 @@ Runner add_compare_command(CLI::App& app) {
   cmd->add_option("--out", a->out,
                   "CSV: row, time_s (with a sample time), scored (0 for warm-up rows), and per output the measured, "
                   "model and residual series (several models: <model>.yhat.<output>, <model>.residual.<output>)");
-  cmd->add_option("--plot", a->plot, "PNG figure (gnuplot): measured output and each model's, warm-up rows in grey");
+  cmd->add_option("--plots", a->plots_dir,
+                  "directory for the figure DIR/compare.png (gnuplot; with its CSV data and .plot.json): measured "
+                  "output and each model's, warm-up rows in grey");
+  add_renamed_option(*cmd, "--plot", "--plots DIR", "a directory, as in diagnose; the figure is DIR/compare.png");
   cmd->add_option("--report", a->report, "JSON report (several models: a \"models\" list of one-model reports)");
   cmd->add_option("--model-out", a->model_out, "write the model with the fitted x0 (one --model)");
   return [cmd, a] { return cmd->parsed() ? run_compare(*a) : -1; };

@@ -12,6 +12,7 @@
 #include "cli/certificate_names.h"
 #include "cli/commands.h"
 #include "cli/diagnose_report.h"
+#include "cli/refused_alias.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
 #include "core/input_error.h"
@@ -252,6 +253,106 @@ int run_diagnose(DiagnoseArgs& a) {
   return exit_code(result.outcome());
 }
 
+
+/// The records in their roles: validation (selection) and test options.
+void add_diagnose_role_options(CLI::App& cmd, DiagnoseArgs& a) {
+  auto* validation =
+      cmd.add_option("--validation", a.validation_path, "validation data file (default: hold out the end of --data)");
+  cmd.add_option("--validation-columns", a.validation_columns,
+                 "validation column names replacing the model's u then y columns, e.g. uVal,yVal (same file if "
+                 "--validation is not given)")
+      ->delimiter(',');
+  cmd.add_option("--validation-names", a.validation_names, "column names of a headerless validation file")
+      ->delimiter(',')
+      ->needs(validation);
+  cmd.add_option("--validation-rows", a.validation_rows, "rows B:E of the validation data");
+  cmd.add_option("--folds", a.folds,
+                 "blocked folds of the estimation record that rank and accept the effects when no --validation is "
+                 "given (default 4: each candidate is fitted on 3 blocks and scored on the 4th, in turn); 1: hold out "
+                 "the last --holdout share once instead")
+      ->check(CLI::Range(1, 20));
+  cmd.add_option("--holdout", a.holdout,
+                 "with --folds 1: fraction of --data held out for validation when none is given (0.3)")
+      ->excludes(validation);
+  cmd.add_option("--warmup", a.warmup,
+                 "samples at the start of the test part (and of each fold) used for the initial state and left out "
+                 "of the RMS and fit % (default: --init-samples, 5)")
+      ->check(CLI::Range(1, 100000));
+  cmd.add_option("--benchmark", a.benchmark,
+                 "the benchmark's warm-up (the nonlinear_benchmarks loader since 1.0.1): cascaded-tanks 50, silverbox 50, "
+                 "coupled-drives 10");
+  auto* test = cmd.add_option("--test", a.test_paths,
+                 "test data file, scored once after the selection and never used to fit or choose (default: --data "
+                 "when --test-columns is given); may be given more than once, each file scored separately")
+      ->take_all();
+  cmd.add_option("--test-columns", a.test_columns,
+                 "test column names replacing the model's u then y columns, e.g. uVal,yVal; may be given more than "
+                 "once (several column sets of one file, each scored separately)")
+      ->delimiter(',');
+  cmd.add_option("--test-names", a.test_names, "column names of a headerless test file")->delimiter(',')->needs(test);
+  cmd.add_option("--test-rows", a.test_rows, "rows B:E of the test data");
+}
+
+/// The candidate effects and their selection.
+void add_diagnose_search_options(CLI::App& cmd, DiagnoseArgs& a) {
+  cmd.add_option("--max-effects", a.max_effects, "effects to add at most (default 3)")->check(CLI::Range(0, 20));
+  cmd.add_option("--min-gain", a.min_gain, "relative validation-RMS reduction an effect must reach (default 0.05)");
+  cmd.add_option("--degree", a.degree, "largest degree of basis-term monomials (default 2)")->check(CLI::Range(1, 6));
+  cmd.add_option("--max-input-delay", a.max_delay, "largest input delay tried (default 5)")->check(CLI::Range(0, 100));
+  cmd.add_option("--state-degree", a.state_degree,
+                 "candidates x1^1..x1^D in A, scheduled on the model's own state (model column \"@x1\"; 0: none; default 3)")
+      ->check(CLI::Range(0, 6));
+  cmd.add_flag("!--fixed-dynamics", a.joint_dynamics,
+               "keep A, B as declared in every candidate fit (default: each candidate is also fitted with A, B "
+               "re-fitted jointly, and the selection rows pick the better of the two)");
+  cmd.add_option("--init-samples", a.init_samples,
+                 "selection samples used to fit the initial state, every sample still scored (default 5); unlike "
+                 "--warmup, they are not left out of the RMS")
+      ->check(CLI::Range(1, 100000));
+  cmd.add_flag("!--no-input-scheduling", a.input_scheduling,
+               "do not try basis terms scheduled on the measured inputs (rho = u)");
+  add_renamed_option(cmd, "--max-delay", "--max-input-delay",
+                     "generate and oracle's --max-delay is the number of Delta's zero taps");
+  // Given after the command, the input limit --max-degree would silently be taken for --degree's meaning.
+  add_refused_option(cmd, "--max-degree",
+                     "is the input limit on a model's polynomial degree, not the candidates' degree: give it before the "
+                     "command (lpvid --max-degree N diagnose ...), or --degree D for the candidate monomials");
+}
+
+/// The bound windows, the solver's parallelism and the outputs.
+void add_diagnose_window_options(CLI::App& cmd, DiagnoseArgs& a) {
+  cmd.add_option("--window", a.windows,
+                 "estimation rows B:E on which the bounds are certified, several separated by commas "
+                 "(default: the whole estimation record in windows of 200 rows, a last one under 50 rows merged)")
+      ->delimiter(',');
+  cmd.add_option("--window-length", a.window_length,
+                 "certify consecutive windows of this length covering the whole estimation record (a last one "
+                 "shorter than min(50, L/4) rows merged)")
+      ->check(CLI::Range(10L, 100000L));
+  cmd.add_option("--max-windows", a.max_windows,
+                 "certify at most N bound windows, spread evenly over the estimation record (default: all)")
+      ->check(CLI::Range(1, 1000000));
+  cmd.add_flag("--lower-ends", a.lower_ends,
+               "also certify the lower end of every bound (a dual certificate per window); the report states the "
+               "upper ends, which need none");
+  cmd.add_option("--threads", a.threads,
+                 "bound windows certified at once (default: the number of hardware threads); results do not depend "
+                 "on it")
+      ->check(CLI::Range(1, 1024));
+  cmd.add_option("--plots", a.plots_dir, "directory for the PNG plots and their CSV data");
+  cmd.add_option("--model-out", a.model_out, "write the model after diagnosis (exact, as certified)");
+}
+
+/// Options that would be ignored are refused instead (when the parse ends).
+void refuse_ignored_diagnose_options(const CLI::App& cmd, const DiagnoseArgs& a) {
+  if (cmd.count("--test-rows") > 0 && cmd.count("--test") == 0 && cmd.count("--test-columns") == 0)
+    throw CLI::ValidationError("--test-rows", "needs a test set (--test or --test-columns)");
+  if (cmd.count("--holdout") > 0 && a.folds != 1)
+    throw CLI::ValidationError("--holdout", "is used with --folds 1 only (the default folds score every block in turn)");
+  if (cmd.count("--validation-rows") > 0 && a.validation_path.empty() && a.validation_columns.empty())
+    throw CLI::ValidationError("--validation-rows", "needs --validation or --validation-columns");
+}
+
 }  // namespace
 
 Runner add_diagnose_command(CLI::App& app) {
@@ -259,84 +360,10 @@ Runner add_diagnose_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "diagnose", "Residual -> missing effect -> re-fitted model, with before/after RMS and verified bounds");
   add_common_options(*cmd, a->common, true);
-  auto* validation =
-      cmd->add_option("--validation", a->validation_path, "validation data file (default: hold out the end of --data)");
-  cmd->add_option("--validation-columns", a->validation_columns,
-                  "validation column names replacing the model's u then y columns, e.g. uVal,yVal (same file if "
-                  "--validation is not given)")
-      ->delimiter(',');
-  cmd->add_option("--validation-names", a->validation_names, "column names of a headerless validation file")
-      ->delimiter(',')
-      ->needs(validation);
-  cmd->add_option("--validation-rows", a->validation_rows, "rows B:E of the validation data");
-  cmd->add_option("--folds", a->folds,
-                  "blocked folds of the estimation record that rank and accept the effects when no --validation is "
-                  "given (default 4: each candidate is fitted on 3 blocks and scored on the 4th, in turn); 1: hold out "
-                  "the last --holdout share once instead")
-      ->check(CLI::Range(1, 20));
-  cmd->add_option("--holdout", a->holdout,
-                  "with --folds 1: fraction of --data held out for validation when none is given (0.3)")
-      ->excludes(validation);
-  cmd->add_option("--warmup", a->warmup,
-                  "samples at the start of the test part (and of each fold) used for the initial state and left out "
-                  "of the RMS and fit % (default: --init-samples, 5)")
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option("--benchmark", a->benchmark,
-                  "the benchmark's warm-up (the nonlinear_benchmarks loader since 1.0.1): cascaded-tanks 50, silverbox 50, "
-                  "coupled-drives 10");
-  auto* test = cmd->add_option("--test", a->test_paths,
-                  "test data file, scored once after the selection and never used to fit or choose (default: --data "
-                  "when --test-columns is given); may be given more than once, each file scored separately")
-      ->take_all();
-  auto* test_columns = cmd->add_option("--test-columns", a->test_columns,
-                  "test column names replacing the model's u then y columns, e.g. uVal,yVal; may be given more than "
-                  "once (several column sets of one file, each scored separately)")
-      ->delimiter(',');
-  cmd->add_option("--test-names", a->test_names, "column names of a headerless test file")->delimiter(',')->needs(test);
-  auto* test_rows = cmd->add_option("--test-rows", a->test_rows, "rows B:E of the test data");
-  cmd->add_option("--max-effects", a->max_effects, "effects to add at most (default 3)")->check(CLI::Range(0, 20));
-  cmd->add_option("--min-gain", a->min_gain, "relative validation-RMS reduction an effect must reach (default 0.05)");
-  cmd->add_option("--degree", a->degree, "largest degree of basis-term monomials (default 2)")->check(CLI::Range(1, 6));
-  cmd->add_option("--max-delay", a->max_delay, "largest input delay tried (default 5)")->check(CLI::Range(0, 100));
-  cmd->add_option("--state-degree", a->state_degree,
-                  "candidates x1^1..x1^D in A, scheduled on the model's own state (model column \"@x1\"; 0: none; default 3)")
-      ->check(CLI::Range(0, 6));
-  cmd->add_flag("!--fixed-dynamics", a->joint_dynamics,
-                "keep A, B as declared in every candidate fit (default: each candidate is also fitted with A, B "
-                "re-fitted jointly, and the selection rows pick the better of the two)");
-  cmd->add_option("--init-samples", a->init_samples, "validation samples used to fit the initial state (default 5)")
-      ->check(CLI::Range(1, 100000));
-  cmd->add_flag("!--no-input-scheduling", a->input_scheduling,
-                "do not try basis terms scheduled on the measured inputs (rho = u)");
-  cmd->add_option("--window", a->windows,
-                  "estimation rows B:E on which the bounds are certified, several separated by commas "
-                  "(default: the whole estimation record in windows of 200 rows, a last one under 50 rows merged)")
-      ->delimiter(',');
-  cmd->add_option("--window-length", a->window_length,
-                  "certify consecutive windows of this length covering the whole estimation record (a last one "
-                  "shorter than min(50, L/4) rows merged)")
-      ->check(CLI::Range(10L, 100000L));
-  cmd->add_option("--max-windows", a->max_windows,
-                  "certify at most N bound windows, spread evenly over the estimation record (default: all)")
-      ->check(CLI::Range(1, 1000000));
-  cmd->add_flag("--lower-ends", a->lower_ends,
-                "also certify the lower end of every bound (a dual certificate per window); the report states the "
-                "upper ends, which need none");
-  cmd->add_option("--threads", a->threads,
-                  "bound windows certified at once (default: the number of hardware threads); results do not depend "
-                  "on it")
-      ->check(CLI::Range(1, 1024));
-  cmd->add_option("--plots", a->plots_dir, "directory for the PNG plots and their CSV data");
-  cmd->add_option("--model-out", a->model_out, "write the model after diagnosis (exact, as certified)");
-  // Options that would be ignored are refused instead.
-  cmd->callback([cmd, a, test, test_columns, test_rows] {
-    if (test_rows->count() > 0 && test->count() == 0 && test_columns->count() == 0)
-      throw CLI::ValidationError("--test-rows", "needs a test set (--test or --test-columns)");
-    if (cmd->count("--holdout") > 0 && a->folds != 1)
-      throw CLI::ValidationError("--holdout", "is used with --folds 1 only (the default folds score every block in turn)");
-    if (cmd->count("--validation-rows") > 0 && a->validation_path.empty() && a->validation_columns.empty())
-      throw CLI::ValidationError("--validation-rows", "needs --validation or --validation-columns");
-  });
+  add_diagnose_role_options(*cmd, *a);
+  add_diagnose_search_options(*cmd, *a);
+  add_diagnose_window_options(*cmd, *a);
+  cmd->callback([cmd, a] { refuse_ignored_diagnose_options(*cmd, *a); });
   return [cmd, a] { return cmd->parsed() ? run_diagnose(*a) : -1; };
 }
 

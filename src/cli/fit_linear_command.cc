@@ -9,6 +9,7 @@
 
 #include "core/file_io.h"
 #include "cli/commands.h"
+#include "cli/refused_alias.h"
 #include "cli/signal_info_options.h"
 #include "cli/inputs.h"
 #include "cli/report.h"
@@ -26,7 +27,7 @@ struct FitLinearArgs {
   std::string data, rows, out, report, order = "auto";
   std::vector<std::string> names, u{"u"}, y{"y"};
   std::string val_data, val_rows;
-  std::vector<std::string> val_names, val_u, val_y;
+  std::vector<std::string> val_names, val_columns;  ///< --validation-columns: inputs then the output
   int max_order = 5;       ///< --max-order for --order auto
   int init_samples = static_cast<int>(kValidationInitSamples);  ///< --init-samples: x0 of validation data from its first samples (benchmark rule)
   bool offset = false;     ///< --offset: fit a constant output offset
@@ -55,64 +56,56 @@ int parse_order(const std::string& text) {
   throw InputError("--order: expected a positive integer or 'auto', got '" + text + "'");
 }
 
-int run_fit_linear(const FitLinearArgs& a) {
-  check_output_file(a.out, "model");
-  int order = parse_order(a.order);
-  if (order < 0) throw InputError("--order: must be >= 1 (or 'auto'), got '" + a.order + "'");
-  const ColumnMap cols{a.u, a.y, {}};
-  const SignalInfo signal_info = signal_info_of(a.signal_info, cols);  // checked before any work
-  const Experiment<double> est = load(a.data, a.names, a.rows, cols);
-  std::optional<Experiment<double>> val;
-  if (!a.val_data.empty() || !a.val_rows.empty() || !a.val_u.empty() || !a.val_y.empty()) {
-    const ColumnMap vcols{a.val_u.empty() ? a.u : a.val_u, a.val_y.empty() ? a.y : a.val_y, {}};
-    const std::string& path = a.val_data.empty() ? a.data : a.val_data;
-    const auto& names = a.val_data.empty() ? a.names : a.val_names;
-    val = load(path, names, a.val_rows, vcols);
+/// The validation record of the options, if any: --validation (default the
+/// estimation file) with --validation-rows and --validation-columns.
+std::optional<Experiment<double>> load_validation(const FitLinearArgs& a) {
+  if (a.val_data.empty() && a.val_rows.empty() && a.val_columns.empty()) return std::nullopt;
+  ColumnMap vcols{a.u, a.y, {}};
+  if (!a.val_columns.empty()) {  // checked at parsing: one name per --u column, then one per --y column
+    vcols.u.assign(a.val_columns.begin(), a.val_columns.begin() + static_cast<std::ptrdiff_t>(a.u.size()));
+    vcols.y.assign(a.val_columns.begin() + static_cast<std::ptrdiff_t>(a.u.size()), a.val_columns.end());
   }
-  std::cout << "lpvid fit-linear\n  data        " << a.data << (a.rows.empty() ? "" : " rows " + a.rows)
-            << "  (u: " << a.u.front() << (a.u.size() > 1 ? ",…" : "") << ", y: " << a.y.front() << ", "
-            << est.n() << " samples)\n  order       " << a.order << "\n  offset      " << (a.offset ? "yes" : "no")
-            << "\n  init        x0 of validation data from its first " << a.init_samples << " samples\n";
+  const std::string& path = a.val_data.empty() ? a.data : a.val_data;
+  const auto& names = a.val_data.empty() ? a.names : a.val_names;
+  return load(path, names, a.val_rows, vcols);
+}
 
-  nlohmann::ordered_json report;
-  report["command"] = "fit-linear";
-  std::optional<LinearFit> chosen;
-  if (order == 0) {
-    // The order is chosen on selection data, not on the rows it was fitted
-    // on (a higher order always fits those better): the validation data
-    // given here (the benchmark's held-out estimation rows in the demo), else
-    // the last third of the estimation rows, fitted on the first two thirds.
-    // Never on test data: fit-linear has no test role.
-    const Eigen::Index cut = val ? est.n() : est.n() * 2 / 3;
-    const Experiment<double> fit_rows = val ? est : select_rows(est, 0, cut);
-    const Experiment<double> held_out = val ? *val : select_rows(est, cut, est.n());
-    const OrderChoice choice = choose_order(fit_rows, held_out, cols, a.max_order, a.offset, a.init_samples);
-    order = choice.order;
-    chosen = choice.fit;
-    const std::string scored_on = val ? "the validation (selection) data" : "estimation rows " + std::to_string(cut) + ":" + std::to_string(est.n());
-    std::cout << "  order  rms_estimation  rms_held_out  (fit on " << (val ? "all estimation rows" : "estimation rows 0:" + std::to_string(cut))
-              << ", free run scored on " << scored_on << "; order n is also started from order n-1's fit)\n";
-    double best = choice.scores.front().rms_validation;
-    for (const OrderScore& s : choice.scores) best = std::min(best, s.rms_validation);
-    for (const OrderScore& s : choice.scores) {
-      std::cout << "  " << std::setw(5) << s.order << "  " << std::setw(14) << s.rms_estimation << "  "
-                << std::setw(12) << s.rms_validation << (s.order == order ? "  <- chosen" : "") << "\n";
-      report["order_scores"].push_back(
-          {{"order", s.order}, {"rms_estimation", s.rms_estimation}, {"rms_held_out", s.rms_validation}});
-    }
-    std::ostringstream rule;
-    rule << "the smallest order whose held-out free-run RMS is within " << kOrderSlack * 100 << "% of the best ("
-         << std::setprecision(4) << best << ")";
-    const std::string why = rule.str();
-    std::cout << "  chosen: order " << order << ", " << why << "\n";
-    report["order_rule"] = why;
-    report["order_scored_on"] = scored_on;
+/// --order auto: the order chosen on selection data, not on the rows it was
+/// fitted on (a higher order always fits those better): the validation data
+/// given (the benchmark's held-out estimation rows in the demo), else the
+/// last third of the estimation rows, fitted on the first two thirds. Never
+/// on test data: fit-linear has no test role. Prints the scores, fills the report.
+OrderChoice choose_order_printed(const FitLinearArgs& a, const Experiment<double>& est,
+                                 const std::optional<Experiment<double>>& val, const ColumnMap& cols,
+                                 nlohmann::ordered_json& report) {
+  const Eigen::Index cut = val ? est.n() : est.n() * 2 / 3;
+  const Experiment<double> fit_rows = val ? est : select_rows(est, 0, cut);
+  const Experiment<double> held_out = val ? *val : select_rows(est, cut, est.n());
+  const OrderChoice choice = choose_order(fit_rows, held_out, cols, a.max_order, a.offset, a.init_samples);
+  const std::string scored_on = val ? "the validation (selection) data" : "estimation rows " + std::to_string(cut) + ":" + std::to_string(est.n());
+  std::cout << "  order  rms_estimation  rms_held_out  (fit on " << (val ? "all estimation rows" : "estimation rows 0:" + std::to_string(cut))
+            << ", free run scored on " << scored_on << "; order n is also started from order n-1's fit)\n";
+  double best = choice.scores.front().rms_validation;
+  for (const OrderScore& s : choice.scores) best = std::min(best, s.rms_validation);
+  for (const OrderScore& s : choice.scores) {
+    std::cout << "  " << std::setw(5) << s.order << "  " << std::setw(14) << s.rms_estimation << "  "
+              << std::setw(12) << s.rms_validation << (s.order == choice.order ? "  <- chosen" : "") << "\n";
+    report["order_scores"].push_back(
+        {{"order", s.order}, {"rms_estimation", s.rms_estimation}, {"rms_held_out", s.rms_validation}});
   }
-  // The scored fit when it was fitted on all estimation rows; else a fit on
-  // all of them, also started from the scored fit's denominator.
-  LinearFitOptions fo{order, a.offset, {}, {}};
-  if (chosen) fo.nested_denominator = chosen->form.a;
-  const LinearFit fit = chosen && val ? *chosen : fit_linear(est, cols, fo);
+  std::ostringstream rule;
+  rule << "the smallest order whose held-out free-run RMS is within " << kOrderSlack * 100 << "% of the best ("
+       << std::setprecision(4) << best << ")";
+  const std::string why = rule.str();
+  std::cout << "  chosen: order " << choice.order << ", " << why << "\n";
+  report["order_rule"] = why;
+  report["order_scored_on"] = scored_on;
+  return choice;
+}
+
+/// Prints and reports the final fit, its validation score and the model file.
+void report_fit(const FitLinearArgs& a, const LinearFit& fit, int order, const std::optional<Experiment<double>>& val,
+                const SignalInfo& signal_info, nlohmann::ordered_json& report) {
   std::cout << std::setprecision(6) << "order " << order << "\nrms_estimation " << fit.rms_estimation
             << "  (ARX start " << fit.rms_arx << ", " << fit.iterations << " LM steps, spectral radius "
             << fit.spectral_radius << ")\n";
@@ -135,8 +128,50 @@ int run_fit_linear(const FitLinearArgs& a) {
     std::cout << "model " << a.out << "\n";
     report["model"] = a.out;
   }
+}
+
+int run_fit_linear(const FitLinearArgs& a) {
+  check_output_file(a.out, "model");
+  int order = parse_order(a.order);
+  if (order < 0) throw InputError("--order: must be >= 1 (or 'auto'), got '" + a.order + "'");
+  const ColumnMap cols{a.u, a.y, {}};
+  const SignalInfo signal_info = signal_info_of(a.signal_info, cols);  // checked before any work
+  const Experiment<double> est = load(a.data, a.names, a.rows, cols);
+  const std::optional<Experiment<double>> val = load_validation(a);
+  std::cout << "lpvid fit-linear\n  data        " << a.data << (a.rows.empty() ? "" : " rows " + a.rows)
+            << "  (u: " << a.u.front() << (a.u.size() > 1 ? ",…" : "") << ", y: " << a.y.front() << ", "
+            << est.n() << " samples)\n  order       " << a.order << "\n  offset      " << (a.offset ? "yes" : "no")
+            << "\n  init        x0 of validation data from its first " << a.init_samples << " samples\n";
+
+  nlohmann::ordered_json report;
+  report["command"] = "fit-linear";
+  std::optional<LinearFit> chosen;
+  if (order == 0) {
+    const OrderChoice choice = choose_order_printed(a, est, val, cols, report);
+    order = choice.order;
+    chosen = choice.fit;
+  }
+  // The scored fit when it was fitted on all estimation rows; else a fit on
+  // all of them, also started from the scored fit's denominator.
+  LinearFitOptions fo{order, a.offset, {}, {}};
+  if (chosen) fo.nested_denominator = chosen->form.a;
+  const LinearFit fit = chosen && val ? *chosen : fit_linear(est, cols, fo);
+  report_fit(a, fit, order, val, signal_info, report);
   write_json(a.report, report);
   return kExitOk;
+}
+
+/// Options this command would ignore, refused when the parse ends.
+void refuse_ignored_fit_options(const CLI::App& cmd, const FitLinearArgs& a) {
+  if (cmd.count("--max-order") > 0 && a.order != "auto")
+    throw CLI::ValidationError("--max-order", "is the largest order tried by --order auto; with --order " + a.order +
+                                                  " it would be ignored (leave it out, or give --order auto)");
+  const size_t want = a.u.size() + a.y.size();
+  if (!a.val_columns.empty() && a.val_columns.size() != want)
+    throw CLI::ValidationError(
+        "--validation-columns",
+        "names the validation record's input column(s) then its output column(s), one per --u and --y column (" +
+            std::to_string(want) + " here), got " + std::to_string(a.val_columns.size()));
 }
 
 }  // namespace
@@ -152,18 +187,26 @@ Runner add_fit_linear_command(CLI::App& app) {
   cmd->add_option("--order", a->order, "model order N >= 1, or auto (default)");
   cmd->add_option("--max-order", a->max_order, "largest order tried by --order auto (default 5)");
   cmd->add_flag("--offset", a->offset, "fit a constant output offset (model \"offset\" with basis 1)");
-  cmd->add_option("--out,--model-out", a->out, "model file to write (lpvid-model/1)");
+  cmd->add_option("--model-out", a->out, "model file to write (lpvid-model/1)");
   cmd->add_option("--report", a->report, "JSON report");
   add_signal_info_options(*cmd, a->signal_info);
-  cmd->add_option("--validation-data,--validation", a->val_data, "validation data file (default: the estimation file)");
+  cmd->add_option("--validation", a->val_data, "validation data file (default: the estimation file)");
   cmd->add_option("--validation-names", a->val_names, "column names for a headerless validation file")
       ->delimiter(',');
   cmd->add_option("--validation-rows", a->val_rows, "window of validation rows B:E");
-  cmd->add_option("--validation-u", a->val_u, "validation input column(s) (default: --u)")->delimiter(',');
-  cmd->add_option("--validation-y", a->val_y, "validation output column (default: --y)")->delimiter(',');
+  cmd->add_option("--validation-columns", a->val_columns,
+                  "validation column names replacing --u then --y, e.g. uVal,yVal (default: --u, --y; the estimation "
+                  "file if --validation is not given)")
+      ->delimiter(',');
   cmd->add_option("--init-samples", a->init_samples,
-                  "validation x0 fitted on this many first samples (default 5, the benchmark rule; 0: x0 = 0)")
+                  "validation x0 fitted on this many first samples, every sample still scored (default 5, the benchmark "
+                  "rule; 0: x0 = 0); unlike a --warmup, they are not left out of the RMS")
       ->check(CLI::Range(0, 100000));
+  add_renamed_option(*cmd, "--out", "--model-out", "--out is a data CSV in compare, simulate and generate");
+  add_renamed_option(*cmd, "--validation-data", "--validation", "one name, as in diagnose");
+  for (const char* half : {"--validation-u", "--validation-y"})
+    add_renamed_option(*cmd, half, "--validation-columns U...,Y", "inputs then output in one option, as in diagnose");
+  cmd->callback([cmd, a] { refuse_ignored_fit_options(*cmd, *a); });
   return [cmd, a] { return cmd->parsed() ? run_fit_linear(*a) : -1; };
 }
 

@@ -2,9 +2,11 @@
 // Example 1 (eq. 17). Every fixture in fixtures/ names the command that made it.
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "core/file_io.h"
 #include "cli/commands.h"
+#include "cli/refused_alias.h"
 #include "cli/random_cases.h"
 #include "core/input_error.h"
 #include "data/csv_writer.h"
@@ -16,14 +18,17 @@
 namespace lpvid::cli {
 namespace {
 
+/// effect-case's output noise when --noise-std is not given.
+constexpr double kEffectCaseNoiseStd = 0.02;
+
 struct GenerateArgs {
   std::string which = "example1";
   int n = 60;
-  double noise_variance = 0.0;
+  double noise_variance = 0.0;  ///< example1/example2: --noise-std squared (default noise-free)
   uint64_t seed = 1;
   std::string out, model_out, truth_out;
   std::string effect = "none", validation_out;
-  double noise_std = 0.02;
+  std::optional<double> noise_std;  ///< --noise-std; effect-case default 0.02
   RandomCaseFlags random;
 };
 
@@ -33,11 +38,11 @@ std::vector<TextColumn> effect_case_columns(const Experiment<Rational>& e) {
 
 int run_generate_effect_case(const GenerateArgs& a) {
   if (a.validation_out.empty()) throw InputError("generate effect-case: --validation-out is required");
-  const EffectCase c = make_effect_case(a.effect, a.n, a.seed, a.noise_std);
+  const EffectCase c = make_effect_case(a.effect, a.n, a.seed, a.noise_std.value_or(kEffectCaseNoiseStd));
   write_csv(a.out, effect_case_columns(c.estimation));
   write_csv(a.validation_out, effect_case_columns(c.validation));
   std::cout << "wrote " << a.out << " and " << a.validation_out << " (" << a.n << " samples each, effect '" << a.effect
-            << "', noise std " << a.noise_std << ", seed " << a.seed << ")\n";
+            << "', noise std " << a.noise_std.value_or(kEffectCaseNoiseStd) << ", seed " << a.seed << ")\n";
   if (!a.model_out.empty()) {
     write_model_file(a.model_out, c.declared);
     std::cout << "wrote " << a.model_out << " (declared model: the LPV system without the effect)\n";
@@ -122,7 +127,12 @@ Runner add_generate_command(CLI::App& app) {
       "generate", "Write a data set with a known answer (the paper's Example 1, or an Example 2 flavour with an offset)");
   cmd->add_option("which", a->which, "data set: example1, example2 (eq. 20: output offset Phi(rho)), effect-case (an effect the written model does not declare) or random (a random case of the property tests' generator with an oracle task; --out is then a folder)");
   cmd->add_option("--n", a->n, "samples (default 60)");
-  cmd->add_option("--noise-variance", a->noise_variance, "variance of the white output noise (paper Table II: 0.1)");
+  cmd->add_option("--noise-std", a->noise_std,
+                                    "standard deviation of the white output noise (example1/example2: default 0, paper "
+                                    "Table II: variance 0.1; effect-case: default 0.02)")
+                        ->check(CLI::NonNegativeNumber);
+  add_renamed_option(*cmd, "--noise-variance", "--noise-std",
+                     "one name per idea: give the standard deviation, e.g. --noise-std 0.316 for variance 0.1");
   cmd->add_option("--seed", a->seed, "random seed (default 1)");
   cmd->add_option("--out", a->out, "data CSV to write (effect-case: the estimation record; random: the case folder)")->required();
   add_random_case_flags(*cmd, a->random);
@@ -130,25 +140,21 @@ Runner add_generate_command(CLI::App& app) {
   for (const auto& k : effect_case_kinds()) kinds += (kinds.empty() ? "" : ", ") + k;
   auto* effect = cmd->add_option("--effect", a->effect, "effect-case: the undeclared effect (" + kinds + ")");
   auto* validation = cmd->add_option("--validation-out", a->validation_out, "effect-case: the validation record to write");
-  auto* noise_std = cmd->add_option("--noise-std", a->noise_std, "effect-case: standard deviation of the white output noise (0.02)");
   // Options of one data set are refused for the others (never silently ignored).
-  cmd->callback([cmd, a, effect, validation, noise_std] {
+  cmd->callback([cmd, a, effect, validation] {
     const std::vector<std::string> random_only = {"--siso", "--lti", "--min-n", "--max-n", "--leading-zeros",
                                                   "--max-delay", "--static-blocks", "--kinds", "--tolerance"};
     if (a->which == "random") {
-      for (const char* other : {"--noise-variance", "--model-out", "--truth-out", "--effect", "--validation-out", "--noise-std"})
+      for (const char* other : {"--model-out", "--truth-out", "--effect", "--validation-out", "--noise-std"})
         if (cmd->count(other) > 0) throw CLI::ValidationError(other, "is not for random (it writes data, model, truth and task into --out)");
       if (cmd->count("--n") > 0) a->random.min_n = a->random.max_n = a->n;
       return;
     }
     for (const std::string& name : random_only)
       if (cmd->count(name) > 0) throw CLI::ValidationError(name, "is only for random (the data set here is " + a->which + ")");
-    if (a->which == "effect-case") {
-      if (cmd->count("--noise-variance") > 0)
-        throw CLI::ValidationError("--noise-variance", "is for example1/example2; effect-case takes --noise-std");
-      return;
-    }
-    for (const CLI::Option* o : {effect, validation, noise_std})
+    if (a->which == "effect-case") return;
+    if (a->noise_std) a->noise_variance = *a->noise_std * *a->noise_std;
+    for (const CLI::Option* o : {effect, validation})
       if (o->count() > 0)
         throw CLI::ValidationError(o->get_name(), "is only for effect-case (the data set here is " + a->which + ")");
   });

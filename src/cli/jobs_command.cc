@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "cli/inputs.h"
+#include "cli/refused_alias.h"
 #include "cli/report.h"
 #include "core/decimal_rounding.h"
 #include "core/file_io.h"
@@ -92,7 +93,7 @@ void check_plan_options(const CommonOptions& c, const PlanArgs& a) {
   if (!c.certificate_path.empty() || !c.report_path.empty() || !c.write_sdpa.empty())
     throw InputError("jobs plan: --certificate, --report and --write-sdpa belong to the jobs (one per window); "
                      "'lpvid jobs merge' writes the report");
-  if (a.window < 2) throw InputError("jobs plan: --window must be at least 2 rows");
+  if (a.window < 2) throw InputError("jobs plan: --window-length must be at least 2 rows");
   if (a.min_last < 1) throw InputError("jobs plan: --min-last must be at least 1 row");
   if (c.data_paths.size() > 1)
     throw InputError("jobs plan: one --data (the plan tiles one record into windows); several records: 'lpvid invalidate'");
@@ -175,7 +176,7 @@ int run_plan(CommonOptions& c, const PlanArgs& a) {
   const std::vector<RowWindow> windows = tile_windows(in.exp_q.n(), a.window, a.min_last);
   if (a.joint && windows.size() < 2)
     throw InputError("jobs plan --joint: the record makes " + std::to_string(windows.size()) +
-                     " window; the joint claim needs at least 2 (a smaller --window)");
+                     " window; the joint claim needs at least 2 (a smaller --window-length)");
   if (a.joint && c.toeplitz != "signal")
     throw InputError("jobs plan --joint: several records are certified in --toeplitz signal only");
   JobPlan plan = plan_header(c, a, in);
@@ -355,8 +356,15 @@ Runner add_jobs_command(CLI::App& app) {
   common->command = "jobs plan";
   p->add_option("--dir", plan->dir, "folder for the plan, the window models, jobs.txt and (later) the certificates")
       ->required();
-  p->add_option("--window", plan->window, "rows per window (default 200)");
-  p->add_option("--min-last", plan->min_last, "a last window shorter than this joins the one before (default 50)");
+  p->add_option("--window-length", plan->window, "rows per window (default 200)")->check(CLI::Range(2L, 1000000000L));
+  p->add_option("--min-last", plan->min_last, "a last window shorter than this joins the one before (default 50)")
+      ->check(CLI::Range(1L, 1000000000L));
+  add_renamed_option(*p, "--window", "--window-length", "rows per window, as in diagnose; diagnose's --window is B:E ranges");
+  // The jobs write the certificates and SDP files (one per window), 'jobs merge' the report; the plan runs no solver.
+  for (const char* ignored : {"--certificate", "--report", "--write-sdpa"})
+    refuse_shared_option(*p, ignored, "belongs to the jobs (one per window); 'lpvid jobs merge' writes the report");
+  for (const char* ignored : {"--verbose", "--quiet"})
+    refuse_shared_option(*p, ignored, "does nothing here: the plan runs no solver and prints no progress (the jobs run with --quiet)");
   p->add_option("--lpvid", plan->lpvid, "the lpvid program the jobs run (default: this one, by absolute path)");
   p->add_flag("--joint", plan->joint,
               "one more job (last in jobs.txt): every window as a record of ONE claim (one Delta for all windows, each "

@@ -26,10 +26,12 @@ bool is_help_or_version(const CLI::Option& o) {
   return false;
 }
 
-/// The options of `app` and of its option groups (nameless subcommands).
+/// The options of `app` and of its option groups (nameless subcommands);
+/// hidden ones (group "": refused aliases, cli/refused_alias.h) work for
+/// nothing and are left out.
 void add_own_options(const CLI::App& app, std::vector<OptionInfo>& out) {
   for (const CLI::Option* o : app.get_options())
-    if (!is_help_or_version(*o) && (o->nonpositional() || !o->get_name(true).empty()))
+    if (!is_help_or_version(*o) && !o->get_group().empty() && (o->nonpositional() || !o->get_name(true).empty()))
       out.push_back(option_info(*o));
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
     if (sub->get_name().empty()) add_own_options(*sub, out);

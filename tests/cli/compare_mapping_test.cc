@@ -182,12 +182,12 @@ TEST_F(CompareMapping, TwoFitLinearModelsOfTheTanksScoreOnTheTestColumns) {
                            "/cascaded-tanks/dataBenchmark.csv";
   if (!std::filesystem::exists(data)) GTEST_SKIP() << data << " not found";
   for (const char* order : {"1", "3"})
-    ASSERT_EQ(run("fit-linear", "--data " + data + " --u uEst --y yEst --order " + order + " --sample-time 4 --out " +
+    ASSERT_EQ(run("fit-linear", "--data " + data + " --u uEst --y yEst --order " + order + " --sample-time 4 --model-out " +
                                     file(std::string("o") + order + ".json")),
               0)
         << output();
   ASSERT_EQ(run("compare", "--data " + data + " --u uVal --y yVal --model " + file("o1.json") + " --model " +
-                               file("o3.json") + " --warmup 50 --plot " + file("p.png") + " --report " + file("r.json")),
+                               file("o3.json") + " --warmup 50 --plots " + file("plots") + " --report " + file("r.json")),
             0)
       << output();
   const nlohmann::json r = read_json(file("r.json"));

@@ -46,7 +46,7 @@ TEST_F(Compare, TrueSystemOnCleanDataFitsPerfectlyAndAWindowNeedsItsState) {
 }
 
 TEST_F(Compare, ReportedFitIsTheFitOfTheWrittenSeries) {
-  ASSERT_EQ(run("generate", "example1 --n 150 --noise-variance 0.05 --out " + file("d.csv") + " --model-out " +
+  ASSERT_EQ(run("generate", "example1 --n 150 --noise-std 0.22360679774997896 --out " + file("d.csv") + " --model-out " +
                                 file("i.json")),
             0)
       << output();

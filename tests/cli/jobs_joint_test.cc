@@ -29,12 +29,12 @@ using gen::CliRunner;
 struct JobsJoint : CliRunner {
   /// A 600-row record of the true system planned as 3 windows of 200 with --joint.
   void plan_joint(const std::string& extra = "") {
-    ASSERT_EQ(run("generate", "example1 --n 600 --noise-variance 0.01 --out " + file("d.csv") + " --truth-out " +
+    ASSERT_EQ(run("generate", "example1 --n 600 --noise-std 0.1 --out " + file("d.csv") + " --truth-out " +
                                   file("true.json")),
               0)
         << output();
     ASSERT_EQ(run("jobs", "plan --joint --data " + file("d.csv") + " --model " + file("true.json") +
-                              " --delta 0.05 --window 200 --dir " + file("J") + extra),
+                              " --delta 0.05 --window-length 200 --dir " + file("J") + extra),
               0)
         << output();
   }
@@ -60,7 +60,7 @@ TEST_F(JobsJoint, PlanListsTheJointJobLastWithEveryWindowAsARecord) {
   EXPECT_EQ(plan["joint"]["command"].get<std::string>() + "\n", last);
   // one window cannot be a joint claim of several records
   EXPECT_EQ(run("jobs", "plan --joint --data " + file("d.csv") + " --model " + file("true.json") +
-                            " --delta 0.05 --window 600 --dir " + file("K")),
+                            " --delta 0.05 --window-length 600 --dir " + file("K")),
             2)
       << output();
   EXPECT_NE(output().find("--joint"), std::string::npos) << output();

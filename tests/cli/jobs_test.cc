@@ -26,11 +26,11 @@ using gen::CliRunner;
 struct Jobs : CliRunner {};
 
 TEST_F(Jobs, PlanRunMergeBoundsEachWindowByItsTrueResidualAndCatchesTampering) {
-  ASSERT_EQ(run("generate", "example1 --n 300 --noise-variance 0.01 --out " + file("d.csv") + " --truth-out " +
+  ASSERT_EQ(run("generate", "example1 --n 300 --noise-std 0.1 --out " + file("d.csv") + " --truth-out " +
                                 file("true.json")),
             0)
       << output();
-  ASSERT_EQ(run("jobs", "plan --data " + file("d.csv") + " --model " + file("true.json") + " --delta 0.05 --window 100 --dir " +
+  ASSERT_EQ(run("jobs", "plan --data " + file("d.csv") + " --model " + file("true.json") + " --delta 0.05 --window-length 100 --dir " +
                             file("J")),
             0)
       << output();
@@ -85,7 +85,7 @@ TEST_F(Jobs, AnInvalidatedWindowInvalidatesTheMerge) {
   ASSERT_EQ(run("generate", "example1 --n 120 --out " + file("d.csv") + " --model-out " + file("init.json")), 0)
       << output();
   ASSERT_EQ(run("jobs", "plan --data " + file("d.csv") + " --model " + file("init.json") +
-                            " --delta 0.001 --dmax 0.001 --window 60 --dir " + file("J")),
+                            " --delta 0.001 --dmax 0.001 --window-length 60 --dir " + file("J")),
             0)
       << output();
   ASSERT_EQ(run_program("bash", file("J/jobs.txt")), 1) << output();  // the last job's exit code: invalidated

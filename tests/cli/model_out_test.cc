@@ -18,7 +18,7 @@ using gen::CliRunner;
 struct ModelOut : CliRunner {};
 
 TEST_F(ModelOut, InvalidateOnTheWrittenModelReproducesIdentifysInterval) {
-  ASSERT_EQ(run("generate", "example1 --n 50 --noise-variance 0.01 --out " + file("d.csv") + " --model-out " +
+  ASSERT_EQ(run("generate", "example1 --n 50 --noise-std 0.1 --out " + file("d.csv") + " --model-out " +
                                 file("init.json")),
             0)
       << output();

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 struct MovedCertificate : CliRunner {};
 
 TEST_F(MovedCertificate, ChecksBesideItsDataOrWithDataAndOnlyTheHashDecides) {
-  ASSERT_EQ(run("generate", "example1 --n 40 --noise-variance 0.01 --out " + file("d.csv") + " --truth-out " +
+  ASSERT_EQ(run("generate", "example1 --n 40 --noise-std 0.1 --out " + file("d.csv") + " --truth-out " +
                                 file("true.json")),
             0)
       << output();

@@ -40,8 +40,8 @@ struct FitLinearCommandTest : gen::CliRunner {
 TEST_F(FitLinearCommandTest, WritesAModelThatReproducesTheData) {
   const std::string data = write_data();
   const std::string model = (dir / "m.json").string();
-  ASSERT_EQ(run("--data " + data + " --u uEst --y yEst --order auto --offset --validation-u uVal --validation-y yVal"
-                " --out " + model + " --report " + (dir / "r.json").string()),
+  ASSERT_EQ(run("--data " + data + " --u uEst --y yEst --order auto --offset --validation-columns uVal,yVal"
+                " --model-out " + model + " --report " + (dir / "r.json").string()),
             0)
       << output();
   EXPECT_NE(output().find("order 2"), std::string::npos) << output();

@@ -73,7 +73,7 @@ TEST_F(MeasuredDataCli, LongTanksDemoFigureAsTheReadme) {
   gen::CliRunner& run = *this;
   const std::string linear = run.file("tanks_linear.json"), report = run.file("tanks.report.json");
   ASSERT_EQ(run.run("fit-linear", "--data " + f + " --u uEst --y yEst --rows 0:716 --order auto --offset "
-                                   "--validation-rows 716:1024 --sample-time 4 --unit uEst=V --unit yEst=V --out " + linear),
+                                   "--validation-rows 716:1024 --sample-time 4 --unit uEst=V --unit yEst=V --model-out " + linear),
             0)
       << run.output();
   const int code = run.run("diagnose", "--data " + f + " --model " + linear +

@@ -17,7 +17,7 @@ namespace lpvid::gen {
 struct JobsMerge : CliRunner {
   /// example1, 120 rows, y1 shifted by 0.3 from row 60 on.
   void make_data() {
-    ASSERT_EQ(run("generate", "example1 --n 120 --noise-variance 0.0001 --out " + file("g.csv") + " --truth-out " +
+    ASSERT_EQ(run("generate", "example1 --n 120 --noise-std 0.01 --out " + file("g.csv") + " --truth-out " +
                                   file("true.json")),
               0)
         << output();
@@ -41,7 +41,7 @@ struct JobsMerge : CliRunner {
   void plan_and_run(const std::string& objective) {
     make_data();
     ASSERT_EQ(run("jobs", "plan --data " + file("d.csv") + " --model " + file("true.json") + " " + objective +
-                              " --window 60 --dir " + file("J")),
+                              " --window-length 60 --dir " + file("J")),
               0)
         << output();
     run_program("bash", file("J/jobs.txt"));
