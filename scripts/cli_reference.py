@@ -46,6 +46,7 @@ exit code 2 and names the new option, never doing something else silently.
 | fit-linear | `--validation-data` | `--validation` |
 | fit-linear | `--out` | `--model-out` (`--out` is a data CSV elsewhere) |
 | compare | `--plot FILE` | `--plots DIR` (the figure is DIR/compare.png, as diagnose's `--plots DIR`) |
+| tradeoff | `--plot FILE` | `--plots DIR` (the figure is DIR/tradeoff.png); `--no-plot` is gone: no figure unless `--plots` |
 | generate | `--noise-variance V` | `--noise-std S` (S = sqrt(V)) |
 
 Refused because the command would ignore them: `certify --solver/--verbose/--write-sdpa`

@@ -1,7 +1,7 @@
 """The CLI's figures in memory, and drawn again with matplotlib.
 
 Every plot the command line writes (``lpvid diagnose --plots DIR``,
-``lpvid tradeoff --plot FILE``, ...) comes with a figure description beside
+``lpvid tradeoff --plots DIR``, ...) comes with a figure description beside
 its PNG: ``<stem>.plot.json`` (docs/plots.md, "The figure description"),
 written from the same specification gnuplot draws. It holds every number
 drawn and the layout: title, panels, axis labels with units, which series is

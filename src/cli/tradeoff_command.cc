@@ -13,6 +13,7 @@
 #include "cli/certificate_names.h"
 #include "cli/commands.h"
 #include "cli/inputs.h"
+#include "cli/refused_alias.h"
 #include "cli/report.h"
 #include "core/decimal_rounding.h"
 #include "core/file_io.h"
@@ -213,6 +214,8 @@ Runner add_tradeoff_command(CLI::App& app) {
   cmd->add_option("--basis", a->basis, "correction basis, e.g. 1,rho1,rho1*rho2 (replaces the model's)")->delimiter(',');
   cmd->add_option("--csv", a->csv_path, "where to write the curve (no CSV unless named)");
   cmd->add_option("--plots", a->plots_dir, "folder for the figure: DIR/tradeoff.png (.svg, .plot.json, .csv); no figure unless named");
+  add_renamed_option(*cmd, "--plot", "--plots", "a folder, as in compare and diagnose");
+  add_refused_option(*cmd, "--no-plot", "is gone: tradeoff draws no figure unless --plots DIR is given");
   return [cmd, a] { return cmd->parsed() ? run_tradeoff(*a) : -1; };
 }
 

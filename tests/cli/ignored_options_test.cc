@@ -33,10 +33,6 @@ TEST_F(IgnoredOptions, DiagnoseRefusesOptionsWithoutTheirPartner) {
   EXPECT_NE(output().find("--validation-rows"), std::string::npos) << output();
 }
 
-TEST_F(IgnoredOptions, TradeoffRefusesPlotWithNoPlot) {
-  EXPECT_EQ(run("tradeoff", "--data x.csv --model m.json --plot p.png --no-plot"), 2) << output();
-  EXPECT_NE(output().find("--no-plot"), std::string::npos) << output();
-}
 
 TEST_F(IgnoredOptions, FitLinearAcceptsTheAliasesOfTheOtherCommands) {
   ASSERT_EQ(run("generate", "example1 --n 40 --out " + file("d.csv")), 0) << output();

@@ -33,6 +33,8 @@ TEST_F(RenamedOptions, EachOldNameNamesTheNewOne) {
   refused("fit-linear", fit + "--validation-u uVal", {"--validation-u was renamed to --validation-columns"});
   refused("fit-linear", fit + "--validation-y yVal", {"--validation-y was renamed to --validation-columns"});
   refused("compare", "--data d.csv --model m.json --plot p.png", {"lpvid compare: --plot was renamed to --plots DIR"});
+  refused("tradeoff", "--data d.csv --model m.json --plot p.png", {"lpvid tradeoff: --plot was renamed to --plots"});
+  refused("tradeoff", "--data d.csv --model m.json --no-plot", {"lpvid tradeoff: --no-plot is gone"});
   refused("generate", "example1 --out " + file("g.csv") + " --noise-variance 0.1",
           {"lpvid generate: --noise-variance was renamed to --noise-std"});
   EXPECT_FALSE(std::filesystem::exists(file("m.json")));
@@ -76,6 +78,8 @@ TEST_F(RenamedOptions, DidYouMean) {
   refused("jobs", "plan --data d.csv --model m.json --dir J --window-lenght 5", {"did you mean --window-length?"});
   refused("fit-linear", "--data d.csv --modle-out m.json", {"did you mean --model-out?"});
   refused("invalidate", "--data d.csv --model m.json --certifcate c.json", {"did you mean --certificate?"});
+  refused("tradeoff", "--data d.csv --model m.json --plot p.png", {"lpvid tradeoff: --plot was renamed to --plots"});
+  refused("tradeoff", "--data d.csv --model m.json --no-plot", {"lpvid tradeoff: --no-plot is gone"});
   refused("generate", "example1 --out g.csv --sed 3", {"did you mean --seed?"});
   EXPECT_EQ(run_program(verify_exe, "certificate c.json --dta d.csv"), 2) << output();
   EXPECT_NE(output().find("lpvid-verify certificate: unknown option --dta; did you mean --data?"), std::string::npos)
