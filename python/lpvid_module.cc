@@ -72,7 +72,7 @@ PYBIND11_MODULE(_lpvid, m) {
       "run_lpvid",
       [](const std::vector<std::string>& args) { return run_exclusively([&] { return lpvid::cli::run_lpvid(args); }); },
       py::arg("args"),
-      "Runs `lpvid args...` in this process and returns its exit code (README \"Exit codes\"); messages go to the "
+      "Runs `lpvid args...` in this process and returns its exit code (docs/exit_codes.md); messages go to the "
       "process's stdout and stderr.");
   m.def(
       "run_lpvid_verify",

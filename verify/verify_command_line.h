@@ -10,7 +10,7 @@
 namespace lpvid {
 
 /// Runs `program args...` as the `lpvid-verify` executable would and
-/// returns its exit code (README "Exit codes"). `args` excludes the program
+/// returns its exit code (docs/exit_codes.md). `args` excludes the program
 /// name; `program` is the name shown in usage and help text. Every call
 /// starts from the default input limits. Not reentrant: the limits are per
 /// process. A check stopped from another thread (core/stop_request.h) ends

@@ -1,4 +1,4 @@
-"""Exit codes (README "Exit codes, input limits, outputs") and the error
+"""Exit codes (docs/exit_codes.md) and the error
 raised for every code that is not an answer."""
 
 EXIT_CODES = {

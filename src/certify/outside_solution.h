@@ -1,6 +1,6 @@
 #pragma once
 /// Theorem 2.1 for a fixed model, solved by an outside SDP solver.
-/// The round trip, from the README:
+/// The round trip (docs/certificates.md, "Solving Theorem 2.1 with an outside SDP solver"):
 ///
 ///     lpvid invalidate … --write-sdpa P.dat-s      theorem21_program, written with its sidecar
 ///                                                  (solvers/sdpa_sidecar.h): P.dat-s and P.dat-s.json

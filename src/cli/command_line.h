@@ -2,7 +2,7 @@
 /// The whole `lpvid` command line as a function, so that it runs in another
 /// process's code too (the Python module runs it in-process): parse the
 /// options, run the one subcommand given, map an exception to its exit code
-/// (README "Exit codes") and remove the outputs of a run that failed. A run
+/// (docs/exit_codes.md) and remove the outputs of a run that failed. A run
 /// stopped from another thread (core/stop_request.h) ends with exit 130 and
 /// its outputs removed, like Ctrl-C of the program.
 

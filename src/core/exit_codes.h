@@ -1,5 +1,5 @@
 #pragma once
-/// The exit codes of both programs, in one table (README "Exit codes").
+/// The exit codes of both programs, in one table (docs/exit_codes.md).
 /// `lpvid` reports the outcome of a command; `lpvid-verify` reports whether
 /// the claim it was given holds: 0 the certificate's claim holds / the
 /// matrix is PD or PSD, 1 it does not hold / NOT_PSD (a false claim is never

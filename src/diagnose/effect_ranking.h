@@ -147,7 +147,7 @@ struct RankingResult {
 /// starts): on the cascaded tanks record the lowest estimation RMS (0.137)
 /// comes with a held-out RMS of 6.87 and a test RMS of 0.332 V; the chosen
 /// start has 0.193, 0.365 and 0.294 V (measured 2026-11-25; these fits depend on
-/// the last bits of their starts, so another build gives other figures: README). On the generated two-tank analogue
+/// the last bits of their starts, so another build gives other figures: docs/benchmarks.md). On the generated two-tank analogue
 /// (n = 1000) the lowest held-out RMS alone (0.426) took a start whose
 /// whole-record fit has estimation RMS 0.86 (test 0.82, the before-model's
 /// 0.75); the score takes estimation 0.135, held-out 0.523, test 0.202.

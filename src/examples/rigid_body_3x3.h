@@ -73,7 +73,7 @@ struct RigidBodyOptions {
   /// Output noise variance (rad²; σ ≈ 0.0032 rad ≈ 0.18°). The paper's 0.5
   /// is on its helicopter's scale; here, with h = 0.05 s (J_r enters as
   /// h²·J_r), σ² = 1.5e-4 (0.5 deg²) leaves the part-1 ARX coefficients with
-  /// errors of ~0.6 (bench README), 1e-5 with ~0.08.
+  /// errors of ~0.6 (bench/README.md), 1e-5 with ~0.08.
   double noise_variance = 1e-5;
   uint64_t seed = 1;
 };

@@ -1,6 +1,6 @@
 #pragma once
 /// The oracle's verdict on one outside answer (the judging rules of
-/// `lpvid oracle`, README "lpvid as the oracle"). lpvid certifies the task
+/// `lpvid oracle`, docs/oracle.md). lpvid certifies the task
 /// itself — an interval [L, U] of the optimum (U from a primal certificate, L
 /// from a dual one), or "consistent"/"invalidated" at fixed bounds — and
 /// checks a witness, when the answer has one, exactly at the claimed values.

@@ -1,4 +1,4 @@
-// The README's round trip with the `csdp` program, through the real binaries:
+// The round trip of docs/certificates.md with the `csdp` program, through the real binaries:
 //   lpvid invalidate … --write-sdpa P.dat-s;  csdp P.dat-s P.sol;
 //   lpvid certify … --program P.dat-s --solution P.sol;  lpvid-verify certificate C.
 #include <gtest/gtest.h>

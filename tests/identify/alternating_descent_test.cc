@@ -169,7 +169,7 @@ RC_GTEST_PROP(AlternatingDescent, TheFinalPairCertifiesBelowTheFirstIterate, ())
   RC_ASSERT(certified <= res.iterates.front().objective * (1 + 1e-4) + 1e-7 * mean_square_y(c));
 }
 
-// The Example 1 noise-free fixture, basis {1, ρ1, ρ2} (README, "--method
+// The Example 1 noise-free fixture, basis {1, ρ1, ρ2} (docs/benchmarks.md, "--method
 // alternating"). W = 0.01 makes z about 1 % of y, so Δ is dear: at λ = 0.5
 // the least-squares start is stationary (iterate 1 is solved at a different
 // p, since Δ_0 ≠ 0 moves the least-squares p, but gains nothing), and the

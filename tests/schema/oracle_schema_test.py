@@ -4,7 +4,7 @@ files lpvid writes and reads.
 
 Writes random cases with `lpvid generate random` for every task kind (SISO and
 MIMO, leading zeros, delays) and validates each task.json; answers every task
-with examples/oracle/my_impl.py (the README's ten-line outside implementation)
+with examples/oracle/my_impl.py (docs/oracle.md's ten-line outside implementation)
 and validates the answers; then makes broken copies (a required key removed,
 an unknown key, another format version, a negative bound, a witness with
 both forms) and checks that the schema refuses each AND that `lpvid oracle

@@ -1,7 +1,7 @@
 #pragma once
 /// Limits on the work of one exact check, so that no certificate or matrix
 /// keeps `lpvid-verify` busy for longer than the data it names justify
-/// (README "Exit codes, input limits, outputs"). Counted in operations, never
+/// (docs/exit_codes.md). Counted in operations, never
 /// in seconds: the same input gives the same answer on any machine.
 ///
 ///  - max_dual_order: the order L·ny of the matrix U that a compact dual
