@@ -150,7 +150,7 @@ DualOutcome certify_dual_dense(const LpvModel<Rational>& model, const Experiment
   const Rational sigma = chosen_sigma(trU, trV, g_norms(gs.g_d, r), N, claim, fixed, Y2_in(0, 0) / scale);
   if (!(sigma > 0)) return done("no positive sigma");
 
-  // 6. The bound, exactly; the certificate; the check from the file.
+  // 6. The bound, exactly; the certificate; the check after its JSON round trip.
   const Rational bound = dual_bound(dual_terms(*Y1m, gs.g, sigma, r, L), claim, fixed.delta2, fixed.dmax2, fixed.lambda);
   if (claim == DualClaim::kInvalidated && !(bound > 0))
     return done("after rounding and the PSD margin (" + double_to_text(nearest_double(eps_q)) +

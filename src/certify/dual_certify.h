@@ -15,8 +15,9 @@
 ///     max(0, −λ_min) plus the rigorous filter's shift until the filter of
 ///     verify/psd/psd_filter.h proves Y1 ≻ 0;
 ///  5. choose σ (Y2 = (1/σ)[σ; g][σ; g]ᵀ) to maximise the bound;
-///  6. compute the bound exactly; write the certificate and check it again
-///     from the file with the verifier.
+///  6. compute the bound exactly; build the certificate and check it again
+///     with the verifier after a round trip through its JSON text (in
+///     memory; no file is written).
 
 #include <optional>
 #include <string>

@@ -21,6 +21,24 @@ Mat<double> forward_difference_jacobian(const Residual& r, const Vec<double>& p,
   return J;
 }
 
+namespace {
+
+/// The damped Gauss-Newton step with Marquardt's scaling: damp each direction
+/// by its own curvature; the floor keeps a parameter with a zero column (no
+/// influence) well posed. Solved in the scaled variables z = S p,
+/// S = diag(JᵀJ)^½, so that columns of very different size (a term x₁³ next
+/// to x₁) do not ruin the solve: (S⁻¹JᵀJS⁻¹ + λI) z = −S⁻¹g, step = S⁻¹z (the
+/// same step in exact arithmetic).
+Vec<double> lm_scaled_step(const Mat<double>& JtJ, const Vec<double>& g, double lambda) {
+  const double floor = 1e-12 * std::max(1.0, JtJ.diagonal().maxCoeff());
+  const Vec<double> scale = JtJ.diagonal().cwiseMax(floor).cwiseSqrt();
+  Mat<double> H = scale.cwiseInverse().asDiagonal() * JtJ * scale.cwiseInverse().asDiagonal();
+  H.diagonal().array() += lambda;
+  return scale.cwiseInverse().cwiseProduct(H.ldlt().solve(-g.cwiseQuotient(scale)));
+}
+
+}  // namespace
+
 LmResult levenberg_marquardt(const Residual& r, const Vec<double>& p0, const LmOptions& options,
                              const Admissible& admissible) {
   auto finite = [](const Vec<double>& v) { return v.allFinite(); };
@@ -42,16 +60,7 @@ LmResult levenberg_marquardt(const Residual& r, const Vec<double>& p0, const LmO
   while (out.iterations < options.max_iterations) {
     ++out.iterations;
     check_deadline("a model was fitted");  // the user's --timeout, between steps
-    // Marquardt's scaling: damp each direction by its own curvature; the
-    // floor keeps a parameter with a zero column (no influence) well posed.
-    // Solved in the scaled variables z = S p, S = diag(JᵀJ)^½, so that columns
-    // of very different size (a term x₁³ next to x₁) do not ruin the solve:
-    // (S⁻¹JᵀJS⁻¹ + λI) z = −S⁻¹g, step = S⁻¹z (the same step in exact arithmetic).
-    const double floor = 1e-12 * std::max(1.0, JtJ.diagonal().maxCoeff());
-    const Vec<double> scale = JtJ.diagonal().cwiseMax(floor).cwiseSqrt();
-    Mat<double> H = scale.cwiseInverse().asDiagonal() * JtJ * scale.cwiseInverse().asDiagonal();
-    H.diagonal().array() += lambda;
-    const Vec<double> step = scale.cwiseInverse().cwiseProduct(H.ldlt().solve(-g.cwiseQuotient(scale)));
+    const Vec<double> step = lm_scaled_step(JtJ, g, lambda);
     const Vec<double> trial = out.p + step;
     bool ok = step.allFinite() && (!admissible || admissible(trial));
     Vec<double> trial_res;

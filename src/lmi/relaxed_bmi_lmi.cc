@@ -148,10 +148,6 @@ Mat<double> AffineSignals::r_at(const Vec<double>& q) const {
   return r;
 }
 
-LmiProgram relaxed_program(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObjective& objective) {
-  return build(sig, q_bar, objective).program;
-}
-
 RelaxedSolution solve_relaxed(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObjective& objective,
                               SdpSolver& solver, const SolverOptions& options) {
   Layout f = build(sig, q_bar, objective);

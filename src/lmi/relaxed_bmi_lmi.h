@@ -58,7 +58,4 @@ struct RelaxedSolution {
 RelaxedSolution solve_relaxed(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObjective& objective,
                               SdpSolver& solver, const SolverOptions& options);
 
-/// The program alone (for --write-sdpa).
-LmiProgram relaxed_program(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObjective& objective);
-
 }  // namespace lpvid

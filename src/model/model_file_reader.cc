@@ -228,6 +228,26 @@ class ModelReader {
 
   template <typename T>
   LpvModel<T> model(const JsonNode& root, const std::string& path) const {
+    LpvModel<T> m = dimensions<T>(root, path);
+    read_scheduling(root, path, m);
+    read_columns(root, path, m);
+    read_signal_info(root, path, m);
+    read_initial(root, path, m);
+    read_correction(root, path, m);
+    read_uncertainty(root, path, m);
+    read_offset(root, path, m);
+    read_state_offset(root, path, m);
+    if (const JsonNode* x = root.find("x0"))
+      m.x0 = vector<T>(*x, member_path(path, "x0"), m.nx);
+    else
+      m.x0 = Vec<T>::Zero(m.nx);
+    read_statics(root, path, m);
+    return m;
+  }
+
+  /// The format tag, the known keys and the dimensions nx, nu, ny.
+  template <typename T>
+  LpvModel<T> dimensions(const JsonNode& root, const std::string& path) const {
     expect(root, Kind::kObject, path.empty() ? std::string("model") : path);
     const std::string format = string_at(required(root, path, "format"), member_path(path, "format"));
     if (format != kModelFormat)
@@ -242,9 +262,12 @@ class ModelReader {
     m.nx = integer_at(required(root, path, "states"), member_path(path, "states"), 0, kMaxModelDimension);
     m.nu = integer_at(required(root, path, "inputs"), member_path(path, "inputs"), 1, kMaxModelDimension);
     m.ny = integer_at(required(root, path, "outputs"), member_path(path, "outputs"), 1, kMaxModelDimension);
-    const Eigen::Index nx = m.nx, nu = m.nu, ny = m.ny;
+    return m;
+  }
 
-    // scheduling
+  /// The scheduling names: distinct identifiers.
+  template <typename T>
+  void read_scheduling(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
     if (const JsonNode* s = root.find("scheduling")) {
       const std::string sp = member_path(path, "scheduling");
       m.scheduling = string_list(*s, sp);
@@ -260,45 +283,50 @@ class ModelReader {
           if (m.scheduling[j] == name) fail(s->items[i], index_path(sp, i), "scheduling name \"" + name + "\" is listed twice");
       }
     }
-    const std::vector<std::string>& names = m.scheduling;
+  }
 
-    // columns
-    {
-      const std::string cp = member_path(path, "columns");
-      const JsonNode& c = required(root, path, "columns");
-      expect(c, Kind::kObject, cp);
-      check_keys(c, cp, {"u", "y", "rho"});
-      auto column_list = [&](const char* key, size_t expected, const char* what) {
-        const std::string p = member_path(cp, key);
-        const JsonNode& n = required(c, cp, key);
-        std::vector<std::string> v = string_list(n, p);
-        if (v.size() != expected)
-          fail(n, p, "expected " + std::to_string(expected) + " column names (" + what + "), got " +
-                         std::to_string(v.size()));
-        for (size_t i = 0; i < v.size(); ++i)
-          if (v[i].empty()) fail(n.items[i], index_path(p, i), "empty column name");
-        return v;
-      };
-      m.columns.u = column_list("u", static_cast<size_t>(m.nu), "inputs");
-      m.columns.y = column_list("y", static_cast<size_t>(m.ny), "outputs");
-      if (c.find("rho"))
-        m.columns.rho = column_list("rho", names.size(), "scheduling variables");
-      else
-        m.columns.rho = names;
-      // state-scheduling columns (data/column_map.h): the text parses and names a state 1..nx
-      for (size_t i = 0; i < m.columns.rho.size(); ++i) {
-        const std::string rp = index_path(member_path(cp, "rho"), i);
-        const JsonNode* rn = c.find("rho");
-        const JsonNode& at = rn && rn->is_array() && i < rn->items.size() ? rn->items[i] : c;
-        try {
-          state_functions<T>({m.columns.rho[i]}, m.nx);
-        } catch (const std::invalid_argument& e) {
-          fail(at, rp, e.what());
-        }
+  /// The data columns of inputs, outputs and scheduling variables; state-scheduling
+  /// columns (data/column_map.h) must parse and name a state 1..nx.
+  template <typename T>
+  void read_columns(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
+    const std::vector<std::string>& names = m.scheduling;
+    const std::string cp = member_path(path, "columns");
+    const JsonNode& c = required(root, path, "columns");
+    expect(c, Kind::kObject, cp);
+    check_keys(c, cp, {"u", "y", "rho"});
+    auto column_list = [&](const char* key, size_t expected, const char* what) {
+      const std::string p = member_path(cp, key);
+      const JsonNode& n = required(c, cp, key);
+      std::vector<std::string> v = string_list(n, p);
+      if (v.size() != expected)
+        fail(n, p, "expected " + std::to_string(expected) + " column names (" + what + "), got " +
+                       std::to_string(v.size()));
+      for (size_t i = 0; i < v.size(); ++i)
+        if (v[i].empty()) fail(n.items[i], index_path(p, i), "empty column name");
+      return v;
+    };
+    m.columns.u = column_list("u", static_cast<size_t>(m.nu), "inputs");
+    m.columns.y = column_list("y", static_cast<size_t>(m.ny), "outputs");
+    if (c.find("rho"))
+      m.columns.rho = column_list("rho", names.size(), "scheduling variables");
+    else
+      m.columns.rho = names;
+    // state-scheduling columns (data/column_map.h): the text parses and names a state 1..nx
+    for (size_t i = 0; i < m.columns.rho.size(); ++i) {
+      const std::string rp = index_path(member_path(cp, "rho"), i);
+      const JsonNode* rn = c.find("rho");
+      const JsonNode& at = rn && rn->is_array() && i < rn->items.size() ? rn->items[i] : c;
+      try {
+        state_functions<T>({m.columns.rho[i]}, m.nx);
+      } catch (const std::invalid_argument& e) {
+        fail(at, rp, e.what());
       }
     }
+  }
 
-    // sample time and units (data/signal_info.h): descriptive only
+  /// Sample time and units (data/signal_info.h): descriptive only.
+  template <typename T>
+  void read_signal_info(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
     if (const JsonNode* t = root.find("sample_time")) {
       const std::string tp = member_path(path, "sample_time");
       const double ts = nearest_double(number<Rational>(*t, tp));
@@ -318,20 +346,28 @@ class ModelReader {
         m.signal_info.units.emplace_back(name, string_at(node, np));
       }
     }
+  }
 
-    // initial model S_I
-    {
-      const std::string ip = member_path(path, "initial");
-      const JsonNode& in = required(root, path, "initial");
-      expect(in, Kind::kObject, ip);
-      check_keys(in, ip, {"A", "B", "C", "D"});
-      m.A = param_matrix<T>(in.find("A"), member_path(ip, "A"), nx, nx, names);
-      m.B = param_matrix<T>(in.find("B"), member_path(ip, "B"), nx, nu, names);
-      m.C = param_matrix<T>(in.find("C"), member_path(ip, "C"), ny, nx, names);
-      m.D = param_matrix<T>(in.find("D"), member_path(ip, "D"), ny, nu, names);
-    }
+  /// The initial model S_I.
+  template <typename T>
+  void read_initial(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
+    const std::vector<std::string>& names = m.scheduling;
+    const Eigen::Index nx = m.nx, nu = m.nu, ny = m.ny;
+    const std::string ip = member_path(path, "initial");
+    const JsonNode& in = required(root, path, "initial");
+    expect(in, Kind::kObject, ip);
+    check_keys(in, ip, {"A", "B", "C", "D"});
+    m.A = param_matrix<T>(in.find("A"), member_path(ip, "A"), nx, nx, names);
+    m.B = param_matrix<T>(in.find("B"), member_path(ip, "B"), nx, nu, names);
+    m.C = param_matrix<T>(in.find("C"), member_path(ip, "C"), ny, nx, names);
+    m.D = param_matrix<T>(in.find("D"), member_path(ip, "D"), ny, nu, names);
+  }
 
-    // correction S_C
+  /// The correction S_C.
+  template <typename T>
+  void read_correction(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
+    const std::vector<std::string>& names = m.scheduling;
+    const Eigen::Index nx = m.nx, nu = m.nu;
     if (const JsonNode* c = root.find("correction")) {
       const std::string cp = member_path(path, "correction");
       expect(*c, Kind::kObject, cp);
@@ -341,8 +377,13 @@ class ModelReader {
       m.correction.A = correction_matrices<T>(c->find("A"), member_path(cp, "A"), m.correction.basis, nx, nx, names, bp);
       m.correction.B = correction_matrices<T>(c->find("B"), member_path(cp, "B"), m.correction.basis, nx, nu, names, bp);
     }
+  }
 
-    // uncertainty
+  /// The uncertainty's structure and weight (or C1, D1).
+  template <typename T>
+  void read_uncertainty(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
+    const std::vector<std::string>& names = m.scheduling;
+    const Eigen::Index nx = m.nx, nu = m.nu;
     if (const JsonNode* u = root.find("uncertainty")) {
       const std::string up = member_path(path, "uncertainty");
       expect(*u, Kind::kObject, up);
@@ -382,8 +423,13 @@ class ModelReader {
              "expected \"multiplicative\", \"additive\" or \"general\", got \"" + s + "\"");
       }
     }
+  }
 
-    // offset Φ(ρ)
+  /// The output offset Φ(ρ).
+  template <typename T>
+  void read_offset(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
+    const std::vector<std::string>& names = m.scheduling;
+    const Eigen::Index ny = m.ny;
     if (const JsonNode* o = root.find("offset")) {
       const std::string op = member_path(path, "offset");
       expect(*o, Kind::kObject, op);
@@ -399,8 +445,13 @@ class ModelReader {
           m.offset.values.push_back(vector<T>(v->items[i], index_path(vp, i), ny));
       }
     }
+  }
 
-    // state offset E(ρ): values required, one nx-vector per basis function
+  /// The state offset E(ρ): values required, one nx-vector per basis function.
+  template <typename T>
+  void read_state_offset(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
+    const std::vector<std::string>& names = m.scheduling;
+    const Eigen::Index nx = m.nx;
     if (const JsonNode* o = root.find("state_offset")) {
       const std::string op = member_path(path, "state_offset");
       expect(*o, Kind::kObject, op);
@@ -415,14 +466,11 @@ class ModelReader {
       for (size_t i = 0; i < v.items.size(); ++i)
         m.state_offset.values.push_back(vector<T>(v.items[i], index_path(vp, i), nx));
     }
+  }
 
-    // x0
-    if (const JsonNode* x = root.find("x0"))
-      m.x0 = vector<T>(*x, member_path(path, "x0"), nx);
-    else
-      m.x0 = Vec<T>::Zero(nx);
-
-    // static blocks (model/static_blocks.h): input delay, input and output maps
+  /// Static blocks (model/static_blocks.h): input delay, input and output maps.
+  template <typename T>
+  void read_statics(const JsonNode& root, const std::string& path, LpvModel<T>& m) const {
     if (const JsonNode* st = root.find("static")) {
       const std::string sp = member_path(path, "static");
       expect(*st, Kind::kObject, sp);
@@ -432,7 +480,6 @@ class ModelReader {
       if (const JsonNode* in = st->find("input")) m.statics.input = static_map<T>(*in, member_path(sp, "input"));
       if (const JsonNode* out = st->find("output")) m.statics.output = static_map<T>(*out, member_path(sp, "output"));
     }
-    return m;
   }
 
   /// {"kind": ..., "lower"/"upper" | "coefficients"} (model/static_blocks.h).

@@ -94,6 +94,131 @@ ojson fixed_correction_json(const std::vector<Mat<T>>& mats, const std::vector<M
   return out;
 }
 
+ojson model_basis_json(const std::vector<Monomial>& basis, const std::vector<std::string>& names, const std::string& where) {
+  ojson out = ojson::array();
+  for (size_t i = 0; i < basis.size(); ++i)
+    out.push_back(basis_text(basis[i], names, where + ".basis[" + std::to_string(i) + "]"));
+  return out;
+}
+
+template <typename T>
+ojson model_columns_json(const LpvModel<T>& m) {
+  if (m.columns.u.size() != static_cast<size_t>(m.nu) || m.columns.y.size() != static_cast<size_t>(m.ny) ||
+      m.columns.rho.size() != m.scheduling.size())
+    bad_model("columns: need " + std::to_string(m.nu) + " u, " + std::to_string(m.ny) + " y and " +
+              std::to_string(m.scheduling.size()) + " rho names");
+  try {
+    state_functions<T>(m.columns.rho, m.nx);  // state columns parse and name a state (data/column_map.h)
+  } catch (const std::invalid_argument& e) {
+    bad_model(std::string("columns.rho: ") + e.what());
+  }
+  ojson columns = ojson::object();
+  columns["u"] = m.columns.u;
+  columns["y"] = m.columns.y;
+  columns["rho"] = m.columns.rho;
+  return columns;
+}
+
+template <typename T>
+ojson model_correction_json(const LpvModel<T>& m) {
+  const Correction<T>& c = m.correction;
+  ojson corr = ojson::object();
+  corr["basis"] = model_basis_json(c.basis, m.scheduling, "correction");
+  ojson a = fixed_correction_json(c.A, c.basis, m.nx, m.nx, m.scheduling, "correction.A");
+  ojson b = fixed_correction_json(c.B, c.basis, m.nx, m.nu, m.scheduling, "correction.B");
+  if (!a.empty()) corr["A"] = std::move(a);
+  if (!b.empty()) corr["B"] = std::move(b);
+  return corr;
+}
+
+template <typename T>
+ojson model_uncertainty_json(const LpvModel<T>& m) {
+  const Uncertainty<T>& u = m.uncertainty;
+  ojson unc = ojson::object();
+  unc["structure"] = to_string(u.structure);
+  if (u.structure == UncertaintyStructure::kGeneral) {
+    if (u.weight != T(1)) bad_model("uncertainty: weight must be 1 with structure general (scale C1, D1 instead)");
+    Eigen::Index nz = std::max(u.C1.rows, u.D1.rows);
+    for (const auto& t : u.C1.terms) nz = std::max(nz, t.value.rows());
+    for (const auto& t : u.D1.terms) nz = std::max(nz, t.value.rows());
+    if (nz < 1) bad_model("uncertainty: structure general needs nz >= 1");
+    unc["nz"] = nz;
+    unc["C1"] = terms_json(u.C1, nz, m.nx, m.scheduling, "uncertainty.C1");
+    unc["D1"] = terms_json(u.D1, nz, m.nu, m.scheduling, "uncertainty.D1");
+  } else {
+    if (!(u.weight > T(0))) bad_model("uncertainty: weight must be positive");
+    unc["weight"] = number_to_json(u.weight);
+  }
+  return unc;
+}
+
+/// An offset's values: one vector of length `length` per basis function.
+template <typename T>
+ojson model_offset_values_json(const std::vector<Vec<T>>& values, Eigen::Index length, const std::string& where) {
+  ojson out = ojson::array();
+  for (const auto& v : values) {
+    if (v.size() != length)
+      bad_model(where + ".values: vector of length " + std::to_string(v.size()) + ", expected " + std::to_string(length));
+    out.push_back(vector_json(v));
+  }
+  return out;
+}
+
+template <typename T>
+ojson model_offset_json(const LpvModel<T>& m) {
+  ojson off = ojson::object();
+  off["basis"] = model_basis_json(m.offset.basis, m.scheduling, "offset");
+  if (!m.offset.values.empty()) {
+    if (m.offset.values.size() != m.offset.basis.size()) bad_model("offset: values and basis differ in length");
+    off["values"] = model_offset_values_json(m.offset.values, m.ny, "offset");
+  }
+  return off;
+}
+
+template <typename T>
+ojson model_state_offset_json(const LpvModel<T>& m) {
+  const StateOffset<T>& so = m.state_offset;
+  if (so.values.size() != so.basis.size()) bad_model("state_offset: values and basis differ in length");
+  ojson off = ojson::object();
+  off["basis"] = model_basis_json(so.basis, m.scheduling, "state_offset");
+  off["values"] = model_offset_values_json(so.values, m.nx, "state_offset");
+  return off;
+}
+
+template <typename T>
+ojson model_static_map_json(const StaticMap<T>& g, const std::string& where) {
+  g.check(where);
+  ojson o = ojson::object();
+  o["kind"] = to_string(g.kind);
+  if (g.kind == StaticKind::kSaturation || g.kind == StaticKind::kDeadZone) {
+    o["lower"] = number_to_json(g.lower);
+    o["upper"] = number_to_json(g.upper);
+  }
+  if (g.kind == StaticKind::kPolynomial) {
+    ojson c = ojson::array();
+    for (const T& x : g.coefficients) c.push_back(number_to_json(x));
+    o["coefficients"] = std::move(c);
+  }
+  if (g.kind == StaticKind::kPiecewiseLinear) {
+    ojson x = ojson::array(), v = ojson::array();
+    for (const T& t : g.knots) x.push_back(number_to_json(t));
+    for (const T& t : g.coefficients) v.push_back(number_to_json(t));
+    o["knots"] = std::move(x);
+    o["values"] = std::move(v);
+  }
+  return o;
+}
+
+template <typename T>
+ojson model_statics_json(const LpvModel<T>& m) {
+  if (m.statics.input_delay < 0) bad_model("static.input_delay must be >= 0");
+  ojson st = ojson::object();
+  if (m.statics.input_delay != 0) st["input_delay"] = m.statics.input_delay;
+  if (!m.statics.input.is_identity()) st["input"] = model_static_map_json(m.statics.input, "static.input");
+  if (m.statics.has_output()) st["output"] = model_static_map_json(m.statics.output, "static.output");
+  return st;
+}
+
 template <typename T>
 ojson to_json(const LpvModel<T>& m) {
   if (m.nx < 0 || m.nu < 0 || m.ny < 0) bad_model("negative dimension");
@@ -105,138 +230,30 @@ ojson to_json(const LpvModel<T>& m) {
   j["inputs"] = m.nu;
   j["outputs"] = m.ny;
   j["scheduling"] = names;
-
-  if (m.columns.u.size() != static_cast<size_t>(m.nu) || m.columns.y.size() != static_cast<size_t>(m.ny) ||
-      m.columns.rho.size() != names.size())
-    bad_model("columns: need " + std::to_string(m.nu) + " u, " + std::to_string(m.ny) + " y and " +
-              std::to_string(names.size()) + " rho names");
-  try {
-    state_functions<T>(m.columns.rho, m.nx);  // state columns parse and name a state (data/column_map.h)
-  } catch (const std::invalid_argument& e) {
-    bad_model(std::string("columns.rho: ") + e.what());
-  }
-  ojson columns = ojson::object();
-  columns["u"] = m.columns.u;
-  columns["y"] = m.columns.y;
-  columns["rho"] = m.columns.rho;
-  j["columns"] = std::move(columns);
+  j["columns"] = model_columns_json(m);
   if (m.signal_info.sample_time > 0.0) j["sample_time"] = m.signal_info.sample_time;
   if (!m.signal_info.units.empty()) {
     ojson units = ojson::object();
     for (const auto& [name, unit] : m.signal_info.units) units[name] = unit;
     j["units"] = std::move(units);
   }
-
   ojson initial = ojson::object();
   initial["A"] = terms_json(m.A, nx, nx, names, "initial.A");
   initial["B"] = terms_json(m.B, nx, nu, names, "initial.B");
   initial["C"] = terms_json(m.C, ny, nx, names, "initial.C");
   initial["D"] = terms_json(m.D, ny, nu, names, "initial.D");
   j["initial"] = std::move(initial);
-
   const Correction<T>& c = m.correction;
-  if (!c.basis.empty() || !c.A.empty() || !c.B.empty()) {
-    ojson corr = ojson::object();
-    ojson basis = ojson::array();
-    for (size_t i = 0; i < c.basis.size(); ++i)
-      basis.push_back(basis_text(c.basis[i], names, "correction.basis[" + std::to_string(i) + "]"));
-    corr["basis"] = std::move(basis);
-    ojson a = fixed_correction_json(c.A, c.basis, nx, nx, names, "correction.A");
-    ojson b = fixed_correction_json(c.B, c.basis, nx, nu, names, "correction.B");
-    if (!a.empty()) corr["A"] = std::move(a);
-    if (!b.empty()) corr["B"] = std::move(b);
-    j["correction"] = std::move(corr);
-  }
-
-  const Uncertainty<T>& u = m.uncertainty;
-  ojson unc = ojson::object();
-  unc["structure"] = to_string(u.structure);
-  if (u.structure == UncertaintyStructure::kGeneral) {
-    if (u.weight != T(1)) bad_model("uncertainty: weight must be 1 with structure general (scale C1, D1 instead)");
-    Eigen::Index nz = std::max(u.C1.rows, u.D1.rows);
-    for (const auto& t : u.C1.terms) nz = std::max(nz, t.value.rows());
-    for (const auto& t : u.D1.terms) nz = std::max(nz, t.value.rows());
-    if (nz < 1) bad_model("uncertainty: structure general needs nz >= 1");
-    unc["nz"] = nz;
-    unc["C1"] = terms_json(u.C1, nz, nx, names, "uncertainty.C1");
-    unc["D1"] = terms_json(u.D1, nz, nu, names, "uncertainty.D1");
-  } else {
-    if (!(u.weight > T(0))) bad_model("uncertainty: weight must be positive");
-    unc["weight"] = number_to_json(u.weight);
-  }
-  j["uncertainty"] = std::move(unc);
-
-  if (!m.offset.basis.empty() || !m.offset.values.empty()) {
-    ojson off = ojson::object();
-    ojson basis = ojson::array();
-    for (size_t i = 0; i < m.offset.basis.size(); ++i)
-      basis.push_back(basis_text(m.offset.basis[i], names, "offset.basis[" + std::to_string(i) + "]"));
-    off["basis"] = std::move(basis);
-    if (!m.offset.values.empty()) {
-      if (m.offset.values.size() != m.offset.basis.size()) bad_model("offset: values and basis differ in length");
-      ojson values = ojson::array();
-      for (const auto& v : m.offset.values) {
-        if (v.size() != ny) bad_model("offset.values: vector of length " + std::to_string(v.size()) + ", expected " + std::to_string(ny));
-        values.push_back(vector_json(v));
-      }
-      off["values"] = std::move(values);
-    }
-    j["offset"] = std::move(off);
-  }
-
-  if (!m.state_offset.empty()) {
-    const StateOffset<T>& so = m.state_offset;
-    if (so.values.size() != so.basis.size()) bad_model("state_offset: values and basis differ in length");
-    ojson off = ojson::object();
-    ojson basis = ojson::array();
-    for (size_t i = 0; i < so.basis.size(); ++i)
-      basis.push_back(basis_text(so.basis[i], names, "state_offset.basis[" + std::to_string(i) + "]"));
-    off["basis"] = std::move(basis);
-    ojson values = ojson::array();
-    for (const auto& v : so.values) {
-      if (v.size() != nx) bad_model("state_offset.values: vector of length " + std::to_string(v.size()) + ", expected " + std::to_string(nx));
-      values.push_back(vector_json(v));
-    }
-    off["values"] = std::move(values);
-    j["state_offset"] = std::move(off);
-  }
-
+  if (!c.basis.empty() || !c.A.empty() || !c.B.empty()) j["correction"] = model_correction_json(m);
+  j["uncertainty"] = model_uncertainty_json(m);
+  if (!m.offset.basis.empty() || !m.offset.values.empty()) j["offset"] = model_offset_json(m);
+  if (!m.state_offset.empty()) j["state_offset"] = model_state_offset_json(m);
   if (m.x0.size() != 0 && m.x0.size() != nx)
     bad_model("x0 has length " + std::to_string(m.x0.size()) + ", expected " + std::to_string(nx));
   bool x0_nonzero = false;
   for (Eigen::Index i = 0; i < m.x0.size(); ++i) x0_nonzero = x0_nonzero || m.x0(i) != T(0);
   if (x0_nonzero) j["x0"] = vector_json(m.x0);
-
-  if (!m.statics.empty()) {
-    if (m.statics.input_delay < 0) bad_model("static.input_delay must be >= 0");
-    ojson st = ojson::object();
-    if (m.statics.input_delay != 0) st["input_delay"] = m.statics.input_delay;
-    auto map_json = [](const StaticMap<T>& g, const std::string& where) {
-      g.check(where);
-      ojson o = ojson::object();
-      o["kind"] = to_string(g.kind);
-      if (g.kind == StaticKind::kSaturation || g.kind == StaticKind::kDeadZone) {
-        o["lower"] = number_to_json(g.lower);
-        o["upper"] = number_to_json(g.upper);
-      }
-      if (g.kind == StaticKind::kPolynomial) {
-        ojson c = ojson::array();
-        for (const T& x : g.coefficients) c.push_back(number_to_json(x));
-        o["coefficients"] = std::move(c);
-      }
-      if (g.kind == StaticKind::kPiecewiseLinear) {
-        ojson x = ojson::array(), v = ojson::array();
-        for (const T& t : g.knots) x.push_back(number_to_json(t));
-        for (const T& t : g.coefficients) v.push_back(number_to_json(t));
-        o["knots"] = std::move(x);
-        o["values"] = std::move(v);
-      }
-      return o;
-    };
-    if (!m.statics.input.is_identity()) st["input"] = map_json(m.statics.input, "static.input");
-    if (m.statics.has_output()) st["output"] = map_json(m.statics.output, "static.output");
-    j["static"] = std::move(st);
-  }
+  if (!m.statics.empty()) j["static"] = model_statics_json(m);
   return j;
 }
 

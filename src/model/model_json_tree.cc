@@ -238,18 +238,6 @@ const JsonNode* JsonNode::find(std::string_view key) const {
   return nullptr;
 }
 
-const char* kind_name(JsonNode::Kind kind) {
-  switch (kind) {
-    case JsonNode::Kind::kNull: return "null";
-    case JsonNode::Kind::kBool: return "boolean";
-    case JsonNode::Kind::kNumber: return "number";
-    case JsonNode::Kind::kString: return "string";
-    case JsonNode::Kind::kArray: return "array";
-    case JsonNode::Kind::kObject: return "object";
-  }
-  return "unknown";
-}
-
 JsonNode parse_exact_json(std::string_view text, const std::string& name) {
   const char* progress = text.data();
   ExactTreeBuilder builder(text, &progress);

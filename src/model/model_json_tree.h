@@ -35,9 +35,6 @@ struct JsonNode {
   const JsonNode* find(std::string_view key) const;
 };
 
-/// "object", "array", "string", "number", "boolean", "null".
-const char* kind_name(JsonNode::Kind kind);
-
 /// Largest nesting depth accepted (a model file needs 5).
 constexpr int kMaxJsonDepth = 64;
 

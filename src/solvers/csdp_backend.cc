@@ -152,6 +152,44 @@ T* checked_calloc(std::size_t count) {
   return static_cast<T*>(p);
 }
 
+/// CSDP's constraints A_i = F_i of a reduced program whose objective blocks
+/// `out.C` are built (their categories decide which blocks are sparse).
+void build_constraints(const LmiProgram& p, CsdpProblem& out) {
+  const int nb = static_cast<int>(p.blocks.size());
+  out.constraints = checked_calloc<constraintmatrix>(static_cast<std::size_t>(out.k) + 1);
+  // Blocks are visited from last to first and prepended, so each constraint's
+  // list ends up in block order (CSDP does not require it; it is tidy).
+  for (int b = nb; b >= 1; --b) {
+    const LmiBlock& blk = p.blocks[static_cast<std::size_t>(b - 1)];
+    for (const auto& [var, F] : blk.Fi) {  // A_i = F_i
+      const int num = static_cast<int>(F.entries.size());
+      auto* sb = checked_calloc<sparseblock>(1);
+      out.owned_blocks.push_back(sb);
+      sb->entries = checked_calloc<double>(static_cast<std::size_t>(num) + 1);
+      sb->iindices = checked_calloc<int>(static_cast<std::size_t>(num) + 1);
+      sb->jindices = checked_calloc<int>(static_cast<std::size_t>(num) + 1);
+      for (int e = 0; e < num; ++e) {
+        const SymEntry& en = F.entries[static_cast<std::size_t>(e)];
+        sb->entries[e + 1] = en.value;
+        sb->iindices[e + 1] = en.i + 1;
+        sb->jindices[e + 1] = en.j + 1;
+      }
+      sb->numentries = num;
+      sb->blocknum = b;
+      sb->blocksize = blk.size;
+      sb->constraintnum = var + 1;
+      // Dense or sparse handling in CSDP's Schur complement (op_o): the same
+      // rule as easy_sdp() applies; diagonal blocks are always sparse.
+      const double kk = out.k, nn = num, ss = blk.size;
+      const bool dense = kk * kk * nn * nn > 0.125 * kk * ss * ss * ss && num > 5;
+      sb->issparse = (out.C.blocks[b].blockcategory == DIAG || !dense) ? 1 : 0;
+      sb->next = out.constraints[var + 1].blocks;
+      out.constraints[var + 1].blocks = sb;
+      sb->nextbyblock = nullptr;
+    }
+  }
+}
+
 /// Builds CSDP's C, a and constraints from a reduced program (every F_i
 /// nonempty, every block depends on x). Indices are 1-based; matrix blocks
 /// are Fortran column-major; constraint entries are upper triangle (i ≤ j),
@@ -185,38 +223,7 @@ void build_problem(const LmiProgram& p, CsdpProblem& out) {
   out.a = checked_calloc<double>(static_cast<std::size_t>(out.k) + 1);
   for (int i = 1; i <= out.k; ++i) out.a[i] = p.cost[static_cast<std::size_t>(i - 1)];  // a = c
 
-  out.constraints = checked_calloc<constraintmatrix>(static_cast<std::size_t>(out.k) + 1);
-  // Blocks are visited from last to first and prepended, so each constraint's
-  // list ends up in block order (CSDP does not require it; it is tidy).
-  for (int b = nb; b >= 1; --b) {
-    const LmiBlock& blk = p.blocks[static_cast<std::size_t>(b - 1)];
-    for (const auto& [var, F] : blk.Fi) {  // A_i = F_i
-      const int num = static_cast<int>(F.entries.size());
-      auto* sb = checked_calloc<sparseblock>(1);
-      out.owned_blocks.push_back(sb);
-      sb->entries = checked_calloc<double>(static_cast<std::size_t>(num) + 1);
-      sb->iindices = checked_calloc<int>(static_cast<std::size_t>(num) + 1);
-      sb->jindices = checked_calloc<int>(static_cast<std::size_t>(num) + 1);
-      for (int e = 0; e < num; ++e) {
-        const SymEntry& en = F.entries[static_cast<std::size_t>(e)];
-        sb->entries[e + 1] = en.value;
-        sb->iindices[e + 1] = en.i + 1;
-        sb->jindices[e + 1] = en.j + 1;
-      }
-      sb->numentries = num;
-      sb->blocknum = b;
-      sb->blocksize = blk.size;
-      sb->constraintnum = var + 1;
-      // Dense or sparse handling in CSDP's Schur complement (op_o): the same
-      // rule as easy_sdp() applies; diagonal blocks are always sparse.
-      const double kk = out.k, nn = num, ss = blk.size;
-      const bool dense = kk * kk * nn * nn > 0.125 * kk * ss * ss * ss && num > 5;
-      sb->issparse = (out.C.blocks[b].blockcategory == DIAG || !dense) ? 1 : 0;
-      sb->next = out.constraints[var + 1].blocks;
-      out.constraints[var + 1].blocks = sb;
-      sb->nextbyblock = nullptr;
-    }
-  }
+  build_constraints(p, out);
 }
 
 /// Heap blocks that sdp() needs and easy_sdp() would allocate.

@@ -108,6 +108,87 @@ std::string block_label(const LmiBlock& blk, std::size_t b) {
   return "block " + std::to_string(b) + (blk.name.empty() ? "" : " '" + blk.name + "'");
 }
 
+/// A program after presolve: the blocks that depend on x (constant blocks
+/// decided), the variables that appear in one of them, and the way back.
+struct PresolvedProgram {
+  LmiProgram reduced;
+  std::vector<int> kept_blocks;  // reduced block -> original block
+  std::vector<int> kept_vars;    // reduced var -> original var
+  std::string notes;
+  std::string unbounded_var;  // a variable with a cost that appears in no block
+  std::string infeasible;     // why a constant block makes the program infeasible ("" if none)
+};
+
+/// Steps 2 and 3: the canonical form; constant blocks decided and dropped;
+/// the variables that appear in no kept block removed.
+PresolvedProgram presolve_program(const LmiProgram& program, double feas_tol) {
+  PresolvedProgram p;
+  LmiProgram full = program.compressed();
+  for (std::size_t b = 0; b < full.blocks.size(); ++b) {
+    const LmiBlock& blk = full.blocks[b];
+    if (!blk.Fi.empty()) {
+      p.kept_blocks.push_back(static_cast<int>(b));
+      continue;
+    }
+    const std::string problem = constant_block_problem(blk, feas_tol);
+    if (!problem.empty()) {
+      p.infeasible = "presolve: " + block_label(blk, b) + " does not depend on x and is not PSD: " + problem;
+      return p;
+    }
+    p.notes += "presolve: " + block_label(blk, b) + " does not depend on x and is PSD; dropped. ";
+  }
+  std::vector<int> reduced_of(static_cast<std::size_t>(full.num_vars), -1);  // original var -> reduced var
+  for (int b : p.kept_blocks)
+    for (const auto& [var, F] : full.blocks[static_cast<std::size_t>(b)].Fi) reduced_of[static_cast<std::size_t>(var)] = 0;
+  for (int k = 0; k < full.num_vars; ++k) {
+    if (reduced_of[static_cast<std::size_t>(k)] == 0) {
+      reduced_of[static_cast<std::size_t>(k)] = static_cast<int>(p.kept_vars.size());
+      p.kept_vars.push_back(k);
+    } else if (full.cost[static_cast<std::size_t>(k)] != 0.0 && p.unbounded_var.empty()) {
+      p.unbounded_var = full.var_name(k);
+    }
+  }
+  if (p.kept_vars.size() < static_cast<std::size_t>(full.num_vars))
+    p.notes += "presolve: " + std::to_string(static_cast<std::size_t>(full.num_vars) - p.kept_vars.size()) +
+               " variable(s) appear in no block; set to 0. ";
+  p.reduced.num_vars = static_cast<int>(p.kept_vars.size());
+  for (int k : p.kept_vars) p.reduced.cost.push_back(full.cost[static_cast<std::size_t>(k)]);
+  for (int b : p.kept_blocks) {
+    LmiBlock blk = std::move(full.blocks[static_cast<std::size_t>(b)]);
+    for (auto& [var, F] : blk.Fi) var = reduced_of[static_cast<std::size_t>(var)];  // order preserved
+    p.reduced.blocks.push_back(std::move(blk));
+  }
+  return p;
+}
+
+/// Zero dual blocks of the original program's shapes (when duals are wanted).
+void zero_dual_blocks(const LmiProgram& program, const SolverOptions& options, SolveResult& r) {
+  if (!options.want_dual) return;
+  r.dual_blocks.clear();
+  for (const LmiBlock& blk : program.blocks)
+    r.dual_blocks.push_back(Eigen::MatrixXd::Zero(blk.size, blk.diagonal ? 1 : blk.size));
+}
+
+/// Step 5: the reduced solve `r` back in the original numbering, into `result`.
+void restore_numbering(const LmiProgram& program, const SolverOptions& options, const PresolvedProgram& p,
+                       SolveResult& r, SolveResult& result) {
+  result.status = r.status;
+  result.dual_objective = r.dual_objective;
+  result.iterations = r.iterations;
+  result.message = p.notes + r.message;
+  for (std::size_t k = 0; k < p.kept_vars.size() && k < r.x.size(); ++k)
+    result.x[static_cast<std::size_t>(p.kept_vars[k])] = r.x[k];
+  if (options.want_dual) {
+    zero_dual_blocks(program, options, result);
+    for (std::size_t rb = 0; rb < p.kept_blocks.size() && rb < r.dual_blocks.size(); ++rb)
+      result.dual_blocks[static_cast<std::size_t>(p.kept_blocks[rb])] = std::move(r.dual_blocks[rb]);
+  }
+  if (!p.unbounded_var.empty() && has_solution(result.status)) {
+    result.status = SolveStatus::kDualInfeasible;
+    result.message += "; variable '" + p.unbounded_var + "' has a cost but appears in no block: unbounded below";
+  }
+}
+
 }  // namespace
 
 bool acts_diagonally(const LmiBlock& block) {
@@ -137,98 +218,36 @@ SolveResult solve_with_presolve(const LmiProgram& program, const SolverOptions& 
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   };
-  auto zero_duals = [&](SolveResult& r) {
-    if (!options.want_dual) return;
-    r.dual_blocks.clear();
-    for (const LmiBlock& blk : program.blocks)
-      r.dual_blocks.push_back(Eigen::MatrixXd::Zero(blk.size, blk.diagonal ? 1 : blk.size));
-  };
 
-  // 2. Canonical form; decide and drop the blocks that do not depend on x.
-  LmiProgram full = program.compressed();
-  std::vector<int> kept_blocks;  // reduced block -> original block
-  std::string notes;
-  for (std::size_t b = 0; b < full.blocks.size(); ++b) {
-    const LmiBlock& blk = full.blocks[b];
-    if (!blk.Fi.empty()) {
-      kept_blocks.push_back(static_cast<int>(b));
-      continue;
-    }
-    const std::string problem = constant_block_problem(blk, options.feas_tol);
-    if (!problem.empty()) {
-      result.status = SolveStatus::kPrimalInfeasible;
-      result.message = "presolve: " + block_label(blk, b) + " does not depend on x and is not PSD: " + problem;
-      zero_duals(result);
-      return finish(result);
-    }
-    notes += "presolve: " + block_label(blk, b) + " does not depend on x and is PSD; dropped. ";
+  // 2-3. Canonical form, constant blocks decided, free variables dropped.
+  PresolvedProgram p = presolve_program(program, options.feas_tol);
+  if (!p.infeasible.empty()) {
+    result.status = SolveStatus::kPrimalInfeasible;
+    result.message = p.infeasible;
+    zero_dual_blocks(program, options, result);
+    return finish(result);
   }
-
-  // 3. Variables that appear in no kept block.
-  std::vector<int> reduced_of(static_cast<std::size_t>(full.num_vars), -1);  // original var -> reduced var
-  for (int b : kept_blocks)
-    for (const auto& [var, F] : full.blocks[static_cast<std::size_t>(b)].Fi) reduced_of[static_cast<std::size_t>(var)] = 0;
-  std::vector<int> kept_vars;  // reduced var -> original var
-  std::string unbounded_var;
-  for (int k = 0; k < full.num_vars; ++k) {
-    if (reduced_of[static_cast<std::size_t>(k)] == 0) {
-      reduced_of[static_cast<std::size_t>(k)] = static_cast<int>(kept_vars.size());
-      kept_vars.push_back(k);
-    } else if (full.cost[static_cast<std::size_t>(k)] != 0.0 && unbounded_var.empty()) {
-      unbounded_var = full.var_name(k);
-    }
-  }
-  if (kept_vars.size() < static_cast<std::size_t>(full.num_vars))
-    notes += "presolve: " + std::to_string(static_cast<std::size_t>(full.num_vars) - kept_vars.size()) +
-             " variable(s) appear in no block; set to 0. ";
-
-  if (kept_vars.empty()) {
+  if (p.kept_vars.empty()) {
     // Every block is constant and PSD: every x is feasible.
-    zero_duals(result);
-    if (!unbounded_var.empty()) {
+    zero_dual_blocks(program, options, result);
+    if (!p.unbounded_var.empty()) {
       result.status = SolveStatus::kDualInfeasible;
-      result.message = notes + "variable '" + unbounded_var + "' has a cost but appears in no block: unbounded below";
+      result.message = p.notes + "variable '" + p.unbounded_var + "' has a cost but appears in no block: unbounded below";
     } else {
       result.status = SolveStatus::kOptimal;
-      result.message = notes + "nothing left to solve";
+      result.message = p.notes + "nothing left to solve";
     }
     return finish(result);
   }
-
-  LmiProgram reduced;
-  reduced.num_vars = static_cast<int>(kept_vars.size());
-  for (int k : kept_vars) reduced.cost.push_back(full.cost[static_cast<std::size_t>(k)]);
-  for (int b : kept_blocks) {
-    LmiBlock blk = std::move(full.blocks[static_cast<std::size_t>(b)]);
-    for (auto& [var, F] : blk.Fi) var = reduced_of[static_cast<std::size_t>(var)];  // order preserved
-    reduced.blocks.push_back(std::move(blk));
-  }
-  full.blocks.clear();
 
   // 4. The backend, one solve at a time.
   SolveResult r;
   {
     std::lock_guard<std::mutex> lock(solve_mutex());
     ScopedBlasThreads blas(options.threads);
-    r = backend(reduced, options);
+    r = backend(p.reduced, options);
   }
-
-  // 5. Back to the original numbering.
-  result.status = r.status;
-  result.dual_objective = r.dual_objective;
-  result.iterations = r.iterations;
-  result.message = notes + r.message;
-  for (std::size_t k = 0; k < kept_vars.size() && k < r.x.size(); ++k)
-    result.x[static_cast<std::size_t>(kept_vars[k])] = r.x[k];
-  if (options.want_dual) {
-    zero_duals(result);
-    for (std::size_t rb = 0; rb < kept_blocks.size() && rb < r.dual_blocks.size(); ++rb)
-      result.dual_blocks[static_cast<std::size_t>(kept_blocks[rb])] = std::move(r.dual_blocks[rb]);
-  }
-  if (!unbounded_var.empty() && has_solution(result.status)) {
-    result.status = SolveStatus::kDualInfeasible;
-    result.message += "; variable '" + unbounded_var + "' has a cost but appears in no block: unbounded below";
-  }
+  restore_numbering(program, options, p, r, result);
   return finish(result);
 }
 

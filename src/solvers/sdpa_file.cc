@@ -209,6 +209,27 @@ double dual_value(const LmiProgram& p, const std::vector<Eigen::MatrixXd>& Y) {
   return s;
 }
 
+/// The values of xVec: "{x_1,x_2,…}" after the '=' of `line` and on the
+/// following line(s).
+std::vector<double> sdpa_x_vector(Lines& lines, const std::string& line) {
+  std::string text = line.substr(line.find('=') + 1);
+  while (text.find('}') == std::string::npos) {
+    std::string more;
+    if (!lines.next(more)) lines.fail("end of file inside xVec");
+    text += ' ' + more;
+  }
+  if (text.find('{') == std::string::npos) lines.fail("xVec without '{'");
+  text = text.substr(text.find('{'), text.find('}') - text.find('{'));
+  separators_to_spaces(text);
+  std::vector<double> x;
+  for (std::string_view t : tokens(text)) {
+    double v = 0;
+    if (!parse_double(t, v)) lines.fail("xVec entry '" + std::string(t) + "' is not a finite number");
+    x.push_back(v);
+  }
+  return x;
+}
+
 }  // namespace
 
 // --- write ---------------------------------------------------------------------
@@ -406,21 +427,7 @@ SolveResult parse_sdpa_result(const std::string& text, const std::string& path, 
     } else if (starts_with_key(line, "objValDual")) {
       if (!parse_double(value_after_equals(line), dual)) lines.fail("objValDual is not a finite number");
     } else if (starts_with_key(line, "xVec") && !have_x) {
-      // "{x_1,x_2,…}" on the following line(s).
-      std::string text = line.substr(line.find('=') + 1);
-      while (text.find('}') == std::string::npos) {
-        std::string more;
-        if (!lines.next(more)) lines.fail("end of file inside xVec");
-        text += ' ' + more;
-      }
-      if (text.find('{') == std::string::npos) lines.fail("xVec without '{'");
-      text = text.substr(text.find('{'), text.find('}') - text.find('{'));
-      separators_to_spaces(text);
-      for (std::string_view t : tokens(text)) {
-        double v = 0;
-        if (!parse_double(t, v)) lines.fail("xVec entry '" + std::string(t) + "' is not a finite number");
-        r.x.push_back(v);
-      }
+      r.x = sdpa_x_vector(lines, line);
       have_x = true;
     }
   }
