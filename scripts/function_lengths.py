@@ -3,9 +3,9 @@
 sources in this repository's style: a function's signature starts at column
 0, or at column 2 inside a class; its body is found by counting braces outside
 comments and string and character literals, so a one-line function is one line
-long and a lambda belongs to the function around it). Exits 1 when one is found, 2 when a path does not exist. Run by
-ctest (CertifyPathFunctionLengths) on the certification path, the verifier
-(verify/), src/diagnose and the floors below them (see tests/CMakeLists.txt).
+long and a lambda belongs to the function around it). Exits 1 when one is
+found, 2 when a path does not exist. Run by ctest (FunctionLengths) on all of
+src/ and verify/ (see tests/CMakeLists.txt).
 
     python3 scripts/function_lengths.py [--max 60] FOLDER_OR_FILE...
 """
