@@ -34,8 +34,8 @@ ojson scaling_json(const CertifiedBounds& b) {
           {"z_scale", sc.z_scale_text()},
           {"lambda_scaled", sc.lambda_scaled},
           {"lambda_original_units", sc.lambda_original},
-          {"delta_scaled", b.verified ? ojson(sc.scaled_delta(b.delta)) : ojson(nullptr)},
-          {"dmax_scaled", b.verified ? ojson(sc.scaled_dmax(b.dmax)) : ojson(nullptr)},
+          {"delta_scaled", b.verified() ? ojson(sc.scaled_delta(b.delta)) : ojson(nullptr)},
+          {"dmax_scaled", b.verified() ? ojson(sc.scaled_dmax(b.dmax)) : ojson(nullptr)},
           {"meaning", "the objective lambda*delta'^2 + (1-lambda)*dmax'^2 is minimised on z/z_scale and y/y_scale; "
                       "delta' = delta*z_scale/y_scale, dmax' = dmax/y_scale exactly (docs/bound_scaling.md); delta, "
                       "dmax and the certificate are in the data's units"}};
@@ -53,20 +53,20 @@ ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>&
   ojson list = ojson::array();
   for (const WindowBounds& w : ws) {
     const CertifiedBounds& b = w.bounds;
-    all = all && b.verified;
+    all = all && b.verified();
     delta = std::max(delta, b.delta);
     dmax = std::max(dmax, b.dmax);
     ojson e = {{"estimation_rows", {w.begin, w.end}}, {"file_rows", {w.file_begin, w.file_end}},
-               {"delta", b.verified ? ojson(b.delta) : ojson(nullptr)}, {"dmax", b.verified ? ojson(b.dmax) : ojson(nullptr)},
-               {"verified", b.verified}, {"certificate", w.certificate.empty() ? ojson(nullptr) : ojson(w.certificate)}};
-    if (!b.verified) e["reason"] = b.reason;
+               {"delta", b.verified() ? ojson(b.delta) : ojson(nullptr)}, {"dmax", b.verified() ? ojson(b.dmax) : ojson(nullptr)},
+               {"verified", b.verified()}, {"certificate", w.certificate.empty() ? ojson(nullptr) : ojson(w.certificate)}};
+    if (!b.verified()) e["reason"] = b.reason;
     if (!b.fallback.empty()) e["fallback"] = b.fallback;
     e["rms_output"] = finite_or_null(w.rms_output);
     e["rms_output_variation"] = finite_or_null(w.rms_variation);
     e["informative"] = w.informative;
     e["note"] = w.note;
     if (b.scales.applied) e["scaling"] = scaling_json(b);
-    uninformative += b.verified && !w.informative ? 1 : 0;
+    uninformative += b.verified() && !w.informative ? 1 : 0;
     list.push_back(std::move(e));
   }
   j["delta"] = all ? ojson(delta) : ojson(nullptr);
@@ -96,10 +96,10 @@ ojson identification_json(const WindowIdentification& id) {
   j["basis"] = id.basis;
   j["unknowns"] = "C_i, D_i of the basis on top of the fitted values, x0";
   j["file_rows"] = {id.bounds.file_begin, id.bounds.file_end};
-  j["delta"] = b.verified ? ojson(b.delta) : ojson(nullptr);
-  j["dmax"] = b.verified ? ojson(b.dmax) : ojson(nullptr);
-  j["verified"] = b.verified;
-  if (!b.verified) j["reason"] = b.reason;
+  j["delta"] = b.verified() ? ojson(b.delta) : ojson(nullptr);
+  j["dmax"] = b.verified() ? ojson(b.dmax) : ojson(nullptr);
+  j["verified"] = b.verified();
+  if (!b.verified()) j["reason"] = b.reason;
   j["informative"] = id.bounds.informative;
   j["note"] = id.bounds.note + "; Theorem 3.1 is run on the first bound window only";
   j["certificate"] = id.bounds.certificate.empty() ? ojson(nullptr) : ojson(id.bounds.certificate);
@@ -130,7 +130,7 @@ std::string identification_line(const WindowIdentification& id) {
   const CertifiedBounds& b = id.bounds.bounds;
   std::string basis;
   for (const auto& f : id.basis) basis += (basis.empty() ? "" : ", ") + f;
-  if (!b.verified) return "not verified (" + b.reason + ")";
+  if (!b.verified()) return "not verified (" + b.reason + ")";
   return "delta <= " + upper_sqrt_text(b.delta2, 4) + ", dmax <= " + upper_sqrt_text(b.dmax2, 4) + " (verified; basis {" + basis + "})" +
          uninformative_mark(id.bounds);
 }
@@ -223,7 +223,7 @@ std::string fold_rows_text(const RankingResult& r, long offset) {
 
 std::string bound_line(const WindowBounds& w) {
   const CertifiedBounds& b = w.bounds;
-  if (!b.verified) return "not verified (" + b.reason + ")";
+  if (!b.verified()) return "not verified (" + b.reason + ")";
   return "delta <= " + upper_sqrt_text(b.delta2, 4) + ", dmax <= " + upper_sqrt_text(b.dmax2, 4) + " (verified, file rows " +
          std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + ")" + uninformative_mark(w);
 }
@@ -382,7 +382,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
               << "              after:  " << bound_line(res.after[i]) << "\n";
   int uninformative = 0;
   for (const auto* side : {&res.before, &res.after})
-    for (const WindowBounds& w : *side) uninformative += w.bounds.verified && !w.informative ? 1 : 0;
+    for (const WindowBounds& w : *side) uninformative += w.bounds.verified() && !w.informative ? 1 : 0;
   if (uninformative > 0)
     std::cout << "  " << uninformative << " of " << 2 * res.before.size()
               << " verified bounds are uninformative: dmax >= the RMS of the measured output's deviation "
@@ -522,7 +522,7 @@ void print_and_write_diagnose_report(const DiagnoseReportInputs& in, const std::
       double dmax_after = 0;  // the largest certified d_max over the windows: it holds on each of them
       bool all_verified = !res.after.empty();
       for (const WindowBounds& w : res.after) {
-        all_verified = all_verified && w.bounds.verified;
+        all_verified = all_verified && w.bounds.verified();
         dmax_after = std::max(dmax_after, w.bounds.dmax);
       }
       for (size_t t = 0; t < res.tests.size() && t < in.tests->size(); ++t) {

@@ -80,7 +80,7 @@ int run_tradeoff(TradeoffArgs& a) {
             << std::setw(10) << "verified" << std::setw(13) << "delta_relax" << std::setw(13) << "dmax_relax"
             << std::setw(7) << "solves" << "time[s]\n";
   o.on_point = [](const TradeoffPoint& p) {
-    const bool v = p.bounds.verified;
+    const bool v = p.bounds.verified();
     char t[32];
     std::snprintf(t, sizeof t, "%.2f", p.seconds);
     // certified cells rounded up (printed = certified); the solver's own values as they are
@@ -113,7 +113,7 @@ int run_tradeoff(TradeoffArgs& a) {
   int verified = 0, solves = 0;
   nlohmann::ordered_json jp = nlohmann::ordered_json::array();
   for (const TradeoffPoint& p : pts) {
-    const bool v = p.bounds.verified;
+    const bool v = p.bounds.verified();
     verified += v;
     solves += p.solves;
     nlohmann::ordered_json j;
