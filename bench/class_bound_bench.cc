@@ -149,7 +149,7 @@ void certify_truth(const RandomCase& c, const ParameterLayout& layout, const Cer
   }
   const LpvModel<Rational> truth = apply_parameters(c.model, layout, c.theta);
   const CertifiedBounds tb = certify_fixed_model(truth, c.exp, co, solver);
-  if (tb.verified)
+  if (tb.verified())
     r.truth = nearest_double(tb.upper);
   else
     r.reason += "truth not certified: " + tb.reason + "; ";
@@ -212,7 +212,7 @@ Row run_row(UncertaintyStructure structure, int m, int n, int leaves, double box
   r.ident_wall = sw.wall();
   r.ident_cpu = sw.cpu();
   r.P = static_cast<long>(id.fit.layout.size());
-  if (!id.bounds.verified) {
+  if (!id.bounds.verified()) {
     r.reason = "identified model not certified (" + std::string(to_string(id.fit.status)) + "): " + id.bounds.reason;
     return r;
   }

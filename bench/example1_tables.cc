@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
         co.data = read_data_table(data).reference;
         const CertifiedBounds b = certify_fixed_model(apply_parameters(mq, res.layout, p), eq, co, *solver);
         using bench::certified_cell;
-        std::printf(" | %s %s", certified_cell(b.verified, b.delta), certified_cell(b.verified, b.dmax));
+        std::printf(" | %s %s", certified_cell(b.verified(), b.delta), certified_cell(b.verified(), b.dmax));
       }
       if (alternating) std::printf(" | %5zu", steps);
       std::printf(" | %7.3f %7.3f\n", row.paper_delta[noisy], row.paper_dmax[noisy]);

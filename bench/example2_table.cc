@@ -170,9 +170,9 @@ int main(int argc, char** argv) {
     co.progress = [](const std::string& line) { std::fprintf(stderr, "[example2_table]   %s\n", line.c_str()); };
     const auto t0 = std::chrono::steady_clock::now();
     const CertifiedBounds b = certify_fixed_model(model, parts.validation, co, *solver);
-    std::printf("%-31s | %s %s | %15s | %8.1f %8.1f\n", name, bench::certified_cell(b.verified, b.delta),
-                bench::certified_cell(b.verified, b.dmax), paper, t_ident, seconds_since(t0));
-    if (!b.verified) std::printf("    unverified: %s\n", b.reason.c_str());
+    std::printf("%-31s | %s %s | %15s | %8.1f %8.1f\n", name, bench::certified_cell(b.verified(), b.delta),
+                bench::certified_cell(b.verified(), b.dmax), paper, t_ident, seconds_since(t0));
+    if (!b.verified()) std::printf("    unverified: %s\n", b.reason.c_str());
     std::fflush(stdout);
   };
   if (which.find('0') != std::string::npos) {

@@ -123,12 +123,12 @@ int main(int argc, char** argv) {
           const auto t1 = std::chrono::steady_clock::now();
           CertifiedBounds cb;
           if (alternating && res.taps.size() > 0) cb = certify_with_taps(fixed, eq, res.taps, co, solver->name());
-          if (!cb.verified) cb = certify_fixed_model(fixed, eq, co, *solver);
+          if (!cb.verified()) cb = certify_fixed_model(fixed, eq, co, *solver);
           const double cert = seconds_since(t1);
           std::printf("%-4s %4d %-11s %-5s | %8.2f %5zu %-18s | %8.2f %8.3f %-8s | %10.4g %10.4g\n",
                       m == 1 ? "SISO" : "2x2", n, method.c_str(), b.c_str(), ident, res.iterates.size(),
-                      to_string(res.status), cert, cb.verify_seconds, cb.verified ? "true" : "false",
-                      cb.verified ? cb.delta : NAN, cb.verified ? cb.dmax : NAN);
+                      to_string(res.status), cert, cb.verify_seconds, cb.verified() ? "true" : "false",
+                      cb.verified() ? cb.delta : NAN, cb.verified() ? cb.dmax : NAN);
           std::fflush(stdout);
         }
     }

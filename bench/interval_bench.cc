@@ -125,10 +125,10 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   row.gap = relative_gap(b);
   std::fprintf(stderr, "  (n = %ld: solve %.1f s, upper end built and checked %.1f s, lower end %.1f s, total %.1f s)\n",
                static_cast<long>(exp.n()), b.solve_seconds, b.verify_seconds, b.lower.seconds, row.certify);
-  if (!b.verified) std::fprintf(stderr, "  (n = %ld: no upper end: %s)\n", static_cast<long>(exp.n()), b.reason.c_str());
+  if (!b.verified()) std::fprintf(stderr, "  (n = %ld: no upper end: %s)\n", static_cast<long>(exp.n()), b.reason.c_str());
   if (!b.lower.verified) std::fprintf(stderr, "  (n = %ld: no lower end: %s)\n", static_cast<long>(exp.n()), b.lower.reason.c_str());
   t0 = std::chrono::steady_clock::now();
-  row.upper_ok = b.verified && check_certificate_file(files.certificate).holds ? "yes" : "NO";
+  row.upper_ok = b.verified() && check_certificate_file(files.certificate).holds ? "yes" : "NO";
   row.verify_upper = seconds_since(t0);
   if (b.lower.verified && b.lower.verifier_details.find("compact dual form not used") != std::string::npos)
     std::fprintf(stderr, "  (n = %ld: %s)\n", static_cast<long>(exp.n()), b.lower.verifier_details.c_str());
@@ -138,7 +138,7 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
     row.verify_lower = seconds_since(t0);
     row.kb_lower = kilobytes(files.lower);
   }
-  if (b.verified) row.kb_upper = kilobytes(files.certificate);
+  if (b.verified()) row.kb_upper = kilobytes(files.certificate);
   if (!b.lower.verified) return row;
   // Invalidation below the certified lower end.
   const double dmax = 0.9 * std::sqrt(nearest_double(b.lower.value));
@@ -150,9 +150,9 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   const CertifiedBounds v = certify_fixed_model(model, exp, io, *solver);
   row.invalidate = seconds_since(t0);
   const std::string invalid_file = write_certificates(v, (dir / (tag + ".invalid.json")).string()).certificate;
-  row.verdict = v.invalidated ? "invalidated" : v.verified ? "CONSISTENT?" : "undecided";
-  if (!v.invalidated) std::fprintf(stderr, "  (n = %ld, dmax = %g: %s)\n", static_cast<long>(exp.n()), dmax, v.reason.c_str());
-  if (v.invalidated) {
+  row.verdict = v.invalidated() ? "invalidated" : v.verified() ? "CONSISTENT?" : "undecided";
+  if (!v.invalidated()) std::fprintf(stderr, "  (n = %ld, dmax = %g: %s)\n", static_cast<long>(exp.n()), dmax, v.reason.c_str());
+  if (v.invalidated()) {
     t0 = std::chrono::steady_clock::now();
     if (!check_certificate_file(invalid_file).holds) row.verdict = "NOT CHECKED";
     row.verify_invalid = seconds_since(t0);

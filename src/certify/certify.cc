@@ -81,7 +81,7 @@ void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 n
   const auto t1 = std::chrono::steady_clock::now();
   const CertificateVerdict again = round_trip_check(c, exp);
   out.verify_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-  out.verified = again.holds;
+  if (again.holds) out.outcome = CertifyOutcome::kVerified;
   out.reason = again.holds ? "" : "the certificate failed after its JSON round trip: " + again.reason;
   out.verifier_details = again.details;
   out.delta2 = c.delta2;
@@ -235,8 +235,8 @@ CertifiedBounds certify_fixed(const LpvModel<Rational>& model, const Experiment<
 }
 
 CertifyOutcome outcome_of(const CertifiedBounds& b, const BoundObjective& objective) {
-  if (b.verified) return CertifyOutcome::kVerified;
-  if (b.invalidated) return CertifyOutcome::kInvalidated;
+  if (b.verified()) return CertifyOutcome::kVerified;
+  if (b.invalidated()) return CertifyOutcome::kInvalidated;
   if (objective.kind == BoundObjective::Kind::kFeasibility) return CertifyOutcome::kUndecided;
   if (b.solve_status == SolveStatus::kBackendError || b.solve_status == SolveStatus::kIterationLimit)
     return CertifyOutcome::kSolverFailed;
@@ -259,7 +259,7 @@ std::string solve_status_text(const CertifiedBounds& b) {
 }
 
 double relative_gap(const CertifiedBounds& b) {
-  if (!b.verified || !b.lower.verified) return NAN;
+  if (!b.verified() || !b.lower.verified) return NAN;
   if (b.upper == 0) return 0.0;
   return nearest_double((b.upper - b.lower.value) / b.upper);
 }
@@ -306,7 +306,7 @@ void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, Cert
   if (run.o.progress)
     run.o.progress("solved in " + double_to_text(std::round(sol.solve.seconds * 10) / 10) + " s; checking the upper end exactly");
   certify_taps(run.model, run.exact.exp, run.exact.sim, run.exact.r, sol.taps, sol.horizon, run.o, run.solver.name(), b);
-  if (b.verified) b.upper = objective_at(run.o.objective, b.delta2, b.dmax2);
+  if (b.verified()) b.upper = objective_at(run.o.objective, b.delta2, b.dmax2);
 }
 
 /// The lower end from the dual of a solve (lifted to the full horizon when K < L); keeps the best.
@@ -330,27 +330,27 @@ void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, Certif
 /// infeasibility decides nothing, so only a primal or an exactly checked
 /// dual of the FULL-horizon problem may ("invalidated", at the certificate path).
 void decide_fixed_bounds(const CertifyRun& run, const DeltaFormSolution& first, CertifiedBounds& out) {
-  if (out.verified || !run.o.lower_end || run.kyp) return;
+  if (out.verified() || !run.o.lower_end || run.kyp) return;
   DeltaFormSolution full = first;
   if (run.K != 0) {
     full = run.solve(0, false, true);
     CertifiedBounds again;
     certify_upper_end(run, full, again);
     again.solve_seconds += out.solve_seconds;
-    if (again.verified || !has_solution(full.solve.status)) {
+    if (again.verified() || !has_solution(full.solve.status)) {
       const std::string restricted = out.reason;
       out = again;
       out.full_horizon = true;
-      if (!again.verified && !restricted.empty())
+      if (!again.verified() && !restricted.empty())
         out.reason = again.reason + " (first, with " + std::to_string(run.K) + " taps: " + restricted + ")";
     }
   } else if (full.dual_c1.size() == 0) {
     full = run.solve(0, false, true);
   }
-  if (out.verified || full.solve.status != SolveStatus::kPrimalInfeasible || full.dual_c1.size() == 0) return;
+  if (out.verified() || full.solve.status != SolveStatus::kPrimalInfeasible || full.dual_c1.size() == 0) return;
   if (run.o.progress) run.o.progress("infeasible: building and checking the dual certificate of invalidation");
   DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, full, run.o);
-  out.invalidated = d.verified;
+  if (d.verified) out.outcome = CertifyOutcome::kInvalidated;
   out.lower.seconds = d.seconds;
   out.lower.verifier_details = d.verifier_details;
   if (d.verified) out.certificate = std::move(d.certificate);
@@ -375,7 +375,7 @@ void bracket_optimum(const CertifyRun& run, const DeltaFormSolution& first, Cert
   CertifiedBounds better;
   certify_upper_end(run, full, better);
   out.solve_seconds += full.solve.seconds;
-  if (better.verified && (!out.verified || better.upper < out.upper)) {
+  if (better.verified() && (!out.verified() || better.upper < out.upper)) {
     better.solve_seconds = out.solve_seconds;
     better.lower = out.lower;
     out = better;
@@ -417,7 +417,7 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   if (run.feasibility) decide_fixed_bounds(run, first, out);
   else if (run.o.lower_end) bracket_optimum(run, first, out);
   else out.lower.reason = "not requested";
-  if (run.kyp && run.feasibility && !out.verified) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
+  if (run.kyp && run.feasibility && !out.verified()) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
   out.scales = scales;
   out.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   out.outcome = outcome_of(out, options.objective);
@@ -440,7 +440,7 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
   out.horizon = horizon;
   out.delta2_solver = toeplitz_norm2(used, horizon, model.ny, model.nz());
   certify_taps(model, es.exp, sim, r, used, horizon, o, solver_name, out);
-  if (out.verified) out.upper = objective_at(o.objective, out.delta2, out.dmax2);
+  if (out.verified()) out.upper = objective_at(o.objective, out.delta2, out.dmax2);
   out.outcome = outcome_of(out, o.objective);
   return out;
 }

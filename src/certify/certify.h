@@ -98,17 +98,23 @@ Rational objective_at(const BoundObjective& objective, const Rational& delta2, c
 enum class CertifyOutcome {
   kVerified,      ///< a consistency certificate was made and checked exactly
   kInvalidated,   ///< fixed bounds: an "invalidated" certificate was made and checked exactly
-  kUndecided,     ///< fixed bounds: neither certificate passed the exact check
+  kUndecided,     ///< no certificate passed the exact check (yet): the initial value;
+                  ///< for fixed bounds, the final one when neither certificate passed
   kSolverFailed,  ///< the SDP backend failed (backend error, iteration limit): no bound
   kNotVerified,   ///< the solver answered, but the exact check did not accept its bounds
 };
 const char* to_string(CertifyOutcome outcome);
 
 struct CertifiedBounds {
-  /// How it ended, decided once by the certifying function (outcome_of);
-  /// front ends map it to their exit codes.
-  CertifyOutcome outcome = CertifyOutcome::kNotVerified;
-  bool verified = false;
+  /// How it ended: the one stored status. Undecided until a certificate
+  /// passes (kVerified, kInvalidated); the certifying function then decides
+  /// the rest (outcome_of). Front ends map it to their exit codes.
+  CertifyOutcome outcome = CertifyOutcome::kUndecided;
+  /// A consistency certificate was made and checked exactly.
+  bool verified() const { return outcome == CertifyOutcome::kVerified; }
+  /// Fixed bounds only: an "invalidated" certificate was made and checked
+  /// exactly (then it is `certificate`).
+  bool invalidated() const { return outcome == CertifyOutcome::kInvalidated; }
   std::string reason;           ///< why not verified
   Rational delta2, dmax2;       ///< the certificate's values
   double delta = 0, dmax = 0;   ///< √ of the above, rounded up (for display)
@@ -125,9 +131,6 @@ struct CertifiedBounds {
   double solve_seconds = 0, verify_seconds = 0;
   std::string verifier_details;
 
-  /// Fixed bounds only: an "invalidated" certificate was made and checked
-  /// exactly (then verified is false; it is `certificate`).
-  bool invalidated = false;
   /// The checked certificate: "consistent" when verified, "invalidated" when
   /// invalidated; none otherwise.
   std::optional<Certificate> certificate;

@@ -143,7 +143,7 @@ void identify_reference(const Inputs& in, const CommonOptions& c, const fs::path
   CertifyOptions co = certify_options(c, in);
   co.lower_end = false;
   IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, solver);
-  if (!id.bounds.verified) {
+  if (!id.bounds.verified()) {
     ref.klass.reason = "lpvid's own identification was not certified";
     return;
   }

@@ -48,7 +48,7 @@ RecordTable record_figures(const LpvModel<double>& model, const Experiment<doubl
   const Simulation<double> sim = simulate(model, exp);
   const Mat<double> r = exp.y - sim.output;
   std::optional<Mat<double>> w;
-  const bool delta_form = b.verified && b.certificate && b.certificate->form == CertificateForm::kDelta &&
+  const bool delta_form = b.verified() && b.certificate && b.certificate->form == CertificateForm::kDelta &&
                           b.certificate->claim == CertificateClaim::kConsistent;
   if (delta_form)
     w = apply_fir_records(nearest_double(b.certificate->taps), sim.z, exp.ny(), b.certificate->horizon, exp.records);

@@ -22,7 +22,7 @@ namespace lpvid {
 bool DiagnoseResult::verified() const {
   bool all = !before.empty() && before.size() == after.size();
   for (const auto* side : {&before, &after})
-    for (const WindowBounds& w : *side) all = all && w.bounds.verified;
+    for (const WindowBounds& w : *side) all = all && w.bounds.verified();
   return all;
 }
 
@@ -229,7 +229,7 @@ void certify_windows(DiagnoseResult& out, const std::vector<JointWindow>& window
       options.ranking.progress("bounds (Theorem 2.1), " + std::to_string(k) + " of " +
                                std::to_string(2 * windows.size()) + ": window " + std::to_string(i + 1) + " " +
                                (after ? "after" : "before") + ": " +
-                               (w.bounds.verified ? "verified" + fell + (w.certificate.empty() ? std::string() : ", " + w.certificate)
+                               (w.bounds.verified() ? "verified" + fell + (w.certificate.empty() ? std::string() : ", " + w.certificate)
                                                    : "NOT verified (" + w.bounds.reason + ")") +
                                "; " + observed_rate_text(k, 2 * windows.size(), elapsed));
     }

@@ -142,7 +142,7 @@ WindowBounds certify_joint_window(const LpvModel<double>& model, const Experimen
 void judge_informative(WindowBounds& w, const Mat<double>& y) {
   w.rms_output = rms(y);
   w.rms_variation = y.size() == 0 ? 0.0 : rms(Mat<double>(y.rowwise() - y.colwise().mean()));
-  if (!w.bounds.verified) {
+  if (!w.bounds.verified()) {
     w.informative = false;
     w.note = "not verified";
     return;

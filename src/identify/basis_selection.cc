@@ -159,7 +159,7 @@ class Selector {
   void judge(BasisStep& s, const CertifiedBounds& b, const std::string& what) {
     s.bounds = b;
     ++s.solves;
-    if (b.verified) {
+    if (b.verified()) {
       s.verdict = BasisVerdict::kConsistent;
       s.detail = what + " is consistent at the given bounds: certificate verified exactly";
     } else if (b.solve_status == SolveStatus::kPrimalInfeasible) {

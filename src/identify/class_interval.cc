@@ -26,7 +26,7 @@ ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& mode
     FixedParameters optimum = fix_parameters(model_q, id.fit.layout, out.bound.best_p, certify.digits, exp_q.record_x0);
     CertifiedBounds b =
         certify_identified(optimum.model, with_fixed_initial_states(exp_q, optimum), Mat<double>(), certify, solver);
-    if (b.verified && b.upper < id.bounds.upper) {
+    if (b.verified() && b.upper < id.bounds.upper) {
       id.fixed = std::move(optimum);
       id.bounds = std::move(b);
       out.adopted = true;

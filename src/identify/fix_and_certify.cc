@@ -29,7 +29,7 @@ CertifiedBounds certify_identified(const LpvModel<Rational>& fixed, const Experi
                                    std::string* note) {
   if (taps.size() > 0) {
     CertifiedBounds b = certify_with_taps(fixed, exp, taps, options, solver.name());
-    if (b.verified) {
+    if (b.verified()) {
       if (options.lower_end && options.objective.kind != BoundObjective::Kind::kFeasibility) {
         // The lower end: Theorem 2.1 for the same fixed model, whose dual
         // point is lifted and checked (certify_fixed_model); its own upper

@@ -125,7 +125,7 @@ std::string tradeoff_csv(const std::vector<TradeoffPoint>& points) {
   s << "lambda,verified,delta,dmax,delta2_exact,dmax2_exact,delta_solver,dmax_solver,status,certificate\n";
   auto num = [](double x) { return x < 0 ? std::string() : double_to_text(x); };
   for (const TradeoffPoint& p : points) {
-    const bool v = p.bounds.verified;
+    const bool v = p.bounds.verified();
     s << lambda_text(p.lambda) << "," << (v ? "true" : "false") << "," << (v ? double_to_text(p.bounds.delta) : "")
       << "," << (v ? double_to_text(p.bounds.dmax) : "") << ","
       << (v ? csv_cell(exact_decimal_or_fraction(p.bounds.delta2)) : "") << ","
@@ -138,7 +138,7 @@ std::string tradeoff_csv(const std::vector<TradeoffPoint>& points) {
 std::string tradeoff_monotonicity_violation(const std::vector<TradeoffPoint>& points, double rel, double abs) {
   std::vector<const TradeoffPoint*> v;
   for (const TradeoffPoint& p : points)
-    if (p.bounds.verified) v.push_back(&p);
+    if (p.bounds.verified()) v.push_back(&p);
   std::stable_sort(v.begin(), v.end(), [](const TradeoffPoint* a, const TradeoffPoint* b) { return a->lambda < b->lambda; });
   for (size_t i = 1; i < v.size(); ++i) {
     const TradeoffPoint &a = *v[i - 1], &b = *v[i];

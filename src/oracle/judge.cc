@@ -24,8 +24,8 @@ ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& obj
   const std::string& certificate = files.certificate;
   ReferenceResult r;
   r.outcome = outcome_of(b, objective);  // b may be empty (no claim to certify): decided here, not stored
-  r.upper_verified = b.verified;
-  if (b.verified) {
+  r.upper_verified = b.verified();
+  if (b.verified()) {
     r.upper = b.upper;
     r.upper_certificate = certificate;
   }
@@ -35,7 +35,7 @@ ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& obj
     r.lower_certificate = files.lower;
   }
   if (r.outcome == CertifyOutcome::kInvalidated) r.invalidation_certificate = certificate;
-  if (!b.verified) r.reason = b.reason;
+  if (!b.verified()) r.reason = b.reason;
   if (!b.lower.verified && !b.lower.reason.empty()) r.reason += (r.reason.empty() ? "" : "; ") + b.lower.reason;
   return r;
 }

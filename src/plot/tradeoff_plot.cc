@@ -65,7 +65,7 @@ PlotSpec tradeoff_plot(const std::vector<TradeoffPoint>& points, const std::stri
   ser.title = "certified (delta, d_max), labelled by lambda";
   ser.color = palette::kBound;
   for (const TradeoffPoint& p : points) {
-    if (!p.bounds.verified) continue;
+    if (!p.bounds.verified()) continue;
     ser.x.push_back(p.bounds.dmax);
     ser.y.push_back(p.bounds.delta);
     ser.labels.push_back("λ=" + lambda_text(p.lambda));

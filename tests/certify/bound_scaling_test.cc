@@ -74,8 +74,8 @@ TEST(BoundScaling, BoundsScaleWithTheDataExactlyAsDerived) {
   ScratchDir dir("bound_scaling");
   const Certified a = certify_file(dir, "unit", 6, true);
   const Certified k = certify_file(dir, "kilo", 3, true);  // the same integers: u, y times 10^3
-  ASSERT_TRUE(a.b.verified) << a.b.reason;
-  ASSERT_TRUE(k.b.verified) << k.b.reason;
+  ASSERT_TRUE(a.b.verified()) << a.b.reason;
+  ASSERT_TRUE(k.b.verified()) << k.b.reason;
   EXPECT_TRUE(check_certificate_file(k.certificate).holds);
   EXPECT_EQ(a.b.scales.y_exponent + 3, k.b.scales.y_exponent);
   EXPECT_EQ(a.b.scales.z_exponent + 3, k.b.scales.z_exponent);
@@ -85,7 +85,7 @@ TEST(BoundScaling, BoundsScaleWithTheDataExactlyAsDerived) {
 
   // the control: λ in the data's units moves the optimum
   const Certified raw = certify_file(dir, "kilo_raw", 3, false);
-  ASSERT_TRUE(raw.b.verified) << raw.b.reason;
+  ASSERT_TRUE(raw.b.verified()) << raw.b.reason;
   EXPECT_FALSE(raw.b.scales.applied);
   EXPECT_GT(std::abs(raw.b.delta - a.b.delta), 0.1 * a.b.delta) << raw.b.delta << " vs " << a.b.delta;
 }

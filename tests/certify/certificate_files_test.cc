@@ -48,7 +48,7 @@ TEST(CertificateFiles, WrittenCertificatesPassTheFileLayer) {
   const Case k;
   gen::ScratchDir dir("certificate_files");
   const CertifiedBounds b = certified(k, dir, gen::weighted_objective(0.5));
-  ASSERT_TRUE(b.verified) << b.reason;
+  ASSERT_TRUE(b.verified()) << b.reason;
   EXPECT_EQ(b.outcome, CertifyOutcome::kVerified);
   ASSERT_TRUE(b.certificate.has_value());
   ASSERT_TRUE(b.lower.verified) << b.lower.reason;
@@ -76,7 +76,7 @@ TEST(CertificateFiles, CoreAndFileLayerAgreeOnAFalseClaim) {
   const Case k;
   gen::ScratchDir dir("certificate_files_false");
   const CertifiedBounds b = certified(k, dir, gen::min_delta_objective(0.2));
-  ASSERT_TRUE(b.verified) << b.reason;
+  ASSERT_TRUE(b.verified()) << b.reason;
   ASSERT_GT(b.delta2, Rational(0));
   Certificate c = *b.certificate;
   c.delta2 = c.delta2 / 4;

@@ -116,7 +116,7 @@ RC_GTEST_PROP(CompactDualPortability, LowerEndHoldsForEveryRebuildWithinTheToler
   write_experiment_csv(data, ic.model, ic.exp);
   auto solver = make_solver("csdp");
   const CertifiedBounds b = certify_fixed_model(ic.model, ic.exp, certify_options(min_dmax_objective(ic.delta), data), *solver);
-  RC_PRE(b.verified && b.lower.verified && b.lower.certificate.has_value());
+  RC_PRE(b.verified() && b.lower.verified && b.lower.certificate.has_value());
   RC_PRE(b.lower.certificate->form == CertificateForm::kDualDeltaPath);
   const Checked genuine = checked(*b.lower.certificate, ic.exp);
   Checked forged = genuine;  // above the certified upper end: false
@@ -136,7 +136,7 @@ RC_GTEST_PROP(CompactDualPortability, InvalidationHoldsForEveryRebuildWithinTheT
   const double delta = nr / (4 * nz), dmax = nr / (2 * std::sqrt(static_cast<double>(s.r.size())));
   auto solver = make_solver("csdp");
   const CertifiedBounds b = certify_fixed_model(ic.model, ic.exp, certify_options(feasibility_objective(delta, dmax), data), *solver);
-  RC_ASSERT(b.invalidated);
+  RC_ASSERT(b.invalidated());
   RC_PRE(b.certificate.has_value() && b.certificate->form == CertificateForm::kDualDeltaPath);
   const Checked genuine = checked(*b.certificate, ic.exp);
   Checked forged = genuine;  // the truth's (δ, d_max): consistent by construction, so "invalidated" is false

@@ -53,8 +53,8 @@ RC_GTEST_PROP(DualCertificateProperty, InvalidatedAndConsistentByConstructionNev
   // Consistent by construction.
   const CertifiedBounds yes =
       written(certify_fixed_model(ic.model, ic.exp, certify_options(feasibility_objective(ic.delta, ic.dmax), data), *solver), dir.file("yes.json"));
-  RC_ASSERT(!yes.invalidated);
-  if (yes.verified) RC_ASSERT(check_certificate_file(dir.file("yes.json")).holds);
+  RC_ASSERT(!yes.invalidated());
+  if (yes.verified()) RC_ASSERT(check_certificate_file(dir.file("yes.json")).holds);
 
   // Invalidated by construction (triangle inequality).
   const FixedSignals s = fixed_signals(ic.model, ic.exp);
@@ -65,8 +65,8 @@ RC_GTEST_PROP(DualCertificateProperty, InvalidatedAndConsistentByConstructionNev
   CertifyOptions no_options = certify_options(feasibility_objective(delta, dmax), data);
   no_options.dense_dual = *rc::gen::arbitrary<bool>();  // both forms of the dual certificate
   const CertifiedBounds no = written(certify_fixed_model(ic.model, ic.exp, no_options, *solver), path);
-  RC_ASSERT(!no.verified);
-  RC_ASSERT(no.invalidated);
+  RC_ASSERT(!no.verified());
+  RC_ASSERT(no.invalidated());
   RC_ASSERT(no.outcome == CertifyOutcome::kInvalidated);
   const CertificateVerdict v = check_certificate_file(path);
   RC_ASSERT(v.holds);
@@ -136,7 +136,7 @@ RC_GTEST_PROP(DualCertificateProperty, LowerEndIsBelowUpperEndAndBelowTheTruth, 
                                           : min_delta_objective(ic.dmax);
   const std::string path = dir.file("c.json");
   const CertifiedBounds b = written(certify_fixed_model(ic.model, ic.exp, certify_options(obj, data), *solver), path);
-  RC_ASSERT(b.verified);
+  RC_ASSERT(b.verified());
   RC_ASSERT(b.lower.verified);
   RC_ASSERT(b.lower.value <= b.upper);
   const Rational truth_delta2 = rational_from_text(double_to_text(ic.delta)) * rational_from_text(double_to_text(ic.delta));
@@ -182,16 +182,16 @@ TEST(DualCertificate, DelayedDeltaIsConsistentWithDefaultOptions) {
   co.max_taps = CertifyOptions{}.max_taps;  // the library default (64)
   ASSERT_EQ(co.max_taps, 64);
   const CertifiedBounds b = written(certify_fixed_model(ic.model, ic.exp, co, *solver), dir.file("c.json"));
-  EXPECT_TRUE(b.verified) << b.reason;
-  EXPECT_FALSE(b.invalidated);
+  EXPECT_TRUE(b.verified()) << b.reason;
+  EXPECT_FALSE(b.invalidated());
   EXPECT_TRUE(check_certificate_file(dir.file("c.json")).holds);
   // The 64-tap restriction alone cannot: its program is infeasible.
   CertifyOptions restricted = co;
   restricted.lower_end = false;
   restricted.structured = false;  // the SISO full-horizon solver would not restrict
   const CertifiedBounds r = certify_fixed_model(ic.model, ic.exp, restricted, *solver);
-  EXPECT_FALSE(r.verified);
-  EXPECT_FALSE(r.invalidated);
+  EXPECT_FALSE(r.verified());
+  EXPECT_FALSE(r.invalidated());
 }
 
 // The KYP restriction (‖Δ‖∞ by the KYP lemma, 2×2, 16 taps)
@@ -211,7 +211,7 @@ TEST(DualCertificate, KypWorksOnMimoExample1) {
   co.delta_norm = DeltaNorm::kKyp;
   co.max_taps = 16;
   const CertifiedBounds b = written(certify_fixed_model(model, exp, co, *solver), dir.file("c.json"));
-  ASSERT_TRUE(b.verified) << b.reason;
+  ASSERT_TRUE(b.verified()) << b.reason;
   EXPECT_TRUE(check_certificate_file(dir.file("c.json")).holds);
   ASSERT_TRUE(b.lower.verified) << b.lower.reason;
   EXPECT_LE(b.lower.value, b.upper);

@@ -77,13 +77,13 @@ TEST_F(OutsideSolution, CsdpProgramAnswerCertifiesLikeTheLinkedSolver) {
   write_sdpa_with_sidecar(theorem21_program(model, exp, options()).delta.program, p);
   ASSERT_EQ(csdp(p, sol), 0);
   const CertifiedBounds outside = certify_outside_solution(model, exp, options(), read_outside_solution(p, sol, SolutionFormat::kCsdp, 0));
-  ASSERT_TRUE(outside.verified) << outside.reason;
+  ASSERT_TRUE(outside.verified()) << outside.reason;
   // The same program solved by the linked CSDP library through the usual path.
   CertifyOptions own = options();
   own.structured = false;  // the K-tap SDP, as exported
   auto solver = make_solver("csdp");
   const CertifiedBounds linked = certify_fixed_model(model, exp, own, *solver);
-  ASSERT_TRUE(linked.verified) << linked.reason;
+  ASSERT_TRUE(linked.verified()) << linked.reason;
   const double a = nearest_double(outside.upper), b = nearest_double(linked.upper);
   EXPECT_NEAR(a, b, 1e-5 * b) << "outside " << a << ", linked " << b;
 }
@@ -94,7 +94,7 @@ TEST_F(OutsideSolution, ZeroTapsGiveTheResidualAsNoiseExactly) {
   const std::string p = dir.file("p.dat-s"), sol = dir.file("zero.sol");
   write_zero_solution(p, sol);
   const CertifiedBounds b = certify_outside_solution(model, exp, options(), read_outside_solution(p, sol, SolutionFormat::kCsdp, 0));
-  ASSERT_TRUE(b.verified) << b.reason;
+  ASSERT_TRUE(b.verified()) << b.reason;
   EXPECT_LT(nearest_double(b.delta2), 1e-100);  // ‖T_Δ‖ = 0; certify.cc keeps δ² a tiny positive number
   const Mat<Rational> r = exp.y - simulate(model, exp).output;
   Rational r2(0);
@@ -109,7 +109,7 @@ TEST_F(OutsideSolution, InfeasibleStatusIsNotCertified) {
   const std::string p = dir.file("p.dat-s"), sol = dir.file("zero.sol");
   write_zero_solution(p, sol);
   const CertifiedBounds b = certify_outside_solution(model, exp, options(), read_outside_solution(p, sol, SolutionFormat::kCsdp, 1));
-  EXPECT_FALSE(b.verified);
+  EXPECT_FALSE(b.verified());
   EXPECT_NE(b.reason.find("infeasible"), std::string::npos) << b.reason;
   EXPECT_FALSE(b.certificate.has_value());
 }

@@ -202,7 +202,7 @@ TEST_F(SeveralRecords, RecordOrderDoesNotChangeTheBounds) {
     return certify_fixed_model(model, exp, o, *solver);
   };
   const CertifiedBounds ab = bounds({a, b}), ba = bounds({b, a});
-  ASSERT_TRUE(ab.verified && ba.verified) << ab.reason << " / " << ba.reason;
+  ASSERT_TRUE(ab.verified() && ba.verified()) << ab.reason << " / " << ba.reason;
   ASSERT_TRUE(ab.lower.verified && ba.lower.verified) << ab.lower.reason << " / " << ba.lower.reason;
   const double u1 = nearest_double(ab.upper), u2 = nearest_double(ba.upper);
   EXPECT_NEAR(u1, u2, 1e-4 * u1);
@@ -225,7 +225,7 @@ TEST_F(SeveralRecords, OneRecordIsTheOneRecordTheorem) {
   const std::unique_ptr<SdpSolver> solver = make_solver("csdp");
   const CertifyOptions o = gen::certify_options(gen::weighted_objective(0.5), a);
   const CertifiedBounds x = certify_fixed_model(model, one, o, *solver), y = certify_fixed_model(model, plain, o, *solver);
-  ASSERT_TRUE(x.verified && y.verified);
+  ASSERT_TRUE(x.verified() && y.verified());
   EXPECT_EQ(x.delta2, y.delta2);
   EXPECT_EQ(x.dmax2, y.dmax2);
   EXPECT_EQ(x.lower.value, y.lower.value);

@@ -101,18 +101,18 @@ void assert_never_invalidated(const IdentCase& c) {
   // Minimal δ at d_max' = 1.01·d_max.
   const CertifiedBounds bd =
       written(certify_fixed_model(c.model, exp, certify_options(min_delta_objective(1.01 * c.dmax), data), *solver), dir.file("d.json"));
-  RC_LOG() << "min delta: verified " << bd.verified << " (" << bd.reason << "), delta = " << bd.delta
+  RC_LOG() << "min delta: verified " << bd.verified() << " (" << bd.reason << "), delta = " << bd.delta
            << " vs generating " << c.delta << ", margin " << bd.margin << "\n";
-  RC_ASSERT(bd.verified);
+  RC_ASSERT(bd.verified());
   RC_ASSERT(bd.delta <= c.delta * (1 + 1e-3));
   RC_ASSERT(check_certificate_file(dir.file("d.json")).holds);
 
   // Minimal d_max at δ' = 1.01·δ.
   const CertifiedBounds bn =
       written(certify_fixed_model(c.model, exp, certify_options(min_dmax_objective(1.01 * c.delta), data), *solver), dir.file("n.json"));
-  RC_LOG() << "min dmax: verified " << bn.verified << " (" << bn.reason << "), dmax = " << bn.dmax
+  RC_LOG() << "min dmax: verified " << bn.verified() << " (" << bn.reason << "), dmax = " << bn.dmax
            << " vs 0.9 * generating " << 0.9 * c.dmax << "\n";
-  RC_ASSERT(bn.verified);
+  RC_ASSERT(bn.verified());
   RC_ASSERT(bn.dmax <= 0.9 * c.dmax * (1 + 1e-3));
   RC_ASSERT(check_certificate_file(dir.file("n.json")).holds);
 }
@@ -153,8 +153,8 @@ RC_GTEST_PROP(InvalidationSoundness, NoiseOnlyDataIsConsistentWithZeroDelta, ())
   auto solver = make_solver("csdp");
   const CertifiedBounds b = written(certify_fixed_model(
       c.model, c.exp, certify_options(min_dmax_objective(0.0), data), *solver), dir.file("c.json"));
-  RC_LOG() << "min dmax at delta = 0: " << b.verified << " " << b.reason << " dmax " << b.dmax << "\n";
-  RC_ASSERT(b.verified);
+  RC_LOG() << "min dmax at delta = 0: " << b.verified() << " " << b.reason << " dmax " << b.dmax << "\n";
+  RC_ASSERT(b.verified());
   RC_ASSERT(b.delta2 == Rational(0));
   RC_ASSERT(b.dmax <= 0.9 * c.dmax * (1 + 1e-3));
 }
@@ -176,8 +176,8 @@ RC_GTEST_PROP(InvalidationSoundness, TinyFixedDeltaIsCertified, ()) {
   auto solver = make_solver("csdp");
   const CertifiedBounds b = written(certify_fixed_model(
       c.model, c.exp, certify_options(min_dmax_objective(delta), data), *solver), dir.file("c.json"));
-  RC_LOG() << "delta = " << delta << ": " << b.verified << " " << b.reason << "\n";
-  RC_ASSERT(b.verified);
+  RC_LOG() << "delta = " << delta << ": " << b.verified() << " " << b.reason << "\n";
+  RC_ASSERT(b.verified());
 }
 
 }  // namespace

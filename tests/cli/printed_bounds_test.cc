@@ -62,7 +62,7 @@ TEST_F(PrintedBounds, UpperEndsUpLowerEndsDown) {
 // >= 1/3 and the lower end the largest <= 1/10.
 TEST(PrintedBoundsJson, TheIntervalEndsAreRoundedOutwards) {
   CertifiedBounds b;
-  b.verified = true;
+  b.outcome = CertifyOutcome::kVerified;
   b.upper = Rational(1, 3);
   b.lower.verified = true;
   b.lower.value = Rational(1, 10);

@@ -128,7 +128,7 @@ TEST(EffectCases, StaticBlockCertificateVerifiesAndTamperingIsRejected) {
   ScratchDir dir("effect-cert");
   const CertifiedTruth ct = certify_truth(c, dir, 0, 120);
   const WindowBounds& w = ct.window;
-  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   EXPECT_TRUE(check_certificate_file(ct.certificate).holds);
   // the noise is the only misfit: dmax near the noise std
   EXPECT_LT(w.bounds.dmax, 0.03);
@@ -155,7 +155,7 @@ TEST(EffectCases, PiecewiseLinearCertificateVerifiesAndTamperingIsRejected) {
   const EffectCase c = make_effect_case("output_piecewise_linear", 200, 3, 0.02);
   ScratchDir dir("pwl-cert");
   const CertifiedTruth ct = certify_truth(c, dir, 0, 120);
-  ASSERT_TRUE(ct.window.bounds.verified) << ct.window.bounds.reason;
+  ASSERT_TRUE(ct.window.bounds.verified()) << ct.window.bounds.reason;
   ASSERT_TRUE(check_certificate_file(ct.certificate).holds);
   EXPECT_LT(ct.window.bounds.dmax, 0.03);
   std::ifstream in(ct.certificate);
@@ -185,7 +185,7 @@ TEST(EffectCases, StateScheduledCertificateVerifiesAndTamperingIsRejected) {
   ScratchDir dir("state-cert");
   const CertifiedTruth ct = certify_truth(c, dir, 40, 140);
   const WindowBounds& w = ct.window;
-  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   ASSERT_TRUE(check_certificate_file(ct.certificate).holds);
   EXPECT_LT(w.bounds.dmax, 0.03);
 

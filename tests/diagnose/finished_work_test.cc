@@ -45,7 +45,7 @@ TEST(FinishedWork, AWindowThatCannotBeCertifiedIsNotVerifiedWithItsReason) {
     auto solver = make_solver("csdp");
     WindowBounds w;
     ASSERT_NO_THROW(w = certify_window(c.model, c.d, c.q, 0, c.d.n(), 0, weighted(), *solver));
-    EXPECT_FALSE(w.bounds.verified);
+    EXPECT_FALSE(w.bounds.verified());
     EXPECT_NE(w.bounds.reason.find("certification failed on this window"), std::string::npos) << w.bounds.reason;
     EXPECT_NE(w.bounds.reason.find("no solver was called"), std::string::npos) << w.bounds.reason;
   }
@@ -61,7 +61,7 @@ TEST(FinishedWork, AFailedTheorem31StageIsThatStagesFailure) {
     EXPECT_TRUE(id.applicable);
     EXPECT_NE(id.failed.find("optional Theorem 3.1 stage failed"), std::string::npos) << id.failed;
     EXPECT_NE(id.failed.find("Theorem 3.1"), std::string::npos);
-    EXPECT_FALSE(id.bounds.bounds.verified);
+    EXPECT_FALSE(id.bounds.bounds.verified());
   }
 }
 

@@ -257,7 +257,7 @@ TEST(SeveralRecordsDiagnose, JointBoundCertificateListsBothRecordsAndVerifies) {
   CertifyOptions o = diagnose_policy(c.options.certify);
   WindowBounds w = certify_joint_window(c.declared, c.roles.est_d, c.roles.est_q, {{c.n - 100, c.n}, {c.n, c.n + 100}},
                                         c.options.record_data, o, *solver);
-  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   cli::write_window_certificate(w, c.dir.file("c.json"), 0, 1, false);
   std::ifstream f(w.certificate);
   const nlohmann::json j = nlohmann::json::parse(f);

@@ -44,7 +44,7 @@ TEST(WindowInformative, GeneratingSystemIsInformative) {
   std::vector<long> u, y;
   siso_generated(120, 10000, u, y);  // noise ≤ 0.01, y of RMS ~0.8
   const WindowBounds w = certify_case(dir, siso_window_model_json(), u, y);
-  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   EXPECT_TRUE(check_certificate_file(w.certificate).holds);
   EXPECT_TRUE(w.informative) << w.note;
   EXPECT_LT(w.bounds.dmax, 0.02);  // ≤ RMS(noise) + rounding, by the argument above
@@ -60,7 +60,7 @@ TEST(WindowInformative, UnrelatedModelIsFlaggedButStaysVerified) {
     else u[k] = g.next(1000000);
   }
   const WindowBounds w = certify_case(dir, siso_window_model_json("1"), u, y);
-  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   EXPECT_TRUE(check_certificate_file(w.certificate).holds);
   EXPECT_GE(w.bounds.dmax2, Rational(3, 2));  // the exact lower bound derived above
   EXPECT_DOUBLE_EQ(w.rms_output, std::sqrt(0.75));
@@ -82,7 +82,7 @@ TEST(WindowInformative, OffsetOutputMetByAConstantIsNotInformative) {
   u[38] = 500000;
   u[39] = -250000;
   const WindowBounds w = certify_case(dir, siso_window_model_json("100"), u, y);
-  ASSERT_TRUE(w.bounds.verified) << w.bounds.reason;
+  ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   EXPECT_TRUE(check_certificate_file(w.certificate).holds);
   EXPECT_GE(w.bounds.dmax2, Rational(38, 40));  // the exact lower bound derived above
   EXPECT_LT(w.bounds.dmax, 0.5 * w.rms_output);  // what the old rule would have accepted
@@ -94,7 +94,7 @@ TEST(WindowInformative, OffsetOutputMetByAConstantIsNotInformative) {
 // judge_informative alone: the variation is taken about each output's mean.
 TEST(WindowInformative, VariationIsAboutTheMeanOfEachOutput) {
   WindowBounds w;
-  w.bounds.verified = true;
+  w.bounds.outcome = CertifyOutcome::kVerified;
   Mat<double> y(4, 2);
   y << 10, -3, 12, -3, 10, -5, 12, -5;  // means 11 and -4, deviations ±1 everywhere
   w.bounds.dmax = 0.99;
@@ -108,7 +108,7 @@ TEST(WindowInformative, VariationIsAboutTheMeanOfEachOutput) {
 
 TEST(WindowInformative, UnverifiedIsNeverInformative) {
   WindowBounds w;
-  w.bounds.verified = false;
+  w.bounds.outcome = CertifyOutcome::kNotVerified;
   w.bounds.dmax = 0;  // would pass the RMS rule
   judge_informative(w, Mat<double>::Ones(5, 1));
   EXPECT_FALSE(w.informative);

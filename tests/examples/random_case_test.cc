@@ -113,8 +113,8 @@ void assert_truth_certified(const RandomCase& c) {
   const CertifiedBounds b = certify_truth(c, dir);
   RC_LOG() << "n = " << c.exp.n() << ", delta = " << c.delta << ", dmax = " << c.dmax << ", zero inputs "
            << c.zero_inputs << ", delay " << c.delay << ", static " << !c.truth.statics.empty() << ": "
-           << b.verified << " " << b.reason << "\n";
-  RC_ASSERT(b.verified);
+           << b.verified() << " " << b.reason << "\n";
+  RC_ASSERT(b.verified());
   RC_ASSERT(check_certificate_file(dir.file("truth.json")).holds);
   // The noise has the stated size (in double; the exact (C2) is the certificate's).
   const double n_ny = static_cast<double>(c.exp.n() * c.truth.ny);

@@ -163,9 +163,9 @@ RC_GTEST_PROP(AlternatingDescent, TheFinalPairCertifiesBelowTheFirstIterate, ())
   const CertifiedBounds b =
       certify_with_taps(fold_rounded(c.model, res.layout, res.p), exp_q, res.taps, certify_options(w, data), "csdp");
   const double certified = w.value(nearest_double(b.delta2), nearest_double(b.dmax2));
-  RC_LOG() << res.relaxation << ": certified " << b.verified << " " << certified << ", iterate 0 "
+  RC_LOG() << res.relaxation << ": certified " << b.verified() << " " << certified << ", iterate 0 "
            << res.iterates.front().objective << " " << b.reason << "\n";
-  RC_ASSERT(b.verified);
+  RC_ASSERT(b.verified());
   RC_ASSERT(certified <= res.iterates.front().objective * (1 + 1e-4) + 1e-7 * mean_square_y(c));
 }
 

@@ -124,7 +124,7 @@ RC_GTEST_PROP(ClassBound, NeverAboveTheFoundThetasCertifiedUpperEnd, ()) {
   const double lambda = *rc::gen::element(0.5, 0.1, 0.9);
   ScratchDir dir("class-found");
   Identified run(c, dir, lambda, true);
-  RC_PRE(run.id.bounds.verified);
+  RC_PRE(run.id.bounds.verified());
   const ClassInterval ci = run.interval(5);
   const IdentifiedModel& id = run.id;
   RC_CLASSIFY(ci.bound.certified, "certified");
@@ -154,7 +154,7 @@ TEST(ClassBound, AdditiveClassIntervalIsTightAndCertified) {
   for (const IdentCase& c : cases) {
     ScratchDir dir("class-additive");
     Identified run(c, dir, 0.5, false);
-    ASSERT_TRUE(run.id.bounds.verified) << run.id.bounds.reason;
+    ASSERT_TRUE(run.id.bounds.verified()) << run.id.bounds.reason;
     const ClassInterval ci = run.interval(ClassBoundOptions{}.max_leaves);
     const IdentifiedModel& id = run.id;
     const CertifyOptions& co = run.co;

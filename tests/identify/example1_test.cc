@@ -62,7 +62,7 @@ Outcome run(bool iterate, size_t basis_size, const std::string& tag) {
   static ScratchDir dir("example1");
   const std::string cert = dir.file(tag + ".json");
   out.bounds = written(certify_fixed_model(fixed, exp_q, certify_options(io.objective, data, 64), *solver), cert);
-  EXPECT_TRUE(out.bounds.verified) << tag << ": " << out.bounds.reason;
+  EXPECT_TRUE(out.bounds.verified()) << tag << ": " << out.bounds.reason;
   EXPECT_TRUE(check_certificate_file(cert).holds) << tag;
   out.objective = io.objective.value(nearest_double(out.bounds.delta2), nearest_double(out.bounds.dmax2));
   std::cout << "[ example1 ] " << tag << ": " << out.ident.relaxation << ", certified delta = " << out.bounds.delta
@@ -77,7 +77,7 @@ const Outcome& iterated_full() {
 
 TEST(Example1Acceptance, IteratedIdentificationReachesTheRoundingFloor) {
   const Outcome& o = iterated_full();
-  ASSERT_TRUE(o.bounds.verified) << o.bounds.reason;
+  ASSERT_TRUE(o.bounds.verified()) << o.bounds.reason;
   EXPECT_GT(o.ident.iterates.size(), 1u);
   EXPECT_LE(o.bounds.delta, 1e-4);
   EXPECT_LE(o.bounds.dmax, 1e-4);
@@ -85,10 +85,10 @@ TEST(Example1Acceptance, IteratedIdentificationReachesTheRoundingFloor) {
 
 TEST(Example1Acceptance, SingleRelaxationStepIsCertifiedButClearlyWorse) {
   const Outcome single = run(false, 6, "single-full");
-  ASSERT_TRUE(single.bounds.verified) << single.bounds.reason;
+  ASSERT_TRUE(single.bounds.verified()) << single.bounds.reason;
   EXPECT_EQ(single.ident.iterates.size(), 1u);
   const Outcome& it = iterated_full();
-  ASSERT_TRUE(it.bounds.verified);
+  ASSERT_TRUE(it.bounds.verified());
   EXPECT_GT(single.objective, 10 * it.objective) << "single " << single.objective << " vs iterated " << it.objective;
   // and the single step is the iteration's first solve
   EXPECT_NEAR(single.ident.iterates[0].objective, it.ident.iterates[0].objective,
@@ -97,9 +97,9 @@ TEST(Example1Acceptance, SingleRelaxationStepIsCertifiedButClearlyWorse) {
 
 TEST(Example1Acceptance, AffineBasisCannotRepresentRho2Squared) {
   const Outcome affine = run(true, 3, "iterated-affine");  // {1, rho1, rho2}
-  ASSERT_TRUE(affine.bounds.verified) << affine.bounds.reason;
+  ASSERT_TRUE(affine.bounds.verified()) << affine.bounds.reason;
   const Outcome& full = iterated_full();
-  ASSERT_TRUE(full.bounds.verified);
+  ASSERT_TRUE(full.bounds.verified());
   EXPECT_GT(affine.objective, 10 * full.objective) << "affine " << affine.objective << " vs full " << full.objective;
   EXPECT_GT(affine.bounds.dmax, full.bounds.dmax);
 }

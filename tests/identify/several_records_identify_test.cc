@@ -127,7 +127,7 @@ void expect_true_correction(const IdentifyResult& fit) {
 /// The certificate of the fixed model holds exactly on the stacked records
 /// with each record's x0 as the fixed parameters give it.
 void expect_certificate_holds(const Identified& r) {
-  ASSERT_TRUE(r.id.bounds.verified) << r.id.bounds.reason << " / " << r.id.fit.message;
+  ASSERT_TRUE(r.id.bounds.verified()) << r.id.bounds.reason << " / " << r.id.fit.message;
   ASSERT_TRUE(r.id.bounds.certificate.has_value());
   const Experiment<Rational> exp = with_fixed_initial_states(r.exp_q, r.id.fixed);
   EXPECT_TRUE(check_certificate(*r.id.bounds.certificate, exp).holds);
@@ -293,7 +293,7 @@ TEST(SeveralRecordsIdentify, ReduceProblemPinsEachRecordsLeadingZeros) {
 // experiment.
 TEST(SeveralRecordsIdentify, ClassIntervalOverTwoRecordsIsCertified) {
   const Identified r = identify_records(stack_records(noisy_parts()), false);
-  ASSERT_TRUE(r.id.bounds.verified) << r.id.bounds.reason;
+  ASSERT_TRUE(r.id.bounds.verified()) << r.id.bounds.reason;
   IdentifiedModel id = r.id;
   const LpvModel<Rational> model_q = example1_initial_model();
   auto solver = make_solver("csdp");

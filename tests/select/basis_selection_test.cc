@@ -179,7 +179,7 @@ void check_steps(const BasisSelectionResult& r) {
   for (const BasisStep& s : r.steps) {
     SCOPED_TRACE("step " + std::to_string(s.index) + " {" + s.basis_text + "}: " + s.detail);
     if (s.verdict == BasisVerdict::kConsistent) {
-      EXPECT_TRUE(s.bounds.verified);
+      EXPECT_TRUE(s.bounds.verified());
       ASSERT_FALSE(s.certificate.empty());
       EXPECT_TRUE(check_certificate_file(s.certificate).holds);
     } else {
@@ -221,7 +221,7 @@ TEST(SelectBasis, Example1IteratedFindsTheMissingRho2Squared) {
   // Pruning removed at least the terms the truth does not need.
   EXPECT_LT(r.basis.size(), 6u);
   const BasisStep& f = r.steps[static_cast<size_t>(r.final_step)];
-  EXPECT_TRUE(f.bounds.verified);
+  EXPECT_TRUE(f.bounds.verified());
   EXPECT_EQ(f.basis, r.basis);
 }
 

@@ -79,7 +79,7 @@ TEST(Tradeoff, Example1CurveIsMonotoneAndCertified) {
   for (const TradeoffPoint& p : pts) {
     std::cout << "  lambda " << p.lambda << "  delta " << p.bounds.delta << "  dmax " << p.bounds.dmax
               << "  (relaxation " << p.delta_solver << ", " << p.dmax_solver << ")\n";
-    ASSERT_TRUE(p.bounds.verified) << p.bounds.reason;
+    ASSERT_TRUE(p.bounds.verified()) << p.bounds.reason;
     EXPECT_TRUE(check_certificate_file(p.certificate).holds);
   }
   EXPECT_EQ(tradeoff_monotonicity_violation(pts, 1e-3, 1e-6), "");
@@ -109,7 +109,7 @@ TEST(Tradeoff, MonotonicityCheckFindsViolations) {
   auto point = [](double l, double d, double m) {
     TradeoffPoint p;
     p.lambda = l;
-    p.bounds.verified = true;
+    p.bounds.outcome = CertifyOutcome::kVerified;
     p.bounds.delta = d;
     p.bounds.dmax = m;
     return p;
