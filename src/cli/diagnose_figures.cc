@@ -88,7 +88,7 @@ void draw_tests(const DiagnoseReport& in, const std::string& d, DiagnoseFigures&
   double dmax_after = 0;  // the largest certified d_max over the windows: it holds on each of them
   bool all_verified = !res.after.empty();
   for (const WindowBounds& w : res.after) {
-    all_verified = all_verified && w.bounds.verified;
+    all_verified = all_verified && w.bounds.verified();
     dmax_after = std::max(dmax_after, w.bounds.dmax);
   }
   for (size_t t = 0; t < res.tests.size() && t < in.tests->size(); ++t) {

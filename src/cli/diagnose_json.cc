@@ -21,8 +21,8 @@ ojson scaling_json(const CertifiedBounds& b) {
           {"z_scale", sc.z_scale_text()},
           {"lambda_scaled", sc.lambda_scaled},
           {"lambda_original_units", sc.lambda_original},
-          {"delta_scaled", b.verified ? ojson(sc.scaled_delta(b.delta)) : ojson(nullptr)},
-          {"dmax_scaled", b.verified ? ojson(sc.scaled_dmax(b.dmax)) : ojson(nullptr)},
+          {"delta_scaled", b.verified() ? ojson(sc.scaled_delta(b.delta)) : ojson(nullptr)},
+          {"dmax_scaled", b.verified() ? ojson(sc.scaled_dmax(b.dmax)) : ojson(nullptr)},
           {"meaning", "the objective lambda*delta'^2 + (1-lambda)*dmax'^2 is minimised on z/z_scale and y/y_scale; "
                       "delta' = delta*z_scale/y_scale, dmax' = dmax/y_scale exactly (docs/bound_scaling.md); delta, "
                       "dmax and the certificate are in the data's units"}};
@@ -31,9 +31,9 @@ ojson scaling_json(const CertifiedBounds& b) {
 ojson window_json(const WindowBounds& w) {
   const CertifiedBounds& b = w.bounds;
   ojson e = {{"estimation_rows", {w.begin, w.end}}, {"file_rows", {w.file_begin, w.file_end}},
-             {"delta", b.verified ? ojson(b.delta) : ojson(nullptr)}, {"dmax", b.verified ? ojson(b.dmax) : ojson(nullptr)},
-             {"verified", b.verified}, {"certificate", w.certificate.empty() ? ojson(nullptr) : ojson(w.certificate)}};
-  if (!b.verified) e["reason"] = b.reason;
+             {"delta", b.verified() ? ojson(b.delta) : ojson(nullptr)}, {"dmax", b.verified() ? ojson(b.dmax) : ojson(nullptr)},
+             {"verified", b.verified()}, {"certificate", w.certificate.empty() ? ojson(nullptr) : ojson(w.certificate)}};
+  if (!b.verified()) e["reason"] = b.reason;
   if (!b.fallback.empty()) e["fallback"] = b.fallback;
   e["rms_output"] = number_or_null(w.rms_output);
   e["rms_output_variation"] = number_or_null(w.rms_variation);
@@ -54,10 +54,10 @@ ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>&
   int uninformative = 0;
   ojson list = ojson::array();
   for (const WindowBounds& w : ws) {
-    all = all && w.bounds.verified;
+    all = all && w.bounds.verified();
     delta = std::max(delta, w.bounds.delta);
     dmax = std::max(dmax, w.bounds.dmax);
-    uninformative += w.bounds.verified && !w.informative ? 1 : 0;
+    uninformative += w.bounds.verified() && !w.informative ? 1 : 0;
     list.push_back(window_json(w));
   }
   j["delta"] = all ? ojson(delta) : ojson(nullptr);
@@ -87,10 +87,10 @@ ojson identification_json(const WindowIdentification& id) {
   j["basis"] = id.basis;
   j["unknowns"] = "C_i, D_i of the basis on top of the fitted values, x0";
   j["file_rows"] = {id.bounds.file_begin, id.bounds.file_end};
-  j["delta"] = b.verified ? ojson(b.delta) : ojson(nullptr);
-  j["dmax"] = b.verified ? ojson(b.dmax) : ojson(nullptr);
-  j["verified"] = b.verified;
-  if (!b.verified) j["reason"] = b.reason;
+  j["delta"] = b.verified() ? ojson(b.delta) : ojson(nullptr);
+  j["dmax"] = b.verified() ? ojson(b.dmax) : ojson(nullptr);
+  j["verified"] = b.verified();
+  if (!b.verified()) j["reason"] = b.reason;
   j["informative"] = id.bounds.informative;
   j["note"] = id.bounds.note + "; Theorem 3.1 is run on the first bound window only";
   j["certificate"] = id.bounds.certificate.empty() ? ojson(nullptr) : ojson(id.bounds.certificate);

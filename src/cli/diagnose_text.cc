@@ -40,7 +40,7 @@ std::string identification_line(const WindowIdentification& id) {
   const CertifiedBounds& b = id.bounds.bounds;
   std::string basis;
   for (const auto& f : id.basis) basis += (basis.empty() ? "" : ", ") + f;
-  if (!b.verified) return "not verified (" + b.reason + ")";
+  if (!b.verified()) return "not verified (" + b.reason + ")";
   return "delta <= " + upper_sqrt_text(b.delta2, 4) + ", dmax <= " + upper_sqrt_text(b.dmax2, 4) + " (verified; basis {" + basis + "})" +
          uninformative_mark(id.bounds);
 }
@@ -84,7 +84,7 @@ std::string fold_rows_text(const RankingResult& r, long offset) {
 
 std::string bound_line(const WindowBounds& w) {
   const CertifiedBounds& b = w.bounds;
-  if (!b.verified) return "not verified (" + b.reason + ")";
+  if (!b.verified()) return "not verified (" + b.reason + ")";
   return "delta <= " + upper_sqrt_text(b.delta2, 4) + ", dmax <= " + upper_sqrt_text(b.dmax2, 4) + " (verified, file rows " +
          std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + ")" + uninformative_mark(w);
 }
@@ -178,7 +178,7 @@ void print_windows(const DiagnoseResult& res) {
               << "              after:  " << bound_line(res.after[i]) << "\n";
   int uninformative = 0;
   for (const auto* side : {&res.before, &res.after})
-    for (const WindowBounds& w : *side) uninformative += w.bounds.verified && !w.informative ? 1 : 0;
+    for (const WindowBounds& w : *side) uninformative += w.bounds.verified() && !w.informative ? 1 : 0;
   if (uninformative > 0)
     std::cout << "  " << uninformative << " of " << 2 * res.before.size()
               << " verified bounds are uninformative: dmax >= the RMS of the measured output's deviation "

@@ -156,7 +156,7 @@ int run_identify(IdentifyArgs& a) {
   if (!has_solution(id.fit.status)) return render_no_solution(id, opt, a.common.report_path);
 
   std::optional<ClassInterval> klass;
-  if (!a.class_interval.skip && id.bounds.verified && in.objective.kind != BoundObjective::Kind::kFeasibility) {
+  if (!a.class_interval.skip && id.bounds.verified() && in.objective.kind != BoundObjective::Kind::kFeasibility) {
     ClassBoundOptions cbo;
     cbo.unknowns = opt.unknowns;
     cbo.box_fraction = a.class_interval.box;
@@ -177,7 +177,7 @@ int run_identify(IdentifyArgs& a) {
   write_json(a.common.report_path, report);
   // Not exit_code(id.outcome): an "invalidated" or "undecided" certification
   // here is about the identified theta only, never the model class.
-  return b.verified ? kExitOk : kExitNotVerified;
+  return b.verified() ? kExitOk : kExitNotVerified;
 }
 
 }  // namespace

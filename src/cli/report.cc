@@ -30,21 +30,21 @@ int exit_code(CertifyOutcome outcome) {
 nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& toeplitz_mode,
                                    const std::string& solver, const CertificateFiles& files) {
   nlohmann::ordered_json j;
-  j["status"] = b.verified ? "consistent" : "not_verified";
+  j["status"] = b.verified() ? "consistent" : "not_verified";
   // A bound that the exact verifier did not accept is never reported as a bound.
-  j["delta"] = b.verified ? nlohmann::ordered_json(b.delta) : nlohmann::ordered_json(nullptr);
-  j["dmax"] = b.verified ? nlohmann::ordered_json(b.dmax) : nlohmann::ordered_json(nullptr);
-  if (b.verified) {
+  j["delta"] = b.verified() ? nlohmann::ordered_json(b.delta) : nlohmann::ordered_json(nullptr);
+  j["dmax"] = b.verified() ? nlohmann::ordered_json(b.dmax) : nlohmann::ordered_json(nullptr);
+  if (b.verified()) {
     j["delta2_exact"] = exact_decimal_or_fraction(b.delta2);
     j["dmax2_exact"] = exact_decimal_or_fraction(b.dmax2);
   }
   j["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
   j["toeplitz_mode"] = toeplitz_mode;
   j["solver"] = solver;
-  j["certificate"] = b.verified && !files.certificate.empty() ? nlohmann::ordered_json(files.certificate)
+  j["certificate"] = b.verified() && !files.certificate.empty() ? nlohmann::ordered_json(files.certificate)
                                                                : nlohmann::ordered_json(nullptr);
-  j["verified"] = b.verified;
-  if (!b.verified) j["reason"] = b.reason;
+  j["verified"] = b.verified();
+  if (!b.verified()) j["reason"] = b.reason;
   nlohmann::ordered_json c;
   c["form"] = b.horizon > 0 ? "delta (FIR, Poolla form)" : "w";
   if (b.horizon > 0) {
@@ -137,9 +137,9 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
   nlohmann::ordered_json j;
   j["of"] = interval_quantity(objective.kind);
   // printed = certified: the upper end rounded up, the lower end down (core/decimal_rounding.h)
-  j["upper"] = b.verified ? nlohmann::ordered_json(double_up(b.upper)) : nlohmann::ordered_json(nullptr);
-  j["upper_verified"] = b.verified;
-  if (b.verified) j["upper_exact"] = exact_decimal_or_fraction(b.upper);
+  j["upper"] = b.verified() ? nlohmann::ordered_json(double_up(b.upper)) : nlohmann::ordered_json(nullptr);
+  j["upper_verified"] = b.verified();
+  if (b.verified()) j["upper_exact"] = exact_decimal_or_fraction(b.upper);
   j["lower"] = b.lower.verified ? nlohmann::ordered_json(double_down(b.lower.value)) : nlohmann::ordered_json(nullptr);
   j["lower_verified"] = b.lower.verified;
   if (b.lower.verified) j["lower_exact"] = exact_decimal_or_fraction(b.lower.value);
@@ -162,7 +162,7 @@ CertificateFiles write_named_certificates(const CertifiedBounds& b, const std::s
 
 std::string bounds_text(const CertifiedBounds& b, const CertificateFiles& files, const std::string& scope) {
   std::ostringstream o;
-  if (b.verified) {
+  if (b.verified()) {
     // printed = certified: upper ends rounded up, lower ends down (core/decimal_rounding.h)
     o << "  delta       <= " << upper_sqrt_text(b.delta2) << "   (delta^2 = " << exact_decimal_or_fraction(b.delta2) << ")\n"
       << "  dmax        <= " << upper_sqrt_text(b.dmax2) << "   (dmax^2 = " << exact_decimal_or_fraction(b.dmax2) << ", RMS)\n"

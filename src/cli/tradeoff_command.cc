@@ -79,7 +79,7 @@ TradeoffOptions tradeoff_options(const TradeoffArgs& a, const Inputs& in, const 
   o.solver.verbose = a.common.verbose;
   o.certify = certify_options(a.common, in);  // the objective and bounds: set per step
   o.on_point = [](const TradeoffPoint& p) {
-    const bool v = p.bounds.verified;
+    const bool v = p.bounds.verified();
     char t[32];
     std::snprintf(t, sizeof t, "%.2f", p.seconds);
     // certified cells rounded up (printed = certified); the solver's own values as they are
@@ -111,7 +111,7 @@ std::string write_curve_files(const TradeoffArgs& a, const std::vector<TradeoffP
 
 /// One point's entry of the report ("points").
 nlohmann::ordered_json point_json(const TradeoffPoint& p, const LpvModel<double>& model) {
-  const bool v = p.bounds.verified;
+  const bool v = p.bounds.verified();
   const auto or_null = [](bool has, auto value) { return has ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr); };
   nlohmann::ordered_json j;
   j["lambda"] = p.lambda;
@@ -141,7 +141,7 @@ nlohmann::ordered_json tradeoff_report(const TradeoffArgs& a, const Inputs& in, 
   int verified = 0, solves = 0;
   nlohmann::ordered_json jp = nlohmann::ordered_json::array();
   for (const TradeoffPoint& p : pts) {
-    verified += p.bounds.verified;
+    verified += p.bounds.verified();
     solves += p.solves;
     jp.push_back(point_json(p, in.model_d));
   }
@@ -164,7 +164,7 @@ nlohmann::ordered_json tradeoff_report(const TradeoffArgs& a, const Inputs& in, 
 
 bool all_verified(const std::vector<TradeoffPoint>& pts) {
   for (const TradeoffPoint& p : pts)
-    if (!p.bounds.verified) return false;
+    if (!p.bounds.verified()) return false;
   return true;
 }
 

@@ -305,7 +305,7 @@ RC_GTEST_PROP(CertificateProperty, ToeplitzModesAgreeForLtiModels, ()) {
   RC_LOG() << "ny = " << ic.model.ny << ", nz = " << ic.model.nz() << ", n = " << ic.exp.n() << ", cond(T_z) = " << cond
            << ": solver delta2 signal " << as << " paper " << ps << " (rel " << std::abs(as - ps) / std::max(as, ps)
            << "); certified signal " << sig.verified() << " " << a << " margin " << sig.margin << " (" << sig.reason
-           << "), paper " << pap.verified << " " << p << " margin " << pap.margin << " (" << pap.reason << ")\n";
+           << "), paper " << pap.verified() << " " << p << " margin " << pap.margin << " (" << pap.reason << ")\n";
   RC_CLASSIFY(ic.model.ny > 1 || ic.model.nz() > 1, "MIMO");
   RC_CLASSIFY(cond > kWellConditioned, "cond(T_z) > 1e3");
   RC_CLASSIFY(!sig.verified(), "Delta form not certified");

@@ -108,8 +108,8 @@ RC_GTEST_PROP(AlternatingProperty, EveryIterateCertifiesAndTheObjectiveNeverRise
     const CertifiedBounds b = written(certify_with_taps(fixed, exp_q, it.taps, certify_options(w, data), "csdp"), cert);
     const double certified = w.value(nearest_double(b.delta2), nearest_double(b.dmax2));
     RC_LOG() << "  iterate " << i << ": objective " << it.objective << " (delta2 " << it.delta2 << ", dmax2 "
-             << it.dmax2 << "), certified " << b.verified << " " << certified << " " << b.reason << "\n";
-    RC_ASSERT(b.verified);
+             << it.dmax2 << "), certified " << b.verified() << " " << certified << " " << b.reason << "\n";
+    RC_ASSERT(b.verified());
     RC_ASSERT(check_certificate_file(cert).holds);
     RC_ASSERT(certified <= it.objective * (1 + 1e-4) + abs_tol);
     const bool last = i + 1 == res.iterates.size();
@@ -138,7 +138,7 @@ RC_GTEST_PROP(AlternatingProperty, FixedBoundsAreHonoured, ()) {
   RC_ASSERT(has_solution(w.status));
   const CertifiedBounds bw = written(certify_with_taps(fold_rounded(c.model, w.layout, w.p), exp_q, w.taps,
                                                certify_options(io.objective, data), "csdp"), dir.file("w.json"));
-  RC_ASSERT(bw.verified);
+  RC_ASSERT(bw.verified());
 
   // minimise d_max at δ = the weighted result's δ
   io.objective = min_dmax_objective(bw.delta);
@@ -150,9 +150,9 @@ RC_GTEST_PROP(AlternatingProperty, FixedBoundsAreHonoured, ()) {
     if (!has_solution(it.status)) continue;
     const CertifiedBounds b = written(certify_with_taps(fold_rounded(c.model, f.layout, it.p), exp_q, it.taps,
                                                 certify_options(io.objective, data), "csdp"), dir.file("f.json"));
-    RC_LOG() << "  iterate " << i << ": dmax2 " << it.dmax2 << ", certified " << b.verified << " "
+    RC_LOG() << "  iterate " << i << ": dmax2 " << it.dmax2 << ", certified " << b.verified() << " "
              << nearest_double(b.dmax2) << " " << b.reason << "\n";
-    RC_ASSERT(b.verified);
+    RC_ASSERT(b.verified());
     RC_ASSERT(nearest_double(b.delta2) <= bw.delta * bw.delta * (1 + 1e-12));  // the fixed δ (as decimal text), squared
     RC_ASSERT(nearest_double(b.dmax2) <= it.dmax2 * (1 + 1e-4) + abs_tol);
   }
@@ -220,7 +220,7 @@ TEST(AlternatingExample1, ReachesTheRoundingFloor) {
   const LpvModel<Rational> fixed = fold_rounded(model_q, res.layout, res.p);
   const CertifiedBounds b =
       written(certify_with_taps(fixed, exp_q, res.taps, certify_options(io.objective, data), "csdp"), dir.file("c.json"));
-  ASSERT_TRUE(b.verified) << b.reason;
+  ASSERT_TRUE(b.verified()) << b.reason;
   std::cout << "[ example1 ] alternating: " << res.relaxation << ", certified delta = " << b.delta
             << ", dmax = " << b.dmax << "\n";
   EXPECT_LE(b.delta, 1e-4);

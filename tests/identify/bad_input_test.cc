@@ -106,11 +106,11 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
   const double tiny = 1e-3 * c.dmax;
   const CertifiedBounds b = written(certify_fixed_model(
       c.model, c.exp, certify_options(feasibility_objective(0.0, tiny), data), *solver), dir.file("c.json"));
-  RC_LOG() << "certify: verified " << b.verified << ", reason: " << b.reason << ", status " << solve_status_text(b) << "\n";
+  RC_LOG() << "certify: verified " << b.verified() << ", reason: " << b.reason << ", status " << solve_status_text(b) << "\n";
   const FixedSignals s = fixed_signals(c.model, c.exp);
   RC_LOG() << "RMS(r) = " << rms(s.r) << ", fixed dmax = " << tiny << ", generating delta = " << c.delta << "\n";
   RC_ASSERT(rms(s.r) > 10 * tiny);  // by construction: the data contradicts (δ, d_max) = (0, tiny)
-  RC_ASSERT(!b.verified);
+  RC_ASSERT(!b.verified());
   RC_ASSERT(!b.reason.empty());
   RC_ASSERT(b.delta2 == Rational(0));
   RC_ASSERT(b.dmax2 == Rational(0));
@@ -118,7 +118,7 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
   RC_ASSERT(b.dmax == 0.0);
   // No consistency certificate: the only file allowed there is an exactly
   // checked "invalidated" certificate, which this case must get.
-  RC_ASSERT(b.invalidated);
+  RC_ASSERT(b.invalidated());
   const CertificateVerdict v = check_certificate_file(dir.file("c.json"));
   RC_ASSERT(v.holds);
   RC_ASSERT(v.claim_text == "invalidated");
@@ -147,8 +147,8 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
     const LpvModel<Rational> fixed = fold_rounded(c.model, r.layout, r.p);
     const CertifiedBounds bf = written(certify_fixed_model(
         fixed, c.exp, certify_options(feasibility_objective(0.0, tiny), data), *solver), dir.file("f.json"));
-    RC_LOG() << "certify the identified model: " << bf.verified << " " << bf.reason << "\n";
-    RC_ASSERT(!bf.verified);
+    RC_LOG() << "certify the identified model: " << bf.verified() << " " << bf.reason << "\n";
+    RC_ASSERT(!bf.verified());
     RC_ASSERT(!bf.reason.empty());
     RC_ASSERT(!std::filesystem::exists(dir.file("f.json")));
   }

@@ -168,7 +168,7 @@ TEST(ClassBound, AdditiveClassIntervalIsTightAndCertified) {
     const CertifiedBounds tb = certify_fixed_model(truth, c.exp, co, *solver);
     std::printf("additive case: class gap %.3g (lower %.9g, upper %.9g, adopted %d)\n", ci.relative_gap,
                 nearest_double(ci.bound.lower), nearest_double(id.bounds.upper), ci.adopted ? 1 : 0);
-    ASSERT_TRUE(tb.verified) << tb.reason;
+    ASSERT_TRUE(tb.verified()) << tb.reason;
     EXPECT_LE(ci.bound.lower, tb.upper);
     const std::string file = dir.file("class.json");
     write_certificate_at(*ci.bound.certificate, file);

@@ -151,8 +151,8 @@ RC_GTEST_PROP(IdentifyProperty, EveryIterateIsCertifiedAndTheObjectiveNeverRises
         written(certify_fixed_model(fixed, c.exp, certify_options(weighted_objective(lambda), data), *solver), cert);
     const double certified = weighted_objective(lambda).value(nearest_double(b.delta2), nearest_double(b.dmax2));
     RC_LOG() << "  iterate " << i << " [" << to_string(it.status) << "]: objective " << it.objective << " (delta2 " << it.delta2 << ", dmax2 " << it.dmax2
-             << "), certified " << b.verified << " " << certified << " " << b.reason << "\n";
-    RC_ASSERT(b.verified);
+             << "), certified " << b.verified() << " " << certified << " " << b.reason << "\n";
+    RC_ASSERT(b.verified());
     RC_ASSERT(check_certificate_file(cert).holds);
     RC_ASSERT(certified <= it.objective * (1 + 1e-4) + abs_tol);
     RC_ASSERT(it.delta2 >= 0.0);
@@ -206,8 +206,8 @@ RC_GTEST_PROP(IdentifyProperty, LtiModelEndToEnd, ()) {
   const LpvModel<Rational> fixed = fold_rounded(c.model, res.layout, res.p);
   const CertifiedBounds b =
       written(certify_fixed_model(fixed, exp_q, certify_options(weighted_objective(0.5), data, 64), *solver), dir.file("c.json"));
-  RC_LOG() << "certified " << b.verified << " " << b.reason << " delta " << b.delta << " dmax " << b.dmax << "\n";
-  RC_ASSERT(b.verified);
+  RC_LOG() << "certified " << b.verified() << " " << b.reason << " delta " << b.delta << " dmax " << b.dmax << "\n";
+  RC_ASSERT(b.verified());
   const CertificateVerdict v = check_certificate_file(dir.file("c.json"));
   RC_ASSERT(v.holds);
   const Certificate cert = read_certificate(dir.file("c.json"));
@@ -220,7 +220,7 @@ RC_GTEST_PROP(IdentifyProperty, LtiModelEndToEnd, ()) {
   // the identified model is never worse than the initial one (θ = 0 is feasible for the first relaxation)
   const CertifiedBounds b0 =
       written(certify_fixed_model(c.model, exp_q, certify_options(weighted_objective(0.5), data, 64), *solver), dir.file("c0.json"));
-  RC_ASSERT(b0.verified);
+  RC_ASSERT(b0.verified());
   const BoundObjective w = weighted_objective(0.5);
   const double obj = w.value(nearest_double(b.delta2), nearest_double(b.dmax2));
   const double obj0 = w.value(nearest_double(b0.delta2), nearest_double(b0.dmax2));

@@ -94,7 +94,7 @@ TEST(StateOffsetCertificate, VerifiesExactlyAndMutationsAreRejected) {
   const std::string path = dir.file("c.json");
   const CertifiedBounds b =
       gen::written(certify_fixed_model(model, exp, gen::certify_options(gen::weighted_objective(0.5), data), *solver), path);
-  ASSERT_TRUE(b.verified) << b.reason;
+  ASSERT_TRUE(b.verified()) << b.reason;
   std::cout << "certified delta = " << b.delta << ", dmax = " << b.dmax << ", margin " << b.margin << "\n";
   const CertificateVerdict ok = check_certificate_file(path);
   ASSERT_TRUE(ok.holds) << ok.reason;

@@ -111,7 +111,7 @@ TEST(Example2, IdentifiesTheOffsetAndCertifies) {
   co.objective = io.objective;
   co.data = read_data_table(csv).reference;
   const CertifiedBounds b = certify_fixed_model(fixed, xq, co, *solver);
-  ASSERT_TRUE(b.verified) << b.reason;
+  ASSERT_TRUE(b.verified()) << b.reason;
   EXPECT_TRUE(check_certificate_file(write_certificates(b, dir.file("ex2.cert.json")).certificate).holds);
   EXPECT_LT(b.dmax, 1e-6);  // noise-free: the offset explains the output exactly
   EXPECT_LT(b.delta, 1e-3);

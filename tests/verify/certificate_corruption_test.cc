@@ -51,7 +51,7 @@ struct Genuine {
     auto solver = make_solver("csdp");
     const CertifiedBounds b = certify_fixed_model(model, exp, o, *solver);
     write_certificates(b, cert);
-    if (!b.verified) throw std::runtime_error("the genuine certificate did not verify: " + b.reason);
+    if (!b.verified()) throw std::runtime_error("the genuine certificate did not verify: " + b.reason);
     std::ifstream in(cert, std::ios::binary);
     std::ostringstream s;
     s << in.rdbuf();
