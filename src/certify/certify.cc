@@ -13,6 +13,7 @@
 #include "lmi/relaxed_bmi_lmi.h"
 #include "certify/bound_scaling.h"
 #include "certify/dual_certify.h"
+#include "certify/fixed_bounds.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
@@ -63,8 +64,7 @@ void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 n
   if (N > 300) margin = std::max(margin, 16.0 * (N + 1) * N * 0x1.0p-53);
   for (int attempt = 0; attempt < 5; ++attempt, margin *= 100) {
     if (o.objective.delta_fixed()) {
-      const Rational delta =
-          rational_from_text(o.fixed_delta_text.empty() ? double_to_text(o.objective.delta) : o.fixed_delta_text);
+      const Rational delta = fixed_delta(o);
       c.delta2 = delta * delta;
     } else {
       c.delta2 = round_up_to_digits(exact_rational_of_double(norm2 * (1.0 + margin) + 1e-300), 12);
@@ -95,8 +95,7 @@ void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 n
 /// ‖d‖²/(n·ny) rounded up. Returns false (with out.reason) if a fixed d_max fails.
 bool set_dmax2(Certificate& c, const Rational& dd, const Rational& N, const CertifyOptions& o, CertifiedBounds& out) {
   if (o.objective.dmax_fixed()) {
-    const Rational dmax =
-        rational_from_text(o.fixed_dmax_text.empty() ? double_to_text(o.objective.dmax) : o.fixed_dmax_text);
+    const Rational dmax = fixed_dmax(o);
     c.dmax2 = dmax * dmax;
     if (dd > N * c.dmax2) {
       out.reason = "after rounding, ||d||^2/(n*ny) = " + double_to_text(nearest_double(dd / N)) +

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "certify/fixed_bounds.h"
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "toeplitz/fir.h"
@@ -135,12 +136,9 @@ DualClaim claim_of(const BoundObjective& obj) {
 
 
 FixedValues fixed_values(const CertifyOptions& o, DualClaim claim) {
-  const auto exact_of = [](const std::string& text, double value) {
-    return rational_from_text(text.empty() ? double_to_text(value) : text);
-  };
   FixedValues f;
-  if (o.objective.delta_fixed()) f.delta2 = exact_of(o.fixed_delta_text, o.objective.delta) * exact_of(o.fixed_delta_text, o.objective.delta);
-  if (o.objective.dmax_fixed()) f.dmax2 = exact_of(o.fixed_dmax_text, o.objective.dmax) * exact_of(o.fixed_dmax_text, o.objective.dmax);
+  if (o.objective.delta_fixed()) f.delta2 = fixed_delta(o) * fixed_delta(o);
+  if (o.objective.dmax_fixed()) f.dmax2 = fixed_dmax(o) * fixed_dmax(o);
   if (claim == DualClaim::kWeighted) f.lambda = rational_from_text(double_to_text(o.objective.lambda));
   return f;
 }

@@ -99,7 +99,9 @@ TEST(CertificateFiles, NoCertificateNoFile) {
   gen::ScratchDir dir("certificate_files_none");
   CertifiedBounds b;
   b.reason = "the solver stopped";
-  EXPECT_EQ(b.outcome, CertifyOutcome::kNotVerified);  // nothing certified: never "verified" by default
+  EXPECT_EQ(b.outcome, CertifyOutcome::kUndecided);  // nothing decided yet: never "verified" by default
+  EXPECT_FALSE(b.verified());
+  EXPECT_FALSE(b.invalidated());
   const CertificateFiles files = write_certificates(b, dir.file("c.json"));
   EXPECT_TRUE(files.certificate.empty());
   EXPECT_TRUE(files.lower.empty());
