@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     const auto solver = lpvid::make_solver("csdp");
     const lpvid::CertifiedBounds b = lpvid::certify_fixed_model(model, exp, options, *solver);
     lpvid::write_certificates(b, out);  // certification computes in memory; the files are the caller's
-    std::cout << "certify_fixed_model: " << (b.verified ? "verified" : "not verified: " + b.reason) << ", delta <= "
+    std::cout << "certify_fixed_model: " << (b.verified() ? "verified" : "not verified: " + b.reason) << ", delta <= "
               << b.delta << ", dmax <= " << b.dmax << "\n";
 
     // The program's own check, independent of what certify_fixed_model said.
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     const lpvid::CertificateVerdict t = lpvid::check_certificate(tampered, folder.empty() ? "." : folder);
     std::cout << "tampered (delta2 = dmax2 = 0): " << (t.holds ? "holds (WRONG)" : "rejected: " + t.reason) << "\n";
 
-    const bool ok = b.verified && v.holds && v.claim_text == "consistent" && !t.holds;
+    const bool ok = b.verified() && v.holds && v.claim_text == "consistent" && !t.holds;
     std::cout << (ok ? "all results as expected\n" : "some result is not the expected one\n");
     return ok ? 0 : 1;
   } catch (const lpvid::InputError& e) {
