@@ -19,6 +19,7 @@
 #include "support/gen_numbers.h"
 #include "toeplitz/signal_toeplitz.h"
 #include "verify/certificate/c1_check.h"
+#include "verify/certificate/tap_gram.h"
 #include "verify/psd/exact_psd.h"
 #include "verify/psd/power_of_two.h"
 
@@ -46,14 +47,20 @@ Mat<Rational> full_w_matrix(const Mat<Rational>& Tz, const Mat<Rational>& w, con
 }
 
 /// [δ²I, T_Δ; T_Δᵀ, I] on `L` samples, T_Δ block (a, b) = Δ_{a−b} (ny × nz).
-Mat<Rational> full_delta_matrix(const Mat<Rational>& taps, Eigen::Index L, Eigen::Index ny, Eigen::Index nz,
-                                const Rational& delta2) {
+/// T_Δ written out: block (a, b) = Δ_{a−b} for 0 ≤ a − b < K.
+Mat<Rational> dense_tap_toeplitz(const Mat<Rational>& taps, Eigen::Index L, Eigen::Index ny, Eigen::Index nz) {
   Mat<Rational> T = Mat<Rational>::Zero(L * ny, L * nz);
   for (Eigen::Index a = 0; a < L; ++a)
     for (Eigen::Index b = 0; b <= a; ++b)
       if (a - b < taps.rows())
         for (Eigen::Index i = 0; i < ny; ++i)
           for (Eigen::Index j = 0; j < nz; ++j) T(a * ny + i, b * nz + j) = taps(a - b, i * nz + j);
+  return T;
+}
+
+Mat<Rational> full_delta_matrix(const Mat<Rational>& taps, Eigen::Index L, Eigen::Index ny, Eigen::Index nz,
+                                const Rational& delta2) {
+  const Mat<Rational> T = dense_tap_toeplitz(taps, L, ny, nz);
   Mat<Rational> M = Mat<Rational>::Zero(L * (ny + nz), L * (ny + nz));
   M.topLeftCorner(L * ny, L * ny) = delta2 * Mat<Rational>::Identity(L * ny, L * ny);
   M.topRightCorner(L * ny, L * nz) = T;
@@ -202,6 +209,24 @@ RC_GTEST_PROP(VerifyC1DeltaForm, AgreesWithTheUnbalancedFullMatrix, ()) {
   RC_CLASSIFY(expected, "holds");
   RC_LOG() << got.text << "\n";
   RC_ASSERT(got.holds == expected);
+}
+
+// The Schur complement by the displacement recurrence (verify/certificate/
+// tap_gram.h) equals d2·I − T Tᵀ (ny ≤ nz) or d2·I − TᵀT (ny > nz) of the
+// written-out T_Δ, entry by entry, for K below, at and above L.
+RC_GTEST_PROP(VerifyC1DeltaForm, TapGramRecurrenceEqualsTheDenseProduct, ()) {
+  const int K = *rc::gen::inRange(1, 9), L = *rc::gen::inRange(1, 9);
+  const int ny = *rc::gen::inRange(1, 4), nz = *rc::gen::inRange(1, 4);
+  const Mat<Rational> taps = *gen::rational_matrix(K, ny * nz, gen::small_rational());
+  const Rational d2 = *gen::small_rational();
+  const Mat<Rational> T = dense_tap_toeplitz(taps, L, ny, nz);
+  const Mat<Rational> gram = ny <= nz ? Mat<Rational>(T * T.transpose()) : Mat<Rational>(T.transpose() * T);
+  const Mat<Rational> expected = d2 * Mat<Rational>::Identity(gram.rows(), gram.cols()) - gram;
+  const Mat<Rational> got = tap_gram_complement(taps, L, ny, nz, d2);
+  RC_ASSERT(got.rows() == expected.rows());
+  RC_ASSERT(got.cols() == expected.cols());
+  for (Eigen::Index i = 0; i < got.rows(); ++i)
+    for (Eigen::Index j = 0; j < got.cols(); ++j) RC_ASSERT(got(i, j) == expected(i, j));
 }
 
 // A single scalar tap h: T_Δ = h·I, ‖T_Δ‖ = |h|, so (C1) holds iff δ² ≥ h².

@@ -22,15 +22,16 @@
 ///                d² > 0 equivalent (multiply I − TᵀT/d² ⪰ 0 by d²); for
 ///                d² = 0, 1. has left T = 0, and both sides hold.
 ///     T is block banded (taps 0 … K−1), so T Tᵀ and TᵀT are block banded
-///     with K − 1 blocks on each side: formed in O(L·K²) block products.
+///     with K − 1 blocks on each side, formed by the displacement recurrence
+///     of verify/certificate/tap_gram.h in O(L·K) block entries.
 
 #include <cmath>
 #include <string>
 #include <utility>
 
 #include "core/number_text.h"
-#include "core/stop_request.h"
 #include "verify/certificate/c1_check.h"
+#include "verify/certificate/tap_gram.h"
 #include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
 #include "verify/psd/power_of_two.h"
@@ -48,65 +49,6 @@ std::pair<Rational, std::string> balancing_scale(const Rational& delta2) {
   }
   const Rational s = sqrt_scale(delta2);
   return {s, "2^" + std::to_string(*binary_magnitude(s))};  // exactly e for s = 2^e
-}
-
-/// The Schur complement of 3. (file comment): d2·I − T Tᵀ (ny ≤ nz) or
-/// d2·I − TᵀT, T the block lower-triangular Toeplitz matrix of `taps` (row t
-/// = Δ_t row-major, ny × nz) on L samples, formed on its band only. The taps
-/// are held as integers N over one common denominator D, so each entry is one
-/// integer dot product over D² (as in verify/certificate/column_gram.h), not a sum of
-/// rational products with a gcd each.
-Mat<Rational> schur_complement(const Mat<Rational>& taps, Eigen::Index L, Eigen::Index ny, Eigen::Index nz,
-                               const Rational& d2) {
-  const Eigen::Index K = taps.rows(), width = ny * nz;
-  Mpz D, f;
-  mpz_set_ui(D.z, 1);
-  for (Eigen::Index t = 0; t < K; ++t)
-    for (Eigen::Index c = 0; c < width; ++c)
-      if (mpq_srcptr q = taps(t, c).mpq(); !mpz_divisible_p(D.z, mpq_denref(q))) mpz_lcm(D.z, D.z, mpq_denref(q));
-  MpzArray num(static_cast<std::size_t>(K * width));
-  const auto at = [width](Eigen::Index t, Eigen::Index c) { return static_cast<std::size_t>(t * width + c); };
-  for (Eigen::Index t = 0; t < K; ++t)
-    for (Eigen::Index c = 0; c < width; ++c) {
-      mpq_srcptr q = taps(t, c).mpq();
-      mpz_divexact(f.z, D.z, mpq_denref(q));
-      mpz_mul(num[at(t, c)], f.z, mpq_numref(q));
-    }
-  Mpz D2;
-  mpz_mul(D2.z, D.z, D.z);
-  const bool rows = ny <= nz;  // T Tᵀ (blocks ny × ny) or TᵀT (blocks nz × nz)
-  const Eigen::Index m = rows ? ny : nz;
-  Mat<Rational> S = Mat<Rational>::Zero(L * m, L * m);
-  for (Eigen::Index k = 0; k < L * m; ++k) S(k, k) = d2;
-  Mpz dot;
-  Mpq g;
-  for (Eigen::Index a = 0; a < L; ++a)
-    for (Eigen::Index c = a; c < std::min(L, a + K); ++c) {
-      if (c == a) check_stop();  // a requested stop, once a block row
-      // T Tᵀ block (a, c) = Σ_b Δ_{a−b} Δ_{c−b}ᵀ over b ≤ a with c − b < K;
-      // TᵀT block (a, c) = Σ_r Δ_{r−a}ᵀ Δ_{r−c} over r ≥ c with r − a < K.
-      for (Eigen::Index p = 0; p < m; ++p)
-        for (Eigen::Index q = 0; q < m; ++q) {
-          mpz_set_ui(dot.z, 0);
-          if (rows) {
-            for (Eigen::Index b = std::max<Eigen::Index>(0, c - K + 1); b <= a; ++b)
-              for (Eigen::Index j = 0; j < nz; ++j)
-                mpz_addmul(dot.z, num[at(a - b, p * nz + j)], num[at(c - b, q * nz + j)]);
-          } else {
-            for (Eigen::Index r = c; r < std::min(L, a + K); ++r)
-              for (Eigen::Index i = 0; i < ny; ++i)
-                mpz_addmul(dot.z, num[at(r - a, i * nz + p)], num[at(r - c, i * nz + q)]);
-          }
-          if (mpz_sgn(dot.z) == 0) continue;
-          mpz_neg(mpq_numref(g.q), dot.z);
-          mpz_set(mpq_denref(g.q), D2.z);
-          mpq_canonicalize(g.q);
-          const Rational entry(g.q);  // −(block entry of T Tᵀ or TᵀT)
-          S(a * m + p, c * m + q) += entry;
-          if (c != a) S(c * m + q, a * m + p) += entry;
-        }
-    }
-  return S;
 }
 
 }  // namespace
@@ -138,7 +80,7 @@ C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, E
   const Rational inv_s = Rational(1) / s;
   const Rational d2 = delta2 * inv_s * inv_s;
   const Mat<Rational> scaled = taps.topRows(std::min(K, L)) * inv_s;  // Δ_t / s
-  const Mat<Rational> M = schur_complement(scaled, L, ny, nz, d2);
+  const Mat<Rational> M = tap_gram_complement(scaled, L, ny, nz, d2);
   const std::string which = std::string(ny <= nz ? "d2*I - T*T'" : "d2*I - T'*T") + ", T = T_Delta/s, d2 = delta2/s^2" +
                             ", s = " + s_text + " (Schur complement of " + full + ")";
   const PsdResult psd = decide_psd(M);
