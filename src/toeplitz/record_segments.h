@@ -12,9 +12,11 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/scalar.h"
+#include "toeplitz/exact_convolution.h"
 
 namespace lpvid {
 
@@ -74,10 +76,15 @@ Eigen::Index records_horizon(const Mat<T>& z, const RecordLengths& lengths_in) {
 /// w_j = Σ_{l=0}^{min(j − m'_k, K−1)} h_l z_{j−l} for j ≥ m'_k = max(0, n_k − L),
 /// 0 before. `taps` is K × (ny·nz) (K ≤ L), row l = h_l row-major. One
 /// record: the convolution of the paper's Poolla form with m' = n − L.
-/// Callers check that each record's z is 0 before its m'_k.
+/// Callers check that each record's z is 0 before its m'_k. Exact sums go
+/// through integers over common denominators (toeplitz/exact_convolution.h).
 template <typename T>
 Mat<T> apply_fir_records(const Mat<T>& taps, const Mat<T>& z, Eigen::Index ny, Eigen::Index horizon,
                          const RecordLengths& lengths_in) {
+  if constexpr (std::is_same_v<T, Rational>) {
+    Mat<Rational> exact;
+    if (apply_fir_records_exact(taps, z, ny, horizon, lengths_in, exact)) return exact;
+  }
   const RecordLengths lengths = record_lengths_of(lengths_in, z.rows());
   const std::vector<Eigen::Index> start = record_starts(lengths);
   const Eigen::Index nz = z.cols(), K = taps.rows();
@@ -100,6 +107,10 @@ Mat<T> apply_fir_records(const Mat<T>& taps, const Mat<T>& z, Eigen::Index ny, E
 /// z is n × nz. Returns L × (ny·nz), row l = C_l row-major.
 template <typename T>
 Mat<T> fir_adjoint_records(const Mat<T>& g, const Mat<T>& z, Eigen::Index horizon, const RecordLengths& lengths_in) {
+  if constexpr (std::is_same_v<T, Rational>) {
+    Mat<Rational> exact;
+    if (fir_adjoint_records_exact(g, z, horizon, lengths_in, exact)) return exact;
+  }
   const RecordLengths lengths = record_lengths_of(lengths_in, z.rows());
   const std::vector<Eigen::Index> start = record_starts(lengths);
   const Eigen::Index nz = z.cols(), ny = g.cols();
