@@ -261,6 +261,14 @@ std::string solve_status_text(const CertifiedBounds& b) {
   return b.solve_status ? to_string(*b.solve_status) : "given taps (no solve)";
 }
 
+void add_stage_seconds(CertifiedBounds& into, const CertifiedBounds& from) {
+  into.signals_seconds += from.signals_seconds;
+  into.solve_seconds += from.solve_seconds;
+  into.upper_build_seconds += from.upper_build_seconds;
+  into.verify_seconds += from.verify_seconds;
+  into.total_seconds += from.total_seconds;
+}
+
 double relative_gap(const CertifiedBounds& b) {
   if (!b.verified() || !b.lower.verified) return NAN;
   if (b.upper == 0) return 0.0;
@@ -323,13 +331,6 @@ void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, Cert
     run.o.progress(stage_done("upper end", b.verified(), b.upper_build_seconds - built, b.verify_seconds - checked));
 }
 
-/// A certification `from` replaced by `into`: `into` also counts the time
-/// `from` spent (its solves, its upper end's building and checks).
-void add_upper_stage_seconds(CertifiedBounds& into, const CertifiedBounds& from) {
-  into.solve_seconds += from.solve_seconds;
-  into.upper_build_seconds += from.upper_build_seconds;
-  into.verify_seconds += from.verify_seconds;
-}
 
 /// The lower end from the dual of a solve (lifted to the full horizon when K < L); keeps the best.
 void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, CertifiedBounds& out) {
@@ -360,7 +361,7 @@ void decide_fixed_bounds(const CertifyRun& run, const DeltaFormSolution& first, 
     full = run.solve(0, false, true);
     CertifiedBounds again;
     certify_upper_end(run, full, again);
-    add_upper_stage_seconds(again, out);
+    add_stage_seconds(again, out);
     if (again.verified() || !has_solution(full.solve.status)) {
       const std::string restricted = out.reason;
       out = again;
@@ -401,11 +402,11 @@ void bracket_optimum(const CertifyRun& run, const DeltaFormSolution& first, Cert
   CertifiedBounds better;
   certify_upper_end(run, full, better);
   if (better.verified() && (!out.verified() || better.upper < out.upper)) {
-    add_upper_stage_seconds(better, out);
+    add_stage_seconds(better, out);
     better.lower = out.lower;
     out = better;
   } else {
-    add_upper_stage_seconds(out, better);
+    add_stage_seconds(out, better);
   }
   out.full_horizon = true;
   certify_lower_end(run, full, out);

@@ -182,6 +182,10 @@ CertifyOutcome outcome_of(const CertifiedBounds& b, const BoundObjective& object
 /// (to_string(SolveStatus)), or "given taps (no solve)".
 std::string solve_status_text(const CertifiedBounds& b);
 
+/// `into` also counts the time of a certification `from` that it replaces
+/// or that ran beside it (signals, solves, upper end, total; not `lower`).
+void add_stage_seconds(CertifiedBounds& into, const CertifiedBounds& from);
+
 /// Relative gap (upper − lower)/upper of a certified interval (0 when upper = 0).
 double relative_gap(const CertifiedBounds& b);
 
