@@ -1,7 +1,9 @@
 #pragma once
 // What the table benches measure alike: a comma-separated list of sizes from
-// the command line, seconds since a time point, a file's size and the
-// process's peak resident memory.
+// the command line, seconds since a time point, the process's CPU seconds, a
+// file's size and the process's peak resident memory.
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +26,23 @@ inline std::vector<int> int_list(const char* text) {
 inline double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+/// CPU seconds (user + system) this process has used so far: unlike wall
+/// time, not inflated by other jobs on a busy machine.
+inline double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  const auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return s(u.ru_utime) + s(u.ru_stime);
+}
+
+/// A stage's wall and CPU seconds: started at construction.
+struct StageClock {
+  std::chrono::steady_clock::time_point wall0 = std::chrono::steady_clock::now();
+  double cpu0 = cpu_seconds();
+  double wall() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(); }
+  double cpu() const { return cpu_seconds() - cpu0; }
+};
 
 /// The file's size in kB (0 when it does not exist).
 inline double kilobytes(const std::string& path) {

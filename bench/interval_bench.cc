@@ -38,7 +38,7 @@ using namespace lpvid;
 using bench::int_list;
 using bench::kilobytes;
 using bench::peak_mb;
-using bench::seconds_since;
+using bench::StageClock;
 
 namespace {
 
@@ -101,6 +101,7 @@ void siso_case(int n, LpvModel<Rational>* model, Experiment<Rational>* exp) {
 
 struct Row {
   double certify = 0, verify_upper = 0, verify_lower = 0, gap = NAN, invalidate = 0, verify_invalid = 0;
+  double cpu_certify = 0, cpu_verify_upper = 0, cpu_invalidate = 0;  ///< CPU seconds of this process
   double kb_upper = 0, kb_lower = 0, kb_invalid = 0;
   std::string upper_ok = "-", lower_ok = "-", verdict = "-";
   long horizon = 0;
@@ -117,25 +118,30 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   co.data = read_data_table(data).reference;
   const std::string upper_file = (dir / (tag + ".interval.json")).string();
   co.progress = [tag](const std::string& stage) { std::fprintf(stderr, "  [%s] %s\n", tag.c_str(), stage.c_str()); };
-  auto t0 = std::chrono::steady_clock::now();
+  StageClock t0;
   const CertifiedBounds b = certify_fixed_model(model, exp, co, *solver);
-  row.certify = seconds_since(t0);
+  row.certify = t0.wall();
+  row.cpu_certify = t0.cpu();
   const CertificateFiles files = write_certificates(b, upper_file);
   row.horizon = b.horizon;
   row.gap = relative_gap(b);
-  std::fprintf(stderr, "  (n = %ld: solve %.1f s, upper end built and checked %.1f s, lower end %.1f s, total %.1f s)\n",
-               static_cast<long>(exp.n()), b.solve_seconds, b.verify_seconds, b.lower.seconds, row.certify);
+  std::fprintf(stderr,
+               "  (n = %ld, wall: exact signals %.1f s, solve %.1f s, upper end built %.1f s + checked exactly %.1f s, "
+               "lower end built %.1f s + checked exactly %.1f s, total %.1f s; CPU %.1f s)\n",
+               static_cast<long>(exp.n()), b.signals_seconds, b.solve_seconds, b.upper_build_seconds, b.verify_seconds,
+               b.lower.seconds - b.lower.check_seconds, b.lower.check_seconds, row.certify, row.cpu_certify);
   if (!b.verified()) std::fprintf(stderr, "  (n = %ld: no upper end: %s)\n", static_cast<long>(exp.n()), b.reason.c_str());
   if (!b.lower.verified) std::fprintf(stderr, "  (n = %ld: no lower end: %s)\n", static_cast<long>(exp.n()), b.lower.reason.c_str());
-  t0 = std::chrono::steady_clock::now();
+  t0 = StageClock{};
   row.upper_ok = b.verified() && check_certificate_file(files.certificate).holds ? "yes" : "NO";
-  row.verify_upper = seconds_since(t0);
+  row.verify_upper = t0.wall();
+  row.cpu_verify_upper = t0.cpu();
   if (b.lower.verified && b.lower.verifier_details.find("compact dual form not used") != std::string::npos)
     std::fprintf(stderr, "  (n = %ld: %s)\n", static_cast<long>(exp.n()), b.lower.verifier_details.c_str());
   if (b.lower.verified) {
-    t0 = std::chrono::steady_clock::now();
+    t0 = StageClock{};
     row.lower_ok = check_certificate_file(files.lower).holds ? "yes" : "NO";
-    row.verify_lower = seconds_since(t0);
+    row.verify_lower = t0.wall();
     row.kb_lower = kilobytes(files.lower);
   }
   if (b.verified()) row.kb_upper = kilobytes(files.certificate);
@@ -146,25 +152,27 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   io.objective.kind = BoundObjective::Kind::kFeasibility;
   io.objective.dmax = dmax;
   io.fixed_dmax_text = double_to_text(dmax);
-  t0 = std::chrono::steady_clock::now();
+  t0 = StageClock{};
   const CertifiedBounds v = certify_fixed_model(model, exp, io, *solver);
-  row.invalidate = seconds_since(t0);
+  row.invalidate = t0.wall();
+  row.cpu_invalidate = t0.cpu();
   const std::string invalid_file = write_certificates(v, (dir / (tag + ".invalid.json")).string()).certificate;
   row.verdict = v.invalidated() ? "invalidated" : v.verified() ? "CONSISTENT?" : "undecided";
   if (!v.invalidated()) std::fprintf(stderr, "  (n = %ld, dmax = %g: %s)\n", static_cast<long>(exp.n()), dmax, v.reason.c_str());
   if (v.invalidated()) {
-    t0 = std::chrono::steady_clock::now();
+    t0 = StageClock{};
     if (!check_certificate_file(invalid_file).holds) row.verdict = "NOT CHECKED";
-    row.verify_invalid = seconds_since(t0);
+    row.verify_invalid = t0.wall();
     row.kb_invalid = kilobytes(invalid_file);
   }
   return row;
 }
 
 void print(const char* sys, int n, const Row& r) {
-  std::printf("%-4s %4d %4ld | %9.2f %7.3f %-3s %7.3f %-3s %10.2e | %9.2f %-11s %7.3f | %7.0f %7.0f %7.0f | %7.0f\n", sys, n,
-              r.horizon, r.certify, r.verify_upper, r.upper_ok.c_str(), r.verify_lower, r.lower_ok.c_str(), r.gap,
-              r.invalidate, r.verdict.c_str(), r.verify_invalid, r.kb_upper, r.kb_lower, r.kb_invalid, peak_mb());
+  std::printf("%-4s %4d %4ld | %9.2f %7.3f %-3s %7.3f %-3s %10.2e | %9.2f %-11s %7.3f | %7.0f %7.0f %7.0f | %7.0f | %8.2f %7.3f %8.2f\n",
+              sys, n, r.horizon, r.certify, r.verify_upper, r.upper_ok.c_str(), r.verify_lower, r.lower_ok.c_str(), r.gap,
+              r.invalidate, r.verdict.c_str(), r.verify_invalid, r.kb_upper, r.kb_lower, r.kb_invalid, peak_mb(),
+              r.cpu_certify, r.cpu_verify_upper, r.cpu_invalidate);
   std::fflush(stdout);
 }
 
@@ -181,9 +189,9 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(dir);
   std::printf("Certified interval of min dmax^2 at fixed delta (SISO delta = %g, 2x2 delta = %g), default options\n",
               delta_siso, delta_2x2);
-  std::printf("%-4s %4s %4s | %9s %7s %-3s %7s %-3s %10s | %9s %-11s %7s | %7s %7s %7s | %7s\n", "sys", "n", "L", "interval",
-              "ver.up", "ok", "ver.lo", "ok", "rel.gap", "invalid.", "verdict", "ver.inv", "kB.up", "kB.lo", "kB.inv",
-              "peak.MB");
+  std::printf("%-4s %4s %4s | %9s %7s %-3s %7s %-3s %10s | %9s %-11s %7s | %7s %7s %7s | %7s | %8s %7s %8s\n", "sys", "n",
+              "L", "interval", "ver.up", "ok", "ver.lo", "ok", "rel.gap", "invalid.", "verdict", "ver.inv", "kB.up", "kB.lo",
+              "kB.inv", "peak.MB", "cpu.int", "cpu.vup", "cpu.inv");
   for (int n : siso) {
     LpvModel<Rational> m;
     Experiment<Rational> e;
@@ -212,6 +220,7 @@ int main(int argc, char** argv) {
   }
   std::printf("(seconds, wall clock: interval = certify_fixed_model with both ends; ver.up / ver.lo = lpvid-verify on the\n"
               " primal and the dual certificate; invalid. = certify at dmax = 0.9*sqrt(lower), ver.inv = its check;\n"
-              " kB = certificate file sizes; peak.MB = this process's peak resident memory so far)\n");
+              " kB = certificate file sizes; peak.MB = this process's peak resident memory so far;\n"
+              " cpu.int / cpu.vup / cpu.inv = CPU seconds (user + system) of interval, ver.up and invalid.)\n");
   return 0;
 }

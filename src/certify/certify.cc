@@ -1,12 +1,12 @@
 #include "certify/certify.h"
 
-#include <chrono>
 #include <cmath>
 
 #include "core/decimal_rounding.h"
 #include "core/finite_check.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "core/stopwatch.h"
 #include "lmi/delta_form_barrier.h"
 #include "lmi/delta_form_lmi.h"
 #include "lmi/delta_form_solve.h"
@@ -33,17 +33,18 @@ double toeplitz_norm2(const Mat<double>& taps, Eigen::Index horizon, Eigen::Inde
   return std::max(0.0, es.eigenvalues().maxCoeff());
 }
 
-/// Step 6: the certificate through its JSON text and back, checked again by
-/// the verifier's core (what a file would carry is what was checked).
+/// Step 6: the certificate through its JSON text and back, checked by the
+/// verifier's core: what a file would carry is what is checked, once.
 CertificateVerdict round_trip_check(const Certificate& c, const Experiment<Rational>& exp) {
   return check_certificate(parse_certificate(certificate_json(c), "the certificate (in memory)"), exp);
 }
 
-/// Steps 5–6, shared by both forms: δ² with the smallest margin that passes
-/// the exact check, then the round trip.
+/// Steps 5–6, shared by both forms: δ² with the smallest margin whose
+/// certificate passes the exact check after its JSON round trip (each δ²
+/// tried is checked exactly once). `build` started with step 3.
 template <typename Norm2>
 void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 norm2_fn, const CertifyOptions& o,
-                        const std::string& solver_name, CertifiedBounds& out) {
+                        const std::string& solver_name, const Stopwatch& build, CertifiedBounds& out) {
   name_certificate_data(c, o, exp);
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
@@ -51,6 +52,7 @@ void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 n
   c.info["solver_status"] = solve_status_text(out);
   const double norm2 = o.objective.delta_fixed() ? 0.0 : norm2_fn();
   CertificateVerdict v;
+  double checking = 0;
   // The smallest margin is 1e-9. For large (C1) matrices the exact fallback
   // of the PSD decision is slow (minutes at size 800), so start where the
   // rigorous floating filter can decide: its shift is about (N+1)·u·tr(M)
@@ -70,25 +72,26 @@ void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 n
       c.delta2 = round_up_to_digits(exact_rational_of_double(norm2 * (1.0 + margin) + 1e-300), 12);
     }
     c.info["delta2_margin"] = margin;
-    v = check_certificate(c, exp);
+    const Stopwatch check;
+    v = round_trip_check(c, exp);
+    checking += check.seconds();
     if (v.holds || o.objective.delta_fixed()) break;
   }
+  out.verify_seconds += checking;
+  out.upper_build_seconds += build.seconds() - checking;
   out.margin = margin;
   if (!v.holds) {
     out.reason = "exact check failed: " + v.reason;
     return;
   }
-  const auto t1 = std::chrono::steady_clock::now();
-  const CertificateVerdict again = round_trip_check(c, exp);
-  out.verify_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-  if (again.holds) out.outcome = CertifyOutcome::kVerified;
-  out.reason = again.holds ? "" : "the certificate failed after its JSON round trip: " + again.reason;
-  out.verifier_details = again.details;
+  out.outcome = CertifyOutcome::kVerified;
+  out.reason.clear();
+  out.verifier_details = v.details;
   out.delta2 = c.delta2;
   out.dmax2 = c.dmax2;
   out.delta = sqrt_up(c.delta2);
   out.dmax = sqrt_up(c.dmax2);
-  if (again.holds) out.certificate = c;
+  out.certificate = c;
 }
 
 /// d_max² of the certificate: the fixed one (which must hold exactly) or
@@ -119,6 +122,7 @@ Rational squared_norm(const Mat<Rational>& m) {
 void certify_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const Simulation<Rational>& sim, const Mat<Rational>& r,
                   const Mat<double>& taps, Eigen::Index horizon, const CertifyOptions& o,
                   const std::string& solver_name, CertifiedBounds& out) {
+  const Stopwatch build;
   const Eigen::Index n = r.rows(), ny = model.ny, nz = model.nz();
   // 3. Rounded taps.
   Certificate c;
@@ -148,7 +152,7 @@ void certify_taps(const LpvModel<Rational>& model, const Experiment<Rational>& e
   const Mat<Rational> w = apply_fir_records(c.taps, sim.z, ny, c.horizon, exp.records);
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - w)), Rational(static_cast<long>(n * ny)), o, out)) return;
 
-  finish_certificate(c, exp, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver_name, out);
+  finish_certificate(c, exp, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver_name, build, out);
 }
 
 /// The exact signals every certification starts from: the data with the
@@ -257,6 +261,14 @@ std::string solve_status_text(const CertifiedBounds& b) {
   return b.solve_status ? to_string(*b.solve_status) : "given taps (no solve)";
 }
 
+void add_stage_seconds(CertifiedBounds& into, const CertifiedBounds& from) {
+  into.signals_seconds += from.signals_seconds;
+  into.solve_seconds += from.solve_seconds;
+  into.upper_build_seconds += from.upper_build_seconds;
+  into.verify_seconds += from.verify_seconds;
+  into.total_seconds += from.total_seconds;
+}
+
 double relative_gap(const CertifiedBounds& b) {
   if (!b.verified() || !b.lower.verified) return NAN;
   if (b.upper == 0) return 0.0;
@@ -290,6 +302,15 @@ struct CertifyRun {
   }
 };
 
+/// Seconds to one decimal, for progress lines.
+std::string tenths_text(double seconds) { return double_to_text(std::round(seconds * 10) / 10); }
+
+/// The progress line after a certificate's stage: what, whether it passed, where the time went.
+std::string stage_done(const std::string& what, bool certified, double build_seconds, double check_seconds) {
+  return what + (certified ? " certified" : " not certified") + ": built in " + tenths_text(build_seconds) +
+         " s, checked exactly in " + tenths_text(check_seconds) + " s";
+}
+
 /// Steps 3–6 on a solve: the primal certificate (the upper end) in `b`.
 void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, CertifiedBounds& b) {
   b.solve_status = sol.solve.status;
@@ -302,11 +323,14 @@ void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, Cert
     return;
   }
   b.delta2_solver = sol.delta2;
-  if (run.o.progress)
-    run.o.progress("solved in " + double_to_text(std::round(sol.solve.seconds * 10) / 10) + " s; checking the upper end exactly");
+  if (run.o.progress) run.o.progress("solved in " + tenths_text(sol.solve.seconds) + " s; checking the upper end exactly");
+  const double built = b.upper_build_seconds, checked = b.verify_seconds;
   certify_taps(run.model, run.exact.exp, run.exact.sim, run.exact.r, sol.taps, sol.horizon, run.o, run.solver.name(), b);
   if (b.verified()) b.upper = objective_at(run.o.objective, b.delta2, b.dmax2);
+  if (run.o.progress)
+    run.o.progress(stage_done("upper end", b.verified(), b.upper_build_seconds - built, b.verify_seconds - checked));
 }
+
 
 /// The lower end from the dual of a solve (lifted to the full horizon when K < L); keeps the best.
 void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, CertifiedBounds& out) {
@@ -323,6 +347,8 @@ void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, Certif
     out.lower.reason = d.reason;
   }
   out.lower.seconds += d.seconds;
+  out.lower.check_seconds += d.check_seconds;
+  if (run.o.progress) run.o.progress(stage_done("lower end", d.verified, d.seconds - d.check_seconds, d.check_seconds));
 }
 
 /// Fixed bounds without a primal certificate: a restricted program's
@@ -335,7 +361,7 @@ void decide_fixed_bounds(const CertifyRun& run, const DeltaFormSolution& first, 
     full = run.solve(0, false, true);
     CertifiedBounds again;
     certify_upper_end(run, full, again);
-    again.solve_seconds += out.solve_seconds;
+    add_stage_seconds(again, out);
     if (again.verified() || !has_solution(full.solve.status)) {
       const std::string restricted = out.reason;
       out = again;
@@ -351,6 +377,8 @@ void decide_fixed_bounds(const CertifyRun& run, const DeltaFormSolution& first, 
   DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, full, run.o);
   if (d.verified) out.outcome = CertifyOutcome::kInvalidated;
   out.lower.seconds = d.seconds;
+  out.lower.check_seconds = d.check_seconds;
+  if (run.o.progress) run.o.progress(stage_done("invalidation", d.verified, d.seconds - d.check_seconds, d.check_seconds));
   out.lower.verifier_details = d.verifier_details;
   if (d.verified) out.certificate = std::move(d.certificate);
   if (!d.verified) out.reason += "; no exact invalidation certificate: " + d.reason;
@@ -373,11 +401,12 @@ void bracket_optimum(const CertifyRun& run, const DeltaFormSolution& first, Cert
   const DeltaFormSolution full = run.solve(0, false, true);
   CertifiedBounds better;
   certify_upper_end(run, full, better);
-  out.solve_seconds += full.solve.seconds;
   if (better.verified() && (!out.verified() || better.upper < out.upper)) {
-    better.solve_seconds = out.solve_seconds;
+    add_stage_seconds(better, out);
     better.lower = out.lower;
     out = better;
+  } else {
+    add_stage_seconds(out, better);
   }
   out.full_horizon = true;
   certify_lower_end(run, full, out);
@@ -387,9 +416,10 @@ void bracket_optimum(const CertifyRun& run, const DeltaFormSolution& first, Cert
 
 CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                     const CertifyOptions& options, SdpSolver& solver) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch total;
   // 1. Exact signals, and their doubles once.
   const ExactSignals es = exact_signals(model, exp_in);
+  const double signals_seconds = total.seconds();
   if (es.horizon == 0 || model.nz() == 0) check_uncertainty_excited(nearest_double(es.sim.z));  // throws the usual InputError
   DeltaFormSignals doubles{nearest_double(es.sim.z), nearest_double(es.r), es.exp.records};
   check_finite_signal(doubles.z, "certification (Theorem 2.1)", "the model's uncertainty channel z, in double precision");
@@ -418,15 +448,18 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   else out.lower.reason = "not requested";
   if (run.kyp && run.feasibility && !out.verified()) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
   out.scales = scales;
-  out.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.signals_seconds = signals_seconds;
+  out.total_seconds = total.seconds();
   out.outcome = outcome_of(out, options.objective);
   return out;
 }
 
 CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                   const Mat<double>& taps, const CertifyOptions& o, const std::string& solver_name) {
+  const Stopwatch total;
   CertifiedBounds out;
   const ExactSignals es = exact_signals(model, exp_in);
+  out.signals_seconds = total.seconds();
   const Simulation<Rational>& sim = es.sim;
   const Mat<Rational>& r = es.r;
   const Eigen::Index horizon = es.horizon;
@@ -440,6 +473,7 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
   out.delta2_solver = toeplitz_norm2(used, horizon, model.ny, model.nz());
   certify_taps(model, es.exp, sim, r, used, horizon, o, solver_name, out);
   if (out.verified()) out.upper = objective_at(o.objective, out.delta2, out.dmax2);
+  out.total_seconds = total.seconds();
   out.outcome = outcome_of(out, o.objective);
   return out;
 }
@@ -448,11 +482,12 @@ CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experim
 namespace lpvid {
 namespace {
 
-/// certify_fixed_model_paper without its outcome.
+/// certify_fixed_model_paper without its outcome (`total` started with the call).
 CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in, const CertifyOptions& o,
-                               SdpSolver& solver) {
+                               SdpSolver& solver, const Stopwatch& total) {
   CertifiedBounds out;
   const ExactSignals es = exact_signals(model, exp_in);
+  out.signals_seconds = total.seconds();
   const Experiment<Rational>& exp = es.exp;
   const Simulation<Rational>& sim = es.sim;
   const Mat<Rational>& r = es.r;
@@ -470,6 +505,7 @@ CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment
     out.reason = std::string("the w-form solve of Theorem 2.1 ended with status ") + to_string(sol.solve.status);
     return out;
   }
+  const Stopwatch build;
   Certificate c;
   c.model = model;
   c.mode = ToeplitzMode::kPaper;
@@ -482,7 +518,7 @@ CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment
     for (Eigen::Index i = 0; i < ny; ++i) c.w(k, i) = round_to_digits(sol.w(k, i), o.digits);
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - c.w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
   out.delta2_solver = sol.delta2;
-  finish_certificate(c, exp, [&] { return sol.delta2; }, o, solver.name(), out);
+  finish_certificate(c, exp, [&] { return sol.delta2; }, o, solver.name(), build, out);
   return out;
 }
 
@@ -492,7 +528,9 @@ CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const
                                           const CertifyOptions& o, SdpSolver& solver) {
   if (several_records(exp_in.records))
     throw InputError("--toeplitz paper takes one record: its T_z = T_G12 T_u has no meaning across records (use the signal mode)");
-  CertifiedBounds out = certify_w_form(model, exp_in, o, solver);
+  const Stopwatch total;
+  CertifiedBounds out = certify_w_form(model, exp_in, o, solver, total);
+  out.total_seconds = total.seconds();
   out.outcome = outcome_of(out, o.objective);
   return out;
 }

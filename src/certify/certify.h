@@ -11,11 +11,12 @@
 ///  4. w = Δ∗z, d = r − w are exact; d_max² := ‖d‖²/(n·ny) rounded UP to 15
 ///     digits (or the fixed d_max², which must then hold exactly);
 ///  5. δ² := ‖T_Δ‖²_floating·(1 + margin) rounded up to 12 digits, margin
-///     starting at 1e-9 and multiplied by 100 until the exact check passes
-///     (at most 5 tries);
-///  6. the certificate goes through its JSON text and back and is checked
-///     again by the verifier's core (verify/certificate/certificate_check.h)
-///     on the exact experiment. `verified` is that verdict. Nothing is
+///     starting at 1e-9 and multiplied by 100 until the exact check of step 6
+///     passes (at most 5 tries);
+///  6. each δ² tried is checked exactly ONCE, as a file would carry it: the
+///     certificate goes through its JSON text and back and is checked by
+///     the verifier's core (verify/certificate/certificate_check.h) on the
+///     exact experiment. `verified` is that verdict. Nothing is
 ///     written here: the certificates are returned in CertifiedBounds, and
 ///     the front end places them in files (certify/certificate_files.h).
 /// Then, in certify_fixed_model's stages: for an optimised bound the lower
@@ -128,7 +129,12 @@ struct CertifiedBounds {
   /// barrier to the SDP backend (DeltaFormSolution::fallback, "; "-joined);
   /// empty when none did. Reports and progress lines show it.
   std::string fallback;
-  double solve_seconds = 0, verify_seconds = 0;
+  /// Where the time went (wall-clock seconds, summed over every solve and
+  /// certificate of this call, also those not kept): the exact simulation
+  /// and residual (step 1), the solves (step 2), building the upper end's
+  /// certificate (steps 3–5 without the check) and its exact check (step 6,
+  /// once per margin tried). The lower end's are in `lower`.
+  double signals_seconds = 0, solve_seconds = 0, upper_build_seconds = 0, verify_seconds = 0;
   std::string verifier_details;
 
   /// The checked certificate: "consistent" when verified, "invalidated" when
@@ -141,12 +147,14 @@ struct CertifiedBounds {
     std::string reason;       ///< why there is no certified lower end
     Rational value;           ///< the certified lower end on the objective
     std::optional<Certificate> certificate;  ///< its checked certificate ("lower_bound")
-    double seconds = 0;
+    /// Building and checking the dual certificates (also an invalidation
+    /// certificate's), and of that the exact checks alone.
+    double seconds = 0, check_seconds = 0;
     std::string verifier_details;
   } lower;
   Rational upper;             ///< the objective at the primal certificate (when verified)
   bool full_horizon = false;  ///< the certificates come from a full-horizon solve (K = L)
-  double total_seconds = 0;
+  double total_seconds = 0;   ///< the whole certifying call
   SignalScales scales;        ///< with CertifyOptions::scale_signals: the scales and λ in original units
 };
 
@@ -173,6 +181,10 @@ CertifyOutcome outcome_of(const CertifiedBounds& b, const BoundObjective& object
 /// The status text of reports and certificates: the solve's status
 /// (to_string(SolveStatus)), or "given taps (no solve)".
 std::string solve_status_text(const CertifiedBounds& b);
+
+/// `into` also counts the time of a certification `from` that it replaces
+/// or that ran beside it (signals, solves, upper end, total; not `lower`).
+void add_stage_seconds(CertifiedBounds& into, const CertifiedBounds& from);
 
 /// Relative gap (upper − lower)/upper of a certified interval (0 when upper = 0).
 double relative_gap(const CertifiedBounds& b);

@@ -43,6 +43,7 @@ struct DualOutcome {
   std::string reason;            ///< why not
   Rational bound;                ///< the claimed number: invalidation margin (> 0) or the lower end on the objective
   double seconds = 0;            ///< building + checking
+  double check_seconds = 0;      ///< of that, the exact checks
   std::string verifier_details;
   std::optional<Certificate> certificate;  ///< only when verified
   std::string note;              ///< why the compact form was not used (when it was tried)

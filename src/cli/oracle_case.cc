@@ -220,7 +220,9 @@ std::optional<NotJudged> not_judged(const CommandRun& run, const CaseFiles& file
   return std::nullopt;
 }
 
-/// A refutation's evidence is checked once more, from its file, by the verifier.
+/// A refutation's evidence is checked once more, from its file, by the
+/// verifier: not a repeat of the in-memory check, it guards the file actually
+/// written (its relative data path, its sha256 against the copied data).
 void recheck_evidence(CaseReport& rep) {
   if (rep.judgement.verdict != OracleVerdict::kRefuted && rep.judgement.verdict != OracleVerdict::kBadWitness) return;
   const CertificateVerdict v = check_certificate_file(rep.judgement.evidence);

@@ -55,8 +55,15 @@ nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& 
   c["delta2_margin"] = b.margin;
   c["solver_status"] = solve_status_text(b);
   if (!b.fallback.empty()) c["fallback"] = b.fallback;
+  // Where the time went, stage by stage (CertifiedBounds: every solve and
+  // certificate of the call, also those not kept).
+  c["signals_seconds"] = b.signals_seconds;
   c["solve_seconds"] = b.solve_seconds;
+  c["upper_build_seconds"] = b.upper_build_seconds;
   c["verify_seconds"] = b.verify_seconds;
+  c["dual_seconds"] = b.lower.seconds;
+  c["dual_check_seconds"] = b.lower.check_seconds;
+  c["total_seconds"] = b.total_seconds;
   c["verifier"] = b.verifier_details;
   j["certification"] = c;
   return j;
@@ -153,6 +160,7 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
                              : "upper end from a K-tap restriction (it can only raise the upper end); lower end from its "
                                "dual lifted to the full horizon";
   j["lower_seconds"] = b.lower.seconds;
+  j["lower_check_seconds"] = b.lower.check_seconds;
   return j;
 }
 
