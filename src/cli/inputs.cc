@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <tuple>
 #include <iostream>
+#include <map>
 
 #include "core/input_error.h"
 #include "core/number_text.h"
@@ -198,20 +199,26 @@ struct LoadedRecord {
   Vec<Rational> x0;  ///< --x0 (empty: the model's)
 };
 
-LoadedRecord load_record(const RecordOption& r, const CommonOptions& o, const LpvModel<Rational>& model_q,
+/// One record from `data` (its file read once): with --rows only the
+/// window's cells are read as numbers (a job of `lpvid jobs` reads 200 rows
+/// of a long record, not all of them).
+LoadedRecord load_record(const RecordOption& r, const CommonOptions& o, const DataTable& data, const LpvModel<Rational>& model_q,
                          const LpvModel<double>& model_d) {
-  const DataTable data = o.names.empty() ? read_data_table(r.path) : read_data_table(r.path, o.names);
-  LoadedRecord rec{make_experiment<Rational>(data.table, model_q.columns), make_experiment<double>(data.table, model_d.columns),
-                   data.reference, data.table.header, {}};
+  TextTable window;
+  DataReference ref = data.reference;
+  const long rows = static_cast<long>(data.table.rows.size());
+  if (!r.rows_text.empty() && rows > 0) {  // an empty table: make_experiment says "no data rows"
+    const auto [b, e] = parse_row_range(r.rows_text, "--rows");
+    if (e > rows)
+      throw InputError("--rows " + r.rows_text + ": " + (o.data_paths.size() > 1 ? r.path + " has" : std::string("the data has")) +
+                       " only " + std::to_string(rows) + " rows");
+    window = select_table_rows(data.table, b, e);
+    ref = ref.rows(b, e);
+  }
+  const TextTable& table = r.rows_text.empty() || rows == 0 ? data.table : window;
+  LoadedRecord rec{make_experiment<Rational>(table, model_q.columns), make_experiment<double>(table, model_d.columns), ref,
+                   data.table.header, {}};
   if (!r.x0_text.empty()) rec.x0 = parse_x0(r.x0_text, model_q.nx);
-  if (r.rows_text.empty()) return rec;
-  const auto [b, e] = parse_row_range(r.rows_text, "--rows");
-  if (e > rec.q.n())
-    throw InputError("--rows " + r.rows_text + ": " + (o.data_paths.size() > 1 ? r.path + " has" : std::string("the data has")) +
-                     " only " + std::to_string(rec.q.n()) + " rows");
-  rec.q = select_rows(rec.q, b, e);
-  rec.d = select_rows(rec.d, b, e);
-  rec.ref = rec.ref.rows(b, e);
   return rec;
 }
 
@@ -262,7 +269,13 @@ Inputs load_inputs(const CommonOptions& o) {
   in.model_q = read_model_file<Rational>(o.model_path);
   in.model_d = read_model_file<double>(o.model_path);
   std::vector<LoadedRecord> recs;
-  for (const RecordOption& r : wanted) recs.push_back(load_record(r, o, in.model_q, in.model_d));
+  std::map<std::string, DataTable> files;  // several windows of one file (a joint job): read and hashed once
+  for (const RecordOption& r : wanted) {
+    auto it = files.find(r.path);
+    if (it == files.end())
+      it = files.emplace(r.path, o.names.empty() ? read_data_table(r.path) : read_data_table(r.path, o.names)).first;
+    recs.push_back(load_record(r, o, it->second, in.model_q, in.model_d));
+  }
   stack_into(recs, in);
   if (!o.rows_text.empty() && wanted.size() == 1) {
     CommonOptions& mo = const_cast<CommonOptions&>(o);

@@ -121,6 +121,20 @@ Experiment<T> select_rows(const Experiment<T>& exp, Eigen::Index begin, Eigen::I
   return out;
 }
 
+TextTable select_table_rows(const TextTable& table, long begin, long end) {
+  const auto n = static_cast<long>(table.rows.size());
+  if (begin < 0 || end < begin || end > n)
+    throw_input_error(table.file, 0, "", "rows [" + std::to_string(begin) + ", " + std::to_string(end) +
+                                             ") out of range: the table has " + std::to_string(n) + " rows");
+  TextTable out;
+  out.file = table.file;
+  out.header = table.header;
+  out.rows.assign(table.rows.begin() + begin, table.rows.begin() + end);
+  if (static_cast<long>(table.line_numbers.size()) >= end)
+    out.line_numbers.assign(table.line_numbers.begin() + begin, table.line_numbers.begin() + end);
+  return out;
+}
+
 template <typename T>
 Experiment<T> stack_records(const std::vector<Experiment<T>>& parts) {
   if (parts.empty()) throw std::invalid_argument("stack_records: no records");

@@ -31,6 +31,13 @@ Experiment<T> make_experiment(const TextTable& table, const ColumnMap& columns);
 template <typename T>
 Experiment<T> select_rows(const Experiment<T>& exp, Eigen::Index begin, Eigen::Index end);
 
+/// Rows [begin, end) of a text table (0 <= begin <= end <= rows), each with
+/// its file line: make_experiment on it reads only the cells of those rows
+/// (a window of a long record converts 200 rows, not the whole file, and a
+/// cell outside the window is never looked at). Throws InputError naming the
+/// file if the range is out of bounds.
+TextTable select_table_rows(const TextTable& table, long begin, long end);
+
 /// Several experiments of one system (same columns) stacked row-wise as
 /// records (data/experiment.h: records); one part: that experiment. The
 /// source names them all. Throws InputError when the columns differ.

@@ -1,7 +1,5 @@
 #include "jobs/joint_check.h"
 
-#include <filesystem>
-
 #include "core/number_text.h"
 #include "core/stop_request.h"
 #include "verify/certificate/certificate_check.h"
@@ -41,7 +39,7 @@ std::string joint_mismatch(const PlannedClaim& p, const JobPlan& plan, const Lpv
 }
 
 WindowResult judge_joint(const PlannedClaim& p, const JobPlan& plan, const LpvModel<Rational>& model,
-                         const std::string& certificate_path) {
+                         const std::string& certificate_path, const DataTable& data) {
   WindowResult r;
   const FileState state = file_state(certificate_path);
   if (state.missing) {
@@ -58,7 +56,7 @@ WindowResult judge_joint(const PlannedClaim& p, const JobPlan& plan, const LpvMo
     c = read_certificate(certificate_path);
     r.reason = joint_mismatch(p, plan, model, c);
     if (!r.reason.empty()) return r;
-    const CertificateVerdict v = check_certificate(c, std::filesystem::path(certificate_path).parent_path().string());
+    const CertificateVerdict v = check_certificate(c, data);
     if (!v.holds) {
       r.reason = "the exact check refused it: " + v.reason;
       return r;

@@ -27,9 +27,10 @@ std::string joint_mismatch(const PlannedClaim& p, const JobPlan& plan, const Lpv
                            const Certificate& c);
 
 /// Reads the joint certificate at `certificate_path`, compares it with the
-/// plan and checks it exactly (the plan's data file). Never throws for the
-/// job's file. `x0` of the result is left empty (one per record).
+/// plan and checks it exactly (on `data`, the plan's data file read once by
+/// the caller). Never throws for the job's file. `x0` of the result is left
+/// empty (one per record).
 WindowResult judge_joint(const PlannedClaim& p, const JobPlan& plan, const LpvModel<Rational>& model,
-                         const std::string& certificate_path);
+                         const std::string& certificate_path, const DataTable& data);
 
 }  // namespace lpvid::jobs

@@ -4,6 +4,7 @@
 
 #include "core/file_io.h"
 #include "core/sha256.h"
+#include "data/csv_reader.h"
 #include "jobs/joint_check.h"
 #include "model/model_file.h"
 
@@ -63,7 +64,13 @@ MergeResult merge_jobs(const std::string& dir_text, const std::function<void(siz
   MergeResult m;
   m.plan = read_plan(dir_text);
   const JobPlan& plan = m.plan;
-  if (sha256_hex(read_text_file(plan.data_path)) != plan.data_sha256) {
+  // the data file read once: hashed, and parsed (only if unchanged) for every window's exact check
+  const std::string bytes = read_text_file(plan.data_path);
+  DataTable data;
+  data.reference.file = plan.data_path;
+  data.reference.sha256 = sha256_hex(bytes);
+  data.reference.names = plan.data_names;
+  if (data.reference.sha256 != plan.data_sha256) {
     m.verdict = MergeVerdict::kDataChanged;
     m.changed = plan.data_path + ": the data changed since the plan was made (sha256 differs)";
     return m;
@@ -73,17 +80,18 @@ MergeResult merge_jobs(const std::string& dir_text, const std::function<void(siz
     m.changed = plan.model_path + ": the model changed since the plan was made (sha256 differs)";
     return m;
   }
+  data.table = plan.data_names.empty() ? parse_table(bytes, plan.data_path) : parse_table(bytes, plan.data_path, plan.data_names);
   const std::filesystem::path dir(dir_text);
   const LpvModel<Rational> planned_model = read_model_file<Rational>(plan.model_path);
   const PlannedClaim planned = planned_claim(plan);
   for (const JobWindow& w : plan.windows) {
     const LpvModel<Rational> model = window_model(planned_model, w);
-    m.windows.push_back({w, judge_window(planned, w, model, (dir / w.certificate).string(), plan.data_path)});
+    m.windows.push_back({w, judge_window(planned, w, model, (dir / w.certificate).string(), data)});
     m.counts.add(m.windows.back().r.status);
     if (progress) progress(m.windows.size(), plan.windows.size());
   }
   m.summary = verified_summary(m.windows);
-  if (plan.joint) m.joint = judge_joint(planned, plan, planned_model, (dir / plan.joint->certificate).string());
+  if (plan.joint) m.joint = judge_joint(planned, plan, planned_model, (dir / plan.joint->certificate).string(), data);
   m.verdict = merge_verdict(m.windows, m.joint);
   return m;
 }

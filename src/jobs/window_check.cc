@@ -114,7 +114,7 @@ std::string lower_end_mismatch(const PlannedClaim& p, const Certificate& c) {
 /// Reads the file at `path` (which exists) and judges it: "" when it is
 /// the planned claim and holds exactly, the reason otherwise.
 std::string read_and_check(const PlannedClaim& p, const JobWindow& w, const LpvModel<Rational>& model,
-                           const std::string& path, const std::string& data_path, WindowFile file, Certificate& c) {
+                           const std::string& path, const DataTable& data, WindowFile file, Certificate& c) {
   try {
     c = read_certificate(path);
   } catch (const std::runtime_error& e) {
@@ -122,7 +122,7 @@ std::string read_and_check(const PlannedClaim& p, const JobWindow& w, const LpvM
   }
   if (std::string why = plan_mismatch(p, w, model, c, file); !why.empty()) return why;
   try {
-    const CertificateVerdict v = check_certificate(c, fs::path(path).parent_path().string(), data_path);
+    const CertificateVerdict v = check_certificate(c, data);
     return v.holds ? "" : "the exact check refused it: " + v.reason;
   } catch (const RunStopped&) {
     throw;  // a requested stop or the --timeout ends the run, not this window's check
@@ -133,13 +133,13 @@ std::string read_and_check(const PlannedClaim& p, const JobWindow& w, const LpvM
 
 /// The lower end beside a verified window's certificate, when there is one.
 void judge_lower_end(const PlannedClaim& p, const JobWindow& w, const LpvModel<Rational>& model,
-                     const std::string& certificate_path, const std::string& data_path, WindowResult& r) {
+                     const std::string& certificate_path, const DataTable& data, WindowResult& r) {
   const std::string low = lower_certificate_path(certificate_path);
   const FileState state = file_state(low);
   if (state.missing) return;
   Certificate cl;
   const std::string why =
-      state.problem.empty() ? read_and_check(p, w, model, low, data_path, WindowFile::kLowerEnd, cl) : state.problem;
+      state.problem.empty() ? read_and_check(p, w, model, low, data, WindowFile::kLowerEnd, cl) : state.problem;
   if (!why.empty()) {
     r.status = WindowStatus::kRefused;
     r.reason = "lower end: " + why;
@@ -213,7 +213,7 @@ const char* to_string(WindowStatus s) {
 }
 
 WindowResult judge_window(const PlannedClaim& p, const JobWindow& w, const LpvModel<Rational>& model,
-                          const std::string& certificate_path, const std::string& data_path) {
+                          const std::string& certificate_path, const DataTable& data) {
   WindowResult r;
   const FileState state = file_state(certificate_path);
   if (state.missing) {
@@ -222,7 +222,7 @@ WindowResult judge_window(const PlannedClaim& p, const JobWindow& w, const LpvMo
   }
   Certificate c;
   r.reason = state.problem.empty()
-                 ? read_and_check(p, w, model, certificate_path, data_path, WindowFile::kCertificate, c)
+                 ? read_and_check(p, w, model, certificate_path, data, WindowFile::kCertificate, c)
                  : state.problem;
   if (!r.reason.empty()) {
     r.status = WindowStatus::kRefused;
@@ -240,7 +240,7 @@ WindowResult judge_window(const PlannedClaim& p, const JobWindow& w, const LpvMo
   o.lambda = nearest_double(p.lambda);
   r.upper = objective_at(o, c.delta2, c.dmax2);
   r.x0 = exact_x0_text(c.model.x0);
-  judge_lower_end(p, w, model, certificate_path, data_path, r);
+  judge_lower_end(p, w, model, certificate_path, data, r);
   return r;
 }
 

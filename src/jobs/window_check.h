@@ -26,6 +26,7 @@
 
 #include "jobs/plan.h"
 #include "core/scalar.h"
+#include "data/data_reference.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
 #include "toeplitz/uncertainty_toeplitz.h"
@@ -92,11 +93,11 @@ struct WindowResult {
   std::string x0;                 ///< the window's x0, exact texts separated by spaces
 };
 
-/// Reads, compares with the plan and checks exactly (on `data_path`, the
-/// plan's data) the certificate of window `w` at `certificate_path` and its
-/// lower end beside it. Never throws for a job's file: an unreadable one
-/// refuses the window.
+/// Reads, compares with the plan and checks exactly (on `data`, the plan's
+/// data file read once by the caller, its sha256 the plan's) the certificate
+/// of window `w` at `certificate_path` and its lower end beside it. Never
+/// throws for a job's file: an unreadable one refuses the window.
 WindowResult judge_window(const PlannedClaim& plan, const JobWindow& w, const LpvModel<Rational>& model,
-                          const std::string& certificate_path, const std::string& data_path);
+                          const std::string& certificate_path, const DataTable& data);
 
 }  // namespace lpvid::jobs

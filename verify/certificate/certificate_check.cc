@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
@@ -77,6 +78,23 @@ struct CertificateData {
   std::string path;
   Experiment<Rational> exp;
 };
+/// Step 2 on a table parsed from bytes whose sha256 matched: the recorded
+/// window's exact rows (only their cells are read as numbers).
+CertificateData window_rows(const DataReference& ref, const TextTable& table, const ColumnMap& columns, const std::string& what,
+                            CertificateData out) {
+  const auto rows = static_cast<long>(table.rows.size());
+  if (ref.row_end < 0 || rows == 0) {  // the whole file (an empty one: make_experiment says "no data rows")
+    out.exp = make_experiment<Rational>(table, columns);
+    return out;
+  }
+  if (ref.row_end > rows) {
+    out.invalid = what + ".rows ends at " + std::to_string(ref.row_end) + " but the data has " + std::to_string(rows) + " rows";
+    return out;
+  }
+  out.exp = make_experiment<Rational>(select_table_rows(table, ref.row_begin, ref.row_end), columns);
+  return out;
+}
+
 CertificateData reference_data(const DataReference& ref, const std::string& path, const ColumnMap& columns,
                                const std::string& what) {
   CertificateData out;
@@ -88,26 +106,39 @@ CertificateData reference_data(const DataReference& ref, const std::string& path
     return out;
   }
   const TextTable table = ref.names.empty() ? parse_table(bytes, out.path) : parse_table(bytes, out.path, ref.names);
-  out.exp = make_experiment<Rational>(table, columns);
-  if (ref.row_end >= 0) {
-    if (ref.row_end > out.exp.n()) {
-      out.invalid = what + ".rows ends at " + std::to_string(ref.row_end) + " but the data has " + std::to_string(out.exp.n()) + " rows";
-      return out;
-    }
-    out.exp = select_rows(out.exp, ref.row_begin, ref.row_end);
-  }
-  return out;
+  return window_rows(ref, table, columns, what, std::move(out));
 }
+
+/// The same on a table read once by the caller (`data`): the sha256 must be
+/// the certificate's; a reference naming other column names is read from
+/// the file again, as reference_data does.
+CertificateData read_reference_data(const DataReference& ref, const DataTable& data, const ColumnMap& columns,
+                                    const std::string& what) {
+  CertificateData out;
+  out.path = data.reference.file;
+  if (data.reference.sha256 != ref.sha256) {
+    out.invalid = "data file '" + out.path + "' has changed: sha256 " + data.reference.sha256 +
+                  " differs from the certificate's " + ref.sha256;
+    return out;
+  }
+  // other column names (a headerless file read otherwise): read as the path form does
+  if (ref.names != data.reference.names) return reference_data(ref, out.path, columns, what);
+  return window_rows(ref, data.table, columns, what, std::move(out));
+}
+
+/// Where each record's exact rows come from: its file (resolved beside the
+/// certificate) or a table read once.
+using RecordSource = std::function<CertificateData(const DataReference&, const std::string& what)>;
 
 /// Several records: each read and checked like "data", then stacked
 /// (data/experiment.h: records, record_x0).
-CertificateData records_data(const Certificate& c, const std::string& certificate_dir) {
+CertificateData records_data(const Certificate& c, const RecordSource& source) {
   CertificateData out;
   std::vector<Experiment<Rational>> parts;
   for (size_t k = 0; k < c.records.size(); ++k) {
     const CertificateRecord& r = c.records[k];
     const std::string what = "records[" + std::to_string(k) + "]";
-    CertificateData one = reference_data(r.data, recorded_data_path(r.data.file, certificate_dir), c.model.columns, what);
+    CertificateData one = source(r.data, what);
     if (!one.invalid.empty()) return one;
     if (r.x0.size() != 0 && r.x0.size() != c.model.nx) {
       out.invalid = what + ".x0 has " + std::to_string(r.x0.size()) + " entries, the model has " + std::to_string(c.model.nx) + " states";
@@ -121,6 +152,16 @@ CertificateData records_data(const Certificate& c, const std::string& certificat
   return out;
 }
 
+/// The one-record certificate's data reference.
+DataReference single_reference(const Certificate& c) {
+  DataReference ref;
+  ref.sha256 = c.data_sha256;
+  ref.names = c.data_names;
+  ref.row_begin = c.row_begin;
+  ref.row_end = c.row_end;
+  return ref;
+}
+
 CertificateData certificate_data(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
   if (!c.records.empty()) {
     if (!data_file.empty()) {
@@ -128,14 +169,11 @@ CertificateData certificate_data(const Certificate& c, const std::string& certif
       out.invalid = "--data names one file, but the certificate names " + std::to_string(c.records.size()) + " records";
       return out;
     }
-    return records_data(c, certificate_dir);
+    return records_data(c, [&](const DataReference& ref, const std::string& what) {
+      return reference_data(ref, recorded_data_path(ref.file, certificate_dir), c.model.columns, what);
+    });
   }
-  DataReference ref;
-  ref.sha256 = c.data_sha256;
-  ref.names = c.data_names;
-  ref.row_begin = c.row_begin;
-  ref.row_end = c.row_end;
-  return reference_data(ref, certificate_data_path(c, certificate_dir, data_file), c.model.columns, "data");
+  return reference_data(single_reference(c), certificate_data_path(c, certificate_dir, data_file), c.model.columns, "data");
 }
 
 /// Steps 3–6 on the exact rows of the certificate's window; `details` starts
@@ -210,6 +248,18 @@ CertificateVerdict check_certificate(const Certificate& c, const std::string& ce
   std::ostringstream details;
   details << "data " << data.path << " (sha256 matches); ";
   return with_claim(check_claim(c, data.exp, details), c);
+}
+
+CertificateVerdict check_certificate(const Certificate& c, const DataTable& data) {
+  require_work_limits(c);
+  const auto source = [&](const DataReference& ref, const std::string& what) {
+    return read_reference_data(ref, data, c.model.columns, what);
+  };
+  const CertificateData read = c.records.empty() ? source(single_reference(c), "data") : records_data(c, source);
+  if (!read.invalid.empty()) return invalid_verdict(read.invalid);
+  std::ostringstream details;
+  details << "data " << read.path << " (sha256 matches); ";
+  return with_claim(check_claim(c, read.exp, details), c);
 }
 
 namespace {

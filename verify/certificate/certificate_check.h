@@ -23,6 +23,7 @@
 
 #include <string>
 
+#include "data/data_reference.h"
 #include "data/experiment.h"
 #include "verify/certificate/certificate_file.h"
 
@@ -65,6 +66,17 @@ CertificateVerdict check_certificate(const Certificate& c, const Experiment<Rati
 /// path, `data_file` overrides it (certificate_data_path). Throws InputError
 /// for unreadable data (missing file, bad numbers): that is not a verdict.
 CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file = "");
+
+/// The file layer on data the caller read once (`lpvid jobs merge`: one
+/// record, hundreds of window certificates): `data` is a table parsed from a
+/// file's bytes together with their sha256 and the column names it was read
+/// with (data/data_reference.h: read_data_table). Every data reference of
+/// `c` (its "data", or each of its "records") must carry that sha256, else
+/// the verdict is invalid ("has changed"); then its window's rows are taken
+/// from the table (a reference naming other column names is read from the
+/// file again) and the core checks them. Same verdicts as the path form on
+/// that file; throws InputError for unreadable numbers.
+CertificateVerdict check_certificate(const Certificate& c, const DataTable& data);
 
 /// Reads the file and checks it.
 CertificateVerdict check_certificate_file(const std::string& path, const std::string& data_file = "");
