@@ -48,6 +48,24 @@ Vec<double> residual(const LpvModel<double>& m, const Experiment<double>& exp, c
   return stack_rows(r);
 }
 
+/// The first `last` rows of a single-record experiment. A simulation is
+/// causal, so the rows after a fit's cost window never change its residual:
+/// the fit of x0 on the first samples of a long record simulates only
+/// those (the same numbers from far fewer rows).
+Experiment<double> leading_rows(const Experiment<double>& exp, Eigen::Index last) {
+  Experiment<double> e;
+  e.source = exp.source;
+  e.u = exp.u.topRows(last);
+  e.y = exp.y.rows() >= last ? Mat<double>(exp.y.topRows(last)) : exp.y;
+  e.rho = exp.rho.rows() >= last ? Mat<double>(exp.rho.topRows(last)) : exp.rho;
+  return e;
+}
+
+/// Whether fit_slots may simulate leading_rows(exp, w.last) instead of exp.
+bool cost_ends_early(const Experiment<double>& exp, const Window& w) {
+  return w.last < exp.n() && exp.records.size() <= 1 && exp.record_x0.empty();
+}
+
 }  // namespace
 
 double prediction_rms(const LpvModel<double>& model, const Experiment<double>& exp, Eigen::Index first,
@@ -135,6 +153,11 @@ FreeRunScore warmup_score(const LpvModel<double>& model, const Experiment<double
 FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,
                     const Experiment<double>& exp, const FitOptions& o) {
   const Window w = window_of(exp, o.first_sample, o.last_sample, o.skip_first, o.skip_last);
+  if (cost_ends_early(exp, w)) {
+    FitOptions shorter = o;
+    shorter.last_sample = w.last;
+    return fit_slots(model, slots, leading_rows(exp, w.last), shorter);
+  }
   FitResult res;
   res.model = model;
   const Vec<double> p0 = slot_values(model, slots);

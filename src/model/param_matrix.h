@@ -26,9 +26,16 @@ struct ParamMatrix {
 
   /// M(ρ) for one sample ρ.
   Mat<T> at(const Vec<T>& rho) const {
-    Mat<T> m = Mat<T>::Zero(rows, cols);
-    for (const auto& t : terms) m += t.basis.template eval<T>(rho) * t.value;
+    Mat<T> m;
+    at_into(rho, m);
     return m;
+  }
+
+  /// M(ρ) written into `m` (resized only when its size differs, so a loop
+  /// over samples allocates it once); the same operations as at().
+  void at_into(const Vec<T>& rho, Mat<T>& m) const {
+    m.setZero(rows, cols);
+    for (const auto& t : terms) m += t.basis.template eval<T>(rho) * t.value;
   }
 
   /// Adds f(ρ)·M (same size required; throws std::invalid_argument otherwise).

@@ -184,10 +184,17 @@ void check_experiment(const LpvModel<T>& model, const Experiment<T>& exp) {
 /// Output offset Φ(ρ) = Σ_j h_j(ρ) φ_j (paper eq. 20) at one sample; zero
 /// when the values are unknown (empty). Length ny.
 template <typename T>
+void basis_sum_into(const std::vector<Monomial>& basis, const std::vector<Vec<T>>& values, Eigen::Index size,
+                    const Vec<T>& rho, Vec<T>& sum) {
+  sum.setZero(size);
+  for (size_t j = 0; j < values.size(); ++j) sum += basis[j].template eval<T>(rho) * values[j];
+}
+
+template <typename T>
 Vec<T> basis_sum(const std::vector<Monomial>& basis, const std::vector<Vec<T>>& values, Eigen::Index size,
                  const Vec<T>& rho) {
-  Vec<T> sum = Vec<T>::Zero(size);
-  for (size_t j = 0; j < values.size(); ++j) sum += basis[j].template eval<T>(rho) * values[j];
+  Vec<T> sum;
+  basis_sum_into(basis, values, size, rho, sum);
   return sum;
 }
 
@@ -245,6 +252,22 @@ Experiment<T> with_state_columns(const LpvModel<T>& model, const Experiment<T>& 
 
 }  // namespace detail
 
+namespace detail {
+
+/// The per-sample matrices and vectors of simulate_one_record, allocated
+/// once per simulation (a fit simulates a record hundreds of times: one heap
+/// allocation per sample and matrix was half its time). Every product is
+/// evaluated into its own buffer exactly as the expression
+/// `(C x + D u)` evaluates its two products into temporaries, so the
+/// numbers are those of the per-sample expressions, bit for bit.
+template <typename T>
+struct SimulationWorkspace {
+  Mat<T> A, B, C, D, C1, D1;
+  Vec<T> rho, u, x_next, cx, du, offset;
+};
+
+}  // namespace detail
+
 template <typename T>
 Simulation<T> simulate_one_record(const LpvModel<T>& model, const Experiment<T>& exp_in) {
   const SystemMatrices<T> s = system_matrices(model);
@@ -261,21 +284,38 @@ Simulation<T> simulate_one_record(const LpvModel<T>& model, const Experiment<T>&
   const bool affine = has_state_offset(model);
   const Mat<T> u_model = model.statics.model_input(exp.u);  // u' = g_in(u_{k−d})
   Vec<T> x = model.x0.size() == 0 ? Vec<T>(Vec<T>::Zero(model.nx)) : model.x0;
+  detail::SimulationWorkspace<T> w;
+  w.rho.resize(exp.rho.cols());
   for (Eigen::Index k = 0; k < n; ++k) {
     if ((k & 255) == 0) check_stop();  // an exact simulation of a long record takes seconds: a stop is seen within 256 rows
-    Vec<T> rho = detail::rho_at(exp.rho, k);
+    if (exp.rho.cols() > 0) w.rho = exp.rho.row(k).transpose();
     for (const StateScheduled<T>& f : own) {
-      rho(f.j) = state_function_value(f.function, T(x(f.i)), f.shift);
-      sim.rho(k, f.j) = rho(f.j);
+      w.rho(f.j) = state_function_value(f.function, T(x(f.i)), f.shift);
+      sim.rho(k, f.j) = w.rho(f.j);
     }
-    const Vec<T> u = u_model.row(k).transpose();
+    w.u = u_model.row(k).transpose();
     sim.x.row(k) = x.transpose();
-    sim.yhat.row(k) = (s.C.at(rho) * x + s.D.at(rho) * u).transpose();
-    sim.z.row(k) = (s.C1.at(rho) * x + s.D1.at(rho) * u).transpose();
-    sim.offset.row(k) = offset_at(model, rho).transpose();
+    s.C.at_into(w.rho, w.C);
+    s.D.at_into(w.rho, w.D);
+    w.cx.noalias() = w.C * x;
+    w.du.noalias() = w.D * w.u;
+    sim.yhat.row(k) = (w.cx + w.du).transpose();
+    s.C1.at_into(w.rho, w.C1);
+    s.D1.at_into(w.rho, w.D1);
+    w.cx.noalias() = w.C1 * x;
+    w.du.noalias() = w.D1 * w.u;
+    sim.z.row(k) = (w.cx + w.du).transpose();
+    basis_sum_into(model.offset.basis, model.offset.values, model.ny, w.rho, w.offset);
+    sim.offset.row(k) = w.offset.transpose();
     if (k + 1 < n) {
-      x = (s.A.at(rho) * x + s.B.at(rho) * u).eval();
-      if (affine) x += state_offset_at(model, rho);  // E(ρ_k)
+      s.A.at_into(w.rho, w.A);
+      s.B.at_into(w.rho, w.B);
+      w.x_next.noalias() = w.A * x + w.B * w.u;
+      x.swap(w.x_next);
+      if (affine) {  // E(ρ_k)
+        basis_sum_into(model.state_offset.basis, model.state_offset.values, model.nx, w.rho, w.offset);
+        x += w.offset;
+      }
     }
   }
   sim.output = model.statics.output.apply(Mat<T>(sim.yhat + sim.offset));

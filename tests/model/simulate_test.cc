@@ -319,5 +319,52 @@ RC_GTEST_PROP(ConvertModelProperty, RoundTripThroughDoubleIsIdentityOnDyadics, (
   RC_ASSERT(gen::models_equal(convert_model<Rational, Rational>(mr), mr));
 }
 
+/// The per-sample formulas of the simulation written out as expressions
+/// with their own temporaries (how simulate_one_record computed them before
+/// it kept its per-sample matrices in one workspace): the reference the
+/// workspace version must match bit for bit in double.
+Simulation<double> per_sample_reference(const LpvModel<double>& model, const Experiment<double>& exp) {
+  const SystemMatrices<double> s = system_matrices(model);
+  const Eigen::Index n = exp.n();
+  Simulation<double> sim;
+  sim.x = Mat<double>::Zero(n, model.nx);
+  sim.yhat = Mat<double>::Zero(n, model.ny);
+  sim.z = Mat<double>::Zero(n, model.nz());
+  sim.offset = Mat<double>::Zero(n, model.ny);
+  const Mat<double> u_model = model.statics.model_input(exp.u);
+  Vec<double> x = model.x0.size() == 0 ? Vec<double>(Vec<double>::Zero(model.nx)) : model.x0;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const Vec<double> rho = detail::rho_at(exp.rho, k);
+    const Vec<double> u = u_model.row(k).transpose();
+    sim.x.row(k) = x.transpose();
+    sim.yhat.row(k) = (s.C.at(rho) * x + s.D.at(rho) * u).transpose();
+    sim.z.row(k) = (s.C1.at(rho) * x + s.D1.at(rho) * u).transpose();
+    sim.offset.row(k) = offset_at(model, rho).transpose();
+    if (k + 1 < n) x = (s.A.at(rho) * x + s.B.at(rho) * u).eval();
+  }
+  sim.output = model.statics.output.apply(Mat<double>(sim.yhat + sim.offset));
+  return sim;
+}
+
+// The simulation without per-sample allocations gives exactly the numbers of
+// the per-sample expressions (construction: the same Eigen operations on the
+// same values), on random models whose entries are not dyadic (so every
+// product rounds and a changed order of operations would show).
+RC_GTEST_PROP(SimulateProperty, WorkspaceSimulationEqualsPerSampleExpressionsBitForBit, ()) {
+  gen::ModelOptions o;
+  o.entry = gen::rational_entry(3, 7);
+  const LpvModel<Rational> mr = *gen::lpv_model(o);
+  const Experiment<Rational> er =
+      *gen::experiment(mr.nu, mr.ny, mr.n_rho(), gen::rational_entry(5, 9), gen::rational_entry(1, 7));
+  const LpvModel<double> m = convert_model<double, Rational>(mr);
+  const Experiment<double> e = nearest_double(er);
+  const Simulation<double> got = simulate(m, e), want = per_sample_reference(m, e);
+  RC_ASSERT(got.x == want.x);
+  RC_ASSERT(got.yhat == want.yhat);
+  RC_ASSERT(got.z == want.z);
+  RC_ASSERT(got.offset == want.offset);
+  RC_ASSERT(got.output == want.output);
+}
+
 }  // namespace
 }  // namespace lpvid
