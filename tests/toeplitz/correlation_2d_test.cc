@@ -39,6 +39,40 @@ RC_GTEST_PROP(Correlation2d, SumOfTwoEqualsTheDirectSums, ()) {
   RC_ASSERT((fast - slow).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + slow.cwiseAbs().maxCoeff()));
 }
 
+// The workspace (buffers allocated once, reused across calls) computes the
+// very numbers of the allocating calls, bit for bit, also on a strided
+// sub-block and a transpose and when its buffers held other data before.
+RC_GTEST_PROP(Correlation2d, WorkspaceIsBitIdenticalToTheAllocatingCalls, ()) {
+  const int L = *rc::gen::inRange(1, 11);
+  const auto random = [L](int rows, int cols) {
+    Mat<double> X(rows, cols);
+    for (int i = 0; i < rows; ++i)
+      for (int j = 0; j < cols; ++j) X(i, j) = *rc::gen::inRange(-1000, 1001) / 7.0;
+    return X;
+  };
+  const Mat<double> big = random(2 * L, 2 * L), B = random(L, L), C = random(L, L), D = random(L, L);
+  const Mat<double> A = big(Eigen::seq(1, 2 * L - 1, 2), Eigen::seq(0, 2 * L - 2, 2));  // the sub-block read strided
+  const CorrelationGrid grid(L);
+  CorrelationWorkspace ws(grid);
+  Spectrum a, b, c, d;
+  Mat<double> out;
+  ws.spectrum(random(L, L), a);  // earlier contents of the reused arrays must not matter
+  ws.correlate_sum(a, a, a, a, out);
+  ws.spectrum(Eigen::Map<const Mat<double>, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>(
+                  big.data() + 1, L, L, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(4 * L, 2)),
+              a);
+  ws.spectrum(B.transpose(), b);
+  ws.spectrum(C, c);
+  ws.spectrum(D, d);
+  const Mat<double> expected = grid.correlate_sum(grid.spectrum(A), grid.spectrum(Mat<double>(B.transpose())), grid.spectrum(C),
+                                                  grid.spectrum(D));
+  ws.correlate_sum(a, b, c, d, out);
+  RC_ASSERT(out.rows() == L && out.cols() == L);
+  RC_ASSERT((out.array() == expected.array()).all());
+  ws.correlate_sum(a, b, c, d, out, true);  // C's last use: the product in C's array
+  RC_ASSERT((out.array() == expected.array()).all());
+}
+
 TEST(Correlation2d, KnownValue) {
   // X = Y = [[1, 2], [3, 4]]: shift (0, 0) is Σ x² = 30; (1, 0): X(1,·)·Y(0,·) = 3 + 8;
   // (0, −1): Σ X(i, j−1) Y(i, j) = X(0,0)Y(0,1) + X(1,0)Y(1,1) = 2 + 12.
