@@ -166,13 +166,19 @@ void evaluate(const Problem& p, const Vecd& x, double mu, Point& pt, Dense& F1) 
   pt.interior = std::isfinite(pt.value);
 }
 
-/// out ← Σ_c M(c + k, c + l) for k, l ∈ [0, L) (sums along the diagonals).
+/// out(k, l) += Σ_c M(c + k, c + l) for k, l ∈ [0, L) (sums along the
+/// diagonals, each accumulated from its far end: no L × L buffer).
 template <typename X>
-void diagonal_sums(const Eigen::MatrixBase<X>& M, Dense& out) {
+void add_diagonal_sums(const Eigen::MatrixBase<X>& M, Dense& out) {
   const Index L = M.rows();
-  out.resize(L, L);
-  for (Index k = L - 1; k >= 0; --k)
-    for (Index l = L - 1; l >= 0; --l) out(k, l) = M(k, l) + (k + 1 < L && l + 1 < L ? out(k + 1, l + 1) : 0.0);
+  for (Index d = -(L - 1); d < L; ++d) {  // the diagonal l − k = d
+    Index k = std::min(L - 1, L - 1 - d), l = k + d;
+    double sum = 0.0;
+    for (; k >= 0 && l >= 0; --k, --l) {
+      sum = M(k, l) + sum;
+      out(k, l) += sum;
+    }
+  }
 }
 
 /// What the derivatives of a Newton step reuse from step to step, allocated
@@ -182,14 +188,12 @@ void diagonal_sums(const Eigen::MatrixBase<X>& M, Dense& out) {
 struct DerivativeWorkspace {
   explicit DerivativeWorkspace(const Problem& p)
       : grid(p.L), fft(grid), times_T(Dense::Zero(p.L, p.q()), p.ny, p.nz), P_hat(static_cast<size_t>(p.ny * p.ny)),
-        R_hat(static_cast<size_t>(p.nz * p.nz)), Q_hat(static_cast<size_t>(p.q())), Qt_hat(static_cast<size_t>(p.q())),
-        P_diag(static_cast<size_t>(p.ny * p.ny)) {}
+        R_hat(static_cast<size_t>(p.nz * p.nz)), Q_hat(static_cast<size_t>(p.q())), Qt_hat(static_cast<size_t>(p.q())) {}
   const CorrelationGrid grid;
   CorrelationWorkspace fft;
   ToeplitzProduct times_T;
   std::vector<Spectrum> P_hat, R_hat, Q_hat, Qt_hat;
-  std::vector<Dense> P_diag;
-  Dense Hh, PQ;
+  Dense Hh;  ///< a pair block of the Hessian, then P·Q
 };
 
 /// The noise's part of the gradient and Hessian: ∂‖d‖²/∂h_ij = −2 Z_jᵀ d_i,
@@ -211,15 +215,13 @@ void add_noise_terms(const Problem& p, const Point& pt, double mu, Vecd& g, Dens
   if (!p.s_var) H.topLeftCorner(nt, nt) += 4.0 * Zd * Zd.transpose() / (pt.phi * pt.phi);
 }
 
-/// The spectra the log-det Hessian correlates (sub-blocks of P, R, Q, Qᵀ)
-/// and the diagonal sums of P's sub-blocks; g's taps part, 2 Ω_l(Q_ij).
+/// The spectra the log-det Hessian correlates (sub-blocks of P, R, Q, Qᵀ);
+/// g's taps part, 2 Ω_l(Q_ij).
 void logdet_spectra(const Problem& p, const Dense& P, const Dense& Q, const Dense& R, DerivativeWorkspace& ws, Vecd& g) {
   const Index L = p.L, ny = p.ny, nz = p.nz;
   for (Index i = 0; i < ny; ++i)
     for (Index i2 = 0; i2 < ny; ++i2) {
-      const Strided Pii = sub_block(P, ny, ny, i, i2);
-      ws.fft.spectrum(Pii, ws.P_hat[static_cast<size_t>(i * ny + i2)]);
-      diagonal_sums(Pii, ws.P_diag[static_cast<size_t>(i * ny + i2)]);
+      ws.fft.spectrum(sub_block(P, ny, ny, i, i2), ws.P_hat[static_cast<size_t>(i * ny + i2)]);
     }
   for (Index j = 0; j < nz; ++j)
     for (Index j2 = 0; j2 < nz; ++j2) ws.fft.spectrum(sub_block(R, nz, nz, j, j2), ws.R_hat[static_cast<size_t>(j * nz + j2)]);
@@ -235,7 +237,7 @@ void logdet_spectra(const Problem& p, const Dense& P, const Dense& Q, const Dens
 /// The Hessian of −log det(tI − TTᵀ) in the taps from the spectra of
 /// logdet_spectra. The pair block (b, a) is the transpose of (a, b): each
 /// unordered pair is correlated once (the FFTs are the MIMO Newton step's main cost).
-void logdet_hessian(const Problem& p, DerivativeWorkspace& ws, Dense& H) {
+void logdet_hessian(const Problem& p, const Dense& P, DerivativeWorkspace& ws, Dense& H) {
   const Index L = p.L, ny = p.ny, nz = p.nz;
   const auto at = [&](Index i, Index j) { return (i * nz + j) * L; };
   std::vector<int> uses(static_cast<size_t>(ny * ny), 0);  // of P_ii''s spectrum, still to come
@@ -248,7 +250,7 @@ void logdet_hessian(const Problem& p, DerivativeWorkspace& ws, Dense& H) {
       const bool last_use = --uses[static_cast<size_t>(i * ny + i2)] == 0;  // then its array takes the product
       ws.fft.correlate_sum(ws.Q_hat[static_cast<size_t>(i * nz + j2)], ws.Qt_hat[static_cast<size_t>(i2 * nz + j)],
                            ws.P_hat[static_cast<size_t>(i * ny + i2)], ws.R_hat[static_cast<size_t>(j * nz + j2)], Hh, last_use);
-      if (j == j2) Hh += ws.P_diag[static_cast<size_t>(i * ny + i2)];
+      if (j == j2) add_diagonal_sums(sub_block(P, ny, ny, i, i2), Hh);
       if (a == b) {
         H.block(at(i, j), at(i, j), L, L) += Hh + Hh.transpose();  // 2·(symmetric part)
       } else {
@@ -275,12 +277,13 @@ void derivatives(const Problem& p, const Point& pt, double mu, DerivativeWorkspa
   g = Vecd::Zero(p.dim());
   H = Dense::Zero(p.dim(), p.dim());
   logdet_spectra(p, P, Q, R, ws, g);  // −log det(tI − TTᵀ)
-  logdet_hessian(p, ws, H);
+  logdet_hessian(p, P, ws, H);
   if (p.t_var) {
     g(nt) = p.ct / mu - P.trace();
-    ws.PQ.noalias() = P * Q;
+    Dense& PQ = ws.Hh;
+    PQ.noalias() = P * Q;
     for (Index i = 0; i < ny; ++i)
-      for (Index j = 0; j < nz; ++j) H.block((i * nz + j) * L, nt, L, 1) = -2.0 * subdiagonal_sums(sub_block(ws.PQ, ny, nz, i, j));
+      for (Index j = 0; j < nz; ++j) H.block((i * nz + j) * L, nt, L, 1) = -2.0 * subdiagonal_sums(sub_block(PQ, ny, nz, i, j));
     H.block(nt, 0, 1, nt) = H.block(0, nt, nt, 1).transpose();
     H(nt, nt) = P.squaredNorm();
   }
@@ -585,6 +588,8 @@ class BarrierRun {
   /// gets a Levenberg shift τ·I (still a descent direction; the line search
   /// decides the step).
   std::string newton_direction(Vecd& dx, double& dec2) {
+    ldlt_.compute(Dense(0, 0));  // two L × L matrices fewer at the derivatives' memory peak
+    trial_ = Point();
     derivatives(p_, pt_, mu_, ws_, g_, H_, P_, Q_, R_);
     derivatives_current_ = true;
     check_deadline("the structured barrier was solving");  // the derivatives take seconds on long records
