@@ -194,6 +194,14 @@ struct DerivativeWorkspace {
   ToeplitzProduct times_T;
   std::vector<Spectrum> P_hat, R_hat, Q_hat, Qt_hat;
   Dense Hh;  ///< a pair block of the Hessian, then P·Q
+  /// Frees the spectra, the grid and the pair block (the dual matrices are
+  /// built after the last derivatives: they need not share the memory peak).
+  void release() {
+    fft.release();
+    for (auto* spectra : {&P_hat, &R_hat, &Q_hat, &Qt_hat})
+      for (Spectrum& s : *spectra) s.data.reset();
+    Hh = Dense();
+  }
 };
 
 /// The noise's part of the gradient and Hessian: ∂‖d‖²/∂h_ij = −2 Z_jᵀ d_i,
@@ -219,6 +227,15 @@ void add_noise_terms(const Problem& p, const Point& pt, double mu, Vecd& g, Dens
 /// g's taps part, 2 Ω_l(Q_ij).
 void logdet_spectra(const Problem& p, const Dense& P, const Dense& Q, const Dense& R, DerivativeWorkspace& ws, Vecd& g) {
   const Index L = p.L, ny = p.ny, nz = p.nz;
+  if (p.q() == 1) {  // one pair: corr(Q, Qᵀ) formed in Q̂'s array, Q̂ᵀ's array then takes P̂ (three spectra, not four)
+    g.head(L) = 2.0 * subdiagonal_sums(Q);
+    ws.fft.spectrum(Q, ws.Q_hat[0]);
+    ws.fft.spectrum(Q.transpose(), ws.Qt_hat[0]);
+    ws.fft.reflect_product(ws.Q_hat[0], ws.Qt_hat[0]);
+    ws.fft.spectrum(P, ws.Qt_hat[0]);
+    ws.fft.spectrum(R, ws.R_hat[0]);
+    return;
+  }
   for (Index i = 0; i < ny; ++i)
     for (Index i2 = 0; i2 < ny; ++i2) {
       ws.fft.spectrum(sub_block(P, ny, ny, i, i2), ws.P_hat[static_cast<size_t>(i * ny + i2)]);
@@ -248,7 +265,10 @@ void logdet_hessian(const Problem& p, const Dense& P, DerivativeWorkspace& ws, D
       const Index i = a / nz, j = a % nz, i2 = b / nz, j2 = b % nz;
       Dense& Hh = ws.Hh;
       const bool last_use = --uses[static_cast<size_t>(i * ny + i2)] == 0;  // then its array takes the product
-      ws.fft.correlate_sum(ws.Q_hat[static_cast<size_t>(i * nz + j2)], ws.Qt_hat[static_cast<size_t>(i2 * nz + j)],
+      if (p.q() == 1)  // logdet_spectra's single pair: the first term in Q̂'s array, P̂ in Q̂ᵀ's
+        ws.fft.correlate_reflected(ws.Q_hat[0], ws.Qt_hat[0], ws.R_hat[0], Hh);
+      else
+        ws.fft.correlate_sum(ws.Q_hat[static_cast<size_t>(i * nz + j2)], ws.Qt_hat[static_cast<size_t>(i2 * nz + j)],
                            ws.P_hat[static_cast<size_t>(i * ny + i2)], ws.R_hat[static_cast<size_t>(j * nz + j2)], Hh, last_use);
       if (j == j2) add_diagonal_sums(sub_block(P, ny, ny, i, i2), Hh);
       if (a == b) {
@@ -553,8 +573,14 @@ class BarrierRun {
       if (const std::string err = center(1e-14, 30); !err.empty() && err.rfind("not centred", 0) != 0) return err;
     if (!derivatives_current_) {  // else the last Newton step's, at this point and μ
       derivatives(p_, pt_, mu_, ws_, g_, H_, P_, Q_, R_);
-      ldlt_of_H_ = false;
     }
+    // no further Newton step: the FFT buffers, the factorisation and the trial point go before write() allocates the duals
+    ws_.release();
+    ldlt_.compute(Dense(0, 0));
+    ldlt_of_H_ = false;
+    trial_ = Point();
+    F1_ = Dense();
+    Hs_ = Dense();
     if (feasibility_ && !(s_of(pt_) <= p_.s_fix)) infeasible_ = true;  // undecided at the smallest gap: the dual certificate decides
     return "";
   }

@@ -93,8 +93,40 @@ Mat<double> CorrelationGrid::correlate_sum(const Spectrum& A_hat, const Spectrum
   return inverse(product.get());
 }
 
-CorrelationWorkspace::CorrelationWorkspace(const CorrelationGrid& grid)
-    : grid_(grid), real_(array<double>(static_cast<std::size_t>(grid.M_ * grid.M_))) {}
+CorrelationWorkspace::CorrelationWorkspace(const CorrelationGrid& grid) : grid_(grid) {}
+
+double* CorrelationWorkspace::real() {
+  if (!real_) real_ = array<double>(static_cast<std::size_t>(grid_.M_ * grid_.M_));
+  return real_.get();
+}
+
+void CorrelationWorkspace::release() {
+  real_.reset();
+  product_.reset();
+}
+
+void CorrelationWorkspace::reflect_product(Spectrum& A_hat, const Spectrum& B_hat) const {
+  const Eigen::Index M = grid_.M_, H = grid_.H_;
+  std::complex<double>* a = A_hat.data.get();
+  const std::complex<double>* b = B_hat.data.get();
+  for (Eigen::Index u = 0; 2 * u <= M; ++u) {
+    const Eigen::Index uu = (M - u) % M;
+    for (Eigen::Index v = 0; v < H; ++v) {
+      const std::complex<double> at_u = std::conj(a[uu * H + v] * std::conj(b[uu * H + v]));
+      a[uu * H + v] = std::conj(a[u * H + v] * std::conj(b[u * H + v]));
+      a[u * H + v] = at_u;
+    }
+  }
+}
+
+void CorrelationWorkspace::correlate_reflected(const Spectrum& S, Spectrum& C_hat, const Spectrum& D_hat,
+                                               Mat<double>& out) {
+  const Eigen::Index n = grid_.M_ * grid_.H_;
+  const std::complex<double>*s = S.data.get(), *d = D_hat.data.get();
+  std::complex<double>* c = C_hat.data.get();
+  for (Eigen::Index k = 0; k < n; ++k) c[k] = s[k] + c[k] * std::conj(d[k]);
+  grid_.inverse_into(c, real(), out);
+}
 
 void CorrelationWorkspace::correlate_sum(const Spectrum& A_hat, const Spectrum& B_hat, Spectrum& C_hat,
                                          const Spectrum& D_hat, Mat<double>& out, bool consume_C) {
@@ -102,7 +134,7 @@ void CorrelationWorkspace::correlate_sum(const Spectrum& A_hat, const Spectrum& 
   // in place into C: entry (u, v) of the product reads C at (u, v) only
   std::complex<double>* product = consume_C ? C_hat.data.get() : product_.get();
   grid_.product_sum(A_hat, B_hat, C_hat, D_hat, product);
-  grid_.inverse_into(product, real_.get(), out);
+  grid_.inverse_into(product, real(), out);
 }
 
 Mat<double> correlate_direct(const Mat<double>& X, const Mat<double>& Y, int sign) {

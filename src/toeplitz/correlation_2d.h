@@ -76,7 +76,7 @@ class CorrelationWorkspace {
   template <typename X>
   void spectrum(const Eigen::MatrixBase<X>& x, Spectrum& out) {
     const Eigen::Index M = grid_.size();
-    double* real = real_.get();
+    double* real = this->real();
     std::fill(real, real + M * M, 0.0);
     for (Eigen::Index i = 0; i < x.rows(); ++i)
       for (Eigen::Index j = 0; j < x.cols(); ++j) real[i * M + j] = x(i, j);
@@ -87,8 +87,18 @@ class CorrelationWorkspace {
   /// buffer less, the product buffer is allocated at its first use only).
   void correlate_sum(const Spectrum& A_hat, const Spectrum& B_hat, Spectrum& C_hat, const Spectrum& D_hat,
                      Mat<double>& out, bool consume_C = false);
+  /// A ← the first term of correlate_sum, conj(Â(−u, v)·conj(B̂(−u, v))), in
+  /// A's own array (rows u and −u together), so that B's array is free for
+  /// the next spectrum: one spectrum less at a time for a single pair.
+  void reflect_product(Spectrum& A_hat, const Spectrum& B_hat) const;
+  /// out ← the inverse of S + Ĉ·conj(D̂), S from reflect_product: bit for bit
+  /// correlate_sum(A, B, C, D, out, true) (C's array takes the sum).
+  void correlate_reflected(const Spectrum& S, Spectrum& C_hat, const Spectrum& D_hat, Mat<double>& out);
+  /// Frees the grid and the product buffer (allocated again at their next use).
+  void release();
 
  private:
+  double* real();
   const CorrelationGrid& grid_;
   std::shared_ptr<double> real_;
   std::shared_ptr<std::complex<double>> product_;  ///< empty until a correlation needs it
