@@ -37,7 +37,8 @@ Dense lower_toeplitz(const Vecd& c) {
 }
 
 /// Ω_l(M) = Σ_{a−b=l} M(a, b), l = 0 … L−1 (subdiagonal sums).
-Vecd subdiagonal_sums(const Dense& M) {
+template <typename X>
+Vecd subdiagonal_sums(const Eigen::MatrixBase<X>& M) {
   const Index L = M.rows();
   Vecd out = Vecd::Zero(L);
   for (Index b = 0; b < L; ++b)
@@ -48,7 +49,7 @@ Vecd subdiagonal_sums(const Dense& M) {
 /// The L × L scalar sub-block (i, j) of a matrix of p × q blocks laid out
 /// as rows a·p + i, columns b·q + j (the layout of T_Δ, P, Q, R):
 /// sub(a, b) = M(a·p + i, b·q + j).
-Dense sub_block(const Dense& M, Index p, Index q, Index i, Index j) {
+Strided sub_block(const Dense& M, Index p, Index q, Index i, Index j) {
   const Index L = M.rows() / p;
   return Strided(M.data() + i + j * M.rows(), L, M.cols() / q, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(q * M.rows(), p));
 }
@@ -139,37 +140,69 @@ struct Point {
   double phi = 0;  ///< N·s_fix − ‖d‖² (s fixed only)
 };
 
-Point evaluate(const Problem& p, const Vecd& x, double mu) {
-  Point pt;
+/// pt ← F_μ at x (pt's and F1's storage reused: no allocation per trial point).
+void evaluate(const Problem& p, const Vecd& x, double mu, Point& pt, Dense& F1) {
+  pt.interior = false;
+  pt.value = std::numeric_limits<double>::infinity();
+  pt.phi = 0;
   const double t = p.t_of(x);
   pt.d_tail = residual_tail(p, x);
   pt.d_head = p.r_head;
   if (!p.regressors.empty()) project_residual(p, pt.d_head, pt.d_tail);
   pt.D = pt.d_head.squaredNorm() + pt.d_tail.squaredNorm();
-  if (!(t > 0) || !std::isfinite(pt.D)) return pt;
+  if (!(t > 0) || !std::isfinite(pt.D)) return;
   pt.phi = p.N * p.s_fix - pt.D;
-  if (!p.s_var && !(pt.phi > 0)) return pt;
+  if (!p.s_var && !(pt.phi > 0)) return;
   pt.taps = Eigen::Map<const Dense>(x.data(), p.L, p.q());
-  Dense F1 = -tap_gram(pt.taps, p.ny, p.nz);  // T Tᵀ in O(L²)
+  tap_gram_into(pt.taps, p.ny, p.nz, F1);  // T Tᵀ in O(L²)
+  F1 = -F1;
   F1.diagonal().array() += t;
   pt.llt.compute(F1);
-  if (pt.llt.info() != Eigen::Success) return pt;
+  if (pt.llt.info() != Eigen::Success) return;
   const Vecd diag = pt.llt.matrixLLT().diagonal();
-  if (!(diag.minCoeff() > 0)) return pt;
+  if (!(diag.minCoeff() > 0)) return;
   const double noise = p.s_var ? p.cs * pt.D / (p.N * mu) : -std::log(pt.phi);
   pt.value = (p.t_var ? p.ct * t / mu : 0.0) + noise - 2.0 * diag.array().log().sum();
   pt.interior = std::isfinite(pt.value);
-  return pt;
 }
 
-/// Σ_c M(c + k, c + l) for k, l ∈ [0, L) (sums along the diagonals).
-Dense diagonal_sums(const Dense& M) {
+/// out(k, l) += Σ_c M(c + k, c + l) for k, l ∈ [0, L) (sums along the
+/// diagonals, each accumulated from its far end: no L × L buffer).
+template <typename X>
+void add_diagonal_sums(const Eigen::MatrixBase<X>& M, Dense& out) {
   const Index L = M.rows();
-  Dense out(L, L);
-  for (Index k = L - 1; k >= 0; --k)
-    for (Index l = L - 1; l >= 0; --l) out(k, l) = M(k, l) + (k + 1 < L && l + 1 < L ? out(k + 1, l + 1) : 0.0);
-  return out;
+  for (Index d = -(L - 1); d < L; ++d) {  // the diagonal l − k = d
+    Index k = std::min(L - 1, L - 1 - d), l = k + d;
+    double sum = 0.0;
+    for (; k >= 0 && l >= 0; --k, --l) {
+      sum = M(k, l) + sum;
+      out(k, l) += sum;
+    }
+  }
 }
+
+/// What the derivatives of a Newton step reuse from step to step, allocated
+/// once per solve: the FFT grid, its plans and buffers, the spectra and the
+/// Toeplitz product of the current taps (no temporaries per Newton step:
+/// fresh memory for them cost ~20 % of a SISO n = 1600 solve in page faults).
+struct DerivativeWorkspace {
+  explicit DerivativeWorkspace(const Problem& p)
+      : grid(p.L), fft(grid), times_T(Dense::Zero(p.L, p.q()), p.ny, p.nz), P_hat(static_cast<size_t>(p.ny * p.ny)),
+        R_hat(static_cast<size_t>(p.nz * p.nz)), Q_hat(static_cast<size_t>(p.q())), Qt_hat(static_cast<size_t>(p.q())) {}
+  const CorrelationGrid grid;
+  CorrelationWorkspace fft;
+  ToeplitzProduct times_T;
+  std::vector<Spectrum> P_hat, R_hat, Q_hat, Qt_hat;
+  Dense Hh;  ///< a pair block of the Hessian, then P·Q
+  /// Frees the spectra, the grid and the pair block (the dual matrices are
+  /// built after the last derivatives: they need not share the memory peak).
+  void release() {
+    fft.release();
+    for (auto* spectra : {&P_hat, &R_hat, &Q_hat, &Qt_hat})
+      for (Spectrum& s : *spectra) s.data.reset();
+    Hh = Dense();
+  }
+};
 
 /// The noise's part of the gradient and Hessian: ∂‖d‖²/∂h_ij = −2 Z_jᵀ d_i,
 /// ∂²‖d‖²/∂h_ij ∂h_ij' = 2 Z_jᵀ Z_j' (with free regressors d is projected and
@@ -190,51 +223,54 @@ void add_noise_terms(const Problem& p, const Point& pt, double mu, Vecd& g, Dens
   if (!p.s_var) H.topLeftCorner(nt, nt) += 4.0 * Zd * Zd.transpose() / (pt.phi * pt.phi);
 }
 
-/// Gradient and Hessian of F_μ at an interior point; P, Q, R as in the header.
-/// Entry-pair blocks of the Hessian, variable (i, j) at shift k against
-/// (i', j') at shift l (sub-blocks X_ab of P, Q, R as in sub_block):
-///   2·sym( [j = j']·Σ_c P_ii'(c+k, c+l) + corr(Q_ij', Q_i'jᵀ)(k, −l) + corr(P_ii', R_jj')(k, l) ).
-void derivatives(const Problem& p, const Point& pt, double mu, const CorrelationGrid& grid, Vecd& g, Dense& H, Dense& P,
-                 Dense& Q, Dense& R) {
-  const Index L = p.L, ny = p.ny, nz = p.nz, nt = p.taps();
-  const Index Ly = L * ny;
-  P = pt.llt.solve(Dense::Identity(Ly, Ly));
-  P = 0.5 * (P + P.transpose());
-  const ToeplitzProduct times_T(pt.taps, ny, p.nz);  // Q = P·T and R = Tᵀ·Q by FFT
-  Q = times_T.right(P);
-  R = times_T.right(Q.transpose()).transpose();
-  R = 0.5 * (R + R.transpose());
-  g = Vecd::Zero(p.dim());
-  H = Dense::Zero(p.dim(), p.dim());
-
-  // −log det(tI − TTᵀ)
-  const auto at = [&](Index i, Index j) { return (i * nz + j) * L; };
-  std::vector<Spectrum> P_hat(static_cast<size_t>(ny * ny)), R_hat(static_cast<size_t>(nz * nz)),
-      Q_hat(static_cast<size_t>(ny * nz)), Qt_hat(static_cast<size_t>(ny * nz));
-  std::vector<Dense> P_diag(static_cast<size_t>(ny * ny));
+/// The spectra the log-det Hessian correlates (sub-blocks of P, R, Q, Qᵀ);
+/// g's taps part, 2 Ω_l(Q_ij).
+void logdet_spectra(const Problem& p, const Dense& P, const Dense& Q, const Dense& R, DerivativeWorkspace& ws, Vecd& g) {
+  const Index L = p.L, ny = p.ny, nz = p.nz;
+  if (p.q() == 1) {  // one pair: corr(Q, Qᵀ) formed in Q̂'s array, Q̂ᵀ's array then takes P̂ (three spectra, not four)
+    g.head(L) = 2.0 * subdiagonal_sums(Q);
+    ws.fft.spectrum(Q, ws.Q_hat[0]);
+    ws.fft.spectrum(Q.transpose(), ws.Qt_hat[0]);
+    ws.fft.reflect_product(ws.Q_hat[0], ws.Qt_hat[0]);
+    ws.fft.spectrum(P, ws.Qt_hat[0]);
+    ws.fft.spectrum(R, ws.R_hat[0]);
+    return;
+  }
   for (Index i = 0; i < ny; ++i)
     for (Index i2 = 0; i2 < ny; ++i2) {
-      const Dense Pii = sub_block(P, ny, ny, i, i2);
-      P_hat[static_cast<size_t>(i * ny + i2)] = grid.spectrum(Pii);
-      P_diag[static_cast<size_t>(i * ny + i2)] = diagonal_sums(Pii);
+      ws.fft.spectrum(sub_block(P, ny, ny, i, i2), ws.P_hat[static_cast<size_t>(i * ny + i2)]);
     }
   for (Index j = 0; j < nz; ++j)
-    for (Index j2 = 0; j2 < nz; ++j2) R_hat[static_cast<size_t>(j * nz + j2)] = grid.spectrum(sub_block(R, nz, nz, j, j2));
+    for (Index j2 = 0; j2 < nz; ++j2) ws.fft.spectrum(sub_block(R, nz, nz, j, j2), ws.R_hat[static_cast<size_t>(j * nz + j2)]);
   for (Index i = 0; i < ny; ++i)
     for (Index j = 0; j < nz; ++j) {
-      const Dense Qij = sub_block(Q, ny, nz, i, j);
-      g.segment(at(i, j), L) = 2.0 * subdiagonal_sums(Qij);
-      Q_hat[static_cast<size_t>(i * nz + j)] = grid.spectrum(Qij);
-      Qt_hat[static_cast<size_t>(i * nz + j)] = grid.spectrum(Qij.transpose());
+      const Strided Qij = sub_block(Q, ny, nz, i, j);
+      g.segment((i * nz + j) * L, L) = 2.0 * subdiagonal_sums(Qij);
+      ws.fft.spectrum(Qij, ws.Q_hat[static_cast<size_t>(i * nz + j)]);
+      ws.fft.spectrum(Qij.transpose(), ws.Qt_hat[static_cast<size_t>(i * nz + j)]);
     }
-  // The pair block (b, a) is the transpose of (a, b): each unordered pair is
-  // correlated once (the FFTs are the MIMO Newton step's main cost).
+}
+
+/// The Hessian of −log det(tI − TTᵀ) in the taps from the spectra of
+/// logdet_spectra. The pair block (b, a) is the transpose of (a, b): each
+/// unordered pair is correlated once (the FFTs are the MIMO Newton step's main cost).
+void logdet_hessian(const Problem& p, const Dense& P, DerivativeWorkspace& ws, Dense& H) {
+  const Index L = p.L, ny = p.ny, nz = p.nz;
+  const auto at = [&](Index i, Index j) { return (i * nz + j) * L; };
+  std::vector<int> uses(static_cast<size_t>(ny * ny), 0);  // of P_ii''s spectrum, still to come
+  for (Index a = 0; a < ny * nz; ++a)
+    for (Index b = a; b < ny * nz; ++b) ++uses[static_cast<size_t>((a / nz) * ny + b / nz)];
   for (Index a = 0; a < ny * nz; ++a)
     for (Index b = a; b < ny * nz; ++b) {
       const Index i = a / nz, j = a % nz, i2 = b / nz, j2 = b % nz;
-      Dense Hh = grid.correlate_sum(Q_hat[static_cast<size_t>(i * nz + j2)], Qt_hat[static_cast<size_t>(i2 * nz + j)],
-                                    P_hat[static_cast<size_t>(i * ny + i2)], R_hat[static_cast<size_t>(j * nz + j2)]);
-      if (j == j2) Hh += P_diag[static_cast<size_t>(i * ny + i2)];
+      Dense& Hh = ws.Hh;
+      const bool last_use = --uses[static_cast<size_t>(i * ny + i2)] == 0;  // then its array takes the product
+      if (p.q() == 1)  // logdet_spectra's single pair: the first term in Q̂'s array, P̂ in Q̂ᵀ's
+        ws.fft.correlate_reflected(ws.Q_hat[0], ws.Qt_hat[0], ws.R_hat[0], Hh);
+      else
+        ws.fft.correlate_sum(ws.Q_hat[static_cast<size_t>(i * nz + j2)], ws.Qt_hat[static_cast<size_t>(i2 * nz + j)],
+                           ws.P_hat[static_cast<size_t>(i * ny + i2)], ws.R_hat[static_cast<size_t>(j * nz + j2)], Hh, last_use);
+      if (j == j2) add_diagonal_sums(sub_block(P, ny, ny, i, i2), Hh);
       if (a == b) {
         H.block(at(i, j), at(i, j), L, L) += Hh + Hh.transpose();  // 2·(symmetric part)
       } else {
@@ -242,11 +278,32 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
         H.block(at(i2, j2), at(i, j), L, L) += 2.0 * Hh.transpose();
       }
     }
+}
+
+/// Gradient and Hessian of F_μ at an interior point; P, Q, R as in the header.
+/// Entry-pair blocks of the Hessian, variable (i, j) at shift k against
+/// (i', j') at shift l (sub-blocks X_ab of P, Q, R as in sub_block):
+///   2·sym( [j = j']·Σ_c P_ii'(c+k, c+l) + corr(Q_ij', Q_i'jᵀ)(k, −l) + corr(P_ii', R_jj')(k, l) ).
+void derivatives(const Problem& p, const Point& pt, double mu, DerivativeWorkspace& ws, Vecd& g, Dense& H, Dense& P,
+                 Dense& Q, Dense& R) {
+  const Index L = p.L, ny = p.ny, nz = p.nz, nt = p.taps();
+  const Index Ly = L * ny;
+  P = pt.llt.solve(Dense::Identity(Ly, Ly));
+  P = 0.5 * (P + P.transpose());
+  ws.times_T.set_taps(pt.taps);  // Q = P·T and R = Tᵀ·Q by FFT
+  ws.times_T.right_into(P, Q);
+  ws.times_T.left_into(Q, R);
+  R = 0.5 * (R + R.transpose());
+  g = Vecd::Zero(p.dim());
+  H = Dense::Zero(p.dim(), p.dim());
+  logdet_spectra(p, P, Q, R, ws, g);  // −log det(tI − TTᵀ)
+  logdet_hessian(p, P, ws, H);
   if (p.t_var) {
     g(nt) = p.ct / mu - P.trace();
-    const Dense PQ = P * Q;
+    Dense& PQ = ws.Hh;
+    PQ.noalias() = P * Q;
     for (Index i = 0; i < ny; ++i)
-      for (Index j = 0; j < nz; ++j) H.block(at(i, j), nt, L, 1) = -2.0 * subdiagonal_sums(sub_block(PQ, ny, nz, i, j));
+      for (Index j = 0; j < nz; ++j) H.block((i * nz + j) * L, nt, L, 1) = -2.0 * subdiagonal_sums(sub_block(PQ, ny, nz, i, j));
     H.block(nt, 0, 1, nt) = H.block(0, nt, nt, 1).transpose();
     H(nt, nt) = P.squaredNorm();
   }
@@ -257,8 +314,8 @@ void derivatives(const Problem& p, const Point& pt, double mu, const Correlation
 /// with F_μ = f₀/μ + φ (f₀ = c_t t + c_s‖d‖²/N when s is eliminated, c_t t
 /// when it is fixed), ∇f₀/μ + ∇φ = 0 differentiated in μ gives H ẋ = ∇f₀/μ²,
 /// so Δx = (μ/factor − μ)·ẋ = −(1 − 1/factor)·H⁻¹(∇f₀/μ). Empty when H
-/// cannot be factored.
-Vecd predictor_step(const Problem& p, const Point& pt, const Dense& H, double mu, double factor) {
+/// could not be factored (`ldlt`: H's factorisation).
+Vecd predictor_step(const Problem& p, const Point& pt, const Eigen::LDLT<Dense>& ldlt, double mu, double factor) {
   Vecd v = Vecd::Zero(p.dim());
   if (p.t_var) v(p.taps()) = p.ct / mu;
   if (p.s_var) {
@@ -267,7 +324,6 @@ Vecd predictor_step(const Problem& p, const Point& pt, const Dense& H, double mu
       for (Index j = 0; j < p.nz; ++j)
         v.segment((i * p.nz + j) * p.L, p.L) = -2.0 * w * (p.Z[static_cast<size_t>(j)].transpose() * pt.d_tail.col(i));
   }
-  const Eigen::LDLT<Dense> ldlt(H);
   if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return {};
   Vecd step = -(1.0 - 1.0 / factor) * ldlt.solve(v);
   return step.allFinite() ? step : Vecd();
@@ -443,7 +499,7 @@ DeltaFormSolution fail(DeltaFormSolution out, const std::string& why) {
 class BarrierRun {
  public:
   BarrierRun(const Problem& p, const BoundObjective& objective, const BarrierOptions& options)
-      : p_(p), options_(options), grid_(p.L), feasibility_(objective.kind == BoundObjective::Kind::kFeasibility),
+      : p_(p), options_(options), ws_(p), feasibility_(objective.kind == BoundObjective::Kind::kFeasibility),
         nt_(p.taps()), Ly_(static_cast<double>(p.L * p.ny)), x_(Vecd::Zero(p.dim())) {}
 
   /// Start: h = 0 and, for a free δ, t central for μ₀ (c_t/μ = tr P = L·ny/t);
@@ -459,13 +515,13 @@ class BarrierRun {
       const double norm2 = norm2_estimate(block_toeplitz(p_, x_));
       x_(nt_) = 2.0 * norm2 + 1e-9 * (1.0 + norm2);
       mu_ = p_.ct * x_(nt_) / Ly_;
-      for (int it = 0; it < 60 && !evaluate(p_, x_, mu_).interior; ++it) {
+      for (int it = 0; it < 60 && (evaluate(p_, x_, mu_, pt_, F1_), !pt_.interior); ++it) {
         check_deadline("the structured barrier was starting");  // a stop request or --timeout: one factorisation late at most
         x_(nt_) *= 2.0;
         mu_ = p_.ct * x_(nt_) / Ly_;
       }
     }
-    pt_ = evaluate(p_, x_, mu_);
+    evaluate(p_, x_, mu_, pt_, F1_);
     return pt_.interior ? "" : "the start is not interior";
   }
 
@@ -515,7 +571,16 @@ class BarrierRun {
   std::string finish() {
     if (!found_feasible_)
       if (const std::string err = center(1e-14, 30); !err.empty() && err.rfind("not centred", 0) != 0) return err;
-    derivatives(p_, pt_, mu_, grid_, g_, H_, P_, Q_, R_);
+    if (!derivatives_current_) {  // else the last Newton step's, at this point and μ
+      derivatives(p_, pt_, mu_, ws_, g_, H_, P_, Q_, R_);
+    }
+    // no further Newton step: the FFT buffers, the factorisation and the trial point go before write() allocates the duals
+    ws_.release();
+    ldlt_.compute(Dense(0, 0));
+    ldlt_of_H_ = false;
+    trial_ = Point();
+    F1_ = Dense();
+    Hs_ = Dense();
     if (feasibility_ && !(s_of(pt_) <= p_.s_fix)) infeasible_ = true;  // undecided at the smallest gap: the dual certificate decides
     return "";
   }
@@ -549,16 +614,24 @@ class BarrierRun {
   /// gets a Levenberg shift τ·I (still a descent direction; the line search
   /// decides the step).
   std::string newton_direction(Vecd& dx, double& dec2) {
-    derivatives(p_, pt_, mu_, grid_, g_, H_, P_, Q_, R_);
+    ldlt_.compute(Dense(0, 0));  // two L × L matrices fewer at the derivatives' memory peak
+    trial_ = Point();
+    derivatives(p_, pt_, mu_, ws_, g_, H_, P_, Q_, R_);
+    derivatives_current_ = true;
     check_deadline("the structured barrier was solving");  // the derivatives take seconds on long records
     bool solved = false;
     const double scale_h = std::max(H_.diagonal().cwiseAbs().maxCoeff(), 1e-300);
     for (int shift = 0; shift < 8 && !solved; ++shift) {
-      Dense Hs = H_;
-      if (shift > 0) Hs.diagonal().array() += scale_h * std::pow(10.0, -16 + 2 * shift);
-      const Eigen::LDLT<Dense> ldlt(Hs);
-      dx = ldlt.solve(-g_);
-      solved = ldlt.info() == Eigen::Success && dx.allFinite() && ldlt.isPositive();
+      if (shift == 0) {
+        ldlt_.compute(H_);
+      } else {
+        Hs_ = H_;
+        Hs_.diagonal().array() += scale_h * std::pow(10.0, -16 + 2 * shift);
+        ldlt_.compute(Hs_);
+      }
+      ldlt_of_H_ = shift == 0;
+      dx = ldlt_.solve(-g_);
+      solved = ldlt_.info() == Eigen::Success && dx.allFinite() && ldlt_.isPositive();
     }
     if (!solved) return "the Newton system is singular";
     dec2 = -g_.dot(dx);
@@ -575,17 +648,18 @@ class BarrierRun {
   bool line_search(const Vecd& dx, double dec2) {
     const double lambda = std::sqrt(dec2);
     double alpha = p_.nz > 1 ? std::min(1.0, options_.damping / (1.0 + lambda)) : 1.0;
-    Point trial;
+    Point& trial = trial_;
     for (int ls = 0; ls < 60; ++ls, alpha *= 0.5) {
       check_deadline("the structured barrier was solving");  // each trial is one factorisation of the horizon
-      trial = evaluate(p_, x_ + alpha * dx, mu_);
+      evaluate(p_, x_ + alpha * dx, mu_, trial, F1_);
       if (trial.interior && (dec2 < 1e-6 || trial.value - pt_.value <= -0.25 * alpha * dec2)) break;
     }
     if (!trial.interior) return false;
     stalled_ = alpha < 1e-12;
     if (stalled_) return true;
     x_ += alpha * dx;
-    pt_ = std::move(trial);
+    std::swap(pt_, trial_);
+    derivatives_current_ = false;
     return true;
   }
 
@@ -594,16 +668,19 @@ class BarrierRun {
   /// depend on μ).
   void reduce_mu() {
     const double factor = adapt_mu_factor();
-    const Vecd step = options_.predictor ? predictor_step(p_, pt_, H_, mu_, factor) : Vecd();
+    if (options_.predictor && !ldlt_of_H_) ldlt_.compute(H_);  // else the last Newton step's factorisation of H is at hand
+    ldlt_of_H_ = true;
+    const Vecd step = options_.predictor ? predictor_step(p_, pt_, ldlt_, mu_, factor) : Vecd();
     mu_ /= factor;
-    pt_ = evaluate(p_, x_, mu_);
+    derivatives_current_ = false;
+    evaluate(p_, x_, mu_, pt_, F1_);
     double beta = 1.0;
     for (int k = 0; k < 12 && step.size() == p_.dim(); ++k, beta *= 0.5) {
       check_deadline("the structured barrier was solving");
-      Point trial = evaluate(p_, x_ + beta * step, mu_);
-      if (trial.interior && trial.value < pt_.value) {
+      evaluate(p_, x_ + beta * step, mu_, trial_, F1_);
+      if (trial_.interior && trial_.value < pt_.value) {
         x_ += beta * step;
-        pt_ = std::move(trial);
+        std::swap(pt_, trial_);
         return;
       }
     }
@@ -646,7 +723,7 @@ class BarrierRun {
 
   const Problem& p_;
   const BarrierOptions& options_;
-  const CorrelationGrid grid_;
+  DerivativeWorkspace ws_;
   const bool feasibility_;
   const Index nt_;
   const double Ly_;
@@ -659,6 +736,12 @@ class BarrierRun {
   bool infeasible_ = false, found_feasible_ = false, stalled_ = false;
   Vecd g_;
   Dense H_, P_, Q_, R_;
+  bool derivatives_current_ = false;  ///< g_ … R_ are those of pt_ at mu_
+  // storage reused from step to step: the trial point, T Tᵀ's buffer, the Newton system's factorisation
+  Point trial_;
+  Dense F1_, Hs_;
+  Eigen::LDLT<Dense> ldlt_;
+  bool ldlt_of_H_ = false;  ///< ldlt_ factors H_ itself (no Levenberg shift)
 };
 
 /// q (minimum-norm least squares for the final taps) and d = r − Z h − G q, original units.
@@ -700,12 +783,14 @@ BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& 
   double sigma_z = 1, sigma_r = 1;
   const Problem p = make_problem(z, r, objective, free_regressors, records, sigma_z, sigma_r);
   BarrierDerivatives out;
-  const Point pt = evaluate(p, x, mu);
+  Point pt;
+  Dense F1;
+  evaluate(p, x, mu, pt, F1);
   out.value = pt.value;
   if (!pt.interior) return out;
-  const CorrelationGrid grid(p.L);
+  DerivativeWorkspace ws(p);
   Dense P, Q, R;
-  derivatives(p, pt, mu, grid, out.gradient, out.hessian, P, Q, R);
+  derivatives(p, pt, mu, ws, out.gradient, out.hessian, P, Q, R);
   return out;
 }
 

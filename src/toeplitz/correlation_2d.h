@@ -15,6 +15,7 @@
 /// a(p, −q), â'(u, v) = â(u, −v) = conj(â(−u, v)) (Hermitian symmetry), which
 /// the half spectrum holds.
 
+#include <algorithm>
 #include <complex>
 #include <memory>
 
@@ -48,10 +49,59 @@ class CorrelationGrid {
                             const Spectrum& D_hat) const;
 
  private:
+  friend class CorrelationWorkspace;
+  /// out ← the transform of the M × M grid `real` (out's array allocated when empty).
+  void forward(double* real, Spectrum& out) const;
+  /// out (L × L) ← the normalised inverse of `product` through the M × M grid `real` (product is destroyed).
+  void inverse_into(std::complex<double>* product, double* real, Mat<double>& out) const;
+  /// o ← conj(Â(−u, v)·conj(B̂(−u, v))) + Ĉ·conj(D̂), the spectrum of correlate_sum.
+  void product_sum(const Spectrum& A_hat, const Spectrum& B_hat, const Spectrum& C_hat, const Spectrum& D_hat,
+                   std::complex<double>* o) const;
   Mat<double> inverse(std::complex<double>* product) const;
   Eigen::Index L_, M_, H_;  ///< H = M/2 + 1
   void* forward_ = nullptr;  ///< fftw_plan (r2c)
   void* backward_ = nullptr;  ///< fftw_plan (c2r)
+};
+
+/// One caller's buffers on a CorrelationGrid (the zero-padded M × M real
+/// grid and a product spectrum), allocated once: the spectra and correlation
+/// sums of a Newton step without an allocation (nor the page faults of fresh
+/// memory) per call, bit for bit CorrelationGrid::spectrum and correlate_sum.
+/// Not for several threads at once.
+class CorrelationWorkspace {
+ public:
+  explicit CorrelationWorkspace(const CorrelationGrid& grid);
+  /// out ← the spectrum of x (any L × L expression: a strided sub-block, a
+  /// transpose), reusing out's array.
+  template <typename X>
+  void spectrum(const Eigen::MatrixBase<X>& x, Spectrum& out) {
+    const Eigen::Index M = grid_.size();
+    double* real = this->real();
+    std::fill(real, real + M * M, 0.0);
+    for (Eigen::Index i = 0; i < x.rows(); ++i)
+      for (Eigen::Index j = 0; j < x.cols(); ++j) real[i * M + j] = x(i, j);
+    grid_.forward(real, out);
+  }
+  /// out ← grid.correlate_sum(A, B, C, D) (L × L). consume_C: C's last use,
+  /// its array holds the product (and is overwritten; one M × (M/2 + 1)
+  /// buffer less, the product buffer is allocated at its first use only).
+  void correlate_sum(const Spectrum& A_hat, const Spectrum& B_hat, Spectrum& C_hat, const Spectrum& D_hat,
+                     Mat<double>& out, bool consume_C = false);
+  /// A ← the first term of correlate_sum, conj(Â(−u, v)·conj(B̂(−u, v))), in
+  /// A's own array (rows u and −u together), so that B's array is free for
+  /// the next spectrum: one spectrum less at a time for a single pair.
+  void reflect_product(Spectrum& A_hat, const Spectrum& B_hat) const;
+  /// out ← the inverse of S + Ĉ·conj(D̂), S from reflect_product: bit for bit
+  /// correlate_sum(A, B, C, D, out, true) (C's array takes the sum).
+  void correlate_reflected(const Spectrum& S, Spectrum& C_hat, const Spectrum& D_hat, Mat<double>& out);
+  /// Frees the grid and the product buffer (allocated again at their next use).
+  void release();
+
+ private:
+  double* real();
+  const CorrelationGrid& grid_;
+  std::shared_ptr<double> real_;
+  std::shared_ptr<std::complex<double>> product_;  ///< empty until a correlation needs it
 };
 
 /// The same sum evaluated directly, O(L⁴): the reference for tests.

@@ -16,8 +16,14 @@ using fftw::planner_mutex;
 using fftw::smooth_size;
 
 Mat<double> tap_gram(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz) {
+  Mat<double> G;
+  tap_gram_into(taps, ny, nz, G);
+  return G;
+}
+
+void tap_gram_into(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz, Mat<double>& G) {
   const Eigen::Index L = taps.rows(), P = L * ny;
-  Mat<double> G(P, P);
+  G.resize(P, P);
   for (Eigen::Index a = 0; a < L; ++a)
     for (Eigen::Index a2 = 0; a2 < L; ++a2)
       for (Eigen::Index i = 0; i < ny; ++i)
@@ -26,7 +32,6 @@ Mat<double> tap_gram(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz) 
           for (Eigen::Index j = 0; j < nz; ++j) v += taps(a, i * nz + j) * taps(a2, i2 * nz + j);
           G(a * ny + i, a2 * ny + i2) = v;
         }
-  return G;
 }
 
 ToeplitzProduct::ToeplitzProduct(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz)
@@ -40,7 +45,13 @@ ToeplitzProduct::ToeplitzProduct(const Mat<double>& taps, Eigen::Index ny, Eigen
   }
   if (!forward_ || !backward_) throw std::runtime_error("FFTW could not plan a length-" + std::to_string(M_) + " transform");
   h_hat_ = array<std::complex<double>>(static_cast<std::size_t>(ny * nz * H_));
-  for (Eigen::Index c = 0; c < ny * nz; ++c) {
+  set_taps(taps);
+}
+
+void ToeplitzProduct::set_taps(const Mat<double>& taps) {
+  if (taps.rows() != L_ || taps.cols() != ny_ * nz_) throw std::invalid_argument("ToeplitzProduct: taps of another size");
+  auto real = array<double>(static_cast<std::size_t>(M_));
+  for (Eigen::Index c = 0; c < ny_ * nz_; ++c) {
     std::memset(real.get(), 0, sizeof(double) * static_cast<std::size_t>(M_));
     for (Eigen::Index l = 0; l < L_; ++l) real.get()[l] = taps(l, c);
     fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real.get(), as_fftw(h_hat_.get() + c * H_));
@@ -53,10 +64,8 @@ ToeplitzProduct::~ToeplitzProduct() {
   if (backward_) fftw_destroy_plan(static_cast<fftw_plan>(backward_));
 }
 
-Mat<double> ToeplitzProduct::right(const Mat<double>& X) const {
-  const Eigen::Index rows = X.rows();
-  if (X.cols() != L_ * ny_) throw std::invalid_argument("ToeplitzProduct: X has " + std::to_string(X.cols()) + " columns");
-  Mat<double> out(rows, L_ * nz_);
+template <typename Gather, typename Scatter>
+void ToeplitzProduct::apply(Eigen::Index rows, Gather gather, Scatter scatter) const {
   auto real = array<double>(static_cast<std::size_t>(M_));
   auto x_hat = array<std::complex<double>>(static_cast<std::size_t>(ny_ * H_));
   auto acc = array<std::complex<double>>(static_cast<std::size_t>(H_));
@@ -65,7 +74,7 @@ Mat<double> ToeplitzProduct::right(const Mat<double>& X) const {
   for (Eigen::Index row = 0; row < rows; ++row) {
     for (Eigen::Index i = 0; i < ny_; ++i) {
       std::memset(real.get(), 0, sizeof(double) * static_cast<std::size_t>(M_));
-      for (Eigen::Index c = 0; c < L_; ++c) real.get()[c] = X(row, c * ny_ + i);
+      gather(row, i, real.get());
       fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real.get(), as_fftw(x_hat.get() + i * H_));
     }
     for (Eigen::Index j = 0; j < nz_; ++j) {
@@ -78,9 +87,30 @@ Mat<double> ToeplitzProduct::right(const Mat<double>& X) const {
         for (Eigen::Index v = 0; v < H_; ++v) a[v] += xs[v] * std::conj(hs[v]);
       }
       fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), as_fftw(a), real.get());
-      for (Eigen::Index b = 0; b < L_; ++b) out(row, b * nz_ + j) = real.get()[b] * scale;
+      for (Eigen::Index b = 0; b < L_; ++b) scatter(row, b, j, real.get()[b] * scale);
     }
   }
+}
+
+void ToeplitzProduct::right_into(const Mat<double>& X, Mat<double>& out) const {
+  if (X.cols() != L_ * ny_) throw std::invalid_argument("ToeplitzProduct: X has " + std::to_string(X.cols()) + " columns");
+  out.resize(X.rows(), L_ * nz_);
+  apply(
+      X.rows(), [&](Eigen::Index row, Eigen::Index i, double* real) { for (Eigen::Index c = 0; c < L_; ++c) real[c] = X(row, c * ny_ + i); },
+      [&](Eigen::Index row, Eigen::Index b, Eigen::Index j, double v) { out(row, b * nz_ + j) = v; });
+}
+
+void ToeplitzProduct::left_into(const Mat<double>& Y, Mat<double>& out) const {
+  if (Y.rows() != L_ * ny_) throw std::invalid_argument("ToeplitzProduct: Y has " + std::to_string(Y.rows()) + " rows");
+  out.resize(L_ * nz_, Y.cols());
+  apply(
+      Y.cols(), [&](Eigen::Index col, Eigen::Index i, double* real) { for (Eigen::Index c = 0; c < L_; ++c) real[c] = Y(c * ny_ + i, col); },
+      [&](Eigen::Index col, Eigen::Index b, Eigen::Index j, double v) { out(b * nz_ + j, col) = v; });
+}
+
+Mat<double> ToeplitzProduct::right(const Mat<double>& X) const {
+  Mat<double> out;
+  right_into(X, out);
   return out;
 }
 

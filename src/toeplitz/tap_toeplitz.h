@@ -30,6 +30,8 @@ Mat<S> tap_toeplitz_dense(const Mat<S>& taps, Eigen::Index ny, Eigen::Index nz) 
 /// (blocks; the first block row and column are h_a h_0ᵀ, h_0 h_a'ᵀ):
 /// O(L²·ny²·nz) instead of O(L³). Fixed loop order (deterministic).
 Mat<double> tap_gram(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz);
+/// The same into G (resized once: no allocation per call).
+void tap_gram_into(const Mat<double>& taps, Eigen::Index ny, Eigen::Index nz, Mat<double>& G);
 
 /// X·T for dense X (rows × L·ny) by FFT correlations along each row:
 ///   (X·T)(row, b·nz + j) = Σ_{i'} Σ_{c ≥ b} X(row, c·ny + i') h_{i'j}(c − b),
@@ -42,8 +44,18 @@ class ToeplitzProduct {
   ToeplitzProduct(const ToeplitzProduct&) = delete;
   ToeplitzProduct& operator=(const ToeplitzProduct&) = delete;
   Mat<double> right(const Mat<double>& X) const;
+  /// out ← X·T (out resized once; the same numbers as right(X)).
+  void right_into(const Mat<double>& X, Mat<double>& out) const;
+  /// out ← Tᵀ·Y, bit for bit right(Yᵀ)ᵀ without the two transposed copies.
+  void left_into(const Mat<double>& Y, Mat<double>& out) const;
+  /// New taps of the same size: the plans are kept (a solver's one per solve, not one per Newton step).
+  void set_taps(const Mat<double>& taps);
 
  private:
+  /// For each of `rows` rows: gather(row, i, real) fills the L samples of
+  /// input i, scatter(row, b, j, value) stores (X·T)(row, b·nz + j).
+  template <typename Gather, typename Scatter>
+  void apply(Eigen::Index rows, Gather gather, Scatter scatter) const;
   Eigen::Index L_, ny_, nz_, M_, H_;
   std::shared_ptr<std::complex<double>> h_hat_;  ///< (ny·nz) spectra of length H (column i·nz + j)
   void* forward_ = nullptr;

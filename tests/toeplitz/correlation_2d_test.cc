@@ -8,6 +8,14 @@
 namespace lpvid {
 namespace {
 
+/// An L × L matrix of random multiples of 1/scale in [−1000, 1000]/scale.
+Mat<double> random_square(int L, double scale) {
+  Mat<double> X(L, L);
+  for (int i = 0; i < L; ++i)
+    for (int j = 0; j < L; ++j) X(i, j) = *rc::gen::inRange(-1000, 1001) / scale;
+  return X;
+}
+
 RC_GTEST_PROP(Correlation2d, FftEqualsDirectSum, ()) {
   const int L = *rc::gen::inRange(1, 13);
   const int sign = *rc::gen::element(-1, 1);
@@ -26,17 +34,72 @@ RC_GTEST_PROP(Correlation2d, FftEqualsDirectSum, ()) {
 
 RC_GTEST_PROP(Correlation2d, SumOfTwoEqualsTheDirectSums, ()) {
   const int L = *rc::gen::inRange(1, 11);
-  const auto random = [L] {
-    Mat<double> X(L, L);
-    for (int i = 0; i < L; ++i)
-      for (int j = 0; j < L; ++j) X(i, j) = *rc::gen::inRange(-1000, 1001) / 100.0;
-    return X;
-  };
+  const auto random = [L] { return random_square(L, 100.0); };
   const Mat<double> A = random(), B = random(), C = random(), D = random();
   const CorrelationGrid grid(L);
   const Mat<double> fast = grid.correlate_sum(grid.spectrum(A), grid.spectrum(B), grid.spectrum(C), grid.spectrum(D));
   const Mat<double> slow = correlate_direct(A, B, -1) + correlate_direct(C, D, +1);
   RC_ASSERT((fast - slow).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + slow.cwiseAbs().maxCoeff()));
+}
+
+// The workspace (buffers allocated once, reused across calls) computes the
+// very numbers of the allocating calls, bit for bit, also on a strided
+// sub-block and a transpose and when its buffers held other data before.
+RC_GTEST_PROP(Correlation2d, WorkspaceIsBitIdenticalToTheAllocatingCalls, ()) {
+  const int L = *rc::gen::inRange(1, 11);
+  const auto random = [L](int rows, int cols) {
+    Mat<double> X(rows, cols);
+    for (int i = 0; i < rows; ++i)
+      for (int j = 0; j < cols; ++j) X(i, j) = *rc::gen::inRange(-1000, 1001) / 7.0;
+    return X;
+  };
+  const Mat<double> big = random(2 * L, 2 * L), B = random(L, L), C = random(L, L), D = random(L, L);
+  const Mat<double> A = big(Eigen::seq(1, 2 * L - 1, 2), Eigen::seq(0, 2 * L - 2, 2));  // the sub-block read strided
+  const CorrelationGrid grid(L);
+  CorrelationWorkspace ws(grid);
+  Spectrum a, b, c, d;
+  Mat<double> out;
+  ws.spectrum(random(L, L), a);  // earlier contents of the reused arrays must not matter
+  ws.correlate_sum(a, a, a, a, out);
+  ws.spectrum(Eigen::Map<const Mat<double>, 0, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>>(
+                  big.data() + 1, L, L, Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(4 * L, 2)),
+              a);
+  ws.spectrum(B.transpose(), b);
+  ws.spectrum(C, c);
+  ws.spectrum(D, d);
+  const Mat<double> expected = grid.correlate_sum(grid.spectrum(A), grid.spectrum(Mat<double>(B.transpose())), grid.spectrum(C),
+                                                  grid.spectrum(D));
+  ws.correlate_sum(a, b, c, d, out);
+  RC_ASSERT(out.rows() == L && out.cols() == L);
+  RC_ASSERT((out.array() == expected.array()).all());
+  ws.correlate_sum(a, b, c, d, out, true);  // C's last use: the product in C's array
+  RC_ASSERT((out.array() == expected.array()).all());
+}
+
+// One pair (SISO): the first term formed in A's array (rows u and −u
+// swapped in place, odd and even grid sizes), C then added in C's array,
+// is correlate_sum bit for bit, also after release() freed the buffers.
+RC_GTEST_PROP(Correlation2d, ReflectedSumIsBitIdenticalToCorrelateSum, ()) {
+  const int L = *rc::gen::inRange(1, 12);
+  const auto random = [L] { return random_square(L, 7.0); };
+  const Mat<double> A = random(), B = random(), C = random(), D = random();
+  const CorrelationGrid grid(L);
+  const Mat<double> expected =
+      grid.correlate_sum(grid.spectrum(A), grid.spectrum(B), grid.spectrum(C), grid.spectrum(D));
+  CorrelationWorkspace ws(grid);
+  for (int round = 0; round < 2; ++round) {
+    Spectrum a, b, d;
+    Mat<double> out;
+    ws.spectrum(A, a);
+    ws.spectrum(B, b);
+    ws.reflect_product(a, b);
+    ws.spectrum(C, b);  // B's array takes C
+    ws.spectrum(D, d);
+    ws.correlate_reflected(a, b, d, out);
+    RC_ASSERT(out.rows() == L && out.cols() == L);
+    RC_ASSERT((out.array() == expected.array()).all());
+    ws.release();
+  }
 }
 
 TEST(Correlation2d, KnownValue) {

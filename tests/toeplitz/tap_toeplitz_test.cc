@@ -30,5 +30,27 @@ RC_GTEST_PROP(TapToeplitz, GramAndProductEqualTheDenseOnes, ()) {
   RC_ASSERT((times_T.right(X) - XT).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + XT.cwiseAbs().maxCoeff()));
 }
 
+// The reusing calls of a solver's Newton steps (new taps on the same plans,
+// results into existing matrices, Tᵀ·Y gathered column-wise) give the numbers
+// of a fresh ToeplitzProduct, bit for bit.
+RC_GTEST_PROP(TapToeplitz, ReusedProductIsBitIdenticalToAFreshOne, ()) {
+  const Eigen::Index L = *rc::gen::inRange(1, 12), ny = *rc::gen::inRange(1, 4), nz = *rc::gen::inRange(1, 4);
+  const Mat<double> taps = random(L, ny * nz), X = random(*rc::gen::inRange(1, 6), L * ny), Y = random(L * ny, 3);
+  ToeplitzProduct reused(random(L, ny * nz), ny, nz);
+  Mat<double> out = random(2, 2);
+  reused.right_into(X, out);
+  reused.set_taps(taps);
+  const ToeplitzProduct fresh(taps, ny, nz);
+  reused.right_into(X, out);
+  RC_ASSERT((out.array() == fresh.right(X).array()).all());
+  reused.left_into(Y, out);
+  const Mat<double> expected = fresh.right(Y.transpose()).transpose();
+  RC_ASSERT(out.rows() == expected.rows() && out.cols() == expected.cols());
+  RC_ASSERT((out.array() == expected.array()).all());
+  Mat<double> G = random(1, 1);
+  tap_gram_into(taps, ny, nz, G);
+  RC_ASSERT((G.array() == tap_gram(taps, ny, nz).array()).all());
+}
+
 }  // namespace
 }  // namespace lpvid
