@@ -52,8 +52,10 @@ class ToeplitzProduct {
   void set_taps(const Mat<double>& taps);
 
  private:
-  /// For each of `rows` rows: gather(row, i, real) fills the L samples of
-  /// input i, scatter(row, b, j, value) stores (X·T)(row, b·nz + j).
+  /// For blocks of up to kRowBlock rows (row0 … row0 + n − 1):
+  /// gather(row0, n, i, real, Ms) fills real[k·Ms + c] with sample c of input
+  /// i of row row0 + k, scatter(row0, n, j, real, Ms, scale) stores
+  /// (X·T)(row0 + k, b·nz + j) = real[k·Ms + b]·scale. Each row is transformed alone.
   template <typename Gather, typename Scatter>
   void apply(Eigen::Index rows, Gather gather, Scatter scatter) const;
   Eigen::Index L_, ny_, nz_, M_, H_;

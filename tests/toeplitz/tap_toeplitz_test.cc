@@ -24,10 +24,17 @@ RC_GTEST_PROP(TapToeplitz, GramAndProductEqualTheDenseOnes, ()) {
   const Mat<double> T = tap_toeplitz_dense(taps, ny, nz);
   const Mat<double> G = T * T.transpose();
   RC_ASSERT((tap_gram(taps, ny, nz) - G).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + G.cwiseAbs().maxCoeff()));
-  const Mat<double> X = random(*rc::gen::inRange(1, 6), L * ny);
-  const Mat<double> XT = X * T;
+  // up to 20 rows: blocks of 8 and a remainder
+  const Mat<double> X = random(*rc::gen::inRange(1, 21), L * ny), Y = random(L * ny, *rc::gen::inRange(1, 21));
+  const Mat<double> XT = X * T, TtY = T.transpose() * Y;
   const ToeplitzProduct times_T(taps, ny, nz);
-  RC_ASSERT((times_T.right(X) - XT).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + XT.cwiseAbs().maxCoeff()));
+  const Mat<double> fast = times_T.right(X);
+  RC_ASSERT((fast - XT).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + XT.cwiseAbs().maxCoeff()));
+  Mat<double> left;
+  times_T.left_into(Y, left);
+  RC_ASSERT((left - TtY).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + TtY.cwiseAbs().maxCoeff()));
+  for (Eigen::Index k = 0; k < X.rows(); ++k)  // rows gathered together are transformed alone: bit for bit
+    RC_ASSERT((times_T.right(Mat<double>(X.row(k))).array() == fast.row(k).array()).all());
 }
 
 // The reusing calls of a solver's Newton steps (new taps on the same plans,
