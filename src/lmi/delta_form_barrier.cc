@@ -3,11 +3,15 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "core/deadline.h"
+#include "core/helper_thread.h"
+#include "core/parallel_for.h"
 #include "core/rms.h"
 #include "lmi/free_regressors.h"
 #include "lmi/noise_block.h"
+#include "lmi/split_factorisations.h"
 #include "toeplitz/correlation_2d.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
@@ -194,6 +198,7 @@ struct DerivativeWorkspace {
   ToeplitzProduct times_T;
   std::vector<Spectrum> P_hat, R_hat, Q_hat, Qt_hat;
   Dense Hh;  ///< a pair block of the Hessian, then P·Q
+  HelperThread* helper = nullptr;  ///< takes half of the work when set (the same numbers)
   /// Frees the spectra, the grid and the pair block (the dual matrices are
   /// built after the last derivatives: they need not share the memory peak).
   void release() {
@@ -228,9 +233,13 @@ void add_noise_terms(const Problem& p, const Point& pt, double mu, Vecd& g, Dens
 void logdet_spectra(const Problem& p, const Dense& P, const Dense& Q, const Dense& R, DerivativeWorkspace& ws, Vecd& g) {
   const Index L = p.L, ny = p.ny, nz = p.nz;
   if (p.q() == 1) {  // one pair: corr(Q, Qᵀ) formed in Q̂'s array, Q̂ᵀ's array then takes P̂ (three spectra, not four)
-    g.head(L) = 2.0 * subdiagonal_sums(Q);
-    ws.fft.spectrum(Q, ws.Q_hat[0]);
-    ws.fft.spectrum(Q.transpose(), ws.Qt_hat[0]);
+    // Q̂ᵀ on the helper, through R̂'s array (R̂ is formed last): four arrays of the grid's size in all
+    fork_join(
+        ws.helper, [&] { ws.fft.spectrum_via(Q.transpose(), ws.Qt_hat[0], ws.R_hat[0]); },
+        [&] {
+          g.head(L) = 2.0 * subdiagonal_sums(Q);
+          ws.fft.spectrum(Q, ws.Q_hat[0]);
+        });
     ws.fft.reflect_product(ws.Q_hat[0], ws.Qt_hat[0]);
     ws.fft.spectrum(P, ws.Qt_hat[0]);
     ws.fft.spectrum(R, ws.R_hat[0]);
@@ -287,8 +296,7 @@ void logdet_hessian(const Problem& p, const Dense& P, DerivativeWorkspace& ws, D
 void derivatives(const Problem& p, const Point& pt, double mu, DerivativeWorkspace& ws, Vecd& g, Dense& H, Dense& P,
                  Dense& Q, Dense& R) {
   const Index L = p.L, ny = p.ny, nz = p.nz, nt = p.taps();
-  const Index Ly = L * ny;
-  P = pt.llt.solve(Dense::Identity(Ly, Ly));
+  llt_inverse_split(pt.llt, P, ws.helper);  // P = F⁻¹, bit for bit llt.solve(I)
   P = 0.5 * (P + P.transpose());
   ws.times_T.set_taps(pt.taps);  // Q = P·T and R = Tᵀ·Q by FFT
   ws.times_T.right_into(P, Q);
@@ -499,8 +507,10 @@ DeltaFormSolution fail(DeltaFormSolution out, const std::string& why) {
 class BarrierRun {
  public:
   BarrierRun(const Problem& p, const BoundObjective& objective, const BarrierOptions& options)
-      : p_(p), options_(options), ws_(p), feasibility_(objective.kind == BoundObjective::Kind::kFeasibility),
-        nt_(p.taps()), Ly_(static_cast<double>(p.L * p.ny)), x_(Vecd::Zero(p.dim())) {}
+      : p_(p), options_(options), helper_(helper_for(options)), ws_(p), feasibility_(objective.kind == BoundObjective::Kind::kFeasibility),
+        nt_(p.taps()), Ly_(static_cast<double>(p.L * p.ny)), x_(Vecd::Zero(p.dim())) {
+    ws_.helper = helper_.get();
+  }
 
   /// Start: h = 0 and, for a free δ, t central for μ₀ (c_t/μ = tr P = L·ny/t);
   /// μ₀ puts the eliminated s at twice the residual's mean square. "" on success.
@@ -623,11 +633,11 @@ class BarrierRun {
     const double scale_h = std::max(H_.diagonal().cwiseAbs().maxCoeff(), 1e-300);
     for (int shift = 0; shift < 8 && !solved; ++shift) {
       if (shift == 0) {
-        ldlt_.compute(H_);
+        ldlt_.compute_split(H_, helper_.get());
       } else {
         Hs_ = H_;
         Hs_.diagonal().array() += scale_h * std::pow(10.0, -16 + 2 * shift);
-        ldlt_.compute(Hs_);
+        ldlt_.compute_split(Hs_, helper_.get());
       }
       ldlt_of_H_ = shift == 0;
       dx = ldlt_.solve(-g_);
@@ -668,7 +678,7 @@ class BarrierRun {
   /// depend on μ).
   void reduce_mu() {
     const double factor = adapt_mu_factor();
-    if (options_.predictor && !ldlt_of_H_) ldlt_.compute(H_);  // else the last Newton step's factorisation of H is at hand
+    if (options_.predictor && !ldlt_of_H_) ldlt_.compute_split(H_, helper_.get());  // else the last Newton step's factorisation of H is at hand
     ldlt_of_H_ = true;
     const Vecd step = options_.predictor ? predictor_step(p_, pt_, ldlt_, mu_, factor) : Vecd();
     mu_ /= factor;
@@ -721,8 +731,15 @@ class BarrierRun {
     out.dual_c2.col(0) /= sigma_r;
   }
 
+  /// A helper thread when options.threads (0: the machine's cores) is at least 2.
+  static std::unique_ptr<HelperThread> helper_for(const BarrierOptions& options) {
+    const unsigned threads = options.threads == 0 ? default_thread_count() : options.threads;
+    return threads >= 2 ? std::make_unique<HelperThread>() : nullptr;
+  }
+
   const Problem& p_;
   const BarrierOptions& options_;
+  std::unique_ptr<HelperThread> helper_;
   DerivativeWorkspace ws_;
   const bool feasibility_;
   const Index nt_;
@@ -740,7 +757,7 @@ class BarrierRun {
   // storage reused from step to step: the trial point, T Tᵀ's buffer, the Newton system's factorisation
   Point trial_;
   Dense F1_, Hs_;
-  Eigen::LDLT<Dense> ldlt_;
+  SplitLdlt ldlt_;
   bool ldlt_of_H_ = false;  ///< ldlt_ factors H_ itself (no Levenberg shift)
 };
 
@@ -779,7 +796,7 @@ DeltaFormSolution solve_delta_form_barrier(const Mat<double>& z, const Mat<doubl
 
 BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
                                        const Eigen::VectorXd& x, double mu, const Mat<double>& free_regressors,
-                                       const RecordLengths& records) {
+                                       const RecordLengths& records, unsigned threads) {
   double sigma_z = 1, sigma_r = 1;
   const Problem p = make_problem(z, r, objective, free_regressors, records, sigma_z, sigma_r);
   BarrierDerivatives out;
@@ -789,6 +806,8 @@ BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& 
   out.value = pt.value;
   if (!pt.interior) return out;
   DerivativeWorkspace ws(p);
+  const std::unique_ptr<HelperThread> helper = threads >= 2 ? std::make_unique<HelperThread>() : nullptr;
+  ws.helper = helper.get();
   Dense P, Q, R;
   derivatives(p, pt, mu, ws, out.gradient, out.hessian, P, Q, R);
   return out;

@@ -127,6 +127,12 @@ struct BarrierOptions {
   /// Newton decrement. Measured at 2 (3×3 n = 200: no convergence in 400
   /// steps → 32.9 s; 2×2 n = 400: 37.7 → 45.8 s, the price). SISO: full steps.
   double damping = 2.0;
+  /// Threads of a Newton step: 0 = the machine's cores, ≥ 2 = a helper thread
+  /// takes half of P = F⁻¹, of the Newton LDLᵀ's column updates and of the
+  /// spectra and correlations (lmi/split_factorisations.h). Every number is
+  /// computed by the same operations whatever the count: the same iterates,
+  /// bounds and certificates, bit for bit (tests/solvers/barrier_threads_test.cc).
+  unsigned threads = 0;
 };
 
 /// True when the structured solver handles the case: ny = nz = 1 and an
@@ -161,6 +167,6 @@ struct BarrierDerivatives {
 };
 BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
                                        const Eigen::VectorXd& x, double mu, const Mat<double>& free_regressors = {},
-                                       const RecordLengths& records = {});
+                                       const RecordLengths& records = {}, unsigned threads = 1);
 
 }  // namespace lpvid

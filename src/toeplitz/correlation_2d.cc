@@ -22,13 +22,15 @@ CorrelationGrid::CorrelationGrid(Eigen::Index L) : L_(L), M_(smooth_size(2 * L))
   // FFTW_ESTIMATE does not touch the arrays while planning.
   forward_ = fftw_plan_dft_r2c_2d(m, m, real.get(), as_fftw(half.get()), FFTW_ESTIMATE);
   backward_ = fftw_plan_dft_c2r_2d(m, m, as_fftw(half.get()), real.get(), FFTW_ESTIMATE);
-  if (!forward_ || !backward_) throw std::runtime_error("FFTW could not plan a " + std::to_string(m) + "^2 transform");
+  backward_in_place_ = fftw_plan_dft_c2r_2d(m, m, as_fftw(half.get()), reinterpret_cast<double*>(half.get()), FFTW_ESTIMATE);
+  if (!forward_ || !backward_ || !backward_in_place_) throw std::runtime_error("FFTW could not plan a " + std::to_string(m) + "^2 transform");
 }
 
 CorrelationGrid::~CorrelationGrid() {
   std::lock_guard<std::mutex> lock(planner_mutex());
   if (forward_) fftw_destroy_plan(static_cast<fftw_plan>(forward_));
   if (backward_) fftw_destroy_plan(static_cast<fftw_plan>(backward_));
+  if (backward_in_place_) fftw_destroy_plan(static_cast<fftw_plan>(backward_in_place_));
 }
 
 void CorrelationGrid::forward(double* real, Spectrum& out) const {
@@ -52,6 +54,16 @@ void CorrelationGrid::inverse_into(std::complex<double>* product, double* real, 
   out.resize(L_, L_);
   for (Eigen::Index p = 0; p < L_; ++p)
     for (Eigen::Index q = 0; q < L_; ++q) out(p, q) = real[p * M_ + q] * scale;
+}
+
+void CorrelationGrid::inverse_in_place(std::complex<double>* product, Mat<double>& out) const {
+  double* real = reinterpret_cast<double*>(product);
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_in_place_), as_fftw(product), real);  // unnormalised
+  const double scale = 1.0 / (static_cast<double>(M_) * static_cast<double>(M_));
+  const Eigen::Index stride = 2 * H_;
+  out.resize(L_, L_);
+  for (Eigen::Index p = 0; p < L_; ++p)
+    for (Eigen::Index q = 0; q < L_; ++q) out(p, q) = real[p * stride + q] * scale;
 }
 
 Mat<double> CorrelationGrid::inverse(std::complex<double>* product) const {
@@ -100,8 +112,13 @@ double* CorrelationWorkspace::real() {
   return real_.get();
 }
 
+std::shared_ptr<std::complex<double>> CorrelationWorkspace::fftw_array(std::size_t count) {
+  return array<std::complex<double>>(count);
+}
+
 void CorrelationWorkspace::release() {
   real_.reset();
+  real_zero_padded_ = false;
   product_.reset();
 }
 
@@ -125,7 +142,7 @@ void CorrelationWorkspace::correlate_reflected(const Spectrum& S, Spectrum& C_ha
   const std::complex<double>*s = S.data.get(), *d = D_hat.data.get();
   std::complex<double>* c = C_hat.data.get();
   for (Eigen::Index k = 0; k < n; ++k) c[k] = s[k] + c[k] * std::conj(d[k]);
-  grid_.inverse_into(c, real(), out);
+  grid_.inverse_in_place(c, out);
 }
 
 void CorrelationWorkspace::correlate_sum(const Spectrum& A_hat, const Spectrum& B_hat, Spectrum& C_hat,
@@ -134,7 +151,7 @@ void CorrelationWorkspace::correlate_sum(const Spectrum& A_hat, const Spectrum& 
   // in place into C: entry (u, v) of the product reads C at (u, v) only
   std::complex<double>* product = consume_C ? C_hat.data.get() : product_.get();
   grid_.product_sum(A_hat, B_hat, C_hat, D_hat, product);
-  grid_.inverse_into(product, real(), out);
+  grid_.inverse_in_place(product, out);
 }
 
 Mat<double> correlate_direct(const Mat<double>& X, const Mat<double>& Y, int sign) {

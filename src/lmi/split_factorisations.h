@@ -1,0 +1,38 @@
+#pragma once
+/// The two dense factorisation steps of the structured barrier's Newton step
+/// (lmi/delta_form_barrier.cc), shared with a helper thread so that every
+/// number is still computed by the same operations as by Eigen alone.
+///
+/// SplitLdlt: Eigen's LDLᵀ factorisation (diagonal pivoting, the unblocked algorithm of
+/// Eigen 3.4's ldlt_inplace<Lower>) with its one costly operation, the
+/// column update A21 −= A20·(D·A10ᵀ), split by rows between the caller and a
+/// helper thread. A row's update is one matrix-vector product row whichever
+/// thread computes it (Eigen's column-major kernel forms every row's sum by
+/// the same operations: the split keeps at least two rows per part, since a
+/// one-row product is evaluated as a dot product), so the factors, the
+/// pivots and every solve are bit for bit those of Eigen::LDLT::compute —
+/// tests/solvers/split_factorisations_test.cc checks it. The Newton system of the structured
+/// barrier (lmi/delta_form_barrier.cc) is ~60 % of a 3×3 solve.
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+
+namespace lpvid {
+
+class HelperThread;
+
+class SplitLdlt : public Eigen::LDLT<Eigen::MatrixXd> {
+ public:
+  /// As Eigen::LDLT::compute(a); `helper` (may be null: one thread) takes a
+  /// share of the long column updates.
+  SplitLdlt& compute_split(const Eigen::MatrixXd& a, HelperThread* helper);
+};
+
+/// P ← F⁻¹ = llt.solve(I), bit for bit, the columns in two parts (the
+/// helper's from a multiple of 4 on: Eigen's triangular solves treat each
+/// right-hand column alike whatever their number, in panels of 4 columns
+/// counted from the first, and at least two columns per part, since a
+/// single column is solved as a vector). ~1/3 of a SISO Newton step at n = 1600.
+void llt_inverse_split(const Eigen::LLT<Eigen::MatrixXd>& llt, Eigen::MatrixXd& P, HelperThread* helper);
+
+}  // namespace lpvid
