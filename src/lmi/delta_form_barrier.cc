@@ -199,6 +199,10 @@ struct DerivativeWorkspace {
   std::vector<Spectrum> P_hat, R_hat, Q_hat, Qt_hat;
   Dense Hh;  ///< a pair block of the Hessian, then P·Q
   HelperThread* helper = nullptr;  ///< takes half of the work when set (the same numbers)
+  void set_helper(HelperThread* h) {
+    helper = h;
+    fft.set_helper(h);
+  }
   /// Frees the spectra, the grid and the pair block (the dual matrices are
   /// built after the last derivatives: they need not share the memory peak).
   void release() {
@@ -233,13 +237,9 @@ void add_noise_terms(const Problem& p, const Point& pt, double mu, Vecd& g, Dens
 void logdet_spectra(const Problem& p, const Dense& P, const Dense& Q, const Dense& R, DerivativeWorkspace& ws, Vecd& g) {
   const Index L = p.L, ny = p.ny, nz = p.nz;
   if (p.q() == 1) {  // one pair: corr(Q, Qᵀ) formed in Q̂'s array, Q̂ᵀ's array then takes P̂ (three spectra, not four)
-    // Q̂ᵀ on the helper, through R̂'s array (R̂ is formed last): four arrays of the grid's size in all
-    fork_join(
-        ws.helper, [&] { ws.fft.spectrum_via(Q.transpose(), ws.Qt_hat[0], ws.R_hat[0]); },
-        [&] {
-          g.head(L) = 2.0 * subdiagonal_sums(Q);
-          ws.fft.spectrum(Q, ws.Q_hat[0]);
-        });
+    g.head(L) = 2.0 * subdiagonal_sums(Q);
+    ws.fft.spectrum(Q, ws.Q_hat[0]);
+    ws.fft.spectrum(Q.transpose(), ws.Qt_hat[0]);
     ws.fft.reflect_product(ws.Q_hat[0], ws.Qt_hat[0]);
     ws.fft.spectrum(P, ws.Qt_hat[0]);
     ws.fft.spectrum(R, ws.R_hat[0]);
@@ -509,7 +509,7 @@ class BarrierRun {
   BarrierRun(const Problem& p, const BoundObjective& objective, const BarrierOptions& options)
       : p_(p), options_(options), helper_(helper_for(options)), ws_(p), feasibility_(objective.kind == BoundObjective::Kind::kFeasibility),
         nt_(p.taps()), Ly_(static_cast<double>(p.L * p.ny)), x_(Vecd::Zero(p.dim())) {
-    ws_.helper = helper_.get();
+    ws_.set_helper(helper_.get());
   }
 
   /// Start: h = 0 and, for a free δ, t central for μ₀ (c_t/μ = tr P = L·ny/t);
@@ -807,7 +807,7 @@ BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& 
   if (!pt.interior) return out;
   DerivativeWorkspace ws(p);
   const std::unique_ptr<HelperThread> helper = threads >= 2 ? std::make_unique<HelperThread>() : nullptr;
-  ws.helper = helper.get();
+  ws.set_helper(helper.get());
   Dense P, Q, R;
   derivatives(p, pt, mu, ws, out.gradient, out.hessian, P, Q, R);
   return out;

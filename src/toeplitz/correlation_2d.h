@@ -17,11 +17,14 @@
 
 #include <algorithm>
 #include <complex>
+#include <functional>
 #include <memory>
 
 #include "core/scalar.h"
 
 namespace lpvid {
+
+class HelperThread;
 
 /// The half spectrum of an L × L real matrix on a CorrelationGrid.
 struct Spectrum {
@@ -54,19 +57,38 @@ class CorrelationGrid {
   void forward(double* real, Spectrum& out) const;
   /// out (L × L) ← the normalised inverse of `product` through the M × M grid `real` (product is destroyed).
   void inverse_into(std::complex<double>* product, double* real, Mat<double>& out) const;
-  /// The same in place: the grid overwrites `product` (rows of 2·(M/2 + 1)
-  /// reals). FFTW's in-place and out-of-place c2r give the same bits here
-  /// (correlation_2d_test.cc checks it), in ~2/3 of the time and without
-  /// writing the M × M real grid.
-  void inverse_in_place(std::complex<double>* product, Mat<double>& out) const;
+  /// The transforms of a Newton step, as FFTW's 2-D plans compute them
+  /// (a 2-D r2c is 1-D r2c's along the rows, then 1-D c2c's down the
+  /// columns; c2r the reverse), written out so that (a) a helper thread
+  /// takes half of the rows and half of the columns, (b) the forward skips
+  /// the M − L rows that are zero (their transforms are zero) and (c) the
+  /// inverse transforms only the L rows that are kept, in place. Each 1-D
+  /// transform is the one the 2-D plan runs: the same bits
+  /// (tests/toeplitz/correlation_2d_test.cc, WorkspaceIsBitIdentical…), in
+  /// about a third of the time on two threads.
+  ///
+  /// out ← the spectrum of the grid whose first L rows (of M reals each,
+  /// zero from column L on) are `rows`; the rest of the grid is zero.
+  void forward_rows(const double* rows, std::complex<double>* out, HelperThread* helper,
+                    const std::function<void(Eigen::Index, Eigen::Index)>& fill_rows) const;
+  /// out (L × L) ← the normalised inverse of `product`, in place (product is destroyed).
+  void inverse_in_place(std::complex<double>* product, Mat<double>& out, HelperThread* helper) const;
   /// o ← conj(Â(−u, v)·conj(B̂(−u, v))) + Ĉ·conj(D̂), the spectrum of correlate_sum.
   void product_sum(const Spectrum& A_hat, const Spectrum& B_hat, const Spectrum& C_hat, const Spectrum& D_hat,
-                   std::complex<double>* o) const;
+                   std::complex<double>* o, Eigen::Index u0, Eigen::Index u1) const;  ///< rows u ∈ [u0, u1) of o
   Mat<double> inverse(std::complex<double>* product) const;
   Eigen::Index L_, M_, H_;  ///< H = M/2 + 1
   void* forward_ = nullptr;  ///< fftw_plan (r2c)
   void* backward_ = nullptr;  ///< fftw_plan (c2r)
-  void* backward_in_place_ = nullptr;  ///< fftw_plan (c2r, in place)
+  /// The split plans (index 0: the caller's part, 1: the helper's): row r2c's
+  /// of rows [0, r) and [r, L), column c2c's (forward, backward, in place) of
+  /// columns [0, c) and [c, H), row c2r's (in place) of rows [0, r) and [r, L).
+  void* rows_forward_[2] = {nullptr, nullptr};
+  void* columns_forward_[2] = {nullptr, nullptr};
+  void* columns_backward_[2] = {nullptr, nullptr};
+  void* rows_backward_[2] = {nullptr, nullptr};
+  Eigen::Index row_split_ = 0, column_split_ = 0;
+  void make_split_plans();
 };
 
 /// One caller's buffers on a CorrelationGrid (the zero-padded M × M real
@@ -81,22 +103,16 @@ class CorrelationWorkspace {
   /// transpose), reusing out's array.
   template <typename X>
   void spectrum(const Eigen::MatrixBase<X>& x, Spectrum& out) {
-    double* real = this->real();
-    // FFTW's out-of-place r2c keeps its input and the inverses run in place:
-    // outside the L × L corner the grid stays zero once it is
-    fill_grid(x, real, !real_zero_padded_);
-    real_zero_padded_ = true;
-    grid_.forward(real, out);
+    const Eigen::Index M = grid_.M_;
+    double* real = this->real();  // L rows of M: FFTW's r2c keeps its input, so columns ≥ L stay zero
+    if (!out.data) out.data = fftw_array(static_cast<std::size_t>(grid_.M_ * grid_.H_));
+    grid_.forward_rows(real, out.data.get(), helper_, [&](Eigen::Index r0, Eigen::Index r1) {
+      for (Eigen::Index i = r0; i < r1; ++i)
+        for (Eigen::Index j = 0; j < x.cols(); ++j) real[i * M + j] = x(i, j);
+    });
   }
-  /// The same with `scratch`'s array (an M × (M/2 + 1) spectrum not needed
-  /// now) as the real grid, for a second thread: the same input, the same bits.
-  template <typename X>
-  void spectrum_via(const Eigen::MatrixBase<X>& x, Spectrum& out, Spectrum& scratch) const {
-    if (!scratch.data) scratch.data = fftw_array(static_cast<std::size_t>(grid_.M_ * grid_.H_));
-    double* real = reinterpret_cast<double*>(scratch.data.get());
-    fill_grid(x, real, true);
-    grid_.forward(real, out);
-  }
+  /// A helper thread for the transforms (null: the caller alone; the same numbers).
+  void set_helper(HelperThread* helper) { helper_ = helper; }
   /// out ← grid.correlate_sum(A, B, C, D) (L × L). consume_C: C's last use,
   /// its array holds the product (and is overwritten; one M × (M/2 + 1)
   /// buffer less, the product buffer is allocated at its first use only).
@@ -113,19 +129,14 @@ class CorrelationWorkspace {
   void release();
 
  private:
+  /// The first L rows of the M × M real grid (zero from column L on).
   double* real();
-  /// The M × M grid ← x in its L × L corner, zeros elsewhere (only the corner when `padding` is false).
-  template <typename X>
-  void fill_grid(const Eigen::MatrixBase<X>& x, double* real, bool padding) const {
-    const Eigen::Index M = grid_.size();
-    if (padding) std::fill(real, real + M * M, 0.0);
-    for (Eigen::Index i = 0; i < x.rows(); ++i)
-      for (Eigen::Index j = 0; j < x.cols(); ++j) real[i * M + j] = x(i, j);
-  }
+  /// reflect_product for the row pairs (u, −u) with u ∈ [u0, u1).
+  void reflect_rows(Spectrum& A_hat, const Spectrum& B_hat, Eigen::Index u0, Eigen::Index u1) const;
   static std::shared_ptr<std::complex<double>> fftw_array(std::size_t count);
   const CorrelationGrid& grid_;
+  HelperThread* helper_ = nullptr;
   std::shared_ptr<double> real_;
-  bool real_zero_padded_ = false;  ///< real_ is zero outside the L × L corner
   std::shared_ptr<std::complex<double>> product_;  ///< empty until a correlation needs it
 };
 

@@ -3,6 +3,10 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <cstring>
+#include <random>
+
+#include "core/helper_thread.h"
 #include "toeplitz/correlation_2d.h"
 
 namespace lpvid {
@@ -99,6 +103,43 @@ RC_GTEST_PROP(Correlation2d, ReflectedSumIsBitIdenticalToCorrelateSum, ()) {
     RC_ASSERT(out.rows() == L && out.cols() == L);
     RC_ASSERT((out.array() == expected.array()).all());
     ws.release();
+  }
+}
+
+bool same_bits(const Mat<double>& a, const Mat<double>& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0;
+}
+
+// The Newton step's transforms (rows and columns written out, split with a
+// helper thread, zero rows skipped, inverses in place) against FFTW's 2-D
+// plans (CorrelationGrid::spectrum, correlate_sum): bit for bit, with and
+// without a helper, at the sizes of the barrier (grids 2L rounded up to a
+// 2-3-5-smooth size, even and odd, L up to 400).
+TEST(Correlation2d, SplitTransformsAreBitForBitThe2dPlans) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  HelperThread helper;
+  for (const int L : {1, 2, 3, 7, 31, 60, 101, 200, 243, 400}) {
+    SCOPED_TRACE(::testing::Message() << "L = " << L);
+    std::vector<Mat<double>> X(4, Mat<double>(L, L));
+    for (Mat<double>& x : X)
+      for (Eigen::Index i = 0; i < x.size(); ++i) x.data()[i] = u(rng);
+    const CorrelationGrid grid(L);
+    const Mat<double> expected =
+        grid.correlate_sum(grid.spectrum(X[0]), grid.spectrum(X[1]), grid.spectrum(X[2]), grid.spectrum(X[3]));
+    for (HelperThread* h : {static_cast<HelperThread*>(nullptr), &helper}) {
+      CorrelationWorkspace ws(grid);
+      ws.set_helper(h);
+      std::vector<Spectrum> s(4);
+      for (int k = 0; k < 4; ++k) ws.spectrum(X[static_cast<size_t>(k)], s[static_cast<size_t>(k)]);
+      Mat<double> out;
+      ws.correlate_sum(s[0], s[1], s[2], s[3], out);
+      EXPECT_TRUE(same_bits(out, expected));
+      ws.reflect_product(s[0], s[1]);  // the SISO path: A's array takes the first term, C's the sum
+      ws.correlate_reflected(s[0], s[2], s[3], out);
+      EXPECT_TRUE(same_bits(out, expected));
+    }
   }
 }
 
