@@ -12,6 +12,12 @@ namespace lpvid {
 
 unsigned default_thread_count() { return std::max(1u, std::thread::hardware_concurrency()); }
 
+namespace {
+thread_local bool t_in_workers = false;  ///< this thread runs jobs of a parallel_for with several workers
+}  // namespace
+
+bool inside_parallel_jobs() { return t_in_workers; }
+
 namespace parallel_detail {
 
 std::size_t worker_count(std::size_t count, unsigned threads) {
@@ -31,6 +37,12 @@ void run_jobs(std::size_t count, unsigned threads, const std::function<void(std:
   std::vector<std::exception_ptr> errors(count);
   std::atomic<std::size_t> next{0};
   const auto worker = [&](std::size_t w) {
+    const bool outer = t_in_workers;
+    t_in_workers = true;
+    struct Restore {
+      bool value;
+      ~Restore() { t_in_workers = value; }
+    } restore{outer};
     for (std::size_t i = next++; i < count; i = next++) {
       try {
         check_stop();  // a requested stop: no new job starts

@@ -26,6 +26,11 @@ namespace lpvid {
 /// std::thread::hardware_concurrency(), at least 1.
 unsigned default_thread_count();
 
+/// True on a thread that runs jobs of a parallel_for with several workers:
+/// the cores are taken, so the structured barrier's default (its helper
+/// thread, lmi/delta_form_barrier.h) stays on one thread there.
+bool inside_parallel_jobs();
+
 namespace parallel_detail {
 
 /// The number of workers that run `count` jobs with at most `threads` at

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 
@@ -192,21 +193,44 @@ void add_diagonal_sums(const Eigen::MatrixBase<X>& M, Dense& out) {
 struct DerivativeWorkspace {
   explicit DerivativeWorkspace(const Problem& p)
       : grid(p.L), fft(grid), times_T(Dense::Zero(p.L, p.q()), p.ny, p.nz), P_hat(static_cast<size_t>(p.ny * p.ny)),
-        R_hat(static_cast<size_t>(p.nz * p.nz)), Q_hat(static_cast<size_t>(p.q())), Qt_hat(static_cast<size_t>(p.q())) {}
+        R_hat(static_cast<size_t>(p.nz * p.nz)), Q_hat(static_cast<size_t>(p.q())), Qt_hat(static_cast<size_t>(p.q())),
+        many_pairs(p.q() > 1) {}
   const CorrelationGrid grid;
   CorrelationWorkspace fft;
   ToeplitzProduct times_T;
   std::vector<Spectrum> P_hat, R_hat, Q_hat, Qt_hat;
   Dense Hh;  ///< a pair block of the Hessian, then P·Q
   HelperThread* helper = nullptr;  ///< takes half of the work when set (the same numbers)
+  /// MIMO with a helper: its own buffers, for whole transforms and pair
+  /// blocks (the grids are small: a transform split in two costs more
+  /// hand-overs than it saves). SISO: one large grid, each transform split.
+  std::unique_ptr<CorrelationWorkspace> fft2;
+  Dense Hh2;
+  bool many_pairs = false;
   void set_helper(HelperThread* h) {
     helper = h;
-    fft.set_helper(h);
+    fft.set_helper(many_pairs ? nullptr : h);
+    if (many_pairs && h != nullptr && !fft2) fft2 = std::make_unique<CorrelationWorkspace>(grid);
+  }
+  /// Whether share() runs jobs on two threads.
+  bool shares() const { return many_pairs && helper != nullptr; }
+  /// job(k, buffers…) for k < count: alternately here and on the helper when
+  /// shares(), else in order here.
+  void share(size_t count, const std::function<void(size_t, CorrelationWorkspace&, Dense&)>& job) {
+    if (!shares()) {
+      for (size_t k = 0; k < count; ++k) job(k, fft, Hh);
+      return;
+    }
+    fork_join(
+        helper, [&] { for (size_t k = 1; k < count; k += 2) job(k, *fft2, Hh2); },
+        [&] { for (size_t k = 0; k < count; k += 2) job(k, fft, Hh); });
   }
   /// Frees the spectra, the grid and the pair block (the dual matrices are
   /// built after the last derivatives: they need not share the memory peak).
   void release() {
     fft.release();
+    if (fft2) fft2->release();
+    Hh2 = Dense();
     for (auto* spectra : {&P_hat, &R_hat, &Q_hat, &Qt_hat})
       for (Spectrum& s : *spectra) s.data.reset();
     Hh = Dense();
@@ -245,19 +269,26 @@ void logdet_spectra(const Problem& p, const Dense& P, const Dense& Q, const Dens
     ws.fft.spectrum(R, ws.R_hat[0]);
     return;
   }
+  std::vector<std::function<void(CorrelationWorkspace&)>> jobs;  // each spectrum whole on one thread
   for (Index i = 0; i < ny; ++i)
-    for (Index i2 = 0; i2 < ny; ++i2) {
-      ws.fft.spectrum(sub_block(P, ny, ny, i, i2), ws.P_hat[static_cast<size_t>(i * ny + i2)]);
-    }
+    for (Index i2 = 0; i2 < ny; ++i2)
+      jobs.push_back([&, i, i2](CorrelationWorkspace& fft) {
+        fft.spectrum(sub_block(P, ny, ny, i, i2), ws.P_hat[static_cast<size_t>(i * ny + i2)]);
+      });
   for (Index j = 0; j < nz; ++j)
-    for (Index j2 = 0; j2 < nz; ++j2) ws.fft.spectrum(sub_block(R, nz, nz, j, j2), ws.R_hat[static_cast<size_t>(j * nz + j2)]);
+    for (Index j2 = 0; j2 < nz; ++j2)
+      jobs.push_back([&, j, j2](CorrelationWorkspace& fft) {
+        fft.spectrum(sub_block(R, nz, nz, j, j2), ws.R_hat[static_cast<size_t>(j * nz + j2)]);
+      });
   for (Index i = 0; i < ny; ++i)
-    for (Index j = 0; j < nz; ++j) {
-      const Strided Qij = sub_block(Q, ny, nz, i, j);
-      g.segment((i * nz + j) * L, L) = 2.0 * subdiagonal_sums(Qij);
-      ws.fft.spectrum(Qij, ws.Q_hat[static_cast<size_t>(i * nz + j)]);
-      ws.fft.spectrum(Qij.transpose(), ws.Qt_hat[static_cast<size_t>(i * nz + j)]);
-    }
+    for (Index j = 0; j < nz; ++j)
+      jobs.push_back([&, i, j](CorrelationWorkspace& fft) {
+        const Strided Qij = sub_block(Q, ny, nz, i, j);
+        g.segment((i * nz + j) * L, L) = 2.0 * subdiagonal_sums(Qij);
+        fft.spectrum(Qij, ws.Q_hat[static_cast<size_t>(i * nz + j)]);
+        fft.spectrum(Qij.transpose(), ws.Qt_hat[static_cast<size_t>(i * nz + j)]);
+      });
+  ws.share(jobs.size(), [&](size_t k, CorrelationWorkspace& fft, Dense&) { jobs[k](fft); });
 }
 
 /// The Hessian of −log det(tI − TTᵀ) in the taps from the spectra of
@@ -266,27 +297,33 @@ void logdet_spectra(const Problem& p, const Dense& P, const Dense& Q, const Dens
 void logdet_hessian(const Problem& p, const Dense& P, DerivativeWorkspace& ws, Dense& H) {
   const Index L = p.L, ny = p.ny, nz = p.nz;
   const auto at = [&](Index i, Index j) { return (i * nz + j) * L; };
-  std::vector<int> uses(static_cast<size_t>(ny * ny), 0);  // of P_ii''s spectrum, still to come
-  for (Index a = 0; a < ny * nz; ++a)
-    for (Index b = a; b < ny * nz; ++b) ++uses[static_cast<size_t>((a / nz) * ny + b / nz)];
+  // one thread: the last use of P_ii''s spectrum takes the product in its array (one buffer less)
+  std::vector<int> uses(static_cast<size_t>(ny * ny), 0);
+  std::vector<std::pair<Index, Index>> pairs;
   for (Index a = 0; a < ny * nz; ++a)
     for (Index b = a; b < ny * nz; ++b) {
-      const Index i = a / nz, j = a % nz, i2 = b / nz, j2 = b % nz;
-      Dense& Hh = ws.Hh;
-      const bool last_use = --uses[static_cast<size_t>(i * ny + i2)] == 0;  // then its array takes the product
-      if (p.q() == 1)  // logdet_spectra's single pair: the first term in Q̂'s array, P̂ in Q̂ᵀ's
-        ws.fft.correlate_reflected(ws.Q_hat[0], ws.Qt_hat[0], ws.R_hat[0], Hh);
-      else
-        ws.fft.correlate_sum(ws.Q_hat[static_cast<size_t>(i * nz + j2)], ws.Qt_hat[static_cast<size_t>(i2 * nz + j)],
-                           ws.P_hat[static_cast<size_t>(i * ny + i2)], ws.R_hat[static_cast<size_t>(j * nz + j2)], Hh, last_use);
-      if (j == j2) add_diagonal_sums(sub_block(P, ny, ny, i, i2), Hh);
-      if (a == b) {
-        H.block(at(i, j), at(i, j), L, L) += Hh + Hh.transpose();  // 2·(symmetric part)
-      } else {
-        H.block(at(i, j), at(i2, j2), L, L) += 2.0 * Hh;
-        H.block(at(i2, j2), at(i, j), L, L) += 2.0 * Hh.transpose();
-      }
+      ++uses[static_cast<size_t>((a / nz) * ny + b / nz)];
+      pairs.emplace_back(a, b);
     }
+  const bool shared = ws.shares();
+  // pair (a, b) writes the blocks (a, b) and (b, a) only: any thread, any order, the same H
+  ws.share(pairs.size(), [&](size_t k, CorrelationWorkspace& fft, Dense& Hh) {
+    const auto [a, b] = pairs[k];
+    const Index i = a / nz, j = a % nz, i2 = b / nz, j2 = b % nz;
+    const bool last_use = !shared && --uses[static_cast<size_t>(i * ny + i2)] == 0;
+    if (p.q() == 1)  // logdet_spectra's single pair: the first term in Q̂'s array, P̂ in Q̂ᵀ's
+      fft.correlate_reflected(ws.Q_hat[0], ws.Qt_hat[0], ws.R_hat[0], Hh);
+    else
+      fft.correlate_sum(ws.Q_hat[static_cast<size_t>(i * nz + j2)], ws.Qt_hat[static_cast<size_t>(i2 * nz + j)],
+                        ws.P_hat[static_cast<size_t>(i * ny + i2)], ws.R_hat[static_cast<size_t>(j * nz + j2)], Hh, last_use);
+    if (j == j2) add_diagonal_sums(sub_block(P, ny, ny, i, i2), Hh);
+    if (a == b) {
+      H.block(at(i, j), at(i, j), L, L) += Hh + Hh.transpose();  // 2·(symmetric part)
+    } else {
+      H.block(at(i, j), at(i2, j2), L, L) += 2.0 * Hh;
+      H.block(at(i2, j2), at(i, j), L, L) += 2.0 * Hh.transpose();
+    }
+  });
 }
 
 /// Gradient and Hessian of F_μ at an interior point; P, Q, R as in the header.
@@ -731,9 +768,10 @@ class BarrierRun {
     out.dual_c2.col(0) /= sigma_r;
   }
 
-  /// A helper thread when options.threads (0: the machine's cores) is at least 2.
+  /// A helper thread when options.threads (0: the machine's cores, one inside
+  /// a parallel_for's workers) is at least 2.
   static std::unique_ptr<HelperThread> helper_for(const BarrierOptions& options) {
-    const unsigned threads = options.threads == 0 ? default_thread_count() : options.threads;
+    const unsigned threads = options.threads != 0 ? options.threads : inside_parallel_jobs() ? 1 : default_thread_count();
     return threads >= 2 ? std::make_unique<HelperThread>() : nullptr;
   }
 

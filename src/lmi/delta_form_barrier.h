@@ -127,7 +127,8 @@ struct BarrierOptions {
   /// Newton decrement. Measured at 2 (3×3 n = 200: no convergence in 400
   /// steps → 32.9 s; 2×2 n = 400: 37.7 → 45.8 s, the price). SISO: full steps.
   double damping = 2.0;
-  /// Threads of a Newton step: 0 = the machine's cores, ≥ 2 = a helper thread
+  /// Threads of a Newton step: 0 = the machine's cores (one on the workers of
+  /// a parallel_for, e.g. diagnose's bound windows), ≥ 2 = a helper thread
   /// takes half of P = F⁻¹, of the Newton LDLᵀ's column updates and of the
   /// spectra and correlations (lmi/split_factorisations.h). Every number is
   /// computed by the same operations whatever the count: the same iterates,

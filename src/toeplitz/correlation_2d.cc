@@ -15,6 +15,20 @@ using fftw::as_fftw;
 using fftw::planner_mutex;
 using fftw::smooth_size;
 
+namespace {
+
+/// body(i0, i1) for [0, n) in two halves, the second on the helper.
+void split_range(HelperThread* helper, Eigen::Index n, const std::function<void(Eigen::Index, Eigen::Index)>& body) {
+  fork_join(helper, [&] { body(n / 2, n); }, [&] { body(0, n / 2); });
+}
+
+/// The helper, for grids large enough that half a transform outweighs a
+/// hand-over (measured: 3×3 n = 200, M = 400, was slower split; a MIMO
+/// step spreads whole transforms instead, lmi/delta_form_barrier.cc).
+HelperThread* helper_for_grid(HelperThread* helper, Eigen::Index M) { return M >= 1024 ? helper : nullptr; }
+
+}  // namespace
+
 CorrelationGrid::CorrelationGrid(Eigen::Index L) : L_(L), M_(smooth_size(2 * L)), H_(M_ / 2 + 1) {
   const int m = static_cast<int>(M_);
   const std::size_t real_size = static_cast<std::size_t>(M_ * M_), half_size = static_cast<std::size_t>(M_ * H_);
@@ -84,6 +98,7 @@ void CorrelationGrid::forward_rows(const double* rows, std::complex<double>* out
     const Eigen::Index zero0 = L_ + (k == 0 ? 0 : (M_ - L_) / 2), zero1 = k == 0 ? L_ + (M_ - L_) / 2 : M_;
     std::fill(out + zero0 * H_, out + zero1 * H_, std::complex<double>(0.0, 0.0));
   };
+  helper = helper_for_grid(helper, M_);
   fork_join(helper, [&] { row_part(1); }, [&] { row_part(0); });
   const auto column_part = [&](int k) {
     std::complex<double>* columns = out + (k == 0 ? 0 : column_split_);
@@ -116,6 +131,7 @@ void CorrelationGrid::inverse_into(std::complex<double>* product, double* real, 
 }
 
 void CorrelationGrid::inverse_in_place(std::complex<double>* product, Mat<double>& out, HelperThread* helper) const {
+  helper = helper_for_grid(helper, M_);
   const auto column_part = [&](int k) {
     std::complex<double>* columns = product + (k == 0 ? 0 : column_split_);
     if (columns_backward_[k]) fftw_execute_dft(static_cast<fftw_plan>(columns_backward_[k]), as_fftw(columns), as_fftw(columns));
@@ -195,17 +211,9 @@ void CorrelationWorkspace::release() {
   product_.reset();
 }
 
-namespace {
-
-/// body(i0, i1) for [0, n) in two halves, the second on the helper.
-void split_range(HelperThread* helper, Eigen::Index n, const std::function<void(Eigen::Index, Eigen::Index)>& body) {
-  fork_join(helper, [&] { body(n / 2, n); }, [&] { body(0, n / 2); });
-}
-
-}  // namespace
 
 void CorrelationWorkspace::reflect_product(Spectrum& A_hat, const Spectrum& B_hat) const {
-  split_range(helper_, grid_.M_ / 2 + 1, [&](Eigen::Index u0, Eigen::Index u1) { reflect_rows(A_hat, B_hat, u0, u1); });
+  split_range(helper_for_grid(helper_, grid_.M_), grid_.M_ / 2 + 1, [&](Eigen::Index u0, Eigen::Index u1) { reflect_rows(A_hat, B_hat, u0, u1); });
 }
 
 void CorrelationWorkspace::reflect_rows(Spectrum& A_hat, const Spectrum& B_hat, Eigen::Index u0, Eigen::Index u1) const {
@@ -227,7 +235,7 @@ void CorrelationWorkspace::correlate_reflected(const Spectrum& S, Spectrum& C_ha
   const Eigen::Index n = grid_.M_ * grid_.H_;
   const std::complex<double>*s = S.data.get(), *d = D_hat.data.get();
   std::complex<double>* c = C_hat.data.get();
-  split_range(helper_, n, [&](Eigen::Index k0, Eigen::Index k1) {
+  split_range(helper_for_grid(helper_, grid_.M_), n, [&](Eigen::Index k0, Eigen::Index k1) {
     for (Eigen::Index k = k0; k < k1; ++k) c[k] = s[k] + c[k] * std::conj(d[k]);
   });
   grid_.inverse_in_place(c, out, helper_);
@@ -238,7 +246,7 @@ void CorrelationWorkspace::correlate_sum(const Spectrum& A_hat, const Spectrum& 
   if (!consume_C && !product_) product_ = array<std::complex<double>>(static_cast<std::size_t>(grid_.M_ * grid_.H_));
   // in place into C: entry (u, v) of the product reads C at (u, v) only
   std::complex<double>* product = consume_C ? C_hat.data.get() : product_.get();
-  split_range(helper_, grid_.M_, [&](Eigen::Index u0, Eigen::Index u1) { grid_.product_sum(A_hat, B_hat, C_hat, D_hat, product, u0, u1); });
+  split_range(helper_for_grid(helper_, grid_.M_), grid_.M_, [&](Eigen::Index u0, Eigen::Index u1) { grid_.product_sum(A_hat, B_hat, C_hat, D_hat, product, u0, u1); });
   grid_.inverse_in_place(product, out, helper_);
 }
 

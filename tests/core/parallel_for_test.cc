@@ -163,3 +163,19 @@ TEST(ParallelFor, DefaultThreadCountIsPositive) { EXPECT_GE(default_thread_count
 
 }  // namespace
 }  // namespace lpvid
+
+namespace lpvid {
+namespace {
+
+TEST(ParallelFor, WorkersKnowTheyAreInsideParallelJobs) {
+  EXPECT_FALSE(inside_parallel_jobs());
+  std::vector<int> inside(8, -1);
+  parallel_for(inside.size(), 2, [&](std::size_t i) { inside[i] = inside_parallel_jobs() ? 1 : 0; });
+  for (const int v : inside) EXPECT_EQ(v, 1);
+  EXPECT_FALSE(inside_parallel_jobs());  // restored on the calling thread
+  parallel_for(inside.size(), 1, [&](std::size_t i) { inside[i] = inside_parallel_jobs() ? 1 : 0; });
+  for (const int v : inside) EXPECT_EQ(v, 0);  // one worker: the cores are free
+}
+
+}  // namespace
+}  // namespace lpvid

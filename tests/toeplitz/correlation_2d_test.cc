@@ -115,12 +115,12 @@ bool same_bits(const Mat<double>& a, const Mat<double>& b) {
 // helper thread, zero rows skipped, inverses in place) against FFTW's 2-D
 // plans (CorrelationGrid::spectrum, correlate_sum): bit for bit, with and
 // without a helper, at the sizes of the barrier (grids 2L rounded up to a
-// 2-3-5-smooth size, even and odd, L up to 400).
+// 2-3-5-smooth size, even and odd, L up to 601).
 TEST(Correlation2d, SplitTransformsAreBitForBitThe2dPlans) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   HelperThread helper;
-  for (const int L : {1, 2, 3, 7, 31, 60, 101, 200, 243, 400}) {
+  for (const int L : {1, 2, 3, 7, 31, 60, 101, 200, 243, 400, 512, 601}) {  // from M = 1024 on the helper takes part
     SCOPED_TRACE(::testing::Message() << "L = " << L);
     std::vector<Mat<double>> X(4, Mat<double>(L, L));
     for (Mat<double>& x : X)
