@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "certify/dual_certify.h"
 #include "certify/fixed_bounds.h"
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"

@@ -19,12 +19,15 @@ bool same_bits(const Dense& a, const Dense& b) {
          (a.size() == 0 || std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0);
 }
 
-/// kind 0: SPD (BᵀB/n + I); 1: symmetric indefinite; 2: SPD with a zero row and column (singular).
+/// kind 0: SPD (BᵀB/n + I); 1: symmetric indefinite; 2: SPD with a zero row and column (singular);
+/// 3: symmetric indefinite with tied diagonal entries (±1, 2, the pivot order decided by position).
 Dense random_symmetric(Eigen::Index n, int kind, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Dense B(n, n);
   for (Eigen::Index i = 0; i < B.size(); ++i) B.data()[i] = u(rng);
   Dense A = kind == 1 ? Dense(B + B.transpose()) : Dense(B.transpose() * B / static_cast<double>(n) + Dense::Identity(n, n));
+  if (kind == 3)
+    for (Eigen::Index k = 0; k < n; ++k) A(k, k) = k % 3 == 0 ? 2.0 : k % 3 == 1 ? -1.0 : 1.0;
   if (kind == 2 && n > 2) {
     A.row(n / 2).setZero();
     A.col(n / 2).setZero();
@@ -48,8 +51,8 @@ void expect_identical(const Dense& A, HelperThread* helper) {
 TEST(SplitLdlt, BitForBitEigensFactorisationWithAndWithoutAHelper) {
   std::mt19937_64 rng(7);
   HelperThread helper;
-  for (const Eigen::Index n : {0, 1, 2, 3, 17, 64, 65, 129, 300, 513})
-    for (int kind = 0; kind < 3; ++kind) {
+  for (const Eigen::Index n : {0, 1, 2, 3, 17, 64, 65, 129, 255, 256, 257, 300, 513, 1000})
+    for (int kind = 0; kind < 4; ++kind) {
       SCOPED_TRACE(::testing::Message() << "n = " << n << ", kind " << kind);
       const Dense A = random_symmetric(n, kind, rng);
       expect_identical(A, nullptr);
@@ -60,6 +63,25 @@ TEST(SplitLdlt, BitForBitEigensFactorisationWithAndWithoutAHelper) {
 TEST(SplitLdlt, TheZeroMatrixIsReportedAsEigenDoes) {
   HelperThread helper;
   expect_identical(Dense::Zero(200, 200), &helper);
+  expect_identical(Dense::Zero(300, 300), &helper);
+}
+
+// The panels start at column 128 and end two columns before the last; sizes
+// around those edges, and a zero pivot met inside a panel.
+TEST(SplitLdlt, PanelEdgesAndAZeroPivotInsideAPanel) {
+  std::mt19937_64 rng(19);
+  HelperThread helper;
+  for (const Eigen::Index n : {258, 259, 270, 271, 272, 273, 290}) {
+    SCOPED_TRACE(::testing::Message() << "n = " << n);
+    const Dense A = random_symmetric(n, 1, rng);
+    expect_identical(A, &helper);
+    expect_identical(A, nullptr);
+  }
+  Dense S = random_symmetric(400, 0, rng);  // rank-deficient: S = B Bᵀ with B 400 × 150
+  Dense B = S.leftCols(150);
+  S = B * B.transpose();
+  expect_identical(S, &helper);
+  expect_identical(S, nullptr);
 }
 
 TEST(LltInverseSplit, BitForBitTheWholeSolve) {
