@@ -34,8 +34,10 @@ class SplitLdlt : public Eigen::LDLT<Eigen::MatrixXd> {
 /// P ← F⁻¹ = llt.solve(I), bit for bit, the columns in two parts (the
 /// helper's from a multiple of 4 on: Eigen's triangular solves treat each
 /// right-hand column alike whatever their number, in panels of 4 columns
-/// counted from the first, and at least two columns per part, since a
-/// single column is solved as a vector). ~1/3 of a SISO Newton step at n = 1600.
+/// counted from the first; each part has at least 4 columns). The forward
+/// solve L·X = I skips the identity's zeros (lmi/identity_forward_solve.h),
+/// so the parts are cut where their work is even, not at half the columns.
+/// ~1/3 of a SISO Newton step at n = 1600 before the zeros were skipped.
 void llt_inverse_split(const Eigen::LLT<Eigen::MatrixXd>& llt, Eigen::MatrixXd& P, HelperThread* helper);
 
 }  // namespace lpvid

@@ -87,7 +87,7 @@ TEST(SplitLdlt, PanelEdgesAndAZeroPivotInsideAPanel) {
 TEST(LltInverseSplit, BitForBitTheWholeSolve) {
   std::mt19937_64 rng(11);
   HelperThread helper;
-  for (const Eigen::Index n : {1, 5, 63, 64, 65, 66, 67, 130, 257, 400, 601}) {
+  for (const Eigen::Index n : {1, 2, 3, 4, 5, 63, 64, 65, 66, 67, 130, 257, 400, 601, 1000, 1283}) {
     SCOPED_TRACE(::testing::Message() << "n = " << n);
     const Eigen::LLT<Dense> llt(random_symmetric(n, 0, rng));
     const Dense whole = llt.solve(Dense::Identity(n, n));
