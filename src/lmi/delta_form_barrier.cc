@@ -13,6 +13,7 @@
 #include "lmi/free_regressors.h"
 #include "lmi/noise_block.h"
 #include "lmi/split_factorisations.h"
+#include "lmi/split_llt.h"
 #include "toeplitz/correlation_2d.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
@@ -139,14 +140,15 @@ struct Point {
   /// Computed on an empty matrix until evaluate() factors F1: a default-
   /// constructed LLT leaves its status uninitialised, and moving a Point
   /// that returned early (t <= 0) read it (UBSan: invalid ComputationInfo).
-  Eigen::LLT<Dense> llt{Dense(0, 0)};
+  SplitLlt llt{Dense(0, 0)};
   Dense d_head, d_tail;  ///< d on the head rows (r's own, projected with free regressors) and the tail rows
   double D = 0;    ///< ‖d‖² (all rows)
   double phi = 0;  ///< N·s_fix − ‖d‖² (s fixed only)
 };
 
-/// pt ← F_μ at x (pt's and F1's storage reused: no allocation per trial point).
-void evaluate(const Problem& p, const Vecd& x, double mu, Point& pt, Dense& F1) {
+/// pt ← F_μ at x (pt's and F1's storage reused: no allocation per trial
+/// point); `helper` (may be null) takes a share of the Cholesky factorisation.
+void evaluate(const Problem& p, const Vecd& x, double mu, Point& pt, Dense& F1, HelperThread* helper) {
   pt.interior = false;
   pt.value = std::numeric_limits<double>::infinity();
   pt.phi = 0;
@@ -162,7 +164,7 @@ void evaluate(const Problem& p, const Vecd& x, double mu, Point& pt, Dense& F1) 
   tap_gram_into(pt.taps, p.ny, p.nz, F1);  // T Tᵀ in O(L²)
   F1 = -F1;
   F1.diagonal().array() += t;
-  pt.llt.compute(F1);
+  pt.llt.compute_split(F1, helper);
   if (pt.llt.info() != Eigen::Success) return;
   const Vecd diag = pt.llt.matrixLLT().diagonal();
   if (!(diag.minCoeff() > 0)) return;
@@ -562,13 +564,13 @@ class BarrierRun {
       const double norm2 = norm2_estimate(block_toeplitz(p_, x_));
       x_(nt_) = 2.0 * norm2 + 1e-9 * (1.0 + norm2);
       mu_ = p_.ct * x_(nt_) / Ly_;
-      for (int it = 0; it < 60 && (evaluate(p_, x_, mu_, pt_, F1_), !pt_.interior); ++it) {
+      for (int it = 0; it < 60 && (evaluate(p_, x_, mu_, pt_, F1_, helper_.get()), !pt_.interior); ++it) {
         check_deadline("the structured barrier was starting");  // a stop request or --timeout: one factorisation late at most
         x_(nt_) *= 2.0;
         mu_ = p_.ct * x_(nt_) / Ly_;
       }
     }
-    evaluate(p_, x_, mu_, pt_, F1_);
+    evaluate(p_, x_, mu_, pt_, F1_, helper_.get());
     return pt_.interior ? "" : "the start is not interior";
   }
 
@@ -698,7 +700,7 @@ class BarrierRun {
     Point& trial = trial_;
     for (int ls = 0; ls < 60; ++ls, alpha *= 0.5) {
       check_deadline("the structured barrier was solving");  // each trial is one factorisation of the horizon
-      evaluate(p_, x_ + alpha * dx, mu_, trial, F1_);
+      evaluate(p_, x_ + alpha * dx, mu_, trial, F1_, helper_.get());
       if (trial.interior && (dec2 < 1e-6 || trial.value - pt_.value <= -0.25 * alpha * dec2)) break;
     }
     if (!trial.interior) return false;
@@ -720,11 +722,11 @@ class BarrierRun {
     const Vecd step = options_.predictor ? predictor_step(p_, pt_, ldlt_, mu_, factor) : Vecd();
     mu_ /= factor;
     derivatives_current_ = false;
-    evaluate(p_, x_, mu_, pt_, F1_);
+    evaluate(p_, x_, mu_, pt_, F1_, helper_.get());
     double beta = 1.0;
     for (int k = 0; k < 12 && step.size() == p_.dim(); ++k, beta *= 0.5) {
       check_deadline("the structured barrier was solving");
-      evaluate(p_, x_ + beta * step, mu_, trial_, F1_);
+      evaluate(p_, x_ + beta * step, mu_, trial_, F1_, helper_.get());
       if (trial_.interior && trial_.value < pt_.value) {
         x_ += beta * step;
         std::swap(pt_, trial_);
@@ -840,11 +842,11 @@ BarrierDerivatives barrier_derivatives(const Mat<double>& z, const Mat<double>& 
   BarrierDerivatives out;
   Point pt;
   Dense F1;
-  evaluate(p, x, mu, pt, F1);
+  const std::unique_ptr<HelperThread> helper = threads >= 2 ? std::make_unique<HelperThread>() : nullptr;
+  evaluate(p, x, mu, pt, F1, helper.get());
   out.value = pt.value;
   if (!pt.interior) return out;
   DerivativeWorkspace ws(p);
-  const std::unique_ptr<HelperThread> helper = threads >= 2 ? std::make_unique<HelperThread>() : nullptr;
   ws.set_helper(helper.get());
   Dense P, Q, R;
   derivatives(p, pt, mu, ws, out.gradient, out.hessian, P, Q, R);
