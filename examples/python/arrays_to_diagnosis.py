@@ -55,11 +55,17 @@ def ctrl_c_during_diagnose(u, y, model):
         sent["at"] = time.monotonic()
         os.kill(os.getpid(), signal.SIGINT)
 
+    # A program started in the background by a non-interactive shell inherits
+    # SIGINT as ignored, and Python then installs no KeyboardInterrupt handler:
+    # install Python's own for this step, so the launcher cannot decide it.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     threading.Timer(2.0, interrupt).start()
     try:
         lpvid.diagnose(u, y, None, model, quiet=True)
     except KeyboardInterrupt:
         return time.monotonic() - sent["at"]
+    finally:
+        signal.signal(signal.SIGINT, previous)
     raise SystemExit("the diagnose ended before the Ctrl-C: nothing was measured")
 
 

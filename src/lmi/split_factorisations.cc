@@ -228,14 +228,20 @@ bool panels_apply(const Dense& a) {
 
 }  // namespace
 
+double lower_triangle_l1_norm(const Eigen::MatrixXd& a) {
+  const Eigen::Index size = a.rows();
+  double norm = 0;
+  for (Eigen::Index col = 0; col < size; ++col) {
+    const double sum = a.col(col).tail(size - col).lpNorm<1>() + a.row(col).head(col).lpNorm<1>();
+    if (sum > norm) norm = sum;
+  }
+  return norm;
+}
+
 SplitLdlt& SplitLdlt::compute_split(const Dense& a, HelperThread* helper) {
   const Index size = a.rows();
   m_matrix = a;
-  m_l1_norm = 0;
-  for (Index col = 0; col < size; ++col) {  // as LDLT::compute: the lower triangle's largest absolute column sum
-    const double sum = m_matrix.col(col).tail(size - col).lpNorm<1>() + m_matrix.row(col).head(col).lpNorm<1>();
-    if (sum > m_l1_norm) m_l1_norm = sum;
-  }
+  m_l1_norm = lower_triangle_l1_norm(m_matrix);
   m_transpositions.resize(size);
   m_isInitialized = false;
   m_temporary.resize(size);

@@ -40,4 +40,9 @@ class SplitLdlt : public Eigen::LDLT<Eigen::MatrixXd> {
 /// ~1/3 of a SISO Newton step at n = 1600 before the zeros were skipped.
 void llt_inverse_split(const Eigen::LLT<Eigen::MatrixXd>& llt, Eigen::MatrixXd& P, HelperThread* helper);
 
+/// The largest absolute column sum of the symmetric matrix held in a's lower
+/// triangle, as Eigen's LLT::compute and LDLT::compute record it (their
+/// rcond() reads it): the same sums in the same order.
+double lower_triangle_l1_norm(const Eigen::MatrixXd& a);
+
 }  // namespace lpvid

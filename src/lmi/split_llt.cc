@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/helper_thread.h"
+#include "lmi/split_factorisations.h"
 
 namespace lpvid {
 
@@ -131,13 +132,8 @@ Index llt_blocked(Dense& m, HelperThread* helper) {
 }  // namespace
 
 SplitLlt& SplitLlt::compute_split(const Dense& a, HelperThread* helper) {
-  const Index size = a.rows();
   m_matrix = a;
-  m_l1_norm = 0;
-  for (Index col = 0; col < size; ++col) {  // as LLT::compute: the lower triangle's largest absolute column sum
-    const double sum = m_matrix.col(col).tail(size - col).lpNorm<1>() + m_matrix.row(col).head(col).lpNorm<1>();
-    if (sum > m_l1_norm) m_l1_norm = sum;
-  }
+  m_l1_norm = lower_triangle_l1_norm(m_matrix);
   m_isInitialized = true;
   m_info = llt_blocked(m_matrix, helper) == -1 ? Eigen::Success : Eigen::NumericalIssue;
   return *this;

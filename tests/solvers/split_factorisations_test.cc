@@ -3,21 +3,16 @@
 // every factor entry, pivot and solve bit for bit, with and without a helper.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <random>
 
 #include "core/helper_thread.h"
 #include "lmi/split_factorisations.h"
+#include "support/same_bits.h"
 
 namespace lpvid {
 namespace {
 
 using Dense = Eigen::MatrixXd;
-
-bool same_bits(const Dense& a, const Dense& b) {
-  return a.rows() == b.rows() && a.cols() == b.cols() &&
-         (a.size() == 0 || std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0);
-}
 
 /// kind 0: SPD (BᵀB/n + I); 1: symmetric indefinite; 2: SPD with a zero row and column (singular);
 /// 3: symmetric indefinite with tied diagonal entries (±1, 2, the pivot order decided by position).
@@ -40,12 +35,12 @@ void expect_identical(const Dense& A, HelperThread* helper) {
   SplitLdlt split;
   split.compute_split(A, helper);
   ASSERT_EQ(split.info(), eigen.info());
-  EXPECT_TRUE(same_bits(split.matrixLDLT(), eigen.matrixLDLT()));
+  EXPECT_TRUE(test::same_bits(split.matrixLDLT(), eigen.matrixLDLT()));
   EXPECT_EQ(split.isPositive(), eigen.isPositive());
   EXPECT_EQ(split.isNegative(), eigen.isNegative());
   for (Eigen::Index k = 0; k < A.rows(); ++k) EXPECT_EQ(split.transpositionsP().indices()(k), eigen.transpositionsP().indices()(k));
   const Dense rhs = Dense::Ones(A.rows(), 2);
-  EXPECT_TRUE(same_bits(split.solve(rhs), eigen.solve(rhs)));
+  EXPECT_TRUE(test::same_bits(split.solve(rhs), eigen.solve(rhs)));
 }
 
 TEST(SplitLdlt, BitForBitEigensFactorisationWithAndWithoutAHelper) {
@@ -93,9 +88,9 @@ TEST(LltInverseSplit, BitForBitTheWholeSolve) {
     const Dense whole = llt.solve(Dense::Identity(n, n));
     Dense P = Dense::Constant(3, 3, 7.0);  // resized
     llt_inverse_split(llt, P, &helper);
-    EXPECT_TRUE(same_bits(P, whole));
+    EXPECT_TRUE(test::same_bits(P, whole));
     llt_inverse_split(llt, P, nullptr);
-    EXPECT_TRUE(same_bits(P, whole));
+    EXPECT_TRUE(test::same_bits(P, whole));
   }
 }
 

@@ -3,21 +3,16 @@
 // Eigen::LLT::compute itself: every factor entry and solve bit for bit.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <random>
 
 #include "core/helper_thread.h"
 #include "lmi/split_llt.h"
+#include "support/same_bits.h"
 
 namespace lpvid {
 namespace {
 
 using Dense = Eigen::MatrixXd;
-
-bool same_llt_bits(const Dense& a, const Dense& b) {
-  return a.rows() == b.rows() && a.cols() == b.cols() &&
-         (a.size() == 0 || std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0);
-}
 
 /// SPD (BᵀB/n + I), or with `shift` subtracted from the diagonal (not positive definite for a large shift).
 Dense random_spd(Eigen::Index n, double shift, std::mt19937_64& rng) {
@@ -34,11 +29,11 @@ void expect_llt_identical(const Dense& A, HelperThread* helper) {
   SplitLlt split;
   split.compute_split(A, helper);
   ASSERT_EQ(split.info(), eigen.info());
-  EXPECT_TRUE(same_llt_bits(split.matrixLLT(), eigen.matrixLLT()));
+  EXPECT_TRUE(test::same_bits(split.matrixLLT(), eigen.matrixLLT()));
   EXPECT_EQ(split.rcond(), eigen.rcond());
   if (eigen.info() == Eigen::Success) {
     const Dense rhs = Dense::Ones(A.rows(), 3);
-    EXPECT_TRUE(same_llt_bits(split.solve(rhs), eigen.solve(rhs)));
+    EXPECT_TRUE(test::same_bits(split.solve(rhs), eigen.solve(rhs)));
   }
 }
 

@@ -3,11 +3,11 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
-#include <cstring>
 #include <random>
 
 #include "core/helper_thread.h"
 #include "toeplitz/correlation_2d.h"
+#include "support/same_bits.h"
 
 namespace lpvid {
 namespace {
@@ -106,11 +106,6 @@ RC_GTEST_PROP(Correlation2d, ReflectedSumIsBitIdenticalToCorrelateSum, ()) {
   }
 }
 
-bool same_bits(const Mat<double>& a, const Mat<double>& b) {
-  return a.rows() == b.rows() && a.cols() == b.cols() &&
-         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0;
-}
-
 // The Newton step's transforms (rows and columns written out, split with a
 // helper thread, zero rows skipped, inverses in place) against FFTW's 2-D
 // plans (CorrelationGrid::spectrum, correlate_sum): bit for bit, with and
@@ -135,10 +130,10 @@ TEST(Correlation2d, SplitTransformsAreBitForBitThe2dPlans) {
       for (int k = 0; k < 4; ++k) ws.spectrum(X[static_cast<size_t>(k)], s[static_cast<size_t>(k)]);
       Mat<double> out;
       ws.correlate_sum(s[0], s[1], s[2], s[3], out);
-      EXPECT_TRUE(same_bits(out, expected));
+      EXPECT_TRUE(test::same_bits(out, expected));
       ws.reflect_product(s[0], s[1]);  // the SISO path: A's array takes the first term, C's the sum
       ws.correlate_reflected(s[0], s[2], s[3], out);
-      EXPECT_TRUE(same_bits(out, expected));
+      EXPECT_TRUE(test::same_bits(out, expected));
     }
   }
 }
