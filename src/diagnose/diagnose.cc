@@ -102,12 +102,12 @@ void check_options(const Experiment<double>& est_d, const Experiment<Rational>& 
 /// Share of the round's estimation residual that each candidate's added
 /// output signal explains (least-squares projection, residual_analysis.h).
 std::vector<double> estimation_shares(const RankingRound& rr, const Experiment<double>& est) {
-  const Mat<double> base = simulate(rr.current, est).output;
+  const Mat<double> base = simulate_output(rr.current, est);
   const Mat<double> r = est.y - base;
   std::vector<CandidateSignal> sig;
   std::vector<size_t> index;
   for (size_t k = 0; k < rr.ranked.size(); ++k) {
-    const Mat<double> added = simulate(rr.ranked[k].model, est).output - base;
+    const Mat<double> added = simulate_output(rr.ranked[k].model, est) - base;
     if (!added.allFinite() || added.squaredNorm() == 0) continue;
     sig.push_back({rr.ranked[k].label, added});
     index.push_back(k);

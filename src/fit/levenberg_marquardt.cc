@@ -8,17 +8,23 @@
 
 namespace lpvid {
 
-Mat<double> forward_difference_jacobian(const Residual& r, const Vec<double>& p, const Vec<double>& r0) {
+Mat<double> forward_difference_jacobian(const JacobianColumns& columns, const Vec<double>& p, const Vec<double>& r0) {
   const double root_eps = std::sqrt(std::numeric_limits<double>::epsilon());
+  if (columns.at) columns.at(p);
   Mat<double> J(r0.size(), p.size());
   Vec<double> q = p;
   for (Eigen::Index j = 0; j < p.size(); ++j) {
     const double h = root_eps * std::max(1.0, std::abs(p(j)));
     q(j) = p(j) + h;
-    J.col(j) = (r(q) - r0) / h;
+    J.col(j) = (columns.column(q, j) - r0) / h;
     q(j) = p(j);
   }
   return J;
+}
+
+Mat<double> forward_difference_jacobian(const Residual& r, const Vec<double>& p, const Vec<double>& r0) {
+  return forward_difference_jacobian(JacobianColumns{nullptr, [&](const Vec<double>& q, Eigen::Index) { return r(q); }},
+                                     p, r0);
 }
 
 namespace {
@@ -40,7 +46,10 @@ Vec<double> lm_scaled_step(const Mat<double>& JtJ, const Vec<double>& g, double 
 }  // namespace
 
 LmResult levenberg_marquardt(const Residual& r, const Vec<double>& p0, const LmOptions& options,
-                             const Admissible& admissible) {
+                             const Admissible& admissible, const JacobianColumns* columns) {
+  const auto jacobian = [&](const Vec<double>& p, const Vec<double>& r0) {
+    return columns ? forward_difference_jacobian(*columns, p, r0) : forward_difference_jacobian(r, p, r0);
+  };
   auto finite = [](const Vec<double>& v) { return v.allFinite(); };
   if (admissible && !admissible(p0)) throw std::invalid_argument("levenberg_marquardt: start point not admissible");
   LmResult out;
@@ -52,7 +61,7 @@ LmResult levenberg_marquardt(const Residual& r, const Vec<double>& p0, const LmO
     out.converged = true;
     return out;
   }
-  Mat<double> J = forward_difference_jacobian(r, out.p, res);
+  Mat<double> J = jacobian(out.p, res);
   Mat<double> JtJ = J.transpose() * J;
   Vec<double> g = J.transpose() * res;
   double lambda = options.initial_damping;
@@ -80,7 +89,7 @@ LmResult levenberg_marquardt(const Residual& r, const Vec<double>& p0, const LmO
         out.converged = true;
         break;
       }
-      J = forward_difference_jacobian(r, out.p, res);
+      J = jacobian(out.p, res);
       JtJ = J.transpose() * J;
       g = J.transpose() * res;
     } else {

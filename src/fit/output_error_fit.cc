@@ -33,11 +33,10 @@ Window window_of(const Experiment<double>& exp, Eigen::Index first, Eigen::Index
   return w;
 }
 
-/// Stacked residual y − ŷ over the window; empty when not finite.
-Vec<double> residual(const LpvModel<double>& m, const Experiment<double>& exp, const Window& w) {
-  const Simulation<double> sim = simulate(m, exp);
+/// Stacked residual y − output over the window; empty when not finite.
+Vec<double> residual_of_output(const Mat<double>& output, const Experiment<double>& exp, const Window& w) {
   const Eigen::Index rows = w.last - w.first;
-  Mat<double> r = exp.y.middleRows(w.first, rows) - sim.output.middleRows(w.first, rows);
+  Mat<double> r = exp.y.middleRows(w.first, rows) - output.middleRows(w.first, rows);
   if (w.skip_first < w.skip_last) {  // drop the held-out block's rows
     const Eigen::Index a = w.skip_first - w.first, b = w.skip_last - w.first;
     Mat<double> kept(rows - (b - a), r.cols());
@@ -47,6 +46,55 @@ Vec<double> residual(const LpvModel<double>& m, const Experiment<double>& exp, c
   if (!r.allFinite()) return {};
   return stack_rows(r);
 }
+
+/// Stacked residual y − ŷ over the window; empty when not finite.
+Vec<double> residual(const LpvModel<double>& m, const Experiment<double>& exp, const Window& w) {
+  return residual_of_output(simulate_output(m, exp), exp, w);
+}
+
+/// Whether a slot moves only the output map (C, D, the output offset, the
+/// output block): the states and the scheduling do not depend on it.
+bool moves_output_only(const ParameterSlot& s) {
+  using W = ParameterSlot::Where;
+  return s.where == W::kC || s.where == W::kD || s.where == W::kOffset || s.where == W::kOutputLower ||
+         s.where == W::kOutputUpper || s.where == W::kOutputCoef;
+}
+
+/// The forward-difference Jacobian's residuals of fit_slots, the same
+/// numbers as `r` (the residual of with_slot_values): a column whose slot
+/// moves only the output map is the output pass on the state trajectory
+/// simulated once at p (model/simulate.h, output_on_trajectory), the other
+/// columns a whole simulation. Single-record experiments only.
+class TrajectoryColumns {
+ public:
+  TrajectoryColumns(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots, const Experiment<double>& exp,
+                    const Window& w, Eigen::Index m, const Residual& r)
+      : model_(model), slots_(slots), exp_(exp), w_(w), m_(m), r_(r) {}
+  JacobianColumns columns() {
+    return {[this](const Vec<double>& p) { at(p); },
+            [this](const Vec<double>& q, Eigen::Index j) { return column(q, j); }};
+  }
+
+ private:
+  void at(const Vec<double>& p) {
+    const LpvModel<double> m = with_slot_values(model_, slots_, p);
+    trajectory_ = simulate_one_record(m, exp_, SimulationParts::kOutput);
+    u_model_ = m.statics.model_input(exp_.u);
+  }
+  Vec<double> column(const Vec<double>& q, Eigen::Index j) const {
+    if (!moves_output_only(slots_[static_cast<size_t>(j)])) return r_(q);
+    const Vec<double> v = residual_of_output(output_on_trajectory(with_slot_values(model_, slots_, q), trajectory_, u_model_), exp_, w_);
+    return v.size() == m_ ? v : Vec<double>(Vec<double>::Constant(m_, 1e100));  // as fit_slots' residual
+  }
+  const LpvModel<double>& model_;
+  const std::vector<ParameterSlot>& slots_;
+  const Experiment<double>& exp_;
+  const Window& w_;
+  Eigen::Index m_;  ///< the residual's length
+  const Residual& r_;
+  Simulation<double> trajectory_;
+  Mat<double> u_model_;
+};
 
 /// The first `last` rows of a single-record experiment. A simulation is
 /// causal, so the rows after a fit's cost window never change its residual:
@@ -129,7 +177,7 @@ FitResult fit_initial_state(const LpvModel<double>& model, const Experiment<doub
 double validation_rms(const LpvModel<double>& model, const Experiment<double>& val, Eigen::Index init_samples,
                       Mat<double>* yhat) {
   const FitResult f = fit_initial_state(model, val, init_samples);
-  if (yhat) *yhat = simulate(f.model, val).output;
+  if (yhat) *yhat = simulate_output(f.model, val);
   return prediction_rms(f.model, val);
 }
 
@@ -139,7 +187,7 @@ FreeRunScore warmup_score(const LpvModel<double>& model, const Experiment<double
     throw std::invalid_argument("warm-up of " + std::to_string(warmup) + " samples leaves nothing to score in " +
                                 std::to_string(exp.n()) + " samples");
   const FitResult f = fit_initial_state(model, exp, warmup);
-  const Mat<double> out = simulate(f.model, exp).output;
+  const Mat<double> out = simulate_output(f.model, exp);
   if (yhat) *yhat = out;
   FreeRunScore s;
   s.warmup = warmup;
@@ -149,6 +197,33 @@ FreeRunScore warmup_score(const LpvModel<double>& model, const Experiment<double
   s.fit_percent = scores.fit_percent_all;
   return s;
 }
+
+namespace {
+
+/// fit_slots' residual and its length.
+struct FittedResidual {
+  const Residual& r;
+  Eigen::Index m;
+};
+
+/// Levenberg–Marquardt on fit_slots' residual from p0. With two or more
+/// columns of the output map alone, their residuals come from one state
+/// trajectory per Jacobian (the same numbers, fewer simulations).
+LmResult minimise(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots, const Experiment<double>& exp,
+                  const Window& w, const FittedResidual& fr, const Vec<double>& p0, const Admissible& stable,
+                  const FitOptions& o) {
+  LmOptions lm;
+  lm.max_iterations = o.max_iterations;
+  lm.relative_tolerance = o.rel_tol;
+  const bool single_record = exp.records.size() <= 1 && exp.record_x0.empty();
+  TrajectoryColumns trajectory(model, slots, exp, w, fr.m, fr.r);
+  const JacobianColumns columns = trajectory.columns();
+  const bool reuse = o.reuse_state_trajectory && single_record &&
+                     std::count_if(slots.begin(), slots.end(), moves_output_only) >= 2;
+  return levenberg_marquardt(fr.r, p0, lm, stable, reuse ? &columns : nullptr);
+}
+
+}  // namespace
 
 FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,
                     const Experiment<double>& exp, const FitOptions& o) {
@@ -175,9 +250,6 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
   };
   Vec<double> p = p0;
   if (p0.size() > 0) {
-    LmOptions lm;
-    lm.max_iterations = o.max_iterations;
-    lm.relative_tolerance = o.rel_tol;
     const bool moves_a = std::any_of(slots.begin(), slots.end(),
                                      [](const ParameterSlot& s) { return s.where == ParameterSlot::Where::kA; });
     Admissible stable = nullptr;
@@ -194,7 +266,7 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
       }
       stable = nullptr;
     }
-    const LmResult fit = levenberg_marquardt(r, p0, lm, stable);
+    const LmResult fit = minimise(model, slots, exp, w, FittedResidual{r, m}, p0, stable, o);
     p = fit.p;
     res.iterations = fit.iterations;
   }

@@ -35,6 +35,11 @@ struct FitOptions {
   /// on state functions (a store with A = I kept bounded by its outflow):
   /// such a fit is judged by the finiteness of its simulation.
   double max_radius = kStableRadius;
+  /// The Jacobian's columns of slots that move only the output map (C, D,
+  /// output offset, output block) from one state trajectory per Jacobian
+  /// instead of a whole simulation each: the same numbers (false: every
+  /// column simulated; the tests compare the two).
+  bool reuse_state_trajectory = true;
 };
 
 struct FitResult {

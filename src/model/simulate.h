@@ -263,22 +263,65 @@ namespace detail {
 template <typename T>
 struct SimulationWorkspace {
   Mat<T> A, B, C, D, C1, D1;
-  Vec<T> rho, u, x_next, cx, du, offset;
+  Vec<T> rho, u, x, x_next, cx, du, offset;
 };
+
+/// The output pass of a simulation: from the states x_k and the scheduling
+/// ρ_k of every sample (rows of x and rho) and the LPV part's input u'
+/// (u_model), the rows of sim.yhat, sim.z (with_z), sim.offset and then
+/// sim.output. Each sample's outputs depend on that sample's x_k, ρ_k, u'_k
+/// only, so this pass after the state pass gives the numbers of the one loop
+/// that computed both, bit for bit. x and rho may be sim.x and sim.rho.
+template <typename T>
+void output_pass(const LpvModel<T>& model, const SystemMatrices<T>& s, const Mat<T>& x, const Mat<T>& rho,
+                 const Mat<T>& u_model, bool with_z, Simulation<T>& sim) {
+  const Eigen::Index n = x.rows();
+  sim.yhat = Mat<T>::Zero(n, model.ny);
+  sim.z = Mat<T>::Zero(with_z ? n : 0, model.nz());
+  sim.offset = Mat<T>::Zero(n, model.ny);
+  SimulationWorkspace<T> w;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    if ((k & 255) == 0) check_stop();
+    w.rho = rho.row(k).transpose();
+    w.u = u_model.row(k).transpose();
+    w.x = x.row(k).transpose();
+    s.C.at_into(w.rho, w.C);
+    s.D.at_into(w.rho, w.D);
+    w.cx.noalias() = w.C * w.x;
+    w.du.noalias() = w.D * w.u;
+    sim.yhat.row(k) = (w.cx + w.du).transpose();
+    if (with_z) {
+      s.C1.at_into(w.rho, w.C1);
+      s.D1.at_into(w.rho, w.D1);
+      w.cx.noalias() = w.C1 * w.x;
+      w.du.noalias() = w.D1 * w.u;
+      sim.z.row(k) = (w.cx + w.du).transpose();
+    }
+    basis_sum_into(model.offset.basis, model.offset.values, model.ny, w.rho, w.offset);
+    sim.offset.row(k) = w.offset.transpose();
+  }
+  sim.output = model.statics.output.apply(Mat<T>(sim.yhat + sim.offset));
+}
 
 }  // namespace detail
 
+/// What a simulation computes: everything, or only what `output` needs (the
+/// fits' residuals: the uncertainty channel z = C1 x + D1 u is left out and
+/// sim.z is empty; x, yhat, offset, output and rho are the same numbers, bit
+/// for bit, since z feeds nothing else).
+enum class SimulationParts { kAll, kOutput };
+
+/// One record: the state pass (x_k and the scheduling ρ_k, which may depend
+/// on x_k), then the output pass (detail::output_pass).
 template <typename T>
-Simulation<T> simulate_one_record(const LpvModel<T>& model, const Experiment<T>& exp_in) {
+Simulation<T> simulate_one_record(const LpvModel<T>& model, const Experiment<T>& exp_in,
+                                  SimulationParts parts = SimulationParts::kAll) {
   const SystemMatrices<T> s = system_matrices(model);
   const Experiment<T> exp = detail::with_state_columns(model, exp_in);  // may omit "@x<i>" columns
   check_experiment(model, exp);
-  const Eigen::Index n = exp.n(), nz = model.nz();
+  const Eigen::Index n = exp.n();
   Simulation<T> sim;
   sim.x = Mat<T>::Zero(n, model.nx);
-  sim.yhat = Mat<T>::Zero(n, model.ny);
-  sim.z = Mat<T>::Zero(n, nz);
-  sim.offset = Mat<T>::Zero(n, model.ny);
   sim.rho = exp.rho;
   const std::vector<StateScheduled<T>> own = state_functions<T>(model.columns.rho, model.nx);
   const bool affine = has_state_offset(model);
@@ -288,38 +331,40 @@ Simulation<T> simulate_one_record(const LpvModel<T>& model, const Experiment<T>&
   w.rho.resize(exp.rho.cols());
   for (Eigen::Index k = 0; k < n; ++k) {
     if ((k & 255) == 0) check_stop();  // an exact simulation of a long record takes seconds: a stop is seen within 256 rows
+    sim.x.row(k) = x.transpose();
+    if (k + 1 == n) break;
     if (exp.rho.cols() > 0) w.rho = exp.rho.row(k).transpose();
     for (const StateScheduled<T>& f : own) {
       w.rho(f.j) = state_function_value(f.function, T(x(f.i)), f.shift);
       sim.rho(k, f.j) = w.rho(f.j);
     }
     w.u = u_model.row(k).transpose();
-    sim.x.row(k) = x.transpose();
-    s.C.at_into(w.rho, w.C);
-    s.D.at_into(w.rho, w.D);
-    w.cx.noalias() = w.C * x;
-    w.du.noalias() = w.D * w.u;
-    sim.yhat.row(k) = (w.cx + w.du).transpose();
-    s.C1.at_into(w.rho, w.C1);
-    s.D1.at_into(w.rho, w.D1);
-    w.cx.noalias() = w.C1 * x;
-    w.du.noalias() = w.D1 * w.u;
-    sim.z.row(k) = (w.cx + w.du).transpose();
-    basis_sum_into(model.offset.basis, model.offset.values, model.ny, w.rho, w.offset);
-    sim.offset.row(k) = w.offset.transpose();
-    if (k + 1 < n) {
-      s.A.at_into(w.rho, w.A);
-      s.B.at_into(w.rho, w.B);
-      w.x_next.noalias() = w.A * x + w.B * w.u;
-      x.swap(w.x_next);
-      if (affine) {  // E(ρ_k)
-        basis_sum_into(model.state_offset.basis, model.state_offset.values, model.nx, w.rho, w.offset);
-        x += w.offset;
-      }
+    s.A.at_into(w.rho, w.A);
+    s.B.at_into(w.rho, w.B);
+    w.x_next.noalias() = w.A * x + w.B * w.u;
+    x.swap(w.x_next);
+    if (affine) {  // E(ρ_k)
+      basis_sum_into(model.state_offset.basis, model.state_offset.values, model.nx, w.rho, w.offset);
+      x += w.offset;
     }
   }
-  sim.output = model.statics.output.apply(Mat<T>(sim.yhat + sim.offset));
+  if (n > 0)  // the last sample's scheduling on its own state (no step follows it)
+    for (const StateScheduled<T>& f : own) sim.rho(n - 1, f.j) = state_function_value(f.function, T(x(f.i)), f.shift);
+  detail::output_pass(model, s, sim.x, sim.rho, u_model, parts == SimulationParts::kAll, sim);
   return sim;
+}
+
+/// The output of `model` on a trajectory simulated with another model that
+/// has the same state equation (A, B, E, x0, input blocks and scheduling):
+/// only C, D, the output offset and the output map may differ. The numbers
+/// of simulate_output(model, exp) for a single record, without the state
+/// pass. `trajectory` is simulate_one_record(other, exp) (x and rho used),
+/// `u_model` = other.statics.model_input(exp.u).
+template <typename T>
+Mat<T> output_on_trajectory(const LpvModel<T>& model, const Simulation<T>& trajectory, const Mat<T>& u_model) {
+  Simulation<T> out;
+  detail::output_pass(model, system_matrices(model), trajectory.x, trajectory.rho, u_model, false, out);
+  return std::move(out.output);
 }
 
 /// Record k of a stacked experiment (data/experiment.h) as an experiment of
@@ -340,8 +385,8 @@ Experiment<T> record_of(const Experiment<T>& exp, Eigen::Index first, Eigen::Ind
 /// model.x0), with the model's input delays starting afresh in each record;
 /// the trajectories are stacked like the records.
 template <typename T>
-Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp) {
-  if (exp.records.size() <= 1 && exp.record_x0.empty()) return simulate_one_record(model, exp);
+Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp, SimulationParts parts = SimulationParts::kAll) {
+  if (exp.records.size() <= 1 && exp.record_x0.empty()) return simulate_one_record(model, exp, parts);
   const std::vector<Eigen::Index> lengths = exp.records.empty() ? std::vector<Eigen::Index>{exp.n()} : exp.records;
   if (!exp.record_x0.empty() && exp.record_x0.size() != lengths.size())
     throw std::invalid_argument(std::to_string(exp.record_x0.size()) + " initial states for " +
@@ -356,24 +401,31 @@ Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp) {
   for (size_t k = 0; k < lengths.size(); ++k) {
     LpvModel<T> mk = model;
     if (!exp.record_x0.empty() && exp.record_x0[k].size() != 0) mk.x0 = exp.record_x0[k];
-    const Simulation<T> s = simulate_one_record(mk, record_of(exp, first, lengths[k]));
+    const Simulation<T> s = simulate_one_record(mk, record_of(exp, first, lengths[k]), parts);
     if (k == 0) {
       sim.x = Mat<T>(exp.n(), s.x.cols());
       sim.yhat = Mat<T>(exp.n(), s.yhat.cols());
-      sim.z = Mat<T>(exp.n(), s.z.cols());
+      sim.z = Mat<T>(parts == SimulationParts::kAll ? exp.n() : 0, s.z.cols());
       sim.offset = Mat<T>(exp.n(), s.offset.cols());
       sim.output = Mat<T>(exp.n(), s.output.cols());
       sim.rho = Mat<T>(exp.n(), s.rho.cols());
     }
     sim.x.middleRows(first, lengths[k]) = s.x;
     sim.yhat.middleRows(first, lengths[k]) = s.yhat;
-    sim.z.middleRows(first, lengths[k]) = s.z;
+    if (parts == SimulationParts::kAll) sim.z.middleRows(first, lengths[k]) = s.z;
     sim.offset.middleRows(first, lengths[k]) = s.offset;
     sim.output.middleRows(first, lengths[k]) = s.output;
     sim.rho.middleRows(first, lengths[k]) = s.rho;
     first += lengths[k];
   }
   return sim;
+}
+
+/// simulate(model, exp).output, bit for bit, without the uncertainty channel z
+/// (what a fit's residual and a free-run score need).
+template <typename T>
+Mat<T> simulate_output(const LpvModel<T>& model, const Experiment<T>& exp) {
+  return simulate(model, exp, SimulationParts::kOutput).output;
 }
 
 /// Index of each scalar unknown θ_p of the correction (Theorem 3.1, eq. 10)

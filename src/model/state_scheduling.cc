@@ -32,7 +32,13 @@ template std::vector<StateScheduled<double>> state_functions<double>(const std::
 template std::vector<StateScheduled<Rational>> state_functions<Rational>(const std::vector<std::string>&, int);
 
 double scheduling_grid(double v) {
-  return std::ldexp(std::floor(std::ldexp(v, kSchedulingGridBits) + 0.5), -kSchedulingGridBits);
+  // Multiplying by an exact power of two is correctly rounded like std::ldexp
+  // (x·2^b exactly, or the overflow to ±inf; x·2^−b rounded once where it is
+  // subnormal), so these are ldexp's numbers without its call (a free-run
+  // simulation schedules every sample on its state).
+  static_assert(kSchedulingGridBits == 32, "the two constants below are 2^b and 2^-b");
+  constexpr double kUp = 0x1p32, kDown = 0x1p-32;
+  return std::floor(v * kUp + 0.5) * kDown;
 }
 
 Rational scheduling_grid(const Rational& v) {

@@ -10,6 +10,7 @@
 #include "model/uncertainty_channel.h"
 #include "support/gen_models.h"
 #include "toeplitz/signal_toeplitz.h"
+#include "support/same_bits.h"
 
 namespace lpvid {
 namespace {
@@ -350,20 +351,40 @@ Simulation<double> per_sample_reference(const LpvModel<double>& model, const Exp
 // the per-sample expressions (construction: the same Eigen operations on the
 // same values), on random models whose entries are not dyadic (so every
 // product rounds and a changed order of operations would show).
-RC_GTEST_PROP(SimulateProperty, WorkspaceSimulationEqualsPerSampleExpressionsBitForBit, ()) {
+/// A random model and experiment with small rational entries, in doubles.
+std::pair<LpvModel<double>, Experiment<double>> draw_double_case() {
   gen::ModelOptions o;
   o.entry = gen::rational_entry(3, 7);
   const LpvModel<Rational> mr = *gen::lpv_model(o);
   const Experiment<Rational> er =
       *gen::experiment(mr.nu, mr.ny, mr.n_rho(), gen::rational_entry(5, 9), gen::rational_entry(1, 7));
-  const LpvModel<double> m = convert_model<double, Rational>(mr);
-  const Experiment<double> e = nearest_double(er);
+  return {convert_model<double, Rational>(mr), nearest_double(er)};
+}
+
+RC_GTEST_PROP(SimulateProperty, WorkspaceSimulationEqualsPerSampleExpressionsBitForBit, ()) {
+  const auto [m, e] = draw_double_case();
   const Simulation<double> got = simulate(m, e), want = per_sample_reference(m, e);
   RC_ASSERT(got.x == want.x);
   RC_ASSERT(got.yhat == want.yhat);
   RC_ASSERT(got.z == want.z);
   RC_ASSERT(got.offset == want.offset);
   RC_ASSERT(got.output == want.output);
+}
+
+/// simulate_output (no uncertainty channel z) gives simulate(...).output bit
+/// for bit, on one record and on the same rows split into two records (each
+/// from its own x0), and leaves z empty.
+RC_GTEST_PROP(SimulateProperty, OutputOnlySimulationIsTheFullOnesOutputBitForBit, ()) {
+  const auto [m, e0] = draw_double_case();
+  Experiment<double> e = e0;
+  RC_ASSERT(test::same_bits(simulate_output(m, e), simulate(m, e).output));
+  RC_ASSERT(simulate(m, e, SimulationParts::kOutput).z.rows() == 0);
+  if (e.n() >= 2) {
+    const Eigen::Index first = *rc::gen::inRange<Eigen::Index>(1, e.n());
+    e.records = {first, e.n() - first};
+    e.record_x0 = {Vec<double>(), Vec<double>::Constant(m.nx, 0.25)};
+    RC_ASSERT(test::same_bits(simulate_output(m, e), simulate(m, e).output));
+  }
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 // "@x1" column is the state x_1 of the model's own simulation whatever the
 // data file holds there.
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -46,6 +48,23 @@ RC_GTEST_PROP(StateScheduling, DoubleAndExactGridAgree, ()) {
   RC_ASSERT(CGAL::abs(g - q) <= step / Rational(2));
   RC_ASSERT(scheduling_grid(g) == g);
   RC_ASSERT(Rational(scheduling_grid(v)) == g);
+}
+
+/// The double grid is floor(v·2^32 + 1/2)·2^−32 with both scalings done by
+/// std::ldexp (the definition) on every kind of double: ordinary values,
+/// values whose v·2^32 overflows, subnormal and zero results (of either
+/// sign), infinities and NaN: the same bits.
+RC_GTEST_PROP(StateScheduling, DoubleGridIsLdexpsNumbersOnEveryDouble, ()) {
+  const auto by_ldexp = [](double v) { return std::ldexp(std::floor(std::ldexp(v, kSchedulingGridBits) + 0.5), -kSchedulingGridBits); };
+  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b)); };
+  const uint64_t bits = *rc::gen::arbitrary<uint64_t>();
+  double any;
+  std::memcpy(&any, &bits, sizeof any);
+  const int e = *rc::gen::inRange(-1100, 1030);
+  const double scaled = std::ldexp(*rc::gen::inRange(-1000000, 1000000) / 999983.0, e);
+  for (const double v : {any, scaled, -scaled, 0.0, -0.0, 0x1p-1074, -0x1p-1074, 0x1p991, 0x1p992, -0x1.fffffffffffffp1023,
+                         HUGE_VAL, -HUGE_VAL})
+    RC_ASSERT(same(scheduling_grid(v), by_ldexp(v)));
 }
 
 /// The state_feedback case's truth has A(ρ, x1) = A(ρ) + x1²·[0 0; −0.006 0]
