@@ -52,6 +52,16 @@ Vec<double> residual(const LpvModel<double>& m, const Experiment<double>& exp, c
   return residual_of_output(simulate_output(m, exp), exp, w);
 }
 
+/// What the fit minimises at a trial point: the residual, or when the
+/// simulation overflowed (empty) a huge one of the same length m, which LM rejects.
+Vec<double> residual_or_huge(const Vec<double>& v, Eigen::Index m) {
+  return v.size() == m ? v : Vec<double>(Vec<double>::Constant(m, 1e100));
+}
+
+/// One record from the model's own x0 (no record list): what
+/// simulate_one_record simulates as simulate() would.
+bool single_record(const Experiment<double>& exp) { return exp.records.size() <= 1 && exp.record_x0.empty(); }
+
 /// Whether a slot moves only the output map (C, D, the output offset, the
 /// output block): the states and the scheduling do not depend on it.
 bool moves_output_only(const ParameterSlot& s) {
@@ -84,7 +94,7 @@ class TrajectoryColumns {
   Vec<double> column(const Vec<double>& q, Eigen::Index j) const {
     if (!moves_output_only(slots_[static_cast<size_t>(j)])) return r_(q);
     const Vec<double> v = residual_of_output(output_on_trajectory(with_slot_values(model_, slots_, q), trajectory_, u_model_), exp_, w_);
-    return v.size() == m_ ? v : Vec<double>(Vec<double>::Constant(m_, 1e100));  // as fit_slots' residual
+    return residual_or_huge(v, m_);
   }
   const LpvModel<double>& model_;
   const std::vector<ParameterSlot>& slots_;
@@ -111,7 +121,7 @@ Experiment<double> leading_rows(const Experiment<double>& exp, Eigen::Index last
 
 /// Whether fit_slots may simulate leading_rows(exp, w.last) instead of exp.
 bool cost_ends_early(const Experiment<double>& exp, const Window& w) {
-  return w.last < exp.n() && exp.records.size() <= 1 && exp.record_x0.empty();
+  return w.last < exp.n() && single_record(exp);
 }
 
 }  // namespace
@@ -215,10 +225,9 @@ LmResult minimise(const LpvModel<double>& model, const std::vector<ParameterSlot
   LmOptions lm;
   lm.max_iterations = o.max_iterations;
   lm.relative_tolerance = o.rel_tol;
-  const bool single_record = exp.records.size() <= 1 && exp.record_x0.empty();
   TrajectoryColumns trajectory(model, slots, exp, w, fr.m, fr.r);
   const JacobianColumns columns = trajectory.columns();
-  const bool reuse = o.reuse_state_trajectory && single_record &&
+  const bool reuse = o.reuse_state_trajectory && single_record(exp) &&
                      std::count_if(slots.begin(), slots.end(), moves_output_only) >= 2;
   return levenberg_marquardt(fr.r, p0, lm, stable, reuse ? &columns : nullptr);
 }
@@ -246,7 +255,7 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
   const Eigen::Index m = r0.size();
   const Residual r = [&](const Vec<double>& p) {
     const Vec<double> v = residual(with_slot_values(model, slots, p), exp, w);
-    return v.size() == m ? v : Vec<double>(Vec<double>::Constant(m, 1e100));
+    return residual_or_huge(v, m);
   };
   Vec<double> p = p0;
   if (p0.size() > 0) {
