@@ -237,7 +237,7 @@ ClassBoundResult class_lower_bound(const LpvModel<Rational>& model_q, const LpvM
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
   };
-  if (o.unknowns.x0 && has_state_offset(model_d)) return done("with a state offset the response to x0 is not affine");
+  if (std::string why = non_affine_unknowns(model_q, o.unknowns); !why.empty()) return done(why);
   const AffineResidual<double> a = build_affine_residual(model_d, with_state_scheduling(model_d, exp_d), o.unknowns);
   AffineResidual<Rational> aq = build_affine_residual(model_q, with_state_scheduling(model_q, exp_q), o.unknowns);
   const std::vector<long> free = free_parameters(aq);

@@ -51,9 +51,17 @@ std::string model_besides_x0_mismatch(const LpvModel<Rational>& planned, const L
 }
 
 std::string certificate_claim_mismatch(const PlannedClaim& p, const Certificate& c) {
+  // An allow-list, not a deny-list: a window's (or the joint job's)
+  // certificate is the claim the plan's objective produces, "consistent", or
+  // "invalidated" when the plan fixes both delta and dmax. Every other kind
+  // (a lower end, not_a_witness, a class claim, a kind added later) is refused,
+  // even when it holds: it does not say what the window is counted for.
   const bool invalidated = c.claim == CertificateClaim::kInvalidated;
-  if (c.claim == CertificateClaim::kLowerBound || c.claim == CertificateClaim::kNotAWitness)
-    return std::string("a \"") + to_string(c.claim) + "\" certificate in place of the window's certificate";
+  if (c.claim != CertificateClaim::kConsistent && !invalidated)
+    return std::string("a \"") + to_string(c.claim) +
+           "\" certificate in place of the window's certificate (the plan's objective " + objective_name(p.objective) +
+           " produces only \"consistent\"" +
+           (p.objective == BoundObjective::Kind::kFeasibility ? " or \"invalidated\")" : ")");
   if (invalidated && p.objective != BoundObjective::Kind::kFeasibility)
     return std::string("claims \"invalidated\", but the plan's objective ") + objective_name(p.objective) +
            " fixes only one of delta, dmax";

@@ -7,9 +7,10 @@
 ///  - the Toeplitz mode the jobs run in;
 ///  - the model, INCLUDING the x0 the plan declared for the window (a job
 ///    that edits its model file's x0 certifies another claim);
-///  - the claim kind: "consistent" (any objective) or "invalidated" (only
-///    when the plan fixes both δ and d_max); a lower-end or not_a_witness
-///    file in place of the window's certificate is refused;
+///  - the claim kind, by an allow-list: "consistent" (any objective) or
+///    "invalidated" (only when the plan fixes both δ and d_max); any other
+///    kind in place of the window's certificate (a lower end, not_a_witness,
+///    class_lower_bound, class_invalidated) is refused, even when it holds;
 ///  - the fixed values, exactly: δ² (objective min_dmax, feasibility), d_max²
 ///    (min_delta, feasibility); a certificate at other values (a larger δ
 ///    making a window consistent, a smaller d_max invalidating it) is refused;

@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "model/simulate.h"
+#include "model/state_scheduling.h"
 #include "toeplitz/signal_toeplitz.h"
 
 namespace lpvid {
@@ -151,6 +152,24 @@ void add_x0_block(const LpvModel<T>& model, const Experiment<T>& exp, const Simu
 }  // namespace
 
 template <typename T>
+std::string non_affine_unknowns(const LpvModel<T>& model, const Unknowns& unknowns) {
+  if (!unknowns.x0 || model.nx == 0) return "";
+  const std::string why = "the initial state x0 is among the unknowns, but ";
+  const std::string fix = ": the residual is not affine in the unknowns, so no class claim over x0 is made (fix x0, "
+                          "i.e. omit --free-x0, for a class bound)";
+  if (unknowns.correction && !model.correction.basis.empty())
+    return why + "the output correction C_i multiplies the state, which moves with x0 (yhat = (C + sum_i theta_i C_i) x(x0) "
+                 "holds the product theta_i x0)" + fix;
+  const auto own = state_scheduled(model.columns.rho, static_cast<int>(model.nx));
+  if (!own.empty())
+    return why + "the scheduling column '" + model.columns.rho[static_cast<size_t>(own.front().first)] +
+           "' follows the state, which moves with x0 (rho, hence the model's matrices, depend on x0)" + fix;
+  if (has_state_offset(model))
+    return why + "the model has a state offset E(rho): the response to x0 is then not affine" + fix;
+  return "";
+}
+
+template <typename T>
 AffineResidual<T> build_affine_residual(const LpvModel<T>& model, const Experiment<T>& exp, const Unknowns& unknowns) {
   const Simulation<T> sim = simulate(model, exp);
   const bool any_unknown = (unknowns.correction && !model.correction.basis.empty()) ||
@@ -251,6 +270,8 @@ std::vector<Vec<T>> record_initial_states(const LpvModel<T>& model, const std::v
   return out;
 }
 
+template std::string non_affine_unknowns(const LpvModel<double>&, const Unknowns&);
+template std::string non_affine_unknowns(const LpvModel<Rational>&, const Unknowns&);
 template AffineResidual<double> build_affine_residual(const LpvModel<double>&, const Experiment<double>&, const Unknowns&);
 template AffineResidual<Rational> build_affine_residual(const LpvModel<Rational>&, const Experiment<Rational>&,
                                                         const Unknowns&);

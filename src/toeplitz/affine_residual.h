@@ -64,6 +64,22 @@ struct AffineResidual {
   Vec<T> r(const Vec<T>& p) const { return p.size() ? Vec<T>(r0 - Jr * p) : r0; }
 };
 
+/// Why z(p) and r(p) are NOT affine in the unknowns for this model (empty
+/// when they are). Every class claim of Theorem 3.1 (docs/class_lower_bound.md)
+/// rests on that premise; the class bound is built and the verifier checks a
+/// class certificate only when this is empty. The state does not depend on θ
+/// or φ (A_i, B_i are fixed), so only a free initial state can break it:
+///  - with a correction basis, ŷ = (C + Σ θ_i C_i)·x(x0) (and z = (C1 +
+///    Σ θ_i C1_i)·x(x0) for `general`) holds the product θ_i·x0;
+///  - a scheduling column that follows the state ("@x<i>", "@sqrt(x<i>-c)", …)
+///    makes ρ, hence A(ρ), B(ρ), C(ρ), depend on x0;
+///  - a state offset E(ρ) is simulated from x = 0 and, with state columns,
+///    follows x: its x0 columns are secants (apply_parameters' comment).
+/// A free x0 with none of these is affine (the response to x0 is the free
+/// response of the fixed state equation along the measured ρ).
+template <typename T>
+std::string non_affine_unknowns(const LpvModel<T>& model, const Unknowns& unknowns);
+
 /// Builds z0, r0, Jz, Jr for the model along the experiment (docs/design.md §5, §8).
 /// Throws InputError for an LTI/LPV mismatch and std::invalid_argument for
 /// inconsistent sizes.

@@ -34,6 +34,10 @@ TEST_F(JobsMerge, PlanMismatchNamesEachChangedValue) {
       {[](Certificate& c) { c.data_sha256[0] = c.data_sha256[0] == '0' ? '1' : '0'; }, "other data"},
       {[](Certificate& c) { c.mode = ToeplitzMode::kPaper; }, "toeplitz mode paper"},
       {[](Certificate& c) { c.claim = CertificateClaim::kNotAWitness; }, "not_a_witness"},
+      // class claims are not window claims, whatever they prove (an allow-list)
+      {[](Certificate& c) { c.claim = CertificateClaim::kClassInvalidated; }, "\"class_invalidated\" certificate in place"},
+      {[](Certificate& c) { c.claim = CertificateClaim::kClassLowerBound; }, "\"class_lower_bound\" certificate in place"},
+      {[](Certificate& c) { c.claim = CertificateClaim::kLowerBound; }, "\"lower_bound\" certificate in place"},
   };
   for (const auto& [change, words] : changes) {
     Certificate c = genuine;

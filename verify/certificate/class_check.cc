@@ -135,8 +135,9 @@ std::string claim_problem(const Certificate& c, const Rational& lowest) {
 
 CertificateVerdict check_class_claim(const Certificate& c, const Experiment<Rational>& exp_in, std::string details) {
   if (c.mode != ToeplitzMode::kSignal) return invalid_verdict("a class claim is only defined for toeplitz_mode \"signal\"", details);
-  if (c.region.unknowns.x0 && has_state_offset(c.model))
-    return invalid_verdict("with a state offset the response to x0 is not affine: no class claim over x0", details);
+  // The premise of every class claim: z(p), r(p) affine in the unknowns (x0 with a
+  // correction basis, state scheduling or a state offset is not).
+  if (std::string why = non_affine_unknowns(c.model, c.region.unknowns); !why.empty()) return invalid_verdict(why, details);
   const Experiment<Rational> exp = with_state_scheduling(c.model, exp_in);
   ClassSignals s;
   if (std::string why = class_signals(build_affine_residual(c.model, exp, c.region.unknowns), c.region.free, s); !why.empty())
