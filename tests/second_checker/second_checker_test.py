@@ -1,0 +1,367 @@
+#!/usr/bin/env python3
+"""Two exact checkers, one verdict: lpvid-verify against tests/second_checker/exact_checker.py.
+
+Writes small certificates with the built lpvid (fixtures/example1 windows, generated random
+cases, two records, paper mode, class certificates of identify, invalidations), then checks
+each, and seeded mutations of each (one number of a tap, a dual entry, epsilon, a bound, a
+shifted row window, a claim turned into its negation), with both checkers. A verdict where
+both decide and disagree fails the test; so does a claim kind that the second checker never
+decides (its "unsupported" answers are listed, not failures). Also the crafted case of a
+class claim over a free x0 together with an output correction, whose residual is NOT affine
+in the unknowns: the second checker must refuse it; lpvid-verify must refuse it too once its
+class check tests affinity (until then this part fails and says so).
+
+usage: second_checker_test.py LPVID LPVID_VERIFY SOURCE_DIR WORK_DIR
+"""
+import copy
+import json
+import os
+import random
+import subprocess
+import sys
+import time
+from fractions import Fraction
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import exact_checker  # noqa: E402
+
+lpvid, verify, source, work = sys.argv[1:5]
+os.makedirs(work, exist_ok=True)
+ex1 = os.path.join(source, "fixtures", "example1")
+failures = []
+start = time.time()
+
+
+def note(ok, what):
+    print(("ok:     " if ok else "FAILED: ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+
+
+def run_lpvid(args, exit_codes=(0, 1)):
+    r = subprocess.run([lpvid, *args, "--quiet"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if r.returncode not in exit_codes:
+        print(r.stdout[-3000:])
+        note(False, f"lpvid {' '.join(args)}: exit {r.returncode}")
+    return r.returncode
+
+
+def verifier(path):
+    """'holds' | 'refused' | 'undecided' from lpvid-verify's exit status."""
+    r = subprocess.run([verify, "certificate", path], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       text=True)
+    first = (r.stdout.strip().splitlines() or [""])[-1][:200]
+    if r.returncode == 0:
+        return "holds", first
+    if r.returncode in (1, 2):
+        return "refused", first
+    return "undecided", first
+
+
+# ---------------------------------------------------------------------------------------
+# 1. Certificates written by lpvid
+# ---------------------------------------------------------------------------------------
+
+certs = []
+
+
+def want(path):
+    if os.path.exists(path):
+        certs.append(path)
+    else:
+        note(False, f"{path} was written")
+
+
+def out(name):
+    return os.path.join(work, name)
+
+
+true_m = os.path.join(ex1, "true_model.json")
+init_m = os.path.join(ex1, "initial_model.json")
+data40 = os.path.join(ex1, "noise_free_n40.csv")
+
+# Example 1 (2x2, two scheduling variables), a window of 16 rows: weighted objective, compact dual.
+run_lpvid(["invalidate", "--data", data40, "--rows", "4:20", "--model", true_m, "--certificate", out("ex1.cert.json")])
+want(out("ex1.cert.json"))
+want(out("ex1.cert.lower.json"))
+# The initial model at tight bounds: invalidated (compact and dense dual).
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:16", "--model", init_m, "--delta", "0.001", "--dmax", "0.001",
+           "--certificate", out("ex1inv.cert.json")])
+want(out("ex1inv.cert.json"))
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:12", "--model", init_m, "--delta", "0.001", "--dmax", "0.001",
+           "--dense-dual", "--certificate", out("ex1invd.cert.json")])
+want(out("ex1invd.cert.json"))
+# Paper mode: the w form.
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:14", "--model", init_m, "--toeplitz", "paper",
+           "--certificate", out("ex1paper.cert.json")])
+want(out("ex1paper.cert.json"))
+
+# Random SISO cases of the generator (static blocks sometimes), min d_max at fixed delta and
+# min delta at fixed d_max, dense dual for one.
+for seed in (3, 5, 8):
+    case = out(f"rnd{seed}")
+    run_lpvid(["generate", "random", "--siso", "--min-n", "20", "--max-n", "30", "--static-blocks",
+               "--leading-zeros", "3", "--seed", str(seed), "--out", case], exit_codes=(0,))
+    d, m = os.path.join(case, "data.csv"), os.path.join(case, "model.json")
+    if not (os.path.exists(d) and os.path.exists(m)):
+        note(False, f"generate random wrote {case}/data.csv and model.json")
+        continue
+    opts = {3: ["--delta", "0.2"], 5: ["--dmax", "0.3", "--dense-dual"], 8: ["--lambda", "0.3"]}[seed]
+    c = out(f"rnd{seed}.cert.json")
+    run_lpvid(["invalidate", "--data", d, "--model", m, "--certificate", c, *opts])
+    want(c)
+    if os.path.exists(c[:-len(".cert.json")] + ".cert.lower.json"):
+        certs.append(c[:-len(".cert.json")] + ".cert.lower.json")
+    if seed == 3:
+        # identify with its class certificate (the generator's model has a correction basis)
+        ci = out("rnd3id.cert.json")
+        run_lpvid(["identify", "--data", d, "--model", m, "--class-leaves", "3", "--certificate", ci])
+        want(ci)
+        if os.path.exists(out("rnd3id.cert.class.json")):
+            certs.append(out("rnd3id.cert.class.json"))
+
+# Two records of Example 1 under one Delta.
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:10", "--data", data40, "--rows", "20:32", "--model", true_m,
+           "--certificate", out("two.cert.json")])
+want(out("two.cert.json"))
+want(out("two.cert.lower.json"))
+
+# identify on Example 1 (multiplicative: a box of theta, branch and bound) and a class
+# invalidation (additive LTI model, every theta free, at tight bounds).
+run_lpvid(["identify", "--data", data40, "--rows", "0:14", "--model", init_m, "--basis", "1", "--class-leaves", "2",
+           "--certificate", out("ex1id.cert.json")])
+want(out("ex1id.cert.json"))
+want(out("ex1id.cert.class.json"))
+# ---------------------------------------------------------------------------------------
+# 2. The crafted x0 case: y_k = 0.9^k + 0.5^k, A = diag(0.9, 0.5), C = [1 0], x0 = 0,
+#    output correction basis {1}. theta with C_1 = [0 1] and x0 = [1 1] fits exactly, so any
+#    positive class lower end over (theta, x0) is false; the residual is bilinear in them.
+# ---------------------------------------------------------------------------------------
+x0dir = out("x0case")
+os.makedirs(x0dir, exist_ok=True)
+
+
+def exact_text(q):
+    """A terminating fraction as exact decimal text."""
+    s = "-" if q < 0 else ""
+    q = abs(q)
+    digits = 0
+    while (q * 10 ** digits).denominator != 1:
+        digits += 1
+    v = str((q * 10 ** digits).numerator).rjust(digits + 1, "0")
+    return s + (v[:-digits] + "." + v[-digits:] if digits else v)
+
+
+with open(os.path.join(x0dir, "data.csv"), "w") as f:
+    f.write("u,y\n")
+    for k in range(40):
+        f.write(f"0,{exact_text(Fraction(9, 10) ** k + Fraction(1, 2) ** k)}\n")
+x0model = {
+    "format": "lpvid-model/1", "states": 2, "inputs": 1, "outputs": 1, "scheduling": [],
+    "columns": {"u": ["u"], "y": ["y"]},
+    "initial": {"A": [{"basis": "1", "value": [["0.9", 0], [0, "0.5"]]}],
+                "B": [{"basis": "1", "value": [[0], [0]]}],
+                "C": [{"basis": "1", "value": [[1, 0]]}]},
+    "correction": {"basis": ["1"]},
+    "uncertainty": {"structure": "additive", "weight": "0.01"},
+    "x0": [0, 0]}
+with open(os.path.join(x0dir, "model.json"), "w") as f:
+    json.dump(x0model, f, indent=1)
+x0cert = os.path.join(x0dir, "x0.cert.json")
+run_lpvid(["identify", "--data", os.path.join(x0dir, "data.csv"), "--model", os.path.join(x0dir, "model.json"),
+           "--free-x0", "--delta", "0.01", "--certificate", x0cert])
+x0class = os.path.join(x0dir, "x0.cert.class.json")
+
+print(f"-- {len(certs)} certificates written in {time.time() - start:.1f} s", flush=True)
+
+# ---------------------------------------------------------------------------------------
+# 3. Mutations: one number changed at a time
+# ---------------------------------------------------------------------------------------
+
+
+def scaled_text(v, factor):
+    return exact_text_any(exact_checker.parse_number(v, "mutation") * factor)
+
+
+def exact_text_any(q):
+    return f"{q.numerator}/{q.denominator}" if q.denominator != 1 else str(q.numerator)
+
+
+def dual_points(cert):
+    if "dual" in cert:
+        return [cert["dual"]]
+    if "class" in cert:
+        return [n["leaf"] for n in cert["class"]["nodes"] if "leaf" in n]
+    return []
+
+
+def mutations(cert, rng):
+    """(name, mutated certificate) pairs; each changes one thing."""
+    out_ = []
+
+    def add(name, fn):
+        c = copy.deepcopy(cert)
+        if fn(c) is not False:
+            out_.append((name, c))
+
+    def pick(rows):
+        i = rng.randrange(len(rows))
+        j = rng.randrange(len(rows[i])) if rows[i] else None
+        return i, j
+
+    claim = cert["claim"]
+    if claim in ("consistent", "not_a_witness"):
+        for key, f in (("delta2", Fraction(1, 2)), ("dmax2", Fraction(1, 2)), ("delta2", Fraction(999, 1000))):
+            add(f"{key}*{f}", lambda c, key=key, f=f: c.__setitem__(key, scaled_text(c[key], f)))
+        if cert["form"] == "delta":
+            def tap(c):
+                i, j = pick(c["delta_taps"])
+                c["delta_taps"][i][j] = scaled_text(c["delta_taps"][i][j], Fraction(3, 2)) \
+                    if exact_checker.parse_number(c["delta_taps"][i][j], "t") != 0 else "1/1000"
+            add("tap*1.5", tap)
+        else:
+            def wentry(c):
+                i, j = pick(c["w"])
+                c["w"][i][j] = exact_text_any(exact_checker.parse_number(c["w"][i][j], "w") + Fraction(1, 100))
+            add("w+0.01", wentry)
+        add("claim->not_a_witness" if claim == "consistent" else "claim->consistent",
+            lambda c: c.__setitem__("claim", "not_a_witness" if claim == "consistent" else "consistent"))
+
+        def lower_and_flip(c):
+            c["delta2"] = scaled_text(c["delta2"], Fraction(1, 2))
+            c["claim"] = "not_a_witness"
+        if claim == "consistent":
+            add("delta2/2+not_a_witness", lower_and_flip)
+    if "lower_bound" in cert:
+        add("lower_bound*2", lambda c: c.__setitem__("lower_bound", scaled_text(c["lower_bound"], 2))
+            if exact_checker.parse_number(c["lower_bound"], "lb") != 0 else c.__setitem__("lower_bound", "1/100"))
+        add("lower_bound*1/2", lambda c: c.__setitem__("lower_bound", scaled_text(c["lower_bound"], Fraction(1, 2))))
+    if claim in ("invalidated", "class_invalidated"):
+        add("dmax2*4", lambda c: c.__setitem__("dmax2", scaled_text(c["dmax2"], 4)))
+    points = dual_points(cert)
+    if points:
+        k = rng.randrange(len(points))
+
+        def point(c):
+            return dual_points(c)[k]
+
+        def g_entry(c):
+            p = point(c)
+            i, j = pick(p["g"])
+            p["g"][i][j] = exact_text_any(exact_checker.parse_number(p["g"][i][j], "g") * Fraction(5, 4) + Fraction(1, 10))
+        add("g entry", g_entry)
+        add("sigma*2", lambda c: point(c).__setitem__("sigma", scaled_text(point(c)["sigma"], 2)))
+        if "Y1" in points[k]:
+            def y1(c):
+                p = point(c)
+                i = rng.randrange(len(p["Y1"]))
+                j = rng.randrange(len(p["Y1"][i]))
+                p["Y1"][i][j] = exact_text_any(exact_checker.parse_number(p["Y1"][i][j], "Y") + Fraction(1, 1000))
+            add("Y1 entry", y1)
+        else:
+            add("t*3/2", lambda c: point(c).__setitem__("t", scaled_text(point(c)["t"], Fraction(3, 2))))
+            add("u_floor*4", lambda c: point(c).__setitem__("u_floor", scaled_text(point(c)["u_floor"], 4)))
+            add("x/8", lambda c: point(c).__setitem__("x", scaled_text(point(c)["x"], Fraction(1, 8))))
+
+            def ptap(c):
+                p = point(c)
+                i, j = pick(p["taps"])
+                p["taps"][i][j] = exact_text_any(exact_checker.parse_number(p["taps"][i][j], "h") + Fraction(1, 64))
+            add("dual tap", ptap)
+        if "epsilon" in points[k]:
+            add("epsilon/2", lambda c: point(c).__setitem__("epsilon", scaled_text(point(c)["epsilon"], Fraction(1, 2))))
+    if "class" in cert:
+        cl = cert["class"]
+        bounded = [i for i in range(len(cl["parameters"])) if i not in cl["free"]]
+        if bounded:
+            i = rng.choice(bounded)
+            add("radius*4", lambda c: c["class"]["radius"].__setitem__(i, scaled_text(c["class"]["radius"][i], 4)))
+    # a record's row window moved by one sample
+    def shift(c):
+        d = c["data"] if "data" in c else c["records"][rng.randrange(len(c["records"]))]
+        if "rows" not in d:
+            return False
+        d["rows"] = [d["rows"][0] + 1, d["rows"][1] + 1]
+    if ("data" in cert and "rows" in cert["data"]) or "records" in cert:
+        add("rows+1", shift)
+    return out_
+
+
+# ---------------------------------------------------------------------------------------
+# 4. Both checkers on everything
+# ---------------------------------------------------------------------------------------
+rng = random.Random(49)
+decided = {}          # claim/form -> count of decisions by the second checker
+unsupported = []
+agree = disagree = 0
+checked = 0
+pending = []
+for path in certs:
+    pending.append((path, os.path.basename(path), None))
+    with open(path) as f:
+        cert = json.load(f)
+    for name, mut in mutations(cert, rng):
+        mpath = os.path.join(os.path.dirname(path), os.path.basename(path)[:-5] + f".mut.{name.replace('/', '_')}.json")
+        with open(mpath, "w") as f:
+            json.dump(mut, f)
+        pending.append((mpath, os.path.basename(path) + " / " + name, mut))
+
+for path, label, _ in pending:
+    with open(path) as f:
+        cert = json.load(f)
+    kind = f"{cert.get('claim')}/{cert.get('form')}" + ("/records" if "records" in cert else "")
+    t0 = time.time()
+    a, why_a = verifier(path)
+    b, why_b = exact_checker.check_certificate(path)
+    checked += 1
+    line = f"{label}: lpvid-verify {a}, second checker {b} ({time.time() - t0:.1f} s)"
+    if b == "unsupported":
+        unsupported.append(f"{label}: {why_b}")
+        print("unsupported: " + line + f" -- {why_b}", flush=True)
+        continue
+    decided[kind] = decided.get(kind, 0) + 1
+    if a == "undecided":
+        print("undecided: " + line, flush=True)
+        continue
+    if a == b:
+        agree += 1
+        print("agree:  " + line, flush=True)
+    else:
+        disagree += 1
+        note(False, line + f"\n        lpvid-verify: {why_a}\n        second: {why_b}")
+
+# the certificates lpvid wrote must hold for both (an unmutated certificate is a true claim)
+for path in certs:
+    b, why = exact_checker.check_certificate(path)
+    note(b in ("holds", "unsupported"), f"{os.path.basename(path)} written by lpvid holds for the second checker "
+         f"({b}: {why[:160]})")
+
+needed = ["consistent/delta", "consistent/w", "not_a_witness/delta", "lower_bound/dual_delta_path",
+          "lower_bound/dual_delta", "invalidated/dual_delta_path", "invalidated/dual_delta",
+          "class_lower_bound/dual_delta_path", "consistent/delta/records", "lower_bound/dual_delta_path/records"]
+for kind in needed:
+    note(decided.get(kind, 0) > 0, f"the second checker decided {kind} at least once ({decided.get(kind, 0)})")
+note(len(unsupported) <= checked // 4, f"at most a quarter unsupported ({len(unsupported)} of {checked})")
+
+# ---------------------------------------------------------------------------------------
+# 5. The x0 case
+# ---------------------------------------------------------------------------------------
+if os.path.exists(x0class):
+    b, why_b = exact_checker.check_certificate(x0class)
+    note(b == "refused" and "not affine" in why_b,
+         f"second checker refuses the class claim over a free x0 with an output correction ({b}: {why_b})")
+    a, why_a = verifier(x0class)
+    note(a == "refused", f"lpvid-verify refuses it too ({a}: {why_a}) -- needs the affinity check on main")
+else:
+    print("note: identify --free-x0 wrote no class certificate for the x0 case; nothing to refuse")
+
+print(f"-- {len(certs)} certificates, {checked - len(certs)} mutations, {checked} checks: {agree} agree, "
+      f"{disagree} disagree, {len(unsupported)} unsupported; decided kinds: {decided}")
+for u in unsupported:
+    print("   unsupported: " + u)
+print(f"-- {time.time() - start:.1f} s")
+if failures:
+    print(f"{len(failures)} failure(s)")
+    sys.exit(1)
+print("all checks passed")
