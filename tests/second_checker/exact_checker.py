@@ -1083,7 +1083,9 @@ def objective_of(cert):
         return obj, get_nonneg(cert, 'delta2'), get_nonneg(cert, 'dmax2'), None, None
     if obj not in ('min_delta', 'min_dmax', 'weighted'):
         raise Refused("a lower bound has objective min_delta, min_dmax or weighted")
-    lb = get_nonneg(cert, 'lower_bound')
+    if 'lower_bound' not in cert:
+        raise Refused("'lower_bound' is required")
+    lb = parse_number(cert['lower_bound'], 'lower_bound')  # a negative claim is trivially true
     if obj == 'min_delta':
         forbid(cert, ('delta2', 'lambda'), 'objective min_delta')
         return obj, None, get_nonneg(cert, 'dmax2'), None, lb

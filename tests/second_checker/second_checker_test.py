@@ -60,6 +60,22 @@ def verifier(path):
 
 
 # ---------------------------------------------------------------------------------------
+# 0. The exact PSD decision on the adversarial matrices of fixtures/psd (both programs)
+# ---------------------------------------------------------------------------------------
+psd_dir = os.path.join(source, "fixtures", "psd")
+for name in sorted(os.listdir(psd_dir)):
+    if not name.endswith(".txt") or name.startswith("bad_"):
+        continue
+    with open(os.path.join(psd_dir, name)) as f:
+        rows = [ln.split("#")[0].split() for ln in f]
+    m = [[exact_checker.parse_number(x, name) for x in r] for r in rows if r]
+    ok, why = exact_checker.is_psd_rational(m)
+    mine = ("PD" if why.startswith("PD") else "PSD") if ok else "NOT_PSD"
+    r = subprocess.run([verify, "psd", os.path.join(psd_dir, name)], stdout=subprocess.PIPE, text=True)
+    theirs = (r.stdout.split() or ["?"])[0]
+    note(mine == theirs, f"psd {name}: second checker {mine}, lpvid-verify {theirs}")
+
+# ---------------------------------------------------------------------------------------
 # 1. Certificates written by lpvid
 # ---------------------------------------------------------------------------------------
 
