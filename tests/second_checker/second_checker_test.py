@@ -40,7 +40,8 @@ def note(ok, what):
 
 
 def run_lpvid(args, exit_codes=(0, 1)):
-    r = subprocess.run([lpvid, *args, "--quiet"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    quiet = [] if args[0] in ("generate", "simulate") else ["--quiet"]
+    r = subprocess.run([lpvid, *args, *quiet], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     if r.returncode not in exit_codes:
         print(r.stdout[-3000:])
         note(False, f"lpvid {' '.join(args)}: exit {r.returncode}")
@@ -93,6 +94,17 @@ def out(name):
     return os.path.join(work, name)
 
 
+def exact_text(q):
+    """A terminating fraction as exact decimal text."""
+    s = "-" if q < 0 else ""
+    q = abs(q)
+    digits = 0
+    while (q * 10 ** digits).denominator != 1:
+        digits += 1
+    v = str((q * 10 ** digits).numerator).rjust(digits + 1, "0")
+    return s + (v[:-digits] + "." + v[-digits:] if digits else v)
+
+
 true_m = os.path.join(ex1, "true_model.json")
 init_m = os.path.join(ex1, "initial_model.json")
 data40 = os.path.join(ex1, "noise_free_n40.csv")
@@ -138,7 +150,8 @@ for seed in (3, 5, 8):
             certs.append(out("rnd3id.cert.class.json"))
 
 # Two records of Example 1 under one Delta.
-run_lpvid(["invalidate", "--data", data40, "--rows", "0:10", "--data", data40, "--rows", "20:32", "--model", true_m,
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:10", "--data", data40, "--rows", "20:32", "--x0", "1/10,-1/5",
+           "--model", true_m,
            "--certificate", out("two.cert.json")])
 want(out("two.cert.json"))
 want(out("two.cert.lower.json"))
@@ -149,6 +162,108 @@ run_lpvid(["identify", "--data", data40, "--rows", "0:14", "--model", init_m, "-
            "--certificate", out("ex1id.cert.json")])
 want(out("ex1id.cert.json"))
 want(out("ex1id.cert.class.json"))
+want(out("ex1id.cert.lower.json"))
+
+# An LTI SISO model with the additive structure (every correction is free: the convex class
+# case) and an unknown output offset, on data made here: the model's output plus 0.3 plus a
+# small deterministic disturbance, exact decimals.
+lti = os.path.join(source, "fixtures", "models", "lti_siso.json")
+with open(lti) as f:
+    lti_model = json.load(f)
+lti_model["offset"] = {"basis": ["1"]}
+lti_path = out("lti_offset.json")
+with open(lti_path, "w") as f:
+    json.dump(lti_model, f, indent=1)
+
+
+def lti_data(path, n, seed):
+    g = random.Random(seed)
+    A = [[Fraction(0), Fraction(1)], [Fraction(-3, 25), Fraction(7, 10)]]
+    x = [Fraction(0), Fraction(0)]
+    with open(path, "w") as f:
+        f.write("u,y\n")
+        for k in range(n):
+            u = Fraction(g.choice([-2, -1, 1, 2]), 2)
+            y = x[0] / 4 + x[1] / 2 + Fraction(3, 10) + Fraction(g.randint(-50, 50), 1000)
+            f.write(f"{exact_text(u)},{exact_text(y)}\n")
+            x = [A[0][0] * x[0] + A[0][1] * x[1], A[1][0] * x[0] + A[1][1] * x[1] + u]
+
+
+lti_d = out("lti.csv")
+lti_data(lti_d, 24, 7)
+run_lpvid(["identify", "--data", lti_d, "--model", lti_path, "--class-leaves", "2", "--certificate", out("ltiid.cert.json")])
+want(out("ltiid.cert.class.json"))
+# Whole-class invalidation at tight bounds (select-basis: cannot_explain carries a class certificate).
+run_lpvid(["select-basis", "--data", lti_d, "--model", lti, "--delta", "0.001", "--dmax", "0.001", "--no-prune",
+           "--certificate", out("ltisel.cert.json")], exit_codes=(0, 1, 5))
+for name in sorted(os.listdir(work)):
+    if name.startswith("ltisel") and name.endswith(".class.json"):
+        certs.append(out(name))
+# Most model features at once: scheduling on the model's own state ("@abs(x1-c)") beside a
+# data column, a state offset, the general uncertainty channel (nz = 2 > ny = 1), an input
+# delay, a dead zone before and a piecewise-linear map after the LPV part, x0 and a fixed offset.
+feat_model = {
+    "format": "lpvid-model/1", "states": 2, "inputs": 1, "outputs": 1, "scheduling": ["s", "p"],
+    "columns": {"u": ["u"], "y": ["y"], "rho": ["@abs(x1-0.5)", "p"]},
+    "initial": {"A": [{"basis": "1", "value": [["0.5", "0.1"], [0, "0.3"]]},
+                      {"basis": "s", "value": [["0.1", 0], [0, 0]]},
+                      {"basis": "p", "value": [[0, 0], ["0.05", 0]]}],
+                "B": [{"basis": "1", "value": [[1], ["0.5"]]}],
+                "C": [{"basis": "1", "value": [[1, "0.5"]]}],
+                "D": [{"basis": "s*p", "value": [["0.1"]]}]},
+    "uncertainty": {"structure": "general", "C1": [{"basis": "1", "value": [["0.1", 0], [0, "0.1"]]}],
+                    "D1": [{"basis": "p", "value": [["0.05"], [0]]}]},
+    "state_offset": {"basis": ["1"], "values": [["0.01", 0]]},
+    "offset": {"basis": ["1"], "values": [["0.05"]]},
+    "static": {"input_delay": 1, "input": {"kind": "dead_zone", "lower": "-0.1", "upper": "0.1"},
+               "output": {"kind": "piecewise_linear", "knots": [-1, 0, 1], "values": ["-1.2", 0, "0.9"]}},
+    "x0": ["0.2", "-0.1"]}
+feat_path = out("features.json")
+with open(feat_path, "w") as f:
+    json.dump(feat_model, f, indent=1)
+feat_d = out("features.csv")
+g = random.Random(11)
+with open(feat_d, "w") as f:
+    f.write("p,u,y\n")
+    for k in range(18):
+        f.write(f"{exact_text(Fraction(g.randint(0, 10), 10))},{exact_text(Fraction(g.randint(-10, 10), 10))},"
+                f"{exact_text(Fraction(g.randint(-100, 100), 100))}\n")
+run_lpvid(["invalidate", "--data", feat_d, "--model", feat_path, "--certificate", out("feat.cert.json")])
+want(out("feat.cert.json"))
+want(out("feat.cert.lower.json"))
+
+# A state-scheduled model (rho = x1 on the grid) with output corrections: a class claim over theta
+# alone is affine (the state does not depend on theta) and is decided; over theta and x0 it is not
+# polynomial, and the second checker refuses it outright.
+ss_model = {
+    "format": "lpvid-model/1", "states": 1, "inputs": 1, "outputs": 1, "scheduling": ["s"],
+    "columns": {"u": ["u"], "y": ["y"], "rho": ["@x1"]},
+    "initial": {"A": [{"basis": "1", "value": [["0.5"]]}, {"basis": "s", "value": [["0.2"]]}],
+                "B": [{"basis": "1", "value": [[1]]}], "C": [{"basis": "1", "value": [[1]]}]},
+    "correction": {"basis": ["1", "s"]},
+    "uncertainty": {"structure": "multiplicative", "weight": "0.1"}}
+ss_path = out("state_sched.json")
+with open(ss_path, "w") as f:
+    json.dump(ss_model, f, indent=1)
+ss_d = out("state_sched.csv")
+with open(ss_d, "w") as f:
+    f.write("u,y\n")
+    x = Fraction(0)
+    for k in range(16):
+        u = Fraction(g.choice([-1, 1, 2]), 4)
+        f.write(f"{exact_text(u)},{exact_text(Fraction(round(x * 1100), 1000) + Fraction(g.randint(-20, 20), 1000))}\n")
+        x = Fraction(round(((Fraction(1, 2) + Fraction(1, 5) * x) * x + u) * 10 ** 6), 10 ** 6)
+run_lpvid(["identify", "--data", ss_d, "--model", ss_path, "--class-leaves", "2", "--certificate", out("ssid.cert.json")])
+want(out("ssid.cert.json"))
+want(out("ssid.cert.class.json"))
+ssx0 = out("ssx0.cert.class.json")
+ss_model["uncertainty"] = {"structure": "additive", "weight": "0.1"}  # every unknown free: one leaf
+ss_add = out("state_sched_additive.json")
+with open(ss_add, "w") as f:
+    json.dump(ss_model, f, indent=1)
+run_lpvid(["identify", "--data", ss_d, "--model", ss_add, "--free-x0", "--class-leaves", "1", "--certificate",
+           out("ssx0.cert.json")])
+
 # ---------------------------------------------------------------------------------------
 # 2. The crafted x0 case: y_k = 0.9^k + 0.5^k, A = diag(0.9, 0.5), C = [1 0], x0 = 0,
 #    output correction basis {1}. theta with C_1 = [0 1] and x0 = [1 1] fits exactly, so any
@@ -158,21 +273,10 @@ x0dir = out("x0case")
 os.makedirs(x0dir, exist_ok=True)
 
 
-def exact_text(q):
-    """A terminating fraction as exact decimal text."""
-    s = "-" if q < 0 else ""
-    q = abs(q)
-    digits = 0
-    while (q * 10 ** digits).denominator != 1:
-        digits += 1
-    v = str((q * 10 ** digits).numerator).rjust(digits + 1, "0")
-    return s + (v[:-digits] + "." + v[-digits:] if digits else v)
-
-
 with open(os.path.join(x0dir, "data.csv"), "w") as f:
     f.write("u,y\n")
-    for k in range(40):
-        f.write(f"0,{exact_text(Fraction(9, 10) ** k + Fraction(1, 2) ** k)}\n")
+    for k in range(40):  # B = 0: u drives only the uncertainty channel z = 0.01 u
+        f.write(f"{1 if k % 3 else -1},{exact_text(Fraction(9, 10) ** k + Fraction(1, 2) ** k)}\n")
 x0model = {
     "format": "lpvid-model/1", "states": 2, "inputs": 1, "outputs": 1, "scheduling": [],
     "columns": {"u": ["u"], "y": ["y"]},
@@ -311,6 +415,7 @@ rng = random.Random(49)
 decided = {}          # claim/form -> count of decisions by the second checker
 unsupported = []
 agree = disagree = 0
+verdicts = {}         # agreed verdict -> count
 checked = 0
 pending = []
 for path in certs:
@@ -342,6 +447,7 @@ for path, label, _ in pending:
         continue
     if a == b:
         agree += 1
+        verdicts[b] = verdicts.get(b, 0) + 1
         print("agree:  " + line, flush=True)
     else:
         disagree += 1
@@ -358,6 +464,8 @@ needed = ["consistent/delta", "consistent/w", "not_a_witness/delta", "lower_boun
           "class_lower_bound/dual_delta_path", "consistent/delta/records", "lower_bound/dual_delta_path/records"]
 for kind in needed:
     note(decided.get(kind, 0) > 0, f"the second checker decided {kind} at least once ({decided.get(kind, 0)})")
+note(verdicts.get("holds", 0) >= 20 and verdicts.get("refused", 0) >= 20,
+     f"both verdicts agreed on many times ({verdicts})")
 note(len(unsupported) <= checked // 4, f"at most a quarter unsupported ({len(unsupported)} of {checked})")
 
 # ---------------------------------------------------------------------------------------
@@ -370,10 +478,18 @@ if os.path.exists(x0class):
     a, why_a = verifier(x0class)
     note(a == "refused", f"lpvid-verify refuses it too ({a}: {why_a}) -- needs the affinity check on main")
 else:
-    print("note: identify --free-x0 wrote no class certificate for the x0 case; nothing to refuse")
+    note(False, "identify --free-x0 wrote the class certificate of the x0 case")
+if os.path.exists(ssx0):
+    b, why_b = exact_checker.check_certificate(ssx0)
+    note(b == "refused" and "state" in why_b,
+         f"second checker refuses a class claim over x0 with state scheduling ({b}: {why_b})")
+    a, why_a = verifier(ssx0)
+    note(a == "refused", f"lpvid-verify refuses it too ({a}: {why_a}) -- needs the affinity check on main")
+else:
+    print("note: identify --free-x0 on the state-scheduled model wrote no class certificate")
 
 print(f"-- {len(certs)} certificates, {checked - len(certs)} mutations, {checked} checks: {agree} agree, "
-      f"{disagree} disagree, {len(unsupported)} unsupported; decided kinds: {decided}")
+      f"{disagree} disagree ({verdicts}), {len(unsupported)} unsupported; decided kinds: {decided}")
 for u in unsupported:
     print("   unsupported: " + u)
 print(f"-- {time.time() - start:.1f} s")
