@@ -232,6 +232,15 @@ run_lpvid(["invalidate", "--data", feat_d, "--model", feat_path, "--certificate"
 want(out("feat.cert.json"))
 want(out("feat.cert.lower.json"))
 
+# Two records, one theta (identify over records: the alternating method); with --free-x0 each
+# record has its own x0, which interacts with the output corrections (refused below).
+run_lpvid(["identify", "--data", lti_d, "--data", lti_d, "--rows", "4:20", "--x0", "0,1", "--model", lti_path,
+           "--class-leaves", "1", "--certificate", out("twoid.cert.json")])
+want(out("twoid.cert.class.json"))
+two_x0class = out("twox0.cert.class.json")
+run_lpvid(["identify", "--data", lti_d, "--data", lti_d, "--rows", "4:20", "--x0", "0,1", "--model", lti_path,
+           "--free-x0", "--class-leaves", "1", "--certificate", out("twox0.cert.json")])
+
 # A state-scheduled model (rho = x1 on the grid) with output corrections: a class claim over theta
 # alone is affine (the state does not depend on theta) and is decided; over theta and x0 it is not
 # polynomial, and the second checker refuses it outright.
@@ -461,7 +470,8 @@ for path in certs:
 
 needed = ["consistent/delta", "consistent/w", "not_a_witness/delta", "lower_bound/dual_delta_path",
           "lower_bound/dual_delta", "invalidated/dual_delta_path", "invalidated/dual_delta",
-          "class_lower_bound/dual_delta_path", "consistent/delta/records", "lower_bound/dual_delta_path/records"]
+          "class_lower_bound/dual_delta_path", "class_invalidated/dual_delta_path",
+          "class_lower_bound/dual_delta_path/records", "consistent/delta/records", "lower_bound/dual_delta_path/records"]
 for kind in needed:
     note(decided.get(kind, 0) > 0, f"the second checker decided {kind} at least once ({decided.get(kind, 0)})")
 note(verdicts.get("holds", 0) >= 20 and verdicts.get("refused", 0) >= 20,
@@ -469,24 +479,40 @@ note(verdicts.get("holds", 0) >= 20 and verdicts.get("refused", 0) >= 20,
 note(len(unsupported) <= checked // 4, f"at most a quarter unsupported ({len(unsupported)} of {checked})")
 
 # ---------------------------------------------------------------------------------------
-# 5. The x0 case
+# 5. Class claims whose residual is not affine in the unknowns
 # ---------------------------------------------------------------------------------------
+
+
+def refused_by_both(path, needle, what):
+    """A class claim whose residual is not affine in its unknowns: the second checker must refuse
+    it for that reason; lpvid-verify must refuse it too (it needs the affinity check on main)."""
+    if not os.path.exists(path):
+        note(False, f"{what}: lpvid wrote {os.path.basename(path)}")
+        return
+    b, why_b = exact_checker.check_certificate(path)
+    note(b == "refused" and needle in why_b, f"second checker refuses {what} ({b}: {why_b})")
+    a, why_a = verifier(path)
+    note(a == "refused", f"lpvid-verify refuses {what} ({a}: {why_a}) -- needs the affinity check on main")
+
+
+refused_by_both(x0class, "not affine", "the class claim over a free x0 with an output correction")
 if os.path.exists(x0class):
-    b, why_b = exact_checker.check_certificate(x0class)
-    note(b == "refused" and "not affine" in why_b,
-         f"second checker refuses the class claim over a free x0 with an output correction ({b}: {why_b})")
-    a, why_a = verifier(x0class)
-    note(a == "refused", f"lpvid-verify refuses it too ({a}: {why_a}) -- needs the affinity check on main")
-else:
-    note(False, "identify --free-x0 wrote the class certificate of the x0 case")
-if os.path.exists(ssx0):
-    b, why_b = exact_checker.check_certificate(ssx0)
-    note(b == "refused" and "state" in why_b,
-         f"second checker refuses a class claim over x0 with state scheduling ({b}: {why_b})")
-    a, why_a = verifier(ssx0)
-    note(a == "refused", f"lpvid-verify refuses it too ({a}: {why_a}) -- needs the affinity check on main")
-else:
-    print("note: identify --free-x0 on the state-scheduled model wrote no class certificate")
+    # The claim is false, not merely unproven: C_1 = [0 1] and x0 = [1 1] explain the data exactly.
+    with open(x0class) as f:
+        claim_lb = exact_checker.parse_number(json.load(f)["lower_bound"], "lower_bound")
+    fit = copy.deepcopy(x0model)
+    fit["initial"]["C"] = [{"basis": "1", "value": [[1, 1]]}]
+    fit["x0"] = [1, 1]
+    fm = exact_checker.Model(fit)
+    with open(os.path.join(x0dir, "data.csv"), "rb") as f:
+        sha = exact_checker.hashlib.sha256(f.read()).hexdigest()
+    rec = exact_checker.read_data(os.path.join(x0dir, "data.csv"), sha, None, None, fm, "x0 data")
+    r = exact_checker.simulate(fm, rec, fm.x0)["r"]
+    note(claim_lb > 0 and all(v == 0 for row in r for v in row),
+         f"the x0 class claim (lower end {float(claim_lb):.6g}) is false: theta with C_1 = [0 1], x0 = [1 1] "
+         f"leaves the residual exactly 0")
+refused_by_both(two_x0class, "not affine", "a two-record class claim over free x0 with output corrections")
+refused_by_both(ssx0, "state", "a class claim over x0 with state scheduling")
 
 print(f"-- {len(certs)} certificates, {checked - len(certs)} mutations, {checked} checks: {agree} agree, "
       f"{disagree} disagree ({verdicts}), {len(unsupported)} unsupported; decided kinds: {decided}")
