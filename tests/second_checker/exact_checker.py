@@ -334,7 +334,7 @@ def eval_terms(terms, rho, rows, cols):
     return m
 
 
-_STATE_FORM = re.compile(r'^@(?:(x)(\d+)|(abs|sqrt|hinge|sqrtpos)\(x(\d+)\s*(?:([+-])\s*([0-9.]+(?:/[0-9+-]+)?))?\))$')
+_STATE_FORM = re.compile(r"^@(?:(x)([1-9]\d*)|(abs|sqrt|hinge|sqrtpos)\(x([1-9]\d*)\s*(?:([+-])\s*([0-9.]+(?:/[0-9+-]+)?))?\))$")
 GRID_BITS = 32
 
 

@@ -232,6 +232,18 @@ run_lpvid(["invalidate", "--data", feat_d, "--model", feat_path, "--certificate"
 want(out("feat.cert.json"))
 want(out("feat.cert.lower.json"))
 
+# x0 alone as the unknown of a multiplicative model (x0 moves z: a box, branch and bound); the
+# model's own x0 is not zero, so the class's x0 entries must be read as changes of it.
+mx0 = copy.deepcopy(lti_model)
+mx0.pop("offset")
+mx0.update({"correction": {"basis": []}, "uncertainty": {"structure": "multiplicative", "weight": "0.1"},
+            "x0": ["0.5", "-0.25"]})
+with open(out("mx0.json"), "w") as f:
+    json.dump(mx0, f, indent=1)
+run_lpvid(["identify", "--data", lti_d, "--model", out("mx0.json"), "--free-x0", "--class-leaves", "3",
+           "--certificate", out("mx0.cert.json")])
+want(out("mx0.cert.class.json"))
+
 # Two records, one theta (identify over records: the alternating method); with --free-x0 each
 # record has its own x0, which interacts with the output corrections (refused below).
 run_lpvid(["identify", "--data", lti_d, "--data", lti_d, "--rows", "4:20", "--x0", "0,1", "--model", lti_path,
@@ -513,6 +525,44 @@ if os.path.exists(x0class):
          f"leaves the residual exactly 0")
 refused_by_both(two_x0class, "not affine", "a two-record class claim over free x0 with output corrections")
 refused_by_both(ssx0, "state", "a class claim over x0 with state scheduling")
+
+# ---------------------------------------------------------------------------------------
+# 6. The command line: exit 0 / 1 / 3 and --data
+# ---------------------------------------------------------------------------------------
+
+
+def cli(*args):
+    r = subprocess.run([sys.executable, os.path.join(HERE, "exact_checker.py"), *args], stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True)
+    return r.returncode, r.stdout.strip()
+
+
+if os.path.exists(out("ex1.cert.json")):
+    moved = out("moved")
+    os.makedirs(moved, exist_ok=True)
+    with open(out("ex1.cert.json")) as f:
+        c = json.load(f)
+    c["data"]["file"] = "nowhere/noise_free_n40.csv"
+    with open(os.path.join(moved, "ex1.cert.json"), "w") as f:
+        json.dump(c, f)
+    code, text = cli(os.path.join(moved, "ex1.cert.json"), "--data", data40)
+    note(code == 0 and text.startswith("holds"), f"CLI with --data: exit {code}, {text[:80]}")
+    code, text = cli(os.path.join(moved, "ex1.cert.json"))
+    note(code == 1 and text.startswith("refused"), f"CLI without the data file: exit {code}, {text[:80]}")
+    c["data"]["file"] = os.path.abspath(data40)
+    c["delta2"] = scaled_text(c["delta2"], Fraction(1, 2))
+    with open(os.path.join(moved, "low.cert.json"), "w") as f:
+        json.dump(c, f)
+    code, text = cli(os.path.join(moved, "low.cert.json"))
+    note(code == 1 and text.startswith("refused: consistent does not hold"), f"CLI on a false claim: exit {code}, {text[:80]}")
+if os.path.exists(out("ltiid.cert.class.json")):
+    with open(out("ltiid.cert.class.json")) as f:
+        c = json.load(f)
+    c["model"]["static"] = {"output": {"kind": "abs"}}  # a class claim through an output map: not decided
+    with open(os.path.join(work, "class_output_map.json"), "w") as f:
+        json.dump(c, f)
+    code, text = cli(os.path.join(work, "class_output_map.json"))
+    note(code == 3 and text.startswith("unsupported"), f"CLI on an unsupported feature: exit {code}, {text[:80]}")
 
 print(f"-- {len(certs)} certificates, {checked - len(certs)} mutations, {checked} checks: {agree} agree, "
       f"{disagree} disagree ({verdicts}), {len(unsupported)} unsupported; decided kinds: {decided}")
