@@ -25,6 +25,7 @@ The mathematics (paper: "Robust identification and invalidation of LPV systems")
                                per leaf of a region tree, with the bilinear term bounded.
 """
 
+import csv
 import hashlib
 import json
 import math
@@ -584,8 +585,8 @@ def read_data(path, sha256, names, rows, model, what):
     else:
         if not lines:
             raise Refused(f"{what}: empty data file")
-        header = [h.strip() for h in lines[0].split(',')]
-        table = [[c.strip() for c in ln.split(',')] for ln in lines[1:]]
+        parsed = [[c.strip() for c in row] for row in csv.reader(lines)]
+        header, table = parsed[0], parsed[1:]
     for i, r in enumerate(table):
         if len(r) != len(header):
             raise Refused(f"{what}: row {i} has {len(r)} fields, header {len(header)}")
@@ -868,8 +869,11 @@ def signal_toeplitz(s, n, p):
 
 def paper_tz(model, sim, n):
     """T_z = T_G12 T_u (eq. 2 and 4): G12 the map u -> z of the model from rest."""
-    if model.state_rho or model.so_basis or not model.gin.identity() or model.delay:
-        raise Unsupported("toeplitz mode paper with state scheduling, a state offset or static input blocks")
+    # With static input blocks G12 is driven by u' (docs/design.md 5.5: Theorem 2.1 applies with
+    # u replaced by u'). Along a state-dependent rho, or with a state offset, the docs do not say
+    # what T_G12 is.
+    if model.state_rho or model.so_basis:
+        raise Unsupported("toeplitz mode paper with state scheduling or a state offset")
     nx, nu, nz = model.nx, model.nu, model.nz
     u = sim['up']
     rhos = sim['rho']
@@ -1413,7 +1417,7 @@ def check_certificate(path, data_override=None):
         return 'refused', str(e)
     except Unsupported as e:
         return 'unsupported', str(e)
-    except (ValueError, UnicodeDecodeError, json.JSONDecodeError) as e:
+    except (ValueError, UnicodeDecodeError, json.JSONDecodeError, OSError) as e:
         return 'refused', f"unreadable: {e}"
 
 
