@@ -4,8 +4,11 @@
 Written from the documentation only (docs/certificates.md, docs/certificate_format.md,
 docs/certificate.schema.json, docs/dual_certificates.md, docs/class_lower_bound.md,
 docs/several_records.md, docs/model.schema.json, docs/design.md), in Python's standard
-library and exact fractions. It shares no code with lpvid-verify: the point is a second
-route to the same verdicts, so that a bug in one of them shows up as a disagreement.
+library and exact fractions; where those pages are silent on the model's simulation (the
+additive channel driven by the delayed, mapped input u', the uncertainty channel taken before
+the output map, the 2^-32 grid of state scheduling) the header comments of src/model were read,
+never its code. It shares no code with lpvid-verify: the point is a second route to the same
+verdicts, so that a bug in one of them shows up as a disagreement.
 
 It is meant for SMALL certificates (tens of samples): every matrix is built densely and
 every PSD decision is a fraction-free elimination on integers.
