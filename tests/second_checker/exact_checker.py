@@ -1241,7 +1241,7 @@ def stack(sims, key):
     return [v for s in sims for row in s[key] for v in row]
 
 
-def affine_build(model, recs, keys):
+def affine_build(model, recs, keys, names):
     """z0, r0 and the columns Jz_i, Jr_i by simulation, with affinity checked exactly.
     The signals are polynomials of degree <= 2 in p when the state does not depend on p
     nonlinearly and the output map is the identity (enforced before), so zero second
@@ -1262,7 +1262,7 @@ def affine_build(model, recs, keys):
                 both = stack(s, sig)
                 if any(a - b - c + d != 0 for a, b, c, d in zip(both, ui[i], ui[j], base_v)):
                     raise Refused(f"the residual is not affine in the unknowns: parameters "
-                                  f"{keys[i]} and {keys[j]} interact ({sig})")
+                                  f"{names[i]} and {names[j]} interact (in {sig})")
     return base, Jz, Jr
 
 
@@ -1305,7 +1305,7 @@ def class_check(cert, model, recs, ns):
     radius = num_vector(cls.get('radius'), P, 'class.radius')
     if any(r < 0 for r in radius):
         raise Refused("class.radius must be >= 0")
-    base, Jz, Jr = affine_build(model, recs, keys)
+    base, Jz, Jr = affine_build(model, recs, keys, names)
     for i in free:
         if any(Jz[i]):
             return False, f"free parameter {names[i]} moves z"
