@@ -507,36 +507,45 @@ note(len(unsupported) <= checked // 4, f"at most a quarter unsupported ({len(uns
 # ---------------------------------------------------------------------------------------
 
 
-def refused_by_both(path, needle, what):
-    """A class claim whose residual is not affine in its unknowns: the second checker must refuse
-    it for that reason; lpvid-verify must refuse it too (it needs the affinity check on main)."""
-    if not os.path.exists(path):
-        note(False, f"{what}: lpvid wrote {os.path.basename(path)}")
-        return
-    b, why_b = exact_checker.check_certificate(path)
-    note(b == "refused" and needle in why_b, f"second checker refuses {what} ({b}: {why_b})")
-    a, why_a = verifier(path)
-    note(a == "refused", f"lpvid-verify refuses {what} ({a}: {why_a}) -- needs the affinity check on main")
+FALSE_CLAIMS = os.path.join(source, "fixtures", "false_class_claims")
 
 
-refused_by_both(x0class, "not affine", "the class claim over a free x0 with an output correction")
-if os.path.exists(x0class):
+def refused_by_both(path, needle, what, fixture=None):
+    """A class claim whose residual is not affine in its unknowns: lpvid must not write it (it says
+    why it gives no class bound); the copy an earlier lpvid wrote (`fixture`, when there is one) is
+    refused by the second checker for that reason and by lpvid-verify."""
+    note(not os.path.exists(path), f"{what}: lpvid writes no such class claim ({os.path.basename(path)})")
+    for p in ([path] if os.path.exists(path) else []) + ([fixture] if fixture else []):
+        b, why_b = exact_checker.check_certificate(p)
+        note(b == "refused" and needle in why_b, f"second checker refuses {what} ({b}: {why_b})")
+        a, why_a = verifier(p)
+        note(a == "refused", f"lpvid-verify refuses {what} ({a}: {why_a})")
+
+
+x0_fixture = os.path.join(FALSE_CLAIMS, "output_correction_x0", "identify.class.json")
+refused_by_both(x0class, "not affine", "the class claim over a free x0 with an output correction", x0_fixture)
+if os.path.exists(x0_fixture):
     # The claim is false, not merely unproven: C_1 = [0 1] and x0 = [1 1] explain the data exactly.
-    with open(x0class) as f:
+    x0data = os.path.join(FALSE_CLAIMS, "output_correction_x0", "data.csv")
+    with open(x0_fixture) as f:
         claim_lb = exact_checker.parse_number(json.load(f)["lower_bound"], "lower_bound")
-    fit = copy.deepcopy(x0model)
+    with open(os.path.join(FALSE_CLAIMS, "output_correction_x0", "model.json")) as f:
+        fit = exact_checker.load_json_exact(f.read())
     fit["initial"]["C"] = [{"basis": "1", "value": [[1, 1]]}]
     fit["x0"] = [1, 1]
     fm = exact_checker.Model(fit)
-    with open(os.path.join(x0dir, "data.csv"), "rb") as f:
+    with open(x0data, "rb") as f:
         sha = exact_checker.hashlib.sha256(f.read()).hexdigest()
-    rec = exact_checker.read_data(os.path.join(x0dir, "data.csv"), sha, None, None, fm, "x0 data")
+    rec = exact_checker.read_data(x0data, sha, None, None, fm, "x0 data")
     r = exact_checker.simulate(fm, rec, fm.x0)["r"]
-    note(claim_lb > 0 and all(v == 0 for row in r for v in row),
+    note(claim_lb > 0 and all(abs(v) < Fraction(1, 10**12) for row in r for v in row),
          f"the x0 class claim (lower end {float(claim_lb):.6g}) is false: theta with C_1 = [0 1], x0 = [1 1] "
-         f"leaves the residual exactly 0")
+         f"leaves the residual at the data's rounding")
 refused_by_both(two_x0class, "not affine", "a two-record class claim over free x0 with output corrections")
-refused_by_both(ssx0, "state", "a class claim over x0 with state scheduling")
+refused_by_both(ssx0, "state", "a class claim over x0 with state scheduling",
+                os.path.join(FALSE_CLAIMS, "state_scheduling_x0", "identify.class.json"))
+refused_by_both(ssx0, "not affine", "a select-basis class invalidation over x0 with an output correction",
+                os.path.join(FALSE_CLAIMS, "output_correction_x0", "select_basis.class.json"))
 
 # ---------------------------------------------------------------------------------------
 # 6. The command line: exit 0 / 1 / 3 and --data
