@@ -1106,6 +1106,11 @@ def objective_of(cert):
     return obj, None, None, lam, lb
 
 
+# Every bound the last checks computed (one per dual point or leaf; the margin for a fixed
+# (delta, dmax)), exact: the test builds claims just above and just below them.
+BOUNDS = []
+
+
 def bound_holds(obj, delta2, dmax2, lam, lb, trU, beta, Nsig):
     """From  t*trU + s*Nsig >= beta  at every feasible (t = delta^2, s = dmax^2 >= 0):
     decide the claim. Returns (holds, text)."""
@@ -1124,6 +1129,7 @@ def bound_holds(obj, delta2, dmax2, lam, lb, trU, beta, Nsig):
         else:
             b = beta * min(lam / trU, (1 - lam) / Nsig)
     b = max(b, F0)
+    BOUNDS.append(b)
     return lb <= b, f"bound {float(b):.10g} vs claimed {float(lb):.10g}"
 
 

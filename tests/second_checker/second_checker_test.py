@@ -341,7 +341,7 @@ def dual_points(cert):
     return []
 
 
-def mutations(cert, rng):
+def mutations(cert, rng, cert_path):
     """(name, mutated certificate) pairs; each changes one thing."""
     out_ = []
 
@@ -378,6 +378,18 @@ def mutations(cert, rng):
             c["claim"] = "not_a_witness"
         if claim == "consistent":
             add("delta2/2+not_a_witness", lower_and_flip)
+    if claim == "class_lower_bound":
+        # Claims at the exact lowest leaf bound the second checker computes: one a part in 10^9
+        # below it holds, one a part in 10^9 above it does not, for any correct checker (the
+        # verifier's square-root upper bounds are looser than this one's, never tighter). A
+        # checker whose penalty terms are too small (an epsilon halved) accepts the second.
+        exact_checker.BOUNDS.clear()
+        holds, _ = exact_checker.check_certificate(cert_path)
+        if holds == "holds" and exact_checker.BOUNDS and min(exact_checker.BOUNDS) > 0:
+            lowest = min(exact_checker.BOUNDS)
+            for name, f in (("at the lowest leaf - 1e-9", 1 - Fraction(1, 10**9)),
+                            ("at the lowest leaf + 1e-9", 1 + Fraction(1, 10**9))):
+                add(name, lambda c, f=f: c.__setitem__("lower_bound", exact_text_any(lowest * f)))
     if "lower_bound" in cert:
         add("lower_bound*2", lambda c: c.__setitem__("lower_bound", scaled_text(c["lower_bound"], 2))
             if exact_checker.parse_number(c["lower_bound"], "lb") != 0 else c.__setitem__("lower_bound", "1/100"))
@@ -453,7 +465,7 @@ for path in certs:
     pending.append((path, os.path.basename(path), None))
     with open(path) as f:
         cert = json.load(f)
-    for name, mut in mutations(cert, rng):
+    for name, mut in mutations(cert, rng, path):
         mpath = os.path.join(os.path.dirname(path), os.path.basename(path)[:-5] + f".mut.{name.replace('/', '_')}.json")
         with open(mpath, "w") as f:
             json.dump(mut, f)
