@@ -67,9 +67,10 @@ TEST_F(OracleSurvivor, DetachedSwapperIsKilledAndNeverConfirms) {
     // the case's swapper is among the processes killed after its command ended
     const std::string pid = read_text(file("pids/" + name + ".pid"));
     ASSERT_FALSE(pid.empty());
-    ASSERT_TRUE(c.contains("survivors")) << c.dump();
+    EXPECT_TRUE(c.contains("survivors")) << c.dump();
     bool named = false;
-    for (const auto& s : c["survivors"]) named = named || s.get<std::string>().rfind(std::to_string(std::stol(pid)) + " (", 0) == 0;
+    if (c.contains("survivors"))
+      for (const auto& s : c["survivors"]) named = named || s.get<std::string>().rfind(std::to_string(std::stol(pid)) + " (", 0) == 0;
     EXPECT_TRUE(named) << c["survivors"].dump() << " lacks the swapper " << pid;
     // and it is gone
     EXPECT_TRUE(::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) << "swapper " << pid << " still runs";
