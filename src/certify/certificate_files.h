@@ -9,6 +9,7 @@
 /// "<stem>.lower.json" (a.cert.json → a.cert.lower.json), which
 /// `lpvid jobs merge` looks for.
 
+#include <map>
 #include <string>
 
 #include "certify/certify.h"
@@ -24,13 +25,19 @@ struct CertificateFiles {
   std::string lower;        ///< "lower_bound"
 };
 
+/// The bytes of written files, by path.
+using WrittenFiles = std::map<std::string, std::string>;
+
 /// Writes b.certificate at `certificate_path` and b.lower.certificate at
 /// lower_certificate_path(certificate_path), those that exist. Throws
 /// IoError when a file cannot be written, InputError when a certificate has
-/// no data file to name (data made in memory).
-CertificateFiles write_certificates(const CertifiedBounds& b, const std::string& certificate_path);
+/// no data file to name (data made in memory). `written` (if given) gets
+/// each file's path and bytes, for a caller that checks later that the
+/// files still hold them.
+CertificateFiles write_certificates(const CertifiedBounds& b, const std::string& certificate_path,
+                                    WrittenFiles* written = nullptr);
 
-/// Writes one certificate at `path` (placed_at); throws like write_certificates.
-void write_certificate_at(const Certificate& c, const std::string& path);
+/// Writes one certificate at `path` (placed_at); throws and records like write_certificates.
+void write_certificate_at(const Certificate& c, const std::string& path, WrittenFiles* written = nullptr);
 
 }  // namespace lpvid

@@ -257,23 +257,29 @@ void stack_into(const std::vector<LoadedRecord>& recs, Inputs& in) {
   set_initial_states(recs, in);
 }
 
-}  // namespace
+/// The bytes of the file at a path (read from disk, or held in memory).
+using FileBytes = std::function<std::string(const std::string& path)>;
 
-Inputs load_inputs(const CommonOptions& o) {
+/// load_inputs with every input file's bytes from `bytes_of`.
+Inputs load_inputs_from(const CommonOptions& o, const FileBytes& bytes_of) {
   // outputs first: a run that cannot write its report fails now, not at its end
   check_output_file(o.report_path, "report");
   check_output_file(o.certificate_path, "certificate");
   check_output_file(o.write_sdpa, "SDPA program");
   const std::vector<RecordOption> wanted = data_records(o);
   Inputs in;
-  in.model_q = read_model_file<Rational>(o.model_path);
-  in.model_d = read_model_file<double>(o.model_path);
+  const std::string model_text = bytes_of(o.model_path);
+  in.model_q = parse_model_json<Rational>(model_text, o.model_path);
+  in.model_d = parse_model_json<double>(model_text, o.model_path);
   std::vector<LoadedRecord> recs;
   std::map<std::string, DataTable> files;  // several windows of one file (a joint job): read and hashed once
   for (const RecordOption& r : wanted) {
     auto it = files.find(r.path);
-    if (it == files.end())
-      it = files.emplace(r.path, o.names.empty() ? read_data_table(r.path) : read_data_table(r.path, o.names)).first;
+    if (it == files.end()) {
+      const std::optional<std::vector<std::string>> names =
+          o.names.empty() ? std::nullopt : std::optional<std::vector<std::string>>(o.names);
+      it = files.emplace(r.path, parse_data_table(bytes_of(r.path), r.path, names)).first;
+    }
     recs.push_back(load_record(r, o, it->second, in.model_q, in.model_d));
   }
   stack_into(recs, in);
@@ -284,6 +290,20 @@ Inputs load_inputs(const CommonOptions& o) {
   in.mode = toeplitz_mode_from_string(o.toeplitz);
   in.objective = make_objective(o);
   return in;
+}
+
+}  // namespace
+
+Inputs load_inputs(const CommonOptions& o) {
+  return load_inputs_from(o, [](const std::string& path) { return read_text_file(path); });
+}
+
+Inputs load_inputs(const CommonOptions& o, const HeldFiles& held) {
+  return load_inputs_from(o, [&held](const std::string& path) {
+    const auto it = held.find(path);
+    if (it == held.end()) throw InputError(path + ": not among the files held in memory");
+    return it->second;
+  });
 }
 
 std::string data_lines(const CommonOptions& o, const Inputs& in) {

@@ -4,6 +4,7 @@
 /// common options of docs/design.md §11.2. Defaults live here, in one place (docs/design.md §13.7).
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -98,6 +99,16 @@ CertifyOptions certify_options(const CommonOptions& o, const Inputs& in);
 
 /// Reads and checks everything (throws InputError with file/line/field).
 Inputs load_inputs(const CommonOptions& o);
+
+/// Bytes held in memory for files, by path.
+using HeldFiles = std::map<std::string, std::string>;
+
+/// The same from bytes in memory: every file load_inputs would read (the
+/// model, each --data) is taken from `held` under its path, never opened;
+/// the data references carry the sha256 of those bytes. A path not held is
+/// an InputError. `lpvid oracle` computes its reference this way, so that a
+/// file the program under test can reach never feeds it.
+Inputs load_inputs(const CommonOptions& o, const HeldFiles& held);
 
 /// Parses a row window "B:E" (0-based, E exclusive, 0 <= B < E) given to
 /// option `flag` (--rows, --window, --test-rows, ...); throws InputError

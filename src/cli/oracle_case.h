@@ -4,17 +4,23 @@
 /// the exact check of the answer's witness, and the verdict (oracle/judge.h)
 /// with its evidence re-checked from the file.
 ///
-/// The command under test never touches what it is judged on. lpvid reads
-/// every case into memory (CaseCopy) before any command runs; just before a
-/// case's command starts, lpvid writes
-///   <work>/<case>.lpvid/  lpvid's copy (task.json, data.csv, model.json),
-///                         its certificates and any not_a_witness file;
+/// The command under test never touches what it is judged on. lpvid holds
+/// every case in memory (CaseCopy) before any command runs; just before a
+/// case's command starts, lpvid writes, each folder emptied first,
+///   <work>/<case>.lpvid/  lpvid's copy (task.json, data.csv, model.json,
+///                         truth.json of a random case), its certificates
+///                         and any not_a_witness file;
 ///   <work>/<case>/        the command's copy ({dir}, {data}, {model},
-///                         {task}), emptied first, where it writes {out};
-/// lpvid certifies from its own copy, and after the command ends both
-/// copies are compared byte for byte with the memory: a changed input makes
-/// the case "tampered" (an error of the command, never a verdict on its
-/// answer).
+///                         {task}), where it writes {out};
+/// lpvid certifies from the bytes in memory (a file is written for the
+/// certificates to name, never read back to compute), keeps the bytes of
+/// every file it writes, and judges on them: when the command has ended and
+/// again when the verdict is found, every such file is compared byte for
+/// byte with the memory, and a difference makes the case "tampered" (an
+/// error of the command, never a verdict on its answer). So does a process
+/// of the command still running after it ended (killed, and named in the
+/// report: outside_command.h). The evidence of every verdict that names a
+/// certificate is checked once more from its file by the verifier.
 
 #include <map>
 #include <string>
@@ -25,10 +31,12 @@
 namespace lpvid::cli {
 
 /// lpvid's copy of a case: its name and the bytes of task.json, data.csv and
-/// model.json (the task naming "data.csv" and "model.json").
+/// model.json (the task naming "data.csv" and "model.json"), and files only
+/// lpvid's copy gets (a random case's truth.json).
 struct CaseCopy {
   std::string name;
   std::map<std::string, std::string> files;
+  std::map<std::string, std::string> lpvid_only;
 };
 
 /// Reads the case in `folder`: task.json and the data and model it names.

@@ -47,8 +47,8 @@ std::vector<CaseCopy> given_cases(const std::string& cases_dir) {
   return out;
 }
 
-/// Random case i (0-based), made just before it runs: written into lpvid's
-/// own folder for it (with the generating system, truth.json) and read back.
+/// Random case i (0-based), made in memory just before it runs; the
+/// generating system (truth.json) goes to lpvid's copy only.
 std::string random_case_name(size_t i) {
   char name[32];
   std::snprintf(name, sizeof name, "case-%04zu", i + 1);
@@ -56,13 +56,11 @@ std::string random_case_name(size_t i) {
 }
 
 CaseCopy random_case(const OracleArgs& a, const RandomTaskOptions& options, size_t i) {
-  const std::string name = random_case_name(i);
-  const std::string mine = (fs::path(a.run.work) / (name + ".lpvid")).string();
-  std::error_code ec;
-  fs::remove_all(mine, ec);
-  write_case_folder(mine, random_oracle_case(a.seed + static_cast<uint64_t>(i), options));
-  CaseCopy copy = read_case_copy(mine);
-  copy.name = name;
+  CaseCopy copy;
+  copy.name = random_case_name(i);
+  copy.files = case_folder_files(random_oracle_case(a.seed + static_cast<uint64_t>(i), options));
+  copy.lpvid_only["truth.json"] = copy.files.at("truth.json");
+  copy.files.erase("truth.json");
   return copy;
 }
 
@@ -101,10 +99,13 @@ int run_oracle(const OracleArgs& a) {
   }
   const double seconds = elapsed();
   std::cout << case_table(reports);
-  for (const CaseReport& r : reports)
+  for (const CaseReport& r : reports) {
     if (r.judgement.verdict != OracleVerdict::kConfirmed)
       std::cout << "  " << r.name << " " << to_string(r.judgement.verdict) << ": " << r.judgement.reason
                 << (r.evidence_check.empty() ? "" : " [lpvid-verify: " + r.evidence_check + "]") << "\n";
+    if (!r.survivors.empty())
+      std::cout << "  " << r.name << " survivors killed after the command ended: " << survivor_list(r.survivors) << "\n";
+  }
   std::cout << "time " << seconds << " s; each refutation names a certificate that 'lpvid-verify certificate' accepts\n";
   write_json(a.report, oracle_report_json(reports, a.run.command, seconds, a.strict));
   if (!a.junit.empty()) write_text_file(a.junit, junit_xml(reports, seconds, a.strict), "JUnit report");

@@ -49,16 +49,19 @@ RandomTaskOptions random_task_options(const RandomCaseFlags& f) {
   return o;
 }
 
+std::map<std::string, std::string> case_folder_files(const GeneratedCase& c) {
+  return {{c.task.data, csv_text(experiment_columns(c.random.model.columns, c.random.exp))},
+          {c.task.model, write_model_json(c.random.model)},
+          {"truth.json", write_model_json(c.random.truth)},
+          {"task.json", task_json(c.task)}};
+}
+
 void write_case_folder(const std::string& folder, const GeneratedCase& c) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(folder, ec);
   if (ec) throw IoError("cannot create the case folder '" + folder + "': " + ec.message());
-  const fs::path dir(folder);
-  write_csv((dir / c.task.data).string(), experiment_columns(c.random.model.columns, c.random.exp));
-  write_model_file((dir / c.task.model).string(), c.random.model);
-  write_model_file((dir / "truth.json").string(), c.random.truth);
-  write_text_file((dir / "task.json").string(), task_json(c.task), "task");
+  for (const auto& [name, text] : case_folder_files(c)) write_text_file((fs::path(folder) / name).string(), text, "case file");
 }
 
 }  // namespace lpvid::cli

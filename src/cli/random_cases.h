@@ -6,6 +6,7 @@
 ///   truth.json  the system that generated the data (Δ and noise aside)
 ///   task.json   the task (oracle/task.h)
 
+#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -27,6 +28,9 @@ void add_random_case_flags(CLI::App& cmd, RandomCaseFlags& f);
 
 /// The generator's options from the flags (throws InputError for bad values).
 RandomTaskOptions random_task_options(const RandomCaseFlags& f);
+
+/// The four files of the case, by name, as bytes.
+std::map<std::string, std::string> case_folder_files(const GeneratedCase& c);
 
 /// Writes the four files of the case into `folder` (created if needed).
 void write_case_folder(const std::string& folder, const GeneratedCase& c);

@@ -14,7 +14,11 @@ DataReference DataReference::rows(long begin, long end) const {
 }
 
 DataTable read_data_table(const std::string& path, const std::optional<std::vector<std::string>>& names) {
-  const std::string bytes = read_text_file(path);
+  return parse_data_table(read_text_file(path), path, names);
+}
+
+DataTable parse_data_table(const std::string& bytes, const std::string& path,
+                           const std::optional<std::vector<std::string>>& names) {
   DataTable out{parse_table(bytes, path, names), DataReference{}};
   out.reference.file = path;
   out.reference.sha256 = sha256_hex(bytes);

@@ -34,4 +34,10 @@ struct DataTable {
 /// `names`) and the sha256 of the same bytes. Throws InputError like read_table.
 DataTable read_data_table(const std::string& path, const std::optional<std::vector<std::string>>& names = std::nullopt);
 
+/// The same for bytes already in memory that stand for the file `path`: the
+/// table is parsed from `bytes` and the sha256 is theirs, whatever the file
+/// holds now (the file is not opened).
+DataTable parse_data_table(const std::string& bytes, const std::string& path,
+                           const std::optional<std::vector<std::string>>& names = std::nullopt);
+
 }  // namespace lpvid

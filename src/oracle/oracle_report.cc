@@ -7,6 +7,12 @@
 
 namespace lpvid {
 
+std::string survivor_list(const std::vector<std::string>& survivors) {
+  std::string s;
+  for (const std::string& p : survivors) s += (s.empty() ? "" : ", ") + p;
+  return s;
+}
+
 OracleTotals totals_of(const std::vector<CaseReport>& cases) {
   OracleTotals t;
   for (const CaseReport& c : cases) {
@@ -127,6 +133,7 @@ nlohmann::ordered_json oracle_report_json(const std::vector<CaseReport>& cases, 
     e["outside_seconds"] = c.outside_seconds;
     e["outside_exit"] = c.outside_exit;
     e["outside_log"] = c.outside_log;
+    e["survivors"] = c.survivors;
     e["lpvid_seconds"] = c.lpvid_seconds;
     list.push_back(e);
   }

@@ -29,7 +29,13 @@ struct CaseReport {
   double outside_seconds = 0, lpvid_seconds = 0;
   int outside_exit = 0;
   std::string outside_log;
+  /// The command's processes still running after it ended, killed by lpvid
+  /// ("pid (name)"); any makes the case "tampered".
+  std::vector<std::string> survivors;
 };
+
+/// The survivors as one text: "12 (sleep), 13 (sh)".
+std::string survivor_list(const std::vector<std::string>& survivors);
 
 struct OracleTotals {
   int confirmed = 0, refuted = 0, bad_witness = 0, suboptimal = 0, undecided = 0, error = 0, tampered = 0;

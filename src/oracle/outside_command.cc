@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/input_error.h"
+#include "oracle/process_tree.h"
 
 namespace lpvid {
 
@@ -45,6 +46,8 @@ std::string substitute_placeholders(const std::string& command, const std::map<s
 CommandRun run_shell_command(const std::string& command, double timeout_seconds, const std::string& log_path) {
   CommandRun run;
   const auto start = std::chrono::steady_clock::now();
+  run.error = become_child_subreaper();
+  if (!run.error.empty()) return run;
   const int log = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (log < 0) {
     run.error = "cannot write the log '" + log_path + "': " + std::strerror(errno);
@@ -57,7 +60,7 @@ CommandRun run_shell_command(const std::string& command, double timeout_seconds,
     return run;
   }
   if (pid == 0) {  // child: only async-signal-safe calls until exec
-    ::setpgid(0, 0);
+    ::setsid();  // a session of its own: its processes can never join lpvid's
     ::dup2(log, STDOUT_FILENO);
     ::dup2(log, STDERR_FILENO);
     const int null_in = ::open("/dev/null", O_RDONLY);
@@ -65,7 +68,6 @@ CommandRun run_shell_command(const std::string& command, double timeout_seconds,
     ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  ::setpgid(pid, pid);  // also from the parent: no race with the kill below
   ::close(log);
   run.started = true;
   int status = 0;
@@ -79,14 +81,15 @@ CommandRun run_shell_command(const std::string& command, double timeout_seconds,
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (timeout_seconds > 0 && elapsed > timeout_seconds) {
       run.timed_out = true;
-      ::kill(-pid, SIGKILL);
+      ::kill(-pid, SIGKILL);  // its group (once the child has called setsid)
+      ::kill(pid, SIGKILL);
       while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
       }
       break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  ::kill(-pid, SIGKILL);  // whatever the command left running in its group
+  run.survivors = end_processes_of_other_sessions();  // whatever the command left running
   if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
   else if (WIFSIGNALED(status)) run.exit_code = 128 + WTERMSIG(status);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
