@@ -10,10 +10,11 @@ big ones are tens of MB).
         a compact dual point of horizon ORDER (on DIR/class_ORDER.csv).
     python3 bench/budget_attacks.py records COUNT ROWS DIR
         DIR/records_COUNT.json: COUNT records of ROWS rows each, all windows
-        of one data file DIR/records_data.csv (COUNT*ROWS rows).
+        of one data file DIR/records_COUNT.csv (COUNT*ROWS rows).
     python3 bench/budget_attacks.py long ROWS RECORDS DIR
         DIR/long_ROWS_RECORDS.json: RECORDS records of ROWS rows each (one:
-        "data"), form "delta": the exact simulation's numbers grow with k.
+        "data"), form "delta" on the last 16 rows, the model started from
+        x0 = [1, 1]: the exact simulation's numbers grow with k over every row.
 The claims are not true; what is timed is how long the verifier takes to say so.
 """
 import hashlib
@@ -75,17 +76,25 @@ def attack_class(leaves, order, folder):
 
 
 def attack_records(count, rows, folder):
-    data = os.path.join(folder, "records_data.csv")
+    data = os.path.join(folder, "records_%d.csv" % count)
     sha = write_data(data, count * rows, count)
     records = [{"file": os.path.basename(data), "sha256": sha, "rows": [k * rows, (k + 1) * rows]} for k in range(count)]
     write_json(os.path.join(folder, "records_%d.json" % count), primal({"records": records}, rows))
 
 
 def attack_long(rows, count, folder):
+    """The model starts from x0 = [1, 1] and u is zero but on the last TAIL
+    rows: z = 0.1*u vanishes before them, so the Delta horizon (and the (C1)
+    check) stays short while the state's digits grow over every row."""
+    tail = 16
     data = os.path.join(folder, "long_%d.csv" % rows)
-    sha = write_data(data, rows, rows)
-    reference = {"file": os.path.basename(data), "sha256": sha}
-    cert = primal({"data": reference} if count == 1 else {"records": [reference] * count}, rows)
+    r = lcg(rows)
+    text = "u,y\n" + "".join("%s,%s\n" % (next(r) if k >= rows - tail else "0", next(r)) for k in range(rows))
+    with open(data, "w") as f:
+        f.write(text)
+    reference = {"file": os.path.basename(data), "sha256": hashlib.sha256(text.encode()).hexdigest()}
+    cert = primal({"data": reference} if count == 1 else {"records": [reference] * count}, tail)
+    cert["model"] = dict(MODEL, x0=["1", "1"])
     write_json(os.path.join(folder, "long_%d_%d.json" % (rows, count)), cert)
 
 

@@ -100,13 +100,17 @@ TEST(WorkBudget, AClassCertificateAboveTheTotalIsRefusedBeforeItsDataAreRead) {
 TEST(WorkBudget, ALongRecordIsRefusedBeforeItsExactSimulationAndCheckedWithinTheLimit) {
   gen::ScratchDir dir("budget-long");
   const std::string data = dir.file("d.csv"), path = dir.file("c.json");
-  const std::string sha = write_data(data, 3000);
-  write_json(path, primal_certificate({{"data", {{"file", "d.csv"}, {"sha256", sha}}}}, 3000));
+  const std::string sha = write_data(data, 1000);
+  write_json(path, primal_certificate({{"data", {{"file", "d.csv"}, {"sha256", sha}}}}, 1000));
   const Certificate c = read_certificate(path);
-  const double work = simulation_work(c, {3000}, {20, 0});
-  ASSERT_GT(work, 1e6);
-  const std::string below = std::to_string(work / 2);
+  const double work = simulation_work(c, {1000}, {20, 0});
+  ASSERT_GT(work, 1e6);  // the (C1) check of order 1000 comes first: 10⁹
+  const std::string below = std::to_string(1e9 + work / 2);
+  testing::internal::CaptureStderr();
   EXPECT_EQ(verify({"--max-total-work", below, "certificate", path}), kExitWorkLimit);
+  const std::string why = testing::internal::GetCapturedStderr();
+  EXPECT_NE(why.find("the exact simulation of 1000 rows"), std::string::npos) << why;
+  EXPECT_NE(why.find("--max-total-work"), std::string::npos) << why;
   const std::size_t reads = data_file_reads();
   EXPECT_EQ(verify({"certificate", path}), kExitOk);  // the defaults check it
   EXPECT_EQ(data_file_reads(), reads + 1);

@@ -1,6 +1,7 @@
 #include "verify/certificate/work_budget.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -16,7 +17,8 @@ namespace {
 constexpr double kWorkPerCube = 1.0;         ///< a dual point's floating rebuild, per m³
 constexpr double kWorkPerRecord = 1.5e6;     ///< a record's fixed cost (its rows, its own x0, stacking)
 constexpr double kWorkPerByte = 20;          ///< reading, hashing and parsing a data file
-constexpr double kWorkPerLimbProduct = 300;  ///< one product of the exact simulation, per 64-bit limb (and its gcd)
+constexpr double kWorkPerLimbProduct = 450;  ///< one product of the exact simulation, per 64-bit limb (and its gcd)
+constexpr double kWorkPerConvolutionLimb = 2;  ///< one product of a convolution of z (integers on a common denominator)
 
 std::string number(double x) {
   char text[32];
@@ -95,6 +97,10 @@ void charge_declared_work(const Certificate& c) {
   }
   if (!horizons.empty())
     charge_total_work(dual, std::to_string(horizons.size()) + (horizons.size() == 1 ? " dual point" : " dual points (class leaves)"));
+  if (c.form == CertificateForm::kDelta && !is_class_claim(c.claim) && !is_dual_claim(c.claim)) {
+    const double m = static_cast<double>(c.horizon) * std::min(ny, nz);  // (C1): δ²I − T_Δ T_Δᵀ, floating filter
+    charge_total_work(kWorkPerCube * m * m * m, "the (C1) check of order " + number(m));
+  }
   if (records > 0) charge_total_work(kWorkPerRecord * static_cast<double>(records), std::to_string(records) + " records");
 }
 
@@ -114,7 +120,10 @@ double simulation_work(const Certificate& c, const std::vector<long>& rows, cons
   const double nx = c.model.nx, nu = c.model.nu, ny = c.model.ny, nz = c.model.nz();
   const double parameters = is_class_claim(c.claim) ? static_cast<double>(c.region.parameters.size()) : 0;
   const double step = (nx + ny + nz) * (nx + nu + 1) * (1 + parameters);
-  return kWorkPerLimbProduct * (step + convolution_taps(c, rows) * ny * nz) * bits / 64;
+  double gram = 0;  // form w: the n × n Schur complement of (C1), floating filter
+  if (!is_class_claim(c.claim) && !is_dual_claim(c.claim) && c.form == CertificateForm::kW)
+    for (const long r : rows) gram += kWorkPerCube * std::pow(static_cast<double>(r), 3);
+  return (kWorkPerLimbProduct * step + kWorkPerConvolutionLimb * convolution_taps(c, rows) * ny * nz) * bits / 64 + gram;
 }
 
 void charge_simulation(const Certificate& c, const std::vector<long>& rows, const DataBits& data) {

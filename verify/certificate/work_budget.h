@@ -10,6 +10,8 @@
 ///  - the dual points: one per class leaf (one for a dual claim), each a
 ///    floating rebuild of order m = L·ny (or L·(ny+nz) for a dense Y1),
 ///    about m³ operations, and its exact sums, L²·(ny·nz)²;
+///  - a primal point's (C1) check, of order L·min(ny, nz) (form "delta") or
+///    n (form "w"): m³;
 ///  - the records: more than --max-records is refused, each costs a fixed
 ///    amount; every data file's bytes are read, hashed and parsed once;
 ///  - the exact simulation: the state's numbers grow by about g bits per
