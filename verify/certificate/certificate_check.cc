@@ -1,5 +1,6 @@
 #include "verify/certificate/certificate_check.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -137,6 +138,7 @@ CertificateData references_data(const Certificate& c, const std::vector<DataRefe
   CertificateData out;
   std::vector<ReferenceTable> tables;
   std::vector<long> lengths;
+  std::vector<std::string> paths;
   DataBits bits;
   std::map<const TextTable*, DataBits> table_bits_of;  // each table scanned once
   for (const DataReference& ref : refs) {
@@ -149,7 +151,10 @@ CertificateData references_data(const Certificate& c, const std::vector<DataRefe
     bits.signals = std::max(bits.signals, table_bits_of[t.table].signals);
     bits.scheduling = std::max(bits.scheduling, table_bits_of[t.table].scheduling);
     lengths.push_back(window_length(ref, *t.table));
-    if (out.path.find(t.path) == std::string::npos) out.path += (out.path.empty() ? "" : ", ") + t.path;
+    if (std::find(paths.begin(), paths.end(), t.path) == paths.end()) {  // each file named once
+      out.path += (paths.empty() ? "" : ", ") + t.path;
+      paths.push_back(t.path);
+    }
     tables.push_back(std::move(t));
   }
   charge_simulation(c, lengths, bits);
