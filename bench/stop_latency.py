@@ -86,7 +86,7 @@ def main():
          ["diagnose", "--data", f("est.csv"), "--model", f("declared.json"), "--test", f("test.csv"),
           "--warmup", "10", "--threads", "1", "--report", f("d.json"), "--model-out", f("after.json")],
          [f("d.json"), f("after.json")]),
-        ("verify psd 700x700 exact", _lpvid.run_lpvid_verify, ["--max-exact-work", "1e13", "psd", "--exact-only", "--threads", "1", f("m.txt")], []),
+        ("verify psd 700x700 exact", _lpvid.run_lpvid_verify, ["--max-exact-work", "1e13", "--max-total-work", "1e13", "psd", "--exact-only", "--threads", "1", f("m.txt")], []),
     ]
     print(f"wait before request_stop: {WAIT} s")
     for name, run, args, outputs in cases:

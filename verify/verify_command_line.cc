@@ -6,8 +6,8 @@
 //   lpvid-verify certificate C.json
 //       consistent (exit 0), invalid: <reason> (exit 1), malformed (exit 2), read failure (exit 6).
 //   Limits on inputs (core/limits.h): --max-file-mb, --max-digits, --max-degree, --max-samples.
-//   Limits on work (verify/psd/work_limits.h): --max-dual-order, --max-exact-work; beyond
-//   them exit 8, nothing decided.
+//   Limits on work (verify/psd/work_limits.h): --max-dual-order, --max-exact-work,
+//   --max-total-work, --max-records; beyond them exit 8, nothing decided.
 //
 // Each subcommand is registered by one add_*_subcommand function below and
 // run by the dispatch in run_lpvid_verify(). Usage errors exit with 2 (like
@@ -44,7 +44,7 @@ CLI::App* add_psd_subcommand(CLI::App& app, PsdArgs& args) {
   psd->add_option("--threads", args.options.threads, "threads for the exact elimination (0: all cores, max 8)")
       ->check(CLI::Range(0, 64));
   psd->footer("Exit status: 0 PD or PSD, 1 NOT_PSD, 2 missing/invalid/non-symmetric/too large input, 6 read failure, "
-              "8 the exact path would exceed --max-exact-work (not decided).");
+              "8 the exact path would exceed --max-exact-work or --max-total-work (not decided).");
   return psd;
 }
 
@@ -59,7 +59,8 @@ CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
                 "the data file to read instead of the recorded path (its sha256 must still match); without it a "
                 "missing recorded path falls back to the file of the same name beside the certificate");
   c->footer("Exit status: 0 the claim holds, 1 invalid (with the reason), 2 missing/malformed/too large input, 6 read "
-            "failure, 8 the check would exceed --max-dual-order or --max-exact-work (not decided).");
+            "failure, 8 the check would exceed --max-dual-order, --max-exact-work, --max-total-work or --max-records "
+            "(not decided).");
   return c;
 }
 
@@ -74,6 +75,14 @@ void add_work_limit_options(CLI::App& app) {
                  "most modular operations of one exact elimination, estimated before it starts (default " +
                      std::to_string(static_cast<long long>(lpvid::kDefaultMaxExactWork)) + ")")
       ->check(CLI::PositiveNumber);
+  app.add_option("--max-total-work", l.max_total_work,
+                 "most operations of one whole check (dual points, class leaves, records, data bytes, the exact "
+                 "simulation with its digit growth, exact eliminations), estimated before the work starts (default " +
+                     std::to_string(static_cast<long long>(lpvid::kDefaultMaxTotalWork)) + ")")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--max-records", l.max_records,
+                 "most records one certificate may name (default " + std::to_string(lpvid::kDefaultMaxRecords) + ")")
+      ->check(CLI::Range(1L, 100000000L));
 }
 
 /// Puts the caller's work limits back when a run ends (the Python module
@@ -81,7 +90,8 @@ void add_work_limit_options(CLI::App& app) {
 class WorkLimitsRestorer {
  public:
   WorkLimitsRestorer() : saved_(lpvid::verify_work_limits()) {
-    lpvid::verify_work_limits() = {lpvid::kDefaultMaxDualOrder, lpvid::kDefaultMaxExactWork};
+    lpvid::verify_work_limits() = lpvid::default_verify_work_limits();
+    lpvid::start_total_work();
   }
   ~WorkLimitsRestorer() { lpvid::verify_work_limits() = saved_; }
   WorkLimitsRestorer(const WorkLimitsRestorer&) = delete;

@@ -1,9 +1,11 @@
 #include "verify/certificate/certificate_check.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <functional>
 #include <iomanip>
+#include <map>
 #include <ostream>
 #include <sstream>
 
@@ -18,13 +20,16 @@
 #include "data/experiment_builder.h"
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
+#include "toeplitz/record_segments.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "toeplitz/toeplitz_gram.h"
 #include "verify/certificate/c1_check.h"
 #include "verify/certificate/class_check.h"
 #include "verify/certificate/column_gram.h"
+#include "verify/certificate/data_file_cache.h"
 #include "verify/certificate/dual_check.h"
 #include "verify/certificate/verdict_text.h"
+#include "verify/certificate/work_budget.h"
 #include "verify/psd/work_limits.h"
 
 namespace lpvid {
@@ -95,56 +100,79 @@ CertificateData window_rows(const DataReference& ref, const TextTable& table, co
   return out;
 }
 
-CertificateData reference_data(const DataReference& ref, const std::string& path, const ColumnMap& columns,
-                               const std::string& what) {
-  CertificateData out;
+/// One reference's table before its rows are read as numbers: parsed from
+/// bytes whose sha256 matched (`invalid` says why not).
+struct ReferenceTable {
+  std::string invalid;
+  std::string path;
+  const TextTable* table = nullptr;
+};
+using TableSource = std::function<ReferenceTable(const DataReference&)>;
+
+/// A data file through `cache` (read, hashed and parsed once per check).
+ReferenceTable file_table(const DataReference& ref, const std::string& path, DataFileCache& cache) {
+  ReferenceTable out;
   out.path = path;
-  const std::string bytes = read_text_file(out.path);
-  const std::string hash = sha256_hex(bytes);
+  const std::string& hash = cache.file(path).sha256;
   if (hash != ref.sha256) {
-    out.invalid = "data file '" + out.path + "' has changed: sha256 " + hash + " differs from the certificate's " + ref.sha256;
+    out.invalid = "data file '" + path + "' has changed: sha256 " + hash + " differs from the certificate's " + ref.sha256;
     return out;
   }
-  const TextTable table = ref.names.empty() ? parse_table(bytes, out.path) : parse_table(bytes, out.path, ref.names);
-  return window_rows(ref, table, columns, what, std::move(out));
+  out.table = &cache.table(path, ref.names);
+  return out;
 }
 
-/// The same on a table read once by the caller (`data`): the sha256 must be
-/// the certificate's; a reference naming other column names is read from
-/// the file again, as reference_data does.
-CertificateData read_reference_data(const DataReference& ref, const DataTable& data, const ColumnMap& columns,
-                                    const std::string& what) {
+/// The rows the reference's window takes from its table (the whole table
+/// when it names none; a window beyond the table is refused later).
+long window_length(const DataReference& ref, const TextTable& table) {
+  const auto rows = static_cast<long>(table.rows.size());
+  if (ref.row_end < 0 || rows == 0) return rows;
+  return std::max(0L, std::min(ref.row_end, rows) - ref.row_begin);
+}
+
+/// Steps 1–2 for each reference (`what` names it in messages): every table
+/// first, then the exact simulation of their windows charged against the
+/// total work (verify/certificate/work_budget.h), then their exact rows;
+/// several records are stacked (data/experiment.h: records, record_x0).
+CertificateData references_data(const Certificate& c, const std::vector<DataReference>& refs, const TableSource& source) {
   CertificateData out;
-  out.path = data.reference.file;
-  if (data.reference.sha256 != ref.sha256) {
-    out.invalid = "data file '" + out.path + "' has changed: sha256 " + data.reference.sha256 +
-                  " differs from the certificate's " + ref.sha256;
-    return out;
+  std::vector<ReferenceTable> tables;
+  std::vector<long> lengths;
+  std::vector<std::string> paths;
+  DataBits bits;
+  std::map<const TextTable*, DataBits> table_bits_of;  // each table scanned once
+  for (const DataReference& ref : refs) {
+    ReferenceTable t = source(ref);
+    if (!t.invalid.empty()) {
+      out.invalid = t.invalid;
+      return out;
+    }
+    if (!table_bits_of.contains(t.table)) table_bits_of[t.table] = table_bits(*t.table, c.model.columns);
+    bits.signals = std::max(bits.signals, table_bits_of[t.table].signals);
+    bits.scheduling = std::max(bits.scheduling, table_bits_of[t.table].scheduling);
+    lengths.push_back(window_length(ref, *t.table));
+    if (std::find(paths.begin(), paths.end(), t.path) == paths.end()) {  // each file named once
+      out.path += (paths.empty() ? "" : ", ") + t.path;
+      paths.push_back(t.path);
+    }
+    tables.push_back(std::move(t));
   }
-  // other column names (a headerless file read otherwise): read as the path form does
-  if (ref.names != data.reference.names) return reference_data(ref, out.path, columns, what);
-  return window_rows(ref, data.table, columns, what, std::move(out));
-}
-
-/// Where each record's exact rows come from: its file (resolved beside the
-/// certificate) or a table read once.
-using RecordSource = std::function<CertificateData(const DataReference&, const std::string& what)>;
-
-/// Several records: each read and checked like "data", then stacked
-/// (data/experiment.h: records, record_x0).
-CertificateData records_data(const Certificate& c, const RecordSource& source) {
-  CertificateData out;
+  charge_simulation(c, lengths, bits);
+  const bool several = !c.records.empty();
   std::vector<Experiment<Rational>> parts;
-  for (size_t k = 0; k < c.records.size(); ++k) {
-    const CertificateRecord& r = c.records[k];
-    const std::string what = "records[" + std::to_string(k) + "]";
-    CertificateData one = source(r.data, what);
+  for (size_t k = 0; k < refs.size(); ++k) {
+    const std::string what = several ? "records[" + std::to_string(k) + "]" : "data";
+    CertificateData one = window_rows(refs[k], *tables[k].table, c.model.columns, what, CertificateData{});
     if (!one.invalid.empty()) return one;
+    if (!several) {
+      one.path = out.path;
+      return one;
+    }
+    const CertificateRecord& r = c.records[k];
     if (r.x0.size() != 0 && r.x0.size() != c.model.nx) {
       out.invalid = what + ".x0 has " + std::to_string(r.x0.size()) + " entries, the model has " + std::to_string(c.model.nx) + " states";
       return out;
     }
-    out.path += (k == 0 ? "" : ", ") + one.path;
     parts.push_back(std::move(one.exp));
   }
   out.exp = stack_records(parts);
@@ -155,6 +183,7 @@ CertificateData records_data(const Certificate& c, const RecordSource& source) {
 /// The one-record certificate's data reference.
 DataReference single_reference(const Certificate& c) {
   DataReference ref;
+  ref.file = c.data_file;
   ref.sha256 = c.data_sha256;
   ref.names = c.data_names;
   ref.row_begin = c.row_begin;
@@ -162,18 +191,26 @@ DataReference single_reference(const Certificate& c) {
   return ref;
 }
 
+/// The references a certificate names: its records, or its one "data".
+std::vector<DataReference> data_references(const Certificate& c) {
+  if (c.records.empty()) return {single_reference(c)};
+  std::vector<DataReference> refs;
+  for (const CertificateRecord& r : c.records) refs.push_back(r.data);
+  return refs;
+}
+
 CertificateData certificate_data(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
-  if (!c.records.empty()) {
-    if (!data_file.empty()) {
-      CertificateData out;
-      out.invalid = "--data names one file, but the certificate names " + std::to_string(c.records.size()) + " records";
-      return out;
-    }
-    return records_data(c, [&](const DataReference& ref, const std::string& what) {
-      return reference_data(ref, recorded_data_path(ref.file, certificate_dir), c.model.columns, what);
-    });
+  if (!c.records.empty() && !data_file.empty()) {
+    CertificateData out;
+    out.invalid = "--data names one file, but the certificate names " + std::to_string(c.records.size()) + " records";
+    return out;
   }
-  return reference_data(single_reference(c), certificate_data_path(c, certificate_dir, data_file), c.model.columns, "data");
+  DataFileCache cache;
+  return references_data(c, data_references(c), [&](const DataReference& ref) {
+    const std::string path = c.records.empty() ? certificate_data_path(c, certificate_dir, data_file)
+                                               : recorded_data_path(ref.file, certificate_dir);
+    return file_table(ref, path, cache);
+  });
 }
 
 /// Steps 3–6 on the exact rows of the certificate's window; `details` starts
@@ -236,6 +273,9 @@ void require_work_limits(const Certificate& c) {
 
 CertificateVerdict check_certificate(const Certificate& c, const Experiment<Rational>& exp) {
   require_work_limits(c);
+  charge_declared_work(c);
+  const RecordLengths lengths = record_lengths_of(exp.records, exp.n());
+  charge_simulation(c, std::vector<long>(lengths.begin(), lengths.end()), experiment_bits(exp));
   std::ostringstream details;
   details << "data in memory (" << exp.n() << " rows); ";
   return with_claim(check_claim(c, exp, details), c);
@@ -243,6 +283,7 @@ CertificateVerdict check_certificate(const Certificate& c, const Experiment<Rati
 
 CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
   require_work_limits(c);
+  charge_declared_work(c);
   const CertificateData data = certificate_data(c, certificate_dir, data_file);
   if (!data.invalid.empty()) return invalid_verdict(data.invalid);
   std::ostringstream details;
@@ -252,10 +293,20 @@ CertificateVerdict check_certificate(const Certificate& c, const std::string& ce
 
 CertificateVerdict check_certificate(const Certificate& c, const DataTable& data) {
   require_work_limits(c);
-  const auto source = [&](const DataReference& ref, const std::string& what) {
-    return read_reference_data(ref, data, c.model.columns, what);
-  };
-  const CertificateData read = c.records.empty() ? source(single_reference(c), "data") : records_data(c, source);
+  charge_declared_work(c);
+  DataFileCache cache;  // references naming other column names read the file again, once
+  const CertificateData read = references_data(c, data_references(c), [&](const DataReference& ref) {
+    ReferenceTable out;
+    out.path = data.reference.file;
+    if (data.reference.sha256 != ref.sha256) {
+      out.invalid = "data file '" + out.path + "' has changed: sha256 " + data.reference.sha256 +
+                    " differs from the certificate's " + ref.sha256;
+      return out;
+    }
+    if (ref.names != data.reference.names) return file_table(ref, out.path, cache);
+    out.table = &data.table;
+    return out;
+  });
   if (!read.invalid.empty()) return invalid_verdict(read.invalid);
   std::ostringstream details;
   details << "data " << read.path << " (sha256 matches); ";
@@ -378,6 +429,17 @@ CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
 }
 }  // namespace
 
+namespace {
+/// ", estimated work W operations (--max-total-work L)" when the total is counted.
+std::string total_work_text() {
+  const double limit = verify_work_limits().max_total_work;
+  if (limit <= 0) return "";
+  std::ostringstream o;
+  o << std::setprecision(3) << ", estimated work " << total_work_charged() << " operations (--max-total-work " << limit << ")";
+  return o.str();
+}
+}  // namespace
+
 int run_certificate_command(const std::string& path, std::ostream& out, std::ostream& err, const std::string& data_file) {
   try {
     const auto start = std::chrono::steady_clock::now();
@@ -385,7 +447,7 @@ int run_certificate_command(const std::string& path, std::ostream& out, std::ost
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (v.holds) {
       out << v.claim_text << "\n" << v.claim_echo << "\n" << v.details << "\nchecked in exact rational arithmetic in " << secs
-          << " s\n";
+          << " s" << total_work_text() << "\n";
       return kExitOk;
     }
     out << "invalid: " << v.reason << "\n";

@@ -1,5 +1,6 @@
 #include "verify/psd/work_limits.h"
 
+#include <atomic>
 #include <cstdio>
 
 namespace lpvid {
@@ -13,13 +14,15 @@ void require_exact_work(long n, double hadamard_bits) {
   const double limit = verify_work_limits().max_exact_work;
   const double primes = hadamard_bits / 31 + 1;
   const double work = primes * static_cast<double>(n) * static_cast<double>(n) * static_cast<double>(n) / 3;
-  if (limit <= 0 || work <= limit) return;
-  char text[200];
-  std::snprintf(text, sizeof text,
-                "the exact elimination of a %ld x %ld matrix needs about %.3g modular operations (%.0f primes), "
-                "above the limit %.3g; raise it with --max-exact-work",
-                n, n, work, primes, limit);
-  throw WorkLimitError(text);
+  if (limit > 0 && work > limit) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the exact elimination of a %ld x %ld matrix needs about %.3g modular operations (%.0f primes), "
+                  "above the limit %.3g; raise it with --max-exact-work",
+                  n, n, work, primes, limit);
+    throw WorkLimitError(text);
+  }
+  charge_total_work(work, "the exact elimination of a " + std::to_string(n) + " x " + std::to_string(n) + " matrix");
 }
 
 void require_dual_order(long order) {
@@ -28,6 +31,32 @@ void require_dual_order(long order) {
   throw WorkLimitError("the compact dual point has order L*ny = " + std::to_string(order) +
                        " (a floating inversion of that order and exact sums over its entries), above the limit " +
                        std::to_string(limit) + "; raise it with --max-dual-order");
+}
+
+namespace {
+/// The total of the check under way (atomic: the library's callers may check
+/// in several threads, unlimited; then nothing is counted anyway).
+std::atomic<double>& total_work() {
+  static std::atomic<double> total{0};
+  return total;
+}
+}  // namespace
+
+void start_total_work() { total_work() = 0; }
+
+double total_work_charged() { return total_work(); }
+
+void charge_total_work(double work, const std::string& what) {
+  const double limit = verify_work_limits().max_total_work;
+  if (limit <= 0) return;
+  const double total = total_work() + work;
+  if (total > limit) {
+    char text[160];
+    std::snprintf(text, sizeof text, "needs about %.3g operations, which brings the check's estimated total to %.3g, above the limit %.3g",
+                  work, total, limit);
+    throw WorkLimitError(what + " " + text + "; raise it with --max-total-work");
+  }
+  total_work() = total;
 }
 
 }  // namespace lpvid

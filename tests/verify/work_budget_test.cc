@@ -1,0 +1,152 @@
+// The total work budget of one certificate check (--max-total-work,
+// --max-records; verify/certificate/work_budget.h): a certificate whose
+// declared sizes exceed it is refused with exit 8 before the work starts,
+// and a data file named by many records is read and hashed once.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/exit_codes.h"
+#include "core/sha256.h"
+#include "support/scratch_dir.h"
+#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/data_file_cache.h"
+#include "verify/certificate/work_budget.h"
+#include "verify/psd/work_limits.h"
+#include "verify/verify_command_line.h"
+
+namespace lpvid {
+namespace {
+
+using nlohmann::json;
+
+/// x+ = [0 1; -0.12 0.7] x + [0; 1] u, y = [0.25 0.5] x, additive uncertainty.
+json siso_model() {
+  return json::parse(R"({"format": "lpvid-model/1", "states": 2, "inputs": 1, "outputs": 1, "scheduling": [],
+    "columns": {"u": ["u"], "y": ["y"]},
+    "initial": {"A": [{"basis": "1", "value": [[0, 1], ["-0.12", "0.7"]]}],
+                "B": [{"basis": "1", "value": [[0], [1]]}],
+                "C": [{"basis": "1", "value": [["0.25", "0.5"]]}]},
+    "correction": {"basis": ["1"]}, "uncertainty": {"structure": "additive", "weight": "0.1"}})");
+}
+
+/// A data file of `rows` rows "u,y" with 4-decimal values; returns its sha256.
+std::string write_data(const std::string& path, long rows) {
+  std::string text = "u,y\n";
+  for (long k = 0; k < rows; ++k)
+    text += std::to_string((k * 37) % 19 - 9) + ".25," + std::to_string((k * 11) % 7 - 3) + ".5\n";
+  std::ofstream(path) << text;
+  return sha256_hex(text);
+}
+
+void write_json(const std::string& path, const json& j) { std::ofstream(path) << j.dump(); }
+
+/// A consistent claim, form "delta" (one zero tap on a horizon of `horizon`
+/// samples: each record's length), on `reference`: checking it simulates
+/// the model exactly over every row.
+json primal_certificate(const json& reference, long horizon) {
+  json c = {{"format", "lpvid-certificate/1"}, {"claim", "consistent"}};
+  c.update(reference);
+  c.update({{"model", siso_model()}, {"toeplitz_mode", "signal"}, {"noise_normalisation", "rms"}, {"delta2", "1"},
+            {"dmax2", "100000"}, {"form", "delta"}, {"delta_taps", {{0}}}, {"delta_horizon", horizon}});
+  return c;
+}
+
+/// A class lower bound whose tree has `leaves` leaves of horizon `order`.
+json class_certificate(const std::string& data_file, long leaves, long order) {
+  json leaf = {{"epsilon", "1"}, {"horizon", order}, {"sigma", "1"}, {"t", "1"}, {"mu", "1"},
+               {"u_exponent", -51}, {"x", "1e30"}, {"u_floor", "1/2"}};
+  leaf["g"] = json::array();
+  leaf["taps"] = json::array();
+  for (long k = 0; k < order; ++k) {
+    leaf["g"].push_back({0});
+    leaf["taps"].push_back({0});
+  }
+  // a comb in preorder: split, leaf, split, leaf, …, leaf, leaf
+  json preorder = json::array();
+  for (long k = 0; k + 1 < leaves; ++k) {
+    preorder.push_back({{"split", 0}});
+    preorder.push_back({{"leaf", leaf}});
+  }
+  preorder.push_back({{"leaf", leaf}});
+  return {{"format", "lpvid-certificate/1"}, {"claim", "class_lower_bound"},
+          {"data", {{"file", data_file}, {"sha256", std::string(64, '0')}}}, {"model", siso_model()},
+          {"toeplitz_mode", "signal"}, {"noise_normalisation", "rms"}, {"objective", "min_dmax"}, {"delta2", "1"},
+          {"lower_bound", "0"}, {"form", "dual_delta_path"},
+          {"class", {{"unknowns", {{"correction", true}, {"offset", false}, {"x0", false}}},
+                     {"parameters", {"C[1](1,1)", "C[1](1,2)", "D[1](1,1)"}}, {"free", json::array()},
+                     {"center", {"0", "0", "0"}}, {"radius", {"1/100", "1/100", "1/100"}}, {"horizon", order},
+                     {"nodes", preorder}}}};
+}
+
+int verify(const std::vector<std::string>& args) { return run_lpvid_verify(args); }
+
+TEST(WorkBudget, AClassCertificateAboveTheTotalIsRefusedBeforeItsDataAreRead) {
+  gen::ScratchDir dir("budget-class");
+  const std::string path = dir.file("class.json");
+  write_json(path, class_certificate("absent.csv", 8, 64));  // the data file does not exist
+  // 8 leaves of order 64: 8·64³ ≈ 2.1·10⁶ operations.
+  EXPECT_EQ(verify({"--max-total-work", "1e6", "certificate", path}), kExitWorkLimit);
+  // Within the limit the check goes on and then finds the data missing (not
+  // exit 8): the refusal above came before anything was read.
+  const int within = verify({"--max-total-work", "1e8", "certificate", path});
+  EXPECT_TRUE(within == kExitBadInput || within == kExitIo) << within;
+}
+
+TEST(WorkBudget, ALongRecordIsRefusedBeforeItsExactSimulationAndCheckedWithinTheLimit) {
+  gen::ScratchDir dir("budget-long");
+  const std::string data = dir.file("d.csv"), path = dir.file("c.json");
+  const std::string sha = write_data(data, 1000);
+  write_json(path, primal_certificate({{"data", {{"file", "d.csv"}, {"sha256", sha}}}}, 1000));
+  const Certificate c = read_certificate(path);
+  const double work = simulation_work(c, {1000}, {20, 0});
+  ASSERT_GT(work, 1e6);  // the (C1) check of order 1000 comes first: 10⁹
+  const std::string below = std::to_string(1e9 + work / 2);
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(verify({"--max-total-work", below, "certificate", path}), kExitWorkLimit);
+  const std::string why = testing::internal::GetCapturedStderr();
+  EXPECT_NE(why.find("the exact simulation of 1000 rows"), std::string::npos) << why;
+  EXPECT_NE(why.find("--max-total-work"), std::string::npos) << why;
+  const std::size_t reads = data_file_reads();
+  EXPECT_EQ(verify({"certificate", path}), kExitOk);  // the defaults check it
+  EXPECT_EQ(data_file_reads(), reads + 1);
+}
+
+TEST(WorkBudget, TheSimulationEstimateGrowsQuadraticallyWithTheRecordAndRestartsPerRecord) {
+  gen::ScratchDir dir("budget-estimate");
+  const std::string path = dir.file("c.json");
+  write_json(path, primal_certificate({{"data", {{"file", "d.csv"}, {"sha256", std::string(64, '0')}}}}, 1));
+  const Certificate c = read_certificate(path);
+  const double one = simulation_work(c, {20000}, {20, 0}), twice = simulation_work(c, {40000}, {20, 0});
+  EXPECT_GT(twice, 3.5 * one);
+  EXPECT_LT(twice, 4.5 * one);
+  EXPECT_LT(simulation_work(c, {20000, 20000}, {20, 0}), 0.6 * twice);  // each record from its own x0
+  TextTable t;
+  t.header = {"u", "y", "note"};
+  t.rows = {{"0.5", "1e4000", "123456789012345678901234567890123456789012345678901234567890"}};
+  const DataBits bits = table_bits(t, c.model.columns);
+  EXPECT_GT(bits.signals, 4000 * 3.3);   // y's decimal exponent counts
+  EXPECT_LT(bits.signals, 4100 * 6.7);   // the note is not a column of the model
+  EXPECT_EQ(bits.scheduling, 0);
+}
+
+TEST(WorkBudget, TenThousandRecordsOfOneFileReadAndHashItOnce) {
+  gen::ScratchDir dir("budget-records");
+  const std::string data = dir.file("d.csv"), path = dir.file("c.json");
+  const std::string sha = write_data(data, 20000);
+  json records = json::array();
+  for (long k = 0; k < 10000; ++k)
+    records.push_back({{"file", "d.csv"}, {"sha256", sha}, {"rows", {2 * k, 2 * k + 2}}});
+  write_json(path, primal_certificate({{"records", records}}, 2));
+  EXPECT_EQ(verify({"certificate", path}), kExitWorkLimit);  // above the default --max-records
+  const std::size_t reads = data_file_reads();
+  EXPECT_EQ(verify({"--max-records", "10000", "certificate", path}), kExitOk);
+  EXPECT_EQ(data_file_reads(), reads + 1);
+}
+
+}  // namespace
+}  // namespace lpvid
