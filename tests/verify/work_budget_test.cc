@@ -97,6 +97,23 @@ TEST(WorkBudget, AClassCertificateAboveTheTotalIsRefusedBeforeItsDataAreRead) {
   EXPECT_TRUE(within == kExitBadInput || within == kExitIo) << within;
 }
 
+// Before the exact parse (about 70 bytes of memory per byte of text): the
+// streaming pass counts the leaves however their key is spelt in JSON
+// ("\u006ceaf" is "leaf") and refuses; within the limit it lets the text through.
+TEST(WorkBudget, DeclaredLeavesAreRefusedBeforeTheTextIsParsed) {
+  std::string text = class_certificate("absent.csv", 8, 64).dump();
+  for (size_t at = text.find("\"leaf\""); at != std::string::npos; at = text.find("\"leaf\"", at))
+    text.replace(at, 6, "\"\\u006ceaf\"");
+  ASSERT_EQ(text.find("\"leaf\""), std::string::npos);
+  const VerifyWorkLimits saved = verify_work_limits();
+  verify_work_limits().max_total_work = 1e6;  // 8 leaves of order 64: about 2.1e6
+  EXPECT_THROW(refuse_declared_text(text, "escaped.json"), WorkLimitError);
+  verify_work_limits().max_total_work = 1e8;
+  EXPECT_NO_THROW(refuse_declared_text(text, "escaped.json"));
+  EXPECT_NO_THROW(refuse_declared_text("{not json", "broken.json"));  // the parser says what is wrong
+  verify_work_limits() = saved;
+}
+
 TEST(WorkBudget, ALongRecordIsRefusedBeforeItsExactSimulationAndCheckedWithinTheLimit) {
   gen::ScratchDir dir("budget-long");
   const std::string data = dir.file("d.csv"), path = dir.file("c.json");

@@ -1,4 +1,5 @@
 #include "verify/certificate/certificate_file.h"
+#include "verify/certificate/work_budget.h"
 
 #include <filesystem>
 #include <fstream>
@@ -233,7 +234,11 @@ Certificate parse_certificate(std::string_view text, const std::string& file) {
   return c;
 }
 
-Certificate read_certificate(const std::string& path) { return parse_certificate(read_text_file(path), path); }
+Certificate read_certificate(const std::string& path) {
+  const std::string text = read_text_file(path);
+  refuse_declared_text(text, path);  // before the exact parse's memory (verify/certificate/work_budget.h)
+  return parse_certificate(text, path);
+}
 
 namespace {
 

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <optional>
 
+#include <nlohmann/json.hpp>
+
 #include "data/csv_reader.h"
 #include "verify/psd/work_limits.h"
 
@@ -102,6 +104,54 @@ void charge_declared_work(const Certificate& c) {
     charge_total_work(kWorkPerCube * m * m * m, "the (C1) check of order " + number(m));
   }
   if (records > 0) charge_total_work(kWorkPerRecord * static_cast<double>(records), std::to_string(records) + " records");
+}
+
+namespace {
+
+/// The streaming pass of refuse_declared_text: counts the keys "leaf" and
+/// "dual" and takes the largest "horizon" and "outputs" (keys arrive
+/// unescaped, so no spelling of them is missed).
+struct DeclaredSizes : nlohmann::json_sax<nlohmann::json> {
+  std::string last_key;
+  double points = 0, horizon = 0, outputs = 1;
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t v) override { return take(static_cast<double>(v)); }
+  bool number_unsigned(number_unsigned_t v) override { return take(static_cast<double>(v)); }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool key(string_t& k) override {
+    last_key = k;
+    if (k == "leaf" || k == "dual") points += 1;
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+  bool take(double v) {
+    if (last_key == "horizon") horizon = std::max(horizon, v);
+    if (last_key == "outputs") outputs = std::max(outputs, v);
+    return true;
+  }
+};
+
+}  // namespace
+
+void refuse_declared_text(std::string_view text, const std::string& file) {
+  const double limit = verify_work_limits().max_total_work;
+  if (limit <= 0) return;
+  DeclaredSizes sizes;
+  if (!nlohmann::json::sax_parse(text, &sizes) || sizes.points == 0) return;  // the parser says what is wrong
+  const double m = sizes.horizon * sizes.outputs;
+  const double work = sizes.points * kWorkPerCube * m * m * m;
+  if (work > limit)
+    throw WorkLimitError(file + " declares " + number(sizes.points) + " dual points (class leaves) of order up to " +
+                         number(m) + ": their rebuild alone is about " + number(work) +
+                         " operations, above --max-total-work " + number(limit) +
+                         " (refused before the numbers are read); raise it with --max-total-work");
 }
 
 void charge_data_file(std::uintmax_t bytes, const std::string& path) {

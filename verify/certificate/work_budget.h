@@ -26,6 +26,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "data/experiment.h"
@@ -36,6 +37,15 @@ namespace lpvid {
 /// Starts the total and charges what the certificate alone declares: its
 /// dual points (class leaves) and its records (refused beyond --max-records).
 void charge_declared_work(const Certificate& c);
+
+/// Before the certificate's text is parsed into numbers (about 70 bytes of
+/// memory per byte of text): a streaming pass that keeps only the nesting
+/// counts the dual points the text declares (class leaves, a dual point) and
+/// their horizons and the model's outputs, and refuses (WorkLimitError) when
+/// their rebuild alone, as charge_declared_work estimates it, is beyond
+/// --max-total-work. Text that this pass cannot read is left to the parser
+/// (an early refusal only: charge_declared_work charges the parsed sizes).
+void refuse_declared_text(std::string_view text, const std::string& file);
 
 /// Charges reading, hashing and parsing one data file of `bytes` bytes.
 void charge_data_file(std::uintmax_t bytes, const std::string& path);
