@@ -3,6 +3,7 @@
 // when its file is absent (e.g. in CI, which has no measured data):
 //  - cascaded tanks: the README's figure, by the README's commands (below);
 //  - dryer (linear with a transport delay): no nonlinear effect may be added.
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -49,21 +50,27 @@ RankingResult diagnose(const Split& s, int degree) {
 // Long (about 5 minutes on 2 idle cores, the ranking's 3 rounds of 165 fits):
 // hence "Long" in its name (ctest -E Long leaves it out).
 //
-// Pinned: the README's figures (section "What the demo shows"), measured
-// 2026-11-27 on commit 49ca732. Tolerance: the README prints the test RMS
-// to 4 digits (0.4195 V) and the fit to 0.1 %; the figure is deterministic
-// for a build (the ranking's results do not depend on --threads or load), so
-// the tolerance is the printed rounding, one unit in the last digit (1e-4 V,
-// 0.1 %). It does not cover a change of the fits' local minima: the store
-// cascade's 27-start fits land in different basins when the arithmetic
-// changes in its last bits (the README's earlier 0.2881 V was not
-// reproduced by the same commit built on this machine), and such a change
-// must fail here and be re-measured in the README.
-// The figures the README states (section "What the demo shows").
-constexpr double kTanksTestRms = 0.4195, kTanksTestFit = 80.2;
-const char* const kTanksFirstEffect =
-    "state_nonlinearity hinge of the upstream level x1 (feeds x2), states in cascade form: e*max(x - c, 0) "
-    "(overflow at level c)";
+// Pinned: the outcomes measured for this commit's method, each to its
+// printed digits (test RMS to 1e-4 V, fit to 0.1 %, the first effect's label).
+// The figure is deterministic for a build on one machine (it does not depend
+// on --threads or load), but it is a draw between machines of this project's
+// kind: the store cascade's 27-start fits land in different basins when the
+// arithmetic changes in its last bits. Two outcomes have been measured for the
+// same commit (the README states both); any other one fails here and must be
+// re-measured. Making it one answer on every machine is open work (a tie rule
+// and reproducible basins), after which this list has one entry.
+struct TanksOutcome {
+  double rms, fit;
+  const char* first_effect;
+};
+const TanksOutcome kTanksOutcomes[] = {
+    {0.4195, 80.2,
+     "state_nonlinearity hinge of the upstream level x1 (feeds x2), states in cascade form: e*max(x - c, 0) "
+     "(overflow at level c)"},
+    {0.2881, 86.4,
+     "store cascade: two stores x1 -> x2 (A = I), outflow e*sqrt(max(x_i - c_i, 0)) and overflow "
+     "e*max(x_i - o_i, 0) from each, levels fitted; replaces the linear part (27 starts)"},
+};
 
 struct MeasuredDataCli : gen::CliRunner {};
 
@@ -84,10 +91,14 @@ TEST_F(MeasuredDataCli, LongTanksDemoFigureAsTheReadme) {
   const nlohmann::json& t = r.at("test");
   EXPECT_NEAR(t.at("rms_before").get<double>(), 0.6936, 1e-4);
   EXPECT_NEAR(t.at("fit_percent_before").get<double>(), 67.3, 0.1);
-  EXPECT_NEAR(t.at("rms_after").get<double>(), kTanksTestRms, 1e-4);
-  EXPECT_NEAR(t.at("fit_percent_after").get<double>(), kTanksTestFit, 0.1);
   ASSERT_FALSE(r.at("effects").empty());
-  EXPECT_EQ(r.at("effects")[0].at("label").get<std::string>(), kTanksFirstEffect);
+  const double rms = t.at("rms_after").get<double>(), fit = t.at("fit_percent_after").get<double>();
+  const std::string first = r.at("effects")[0].at("label").get<std::string>();
+  bool measured = false;
+  for (const TanksOutcome& o : kTanksOutcomes)
+    measured = measured || (std::abs(rms - o.rms) <= 1e-4 && std::abs(fit - o.fit) <= 0.1 && first == o.first_effect);
+  EXPECT_TRUE(measured) << "test RMS " << rms << " V, fit " << fit << " %, first effect \"" << first
+                        << "\": not one of the measured outcomes";
   // the published best linear approximation, an outside reference
   EXPECT_LT(t.at("rms_after").get<double>(), 0.7574);
 }
