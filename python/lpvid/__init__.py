@@ -20,6 +20,23 @@ The API reference is docs/python.md.
 """
 
 import logging
+import os
+
+
+def _pin_blas_kernel():
+    """OpenBLAS's Haswell kernels on every CPU that runs them, as the lpvid program pins them: one
+    BLAS code path, so one answer on every machine (docs/determinism.md). OpenBLAS reads the
+    variable when it is loaded; if another module loaded it first, its kernels stay as chosen."""
+    try:
+        with open("/proc/cpuinfo") as f:
+            flags = next((line.split(":", 1)[1].split() for line in f if line.startswith("flags")), [])
+    except OSError:
+        return
+    if "avx2" in flags and "fma" in flags:
+        os.environ["OPENBLAS_CORETYPE"] = "Haswell"
+
+
+_pin_blas_kernel()
 
 from . import benchmarks  # noqa: F401  (lpvid.benchmarks.cascaded_tanks(...), ...)
 from ._commands import (certify, compare, diagnose, fit_linear, generate, identify, invalidate, oracle, read_table,

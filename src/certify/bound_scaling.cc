@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/integer_power.h"
 #include "core/rms.h"
 #include "lmi/delta_form_lmi.h"
 
@@ -13,8 +14,8 @@ int decimal_exponent(double rms) {
   return static_cast<int>(std::lround(std::log10(rms)));
 }
 
-double SignalScales::scaled_delta(double delta) const { return delta * std::pow(10.0, z_exponent - y_exponent); }
-double SignalScales::scaled_dmax(double dmax) const { return dmax * std::pow(10.0, -y_exponent); }
+double SignalScales::scaled_delta(double delta) const { return delta * double_power_of_ten(z_exponent - y_exponent); }
+double SignalScales::scaled_dmax(double dmax) const { return dmax * double_power_of_ten(-y_exponent); }
 std::string SignalScales::y_scale_text() const { return "10^" + std::to_string(y_exponent); }
 std::string SignalScales::z_scale_text() const { return "10^" + std::to_string(z_exponent); }
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cli/blas_kernel.h"
 #include "cli/diagnose_report.h"
 #include "cli/report.h"
 #include "diagnose/residual_analysis.h"
@@ -105,6 +106,19 @@ ojson folds_json(const FoldFigures& f) {
   return a;
 }
 
+/// A tie among the accepted candidates (null: none): their ranks, the
+/// largest relative difference of their RMS, the tolerance and the rule.
+ojson tie_json(const RankingRound& rr) {
+  if (!rr.tie) return nullptr;
+  ojson ranks = ojson::array();
+  for (int k : rr.tie->tied) ranks.push_back(k + 1);
+  return {{"ranks", ranks},
+          {"chosen_rank", rr.chosen + 1},
+          {"largest_relative_difference", rr.tie->margin},
+          {"tolerance", kEffectTieTolerance},
+          {"rule", rr.tie->rule}};
+}
+
 /// A grid family's start chosen by the held-out folds (null: no choice).
 ojson start_choice_json(const StartChoice& s) {
   if (s.chosen < 0) return nullptr;
@@ -144,6 +158,7 @@ ojson rounds_json(const DiagnoseResult& res) {
     rounds.push_back({{"reference_validation", rr.reference_validation},
                       {"reference_held_out_folds", folds_json(rr.reference_folds)},
                       {"chosen", rr.chosen >= 0 ? ojson(rr.ranked[static_cast<size_t>(rr.chosen)].kind) : ojson("none")},
+                      {"tie", tie_json(rr)},
                       {"candidates", cands}});
   }
   return rounds;
@@ -288,6 +303,7 @@ void write_diagnose_json(const DiagnoseReport& in, const DiagnoseFigures& figure
   j["noise_normalisation"] = "RMS: ||d||_2 <= dmax*sqrt(n*ny)";
   j["toeplitz_mode"] = "signal";
   j["solver"] = in.solver;
+  j["blas"] = blas_kernel_text();  // docs/determinism.md
   j["relaxation"] = "delta, dmax: Theorem 2.1 for the least-squares model (output error on the whole estimation "
                     "record) on each window; theorem_3_1: the output map identified again on the first window by the "
                     "alternating method";

@@ -139,6 +139,13 @@ void print_round(const DiagnoseReport& in, size_t i) {
       std::cout << "        folds " << folds_text(c.folds) << "  (wins " << c.folds_won << " of " << c.folds.sse.size()
                 << (c.joint ? "; A, B re-fitted" : "") << start_choice_text(c.start) << ")\n";
   }
+  if (rr.tie) {
+    std::cout << "  tie: ranks";
+    for (int k : rr.tie->tied) std::cout << " " << k + 1;
+    std::cout << " are within " << num(100 * kEffectTieTolerance, 3) << "% of each other's held-out RMS (largest difference "
+              << num(100 * rr.tie->margin, 3) << "%): the data does not tell them apart; rank " << rr.chosen + 1
+              << " is taken by the tie rule (" << rr.tie->rule << ")\n";
+  }
   if (rr.chosen < 0)
     std::cout << "  -> none: no candidate " << (in.folds ? "passes the rule above against " : "lowers the validation RMS by the required share below ")
               << num(rr.reference_validation) << "\n";

@@ -4,10 +4,12 @@
 #include <string>
 #include <vector>
 
+#include "cli/blas_kernel.h"
 #include "cli/command_line.h"
 #include "core/file_io.h"
 
 int main(int argc, char** argv) {
+  if (argc >= 1) lpvid::cli::pin_blas_kernel(argv);  // first: it may start the program again (cli/blas_kernel.h)
   lpvid::remove_outputs_on_interrupt("lpvid");  // before any thread: Ctrl-C leaves nothing half-done
   lpvid::end_run_after_deadline("lpvid");       // --timeout's backstop (idle until a deadline is set)
   if (argc < 1) return lpvid::cli::run_lpvid({});

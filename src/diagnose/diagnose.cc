@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "core/deadline.h"
+#include "data/fitting_precision.h"
 #include "core/input_error.h"
 #include "core/parallel_for.h"
 #include "diagnose/effect_reading.h"
@@ -257,10 +258,15 @@ void score_tests(DiagnoseResult& out, const std::vector<Experiment<double>>& tes
 
 }  // namespace
 
-DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_d,
-                        const Experiment<Rational>& est_q, const Experiment<double>& selection,
-                        const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options,
+DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_data,
+                        const Experiment<Rational>& est_q, const Experiment<double>& selection_data,
+                        const std::vector<Experiment<double>>& test_data, const DiagnoseOptions& options,
                         SdpSolver& solver) {
+  // every fit, score and choice reads the data at the fits' precision
+  // (data/fitting_precision.h); the certificates read est_q, the data as written
+  const Experiment<double> est_d = at_fitting_precision(est_data), selection = at_fitting_precision(selection_data);
+  std::vector<Experiment<double>> tests;
+  for (const Experiment<double>& t : test_data) tests.push_back(at_fitting_precision(t));
   const std::vector<JointWindow> windows = bound_windows(est_d, options);
   check_options(est_d, est_q, selection, tests, options, all_pieces(windows, false));
   announce_bound_cost(all_pieces(windows, true), declared, options);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/integer_power.h"
 #include "core/rms.h"
 #include "diagnose/cascade_form.h"
 #include "diagnose/store_cascade.h"
@@ -434,7 +435,7 @@ void output_polynomial_regression_starts(const CandidateContext& cx, const std::
   Mat<double> X(n, p);
   for (Eigen::Index k = 0; k < n; ++k)
     for (Eigen::Index i = 0, e = 0; e <= p; ++e)
-      if (e != 1) X(k, i++) = std::pow(v(k, 0), static_cast<double>(e));
+      if (e != 1) X(k, i++) = integer_power(v(k, 0), static_cast<int>(e));
   const Vec<double> beta = X.colPivHouseholderQr().solve(Vec<double>(est.y.col(0) - v.col(0)));
   if (!beta.allFinite()) return;
   std::vector<double> cl = c;
@@ -451,12 +452,12 @@ void output_polynomial_kernel_start(const CandidateContext& cx, const Vec<double
   if (w.size() == 0) return;
   const Eigen::Index p = cx.o.polynomial_degree;
   Mat<double> X(w.size(), p + 1);
-  for (Eigen::Index e = 0; e <= p; ++e) X.col(e) = w.array().pow(static_cast<double>(e)).matrix();
+  for (Eigen::Index e = 0; e <= p; ++e) X.col(e) = w.unaryExpr([e](double x) { return integer_power(x, static_cast<int>(e)); });
   const Vec<double> g = X.colPivHouseholderQr().solve(Vec<double>(cx.est.y.col(0)));
   if (!(g.allFinite() && std::abs(g(1)) > 0)) return;
   std::vector<double> cl = c;
   cl[0] = g(0);
-  for (Eigen::Index e = 2; e <= p; ++e) cl[static_cast<size_t>(e)] = g(e) / std::pow(g(1), static_cast<double>(e));
+  for (Eigen::Index e = 2; e <= p; ++e) cl[static_cast<size_t>(e)] = g(e) / integer_power(g(1), static_cast<int>(e));
   const LpvModel<double> s = with_map(cx.base, kOutputMap, StaticKind::kPolynomial, 0, 0, cl);
   starts.push_back(fitted_to_target(s, cx.est, g(1) * w));
 }

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <mutex>
+#include <tuple>
 
 #include "core/parallel_for.h"
 #include "data/experiment_builder.h"
@@ -515,12 +517,11 @@ void rank_fold_round(RankingRound& r, const std::vector<EffectCandidate>& cands,
     r.ranked.back().family = i + 1;
   }
   set_explained(r);
-  // the best-scored candidate that passes the rule of fold_plan.h
+  // the best-scored candidate that passes the rule of fold_plan.h, unless tied
+  std::vector<int> accepted;
   for (size_t i = 0; i < r.ranked.size(); ++i)
-    if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain)) {
-      r.chosen = static_cast<int>(i);
-      break;
-    }
+    if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain)) accepted.push_back(static_cast<int>(i));
+  r.chosen = effect_tie_rule(r.ranked, accepted, r.tie);
 }
 
 /// The round's chosen candidate becomes the chain's current model, on the
@@ -575,6 +576,48 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
 }
 
 }  // namespace
+
+int physical_form_rank(const std::string& kind) {
+  static const char* const order[] = {"input_delay",       "input_saturation", "output_saturation",
+                                      "dead_zone",         "abs_value",        "state_nonlinearity",
+                                      "input_polynomial",  "output_polynomial", "output_piecewise_linear",
+                                      "basis_term"};
+  for (size_t i = 0; i < std::size(order); ++i)
+    if (kind == order[i]) return static_cast<int>(i);
+  return static_cast<int>(std::size(order));
+}
+
+int effect_tie_rule(const std::vector<ScoredCandidate>& ranked, const std::vector<int>& accepted,
+                    std::optional<EffectTie>& tie) {
+  tie.reset();
+  if (accepted.empty()) return -1;
+  const double best = ranked[static_cast<size_t>(accepted.front())].rms_validation;
+  EffectTie t;
+  for (int i : accepted) {
+    const double d = (ranked[static_cast<size_t>(i)].rms_validation - best) / best;
+    if (std::abs(d) <= kEffectTieTolerance) {
+      t.tied.push_back(i);
+      t.margin = std::max(t.margin, std::abs(d));
+    }
+  }
+  if (t.tied.size() < 2) return accepted.front();
+  const auto key = [&](int i) {
+    const ScoredCandidate& c = ranked[static_cast<size_t>(i)];
+    return std::tuple(c.effect_parameters, physical_form_rank(c.kind), c.label);
+  };
+  int chosen = t.tied.front();
+  for (int i : t.tied)
+    if (key(i) < key(chosen)) chosen = i;
+  // the first key that separates the chosen one from the next best of the tie
+  int runner = -1;
+  for (int i : t.tied)
+    if (i != chosen && (runner < 0 || key(i) < key(runner))) runner = i;
+  const auto [p0, f0, l0] = key(chosen);
+  const auto [p1, f1, l1] = key(runner);
+  t.rule = p0 != p1 ? "fewer parameters" : f0 != f1 ? "physical form" : "label order";
+  tie = t;
+  return chosen;
+}
 
 StartChoice choose_start_by_folds(const std::vector<std::vector<double>>& sse, const std::vector<Eigen::Index>& count,
                                   const std::vector<FitResult>& whole) {
@@ -670,12 +713,19 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
                  std::to_string(cands.size()) + " (" + cands[i].label + ")");
     });
     set_explained(r);
-    if (!r.ranked.empty() && r.ranked.front().rms_validation <= (1.0 - o.min_gain) * r.reference_validation) {
-      r.chosen = 0;
-      current = r.ranked.front().model;
-      current_est = r.ranked.front().rms_estimation;
-      current_val = r.ranked.front().rms_validation;
-      res.chosen.push_back(r.ranked.front());
+    // the best-scored candidate if it lowers the validation RMS by the required share, unless tied
+    std::vector<int> accepted;
+    const auto passes = [&](size_t i) { return r.ranked[i].rms_validation <= (1.0 - o.min_gain) * r.reference_validation; };
+    if (!r.ranked.empty() && passes(0))
+      for (size_t i = 0; i < r.ranked.size(); ++i)
+        if (passes(i)) accepted.push_back(static_cast<int>(i));
+    r.chosen = effect_tie_rule(r.ranked, accepted, r.tie);
+    if (r.chosen >= 0) {
+      const ScoredCandidate& c = r.ranked[static_cast<size_t>(r.chosen)];
+      current = c.model;
+      current_est = c.rms_estimation;
+      current_val = c.rms_validation;
+      res.chosen.push_back(c);
     }
     const bool stop = r.chosen < 0;
     res.rounds.push_back(std::move(r));

@@ -41,6 +41,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,20 @@ struct ScoredCandidate {
   size_t family = 0;               ///< fold mode: its index among the round's fitted families (internal)
 };
 
+/// Two accepted candidates whose held-out (or validation) RMS differ by at
+/// most this fraction of the lower one are a tie: the data does not tell them
+/// apart, and a change far below the measurement's resolution could reorder
+/// them. A tie is decided by a fixed rule (effect_tie_rule), not by the order
+/// of the two figures, and the report says so.
+inline constexpr double kEffectTieTolerance = 0.01;
+
+/// A tie among the accepted candidates of a round (kEffectTieTolerance).
+struct EffectTie {
+  std::vector<int> tied;      ///< indices into RankingRound::ranked, best score first (the chosen one among them)
+  double margin = 0;          ///< largest relative RMS difference to the best-scored tied candidate
+  std::string rule;           ///< why the chosen one: "fewer parameters", "physical form", "label order"
+};
+
 struct RankingRound {
   LpvModel<double> current;         ///< the model the candidates were added to
   double reference_validation = 0;  ///< what an effect must beat
@@ -119,7 +134,23 @@ struct RankingRound {
   FoldFigures reference_folds;      ///< fold mode: the reference's held-out figures
   std::vector<ScoredCandidate> ranked;  ///< best score first
   int chosen = -1;                      ///< index into ranked, -1: none
+  std::optional<EffectTie> tie;         ///< set when the chosen candidate was one of a tie
 };
+
+/// The kinds in the tie rule's order of physical form: a named mechanism
+/// before a generic expansion (a delay, a saturation, a dead zone, a sensor's
+/// |.|, a state nonlinearity, a polynomial map, a piecewise-linear map, a
+/// basis term). Unknown kinds come last.
+int physical_form_rank(const std::string& kind);
+
+/// Among the accepted candidates (`accepted`: indices into `ranked`, best
+/// score first), the choice: the best-scored one unless others are within
+/// kEffectTieTolerance of its RMS; then, among those, the fewest effect
+/// parameters, then the lowest physical_form_rank, then the label's order.
+/// Returns the index into `ranked` (-1 when `accepted` is empty) and sets
+/// `tie` when more than one was tied.
+int effect_tie_rule(const std::vector<ScoredCandidate>& ranked, const std::vector<int>& accepted,
+                    std::optional<EffectTie>& tie);
 
 struct RankingResult {
   LpvModel<double> before, after;  ///< explicit models (no unknowns), x0 of the estimation record

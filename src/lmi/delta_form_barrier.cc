@@ -8,6 +8,7 @@
 
 #include "core/deadline.h"
 #include "core/helper_thread.h"
+#include "core/integer_power.h"
 #include "core/parallel_for.h"
 #include "core/rms.h"
 #include "lmi/free_regressors.h"
@@ -675,7 +676,7 @@ class BarrierRun {
         ldlt_.compute_split(H_, helper_.get());
       } else {
         Hs_ = H_;
-        Hs_.diagonal().array() += scale_h * std::pow(10.0, -16 + 2 * shift);
+        Hs_.diagonal().array() += scale_h * double_power_of_ten(-16 + 2 * shift);
         ldlt_.compute_split(Hs_, helper_.get());
       }
       ldlt_of_H_ = shift == 0;

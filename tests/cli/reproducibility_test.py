@@ -68,6 +68,20 @@ def run(cmd, env):
     return p, time.monotonic() - started
 
 
+def generate_case(exe, work, env, n):
+    """A fresh folder work holding the generated demo's case (output_polynomial, seed 3, n samples) in
+    work/case; returns that folder."""
+    shutil.rmtree(work, ignore_errors=True)
+    case = work + "/case"
+    os.makedirs(case)
+    p, _ = run([exe, "generate", "effect-case", "--effect", "output_polynomial", "--n", str(n), "--seed", "3",
+                "--out", case + "/est.csv", "--validation-out", case + "/test.csv",
+                "--model-out", case + "/declared.json"], env)
+    if p.returncode != 0:
+        sys.exit(f"FAIL: generate exited {p.returncode}\n{p.stderr}")
+    return case
+
+
 def diagnose(exe, case, run_dir, threads, env):
     os.makedirs(run_dir, exist_ok=True)
     cmd = [exe, "diagnose", "--data", case + "/est.csv", "--model", case + "/declared.json",
@@ -84,15 +98,8 @@ def diagnose(exe, case, run_dir, threads, env):
 
 def main():
     exe, work = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
-    shutil.rmtree(work, ignore_errors=True)
-    case = work + "/case"
-    os.makedirs(case)
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    p, _ = run([exe, "generate", "effect-case", "--effect", "output_polynomial", "--n", "200", "--seed", "3",
-                "--out", case + "/est.csv", "--validation-out", case + "/test.csv",
-                "--model-out", case + "/declared.json"], env)
-    if p.returncode != 0:
-        sys.exit(f"FAIL: generate exited {p.returncode}\n{p.stderr}")
+    case = generate_case(exe, work, env, 200)
 
     quiet = diagnose(exe, case, work + "/quiet", 1, env)
     cores = os.cpu_count() or 1

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -50,27 +52,21 @@ RankingResult diagnose(const Split& s, int degree) {
 // Long (about 5 minutes on 2 idle cores, the ranking's 3 rounds of 165 fits):
 // hence "Long" in its name (ctest -E Long leaves it out).
 //
-// Pinned: the outcomes measured for this commit's method, each to its
-// printed digits (test RMS to 1e-4 V, fit to 0.1 %, the first effect's label).
-// The figure is deterministic for a build on one machine (it does not depend
-// on --threads or load), but it is a draw between machines of this project's
-// kind: the store cascade's 27-start fits land in different basins when the
-// arithmetic changes in its last bits. Two outcomes have been measured for the
-// same commit (the README states both); any other one fails here and must be
-// re-measured. Making it one answer on every machine is open work (a tie rule
-// and reproducible basins), after which this list has one entry.
+// Pinned: the outcome of this commit's method, to its printed digits (test
+// RMS to 1e-4 V, fit to 0.01 %, every effect's label). It is one answer on
+// every x86-64 machine and for the data moved by one ulp (docs/determinism.md;
+// ctest LastBit runs the perturbations, CpuVariants the CPU variants); a
+// change of lpvid's arithmetic can still move it (the fits are not convex),
+// and then the README, docs/benchmarks.md and this figure move together.
 struct TanksOutcome {
   double rms, fit;
-  const char* first_effect;
+  std::vector<std::string> effects;
 };
-const TanksOutcome kTanksOutcomes[] = {
-    {0.4195, 80.2,
-     "state_nonlinearity hinge of the upstream level x1 (feeds x2), states in cascade form: e*max(x - c, 0) "
-     "(overflow at level c)"},
-    {0.2881, 86.4,
-     "store cascade: two stores x1 -> x2 (A = I), outflow e*sqrt(max(x_i - c_i, 0)) and overflow "
-     "e*max(x_i - o_i, 0) from each, levels fitted; replaces the linear part (27 starts)"},
-};
+const TanksOutcome kTanksOutcome{
+    0.2921, 86.22,
+    {"store cascade: two stores x1 -> x2 (A = I), outflow e*sqrt(max(x_i - c_i, 0)) and overflow "
+     "e*max(x_i - o_i, 0) from each, levels fitted; replaces the linear part (27 starts)",
+     "output_polynomial degree 3"}};
 
 struct MeasuredDataCli : gen::CliRunner {};
 
@@ -91,14 +87,11 @@ TEST_F(MeasuredDataCli, LongTanksDemoFigureAsTheReadme) {
   const nlohmann::json& t = r.at("test");
   EXPECT_NEAR(t.at("rms_before").get<double>(), 0.6936, 1e-4);
   EXPECT_NEAR(t.at("fit_percent_before").get<double>(), 67.3, 0.1);
-  ASSERT_FALSE(r.at("effects").empty());
-  const double rms = t.at("rms_after").get<double>(), fit = t.at("fit_percent_after").get<double>();
-  const std::string first = r.at("effects")[0].at("label").get<std::string>();
-  bool measured = false;
-  for (const TanksOutcome& o : kTanksOutcomes)
-    measured = measured || (std::abs(rms - o.rms) <= 1e-4 && std::abs(fit - o.fit) <= 0.1 && first == o.first_effect);
-  EXPECT_TRUE(measured) << "test RMS " << rms << " V, fit " << fit << " %, first effect \"" << first
-                        << "\": not one of the measured outcomes";
+  std::vector<std::string> effects;
+  for (const auto& e : r.at("effects")) effects.push_back(e.at("label").get<std::string>());
+  EXPECT_EQ(effects, kTanksOutcome.effects);
+  EXPECT_NEAR(t.at("rms_after").get<double>(), kTanksOutcome.rms, 1e-4);
+  EXPECT_NEAR(t.at("fit_percent_after").get<double>(), kTanksOutcome.fit, 0.01);
   // the published best linear approximation, an outside reference
   EXPECT_LT(t.at("rms_after").get<double>(), 0.7574);
 }
