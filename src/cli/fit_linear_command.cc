@@ -14,6 +14,7 @@
 #include "cli/inputs.h"
 #include "cli/report.h"
 #include "core/input_error.h"
+#include "data/fitting_precision.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "fit/linear_fit.h"
@@ -34,11 +35,13 @@ struct FitLinearArgs {
   SignalInfoArgs signal_info;  ///< --sample-time, --unit
 };
 
-/// Reads a data file (optionally headerless with `names`) and a row window.
+/// Reads a data file (optionally headerless with `names`) and a row window,
+/// at the fits' precision (data/fitting_precision.h: the order chosen and the
+/// model fitted do not move when the file's numbers move by one ulp).
 Experiment<double> load(const std::string& path, const std::vector<std::string>& names, const std::string& rows,
                         const ColumnMap& cols) {
   const TextTable table = names.empty() ? read_table(path) : read_table(path, names);
-  Experiment<double> e = make_experiment<double>(table, cols);
+  Experiment<double> e = at_fitting_precision(make_experiment<double>(table, cols));
   if (rows.empty()) return e;
   const auto [b, end] = parse_row_range(rows, "--rows");
   if (end > e.n()) throw InputError("--rows " + rows + ": " + path + " has only " + std::to_string(e.n()) + " rows");

@@ -25,7 +25,9 @@ namespace lpvid {
 inline constexpr int kFittingDigits = 10;
 
 /// x correctly rounded to kFittingDigits significant decimal digits (the
-/// nearest double to that decimal); 0, ±inf and NaN unchanged. Idempotent.
+/// nearest double to that decimal); 0, ±inf, NaN and a value whose rounded
+/// decimal is beyond the largest double (|x| > 1.797693134e308) unchanged.
+/// Idempotent.
 double at_fitting_precision(double x);
 
 /// Every sample of u, y, ρ and every record's x0 at_fitting_precision;

@@ -6,7 +6,6 @@
 #include <Eigen/QR>
 
 #include "core/rms.h"
-#include "data/fitting_precision.h"
 #include "core/input_error.h"
 #include "model/simulate.h"
 
@@ -89,9 +88,8 @@ LmResult refine(ObserverForm& form, const Experiment<double>& est, const LmOptio
 
 }  // namespace
 
-LinearFit fit_linear(const Experiment<double>& est_data, const ColumnMap& columns, const LinearFitOptions& options) {
-  check_inputs(est_data, options.order);
-  const Experiment<double> est = at_fitting_precision(est_data);  // data/fitting_precision.h
+LinearFit fit_linear(const Experiment<double>& est, const ColumnMap& columns, const LinearFitOptions& options) {
+  check_inputs(est, options.order);
   LinearFit fit;
   fit.form = arx_initialisation(est, options.order, options.offset);
   refit_numerator(fit.form, est);
@@ -117,9 +115,8 @@ LinearFit fit_linear(const Experiment<double>& est_data, const ColumnMap& column
   return fit;
 }
 
-OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>& val_data, const ColumnMap& columns,
+OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>& val, const ColumnMap& columns,
                          int max_order, bool offset, int init_samples, const LmOptions& lm) {
-  const Experiment<double> val = at_fitting_precision(val_data);  // as fit_linear reads est
   if (max_order < 1) throw InputError("fit-linear: the largest order must be >= 1, got " + std::to_string(max_order));
   OrderChoice choice;
   Vec<double> previous;
