@@ -37,6 +37,7 @@
 #include "model/simulate.h"
 #include "verify/certificate/certificate_check.h"
 #include "two_state_model.h"
+#include "solvers/solver_factory.h"
 
 using namespace lpvid;
 

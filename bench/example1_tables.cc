@@ -27,6 +27,7 @@
 #include "certify/certify.h"
 #include "data/data_reference.h"
 #include "identify/identify.h"
+#include "solvers/solver_factory.h"
 
 using namespace lpvid;
 

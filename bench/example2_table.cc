@@ -32,6 +32,7 @@
 #include "data/data_reference.h"
 #include "identify/identify.h"
 #include "model/simulate.h"
+#include "solvers/solver_factory.h"
 
 using namespace lpvid;
 

@@ -25,6 +25,7 @@
 #include "identify/identify.h"
 #include "model/simulate.h"
 #include "two_state_model.h"
+#include "solvers/solver_factory.h"
 
 using namespace lpvid;
 

@@ -31,6 +31,7 @@
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "verify/certificate/certificate_check.h"
 #include "bench_measure.h"
 
@@ -114,7 +115,6 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   CertifyOptions co;
   co.objective.kind = BoundObjective::Kind::kMinDmax;
   co.objective.delta = delta;
-  co.fixed_delta_text = double_to_text(delta);
   co.data = read_data_table(data).reference;
   const std::string upper_file = (dir / (tag + ".interval.json")).string();
   co.progress = [tag](const std::string& stage) { std::fprintf(stderr, "  [%s] %s\n", tag.c_str(), stage.c_str()); };
@@ -151,7 +151,6 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   CertifyOptions io = co;
   io.objective.kind = BoundObjective::Kind::kFeasibility;
   io.objective.dmax = dmax;
-  io.fixed_dmax_text = double_to_text(dmax);
   t0 = StageClock{};
   const CertifiedBounds v = certify_fixed_model(model, exp, io, *solver);
   row.invalidate = t0.wall();

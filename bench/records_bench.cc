@@ -31,6 +31,7 @@
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "verify/certificate/certificate_check.h"
 #include "bench_measure.h"
 
@@ -78,7 +79,6 @@ Row run(const LpvModel<Rational>& model, const std::vector<Experiment<Rational>>
   CertifyOptions co;
   co.objective.kind = BoundObjective::Kind::kMinDmax;
   co.objective.delta = delta;
-  co.fixed_delta_text = double_to_text(delta);
   for (size_t k = 0; k < records.size(); ++k) {
     const std::string path = (dir / (tag + ".record" + std::to_string(k) + ".csv")).string();
     write_csv(path, experiment_columns(model.columns, records[k]));

@@ -32,6 +32,7 @@
 
 #include "solvers/lmi_program.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "solvers/sdpa_file.h"
 
 namespace {

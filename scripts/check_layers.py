@@ -4,7 +4,10 @@ level, and a file may include only headers of its own folder or of a lower
 level. An include that runs up a floor, a folder without a level, or a circle
 of folders (which a strict order excludes, and which is reported by itself
 for clarity) makes this check fail with the file and line of each offending
-include. Run by ctest (IncludeLayers), hence by CI.
+include. Inside a folder the files must have an order too: a circle of files
+(x.h with x.cc count as one file, a Python module's imports count, also those
+inside a function) fails, named file by file. Run by ctest (IncludeLayers),
+hence by CI.
 
     python3 scripts/check_layers.py [repository root]
 """
@@ -36,6 +39,50 @@ LEVELS = [
 ]
 LEVEL = {room: i for i, (room, _) in enumerate(LEVELS)}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+PY_IMPORT = re.compile(r'^\s*from\s+(\.+|lpvid\.?)([A-Za-z_][\w.]*)?\s+import\s+(.+)$')
+
+
+def unit_of(path):
+    """A file's unit: its path without the extension (x.h and x.cc are one)."""
+    return os.path.splitext(path)[0]
+
+
+def python_targets(root, path, line):
+    """The repository paths of the package modules a Python import line names."""
+    m = PY_IMPORT.match(line)
+    if not m:
+        return []
+    base = os.path.dirname(path)
+    module = (m.group(2) or "").replace(".", "/")
+    names = [n.strip().split(" ")[0] for n in m.group(3).strip("()\\ ").split(",")]
+    found = []
+    for candidate in ([module] if module else []) + [os.path.join(module, n) for n in names if n]:
+        f = os.path.join(base, candidate + ".py")
+        if os.path.isfile(os.path.join(root, f)):
+            found.append(os.path.normpath(f))
+            break
+    return found
+
+
+def circles_of(edges):
+    """Every circle a depth-first search of the graph `edges` meets."""
+    state, stack, circles = {}, [], []
+
+    def visit(v):
+        state[v] = 1
+        stack.append(v)
+        for w in sorted(edges.get(v, ())):
+            if state.get(w) == 1:
+                circles.append(stack[stack.index(w):] + [w])
+            elif w not in state:
+                visit(w)
+        stack.pop()
+        state[v] = 2
+
+    for v in sorted(edges):
+        if v not in state:
+            visit(v)
+    return circles
 
 
 def room_of(path):
@@ -56,14 +103,21 @@ def resolve(root, inc):
 
 def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
-    problems, edges = [], {}
+    problems, edges, unit_edges = [], {}, {}
     files = 0
     for top in ("src", "verify", "python"):
         for dirpath, _, names in os.walk(os.path.join(root, top)):
             for name in sorted(names):
+                path = os.path.relpath(os.path.join(dirpath, name), root)
+                if name.endswith(".py"):
+                    with open(os.path.join(root, path), encoding="utf-8") as f:
+                        for line in f:
+                            for target in python_targets(root, path, line):
+                                if unit_of(target) != unit_of(path):
+                                    unit_edges.setdefault(unit_of(path), set()).add(unit_of(target))
+                    continue
                 if not name.endswith((".h", ".cc")):
                     continue
-                path = os.path.relpath(os.path.join(dirpath, name), root)
                 files += 1
                 a = room_of(path)
                 if a not in LEVEL:
@@ -77,6 +131,8 @@ def main():
                         target = resolve(root, m.group(1))
                         if target is None:
                             continue
+                        if unit_of(target) != unit_of(path):
+                            unit_edges.setdefault(unit_of(path), set()).add(unit_of(target))
                         b = room_of(target)
                         if b == a:
                             continue
@@ -86,30 +142,17 @@ def main():
                         elif LEVEL[b] > LEVEL[a]:
                             problems.append(f"{path}:{line_no}: includes {m.group(1)}: {a} (level {LEVEL[a]}) "
                                             f"may not include {b} (level {LEVEL[b]}, higher)")
-    # circles of rooms (depth-first search on the room graph)
-    state, stack, circles = {}, [], []
-
-    def visit(v):
-        state[v] = 1
-        stack.append(v)
-        for w in sorted(edges.get(v, ())):
-            if state.get(w) == 1:
-                circles.append(stack[stack.index(w):] + [w])
-            elif w not in state:
-                visit(w)
-        stack.pop()
-        state[v] = 2
-
-    for v in sorted(edges):
-        if v not in state:
-            visit(v)
+    circles = circles_of(edges)
     problems += ["circle of folders: " + " -> ".join(c) for c in circles]
+    problems += ["circle of files (each includes or imports the next): " + " -> ".join(c)
+                 for c in circles_of(unit_edges)]
     if problems:
         print("\n".join(problems))
         print(f"check_layers: {len(problems)} problem(s) in {files} files")
         return 1
     print(f"check_layers: {files} files in {len(LEVELS)} levels, "
-          f"{sum(len(v) for v in edges.values())} folder-to-folder include edges, all downward; no circles")
+          f"{sum(len(v) for v in edges.values())} folder-to-folder include edges, all downward; "
+          f"no circles of folders or of files")
     return 0
 
 

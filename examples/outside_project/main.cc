@@ -15,7 +15,7 @@
 #include "certify/certify.h"
 #include "data/data_reference.h"
 #include "model/model_file.h"
-#include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "verify/certificate/certificate_check.h"
 
 int main(int argc, char** argv) {

@@ -16,31 +16,15 @@ import numpy as np
 from ._errors import EXIT_CODES, LpvidError
 from ._files import number_text, read_json, read_table, write_data, write_model
 from ._inputs import as_names, data_files, generic_names, generic_table, is_names, write_table
-from ._options import check, command_options, option_words
-from ._run import error_message, run_captured
+from ._invoke import FILES, raise_unless_answer, run
+from ._simulate import simulate_document
 from ._workspace import read_bytes, workspace
 from .certificate import Certificate
 from .model import Model, as_model
 from .results import (BasisSelection, Bounds, Comparison, Diagnosis, Generated, Identification, Interval, ModelScore,
                       OracleRun, Result, Simulation, Tradeoff, TradeoffPoint, exact)
 
-# Options the package sets itself: the files a run reads and writes.
-_FILES = ("data", "model", "report", "certificate", "model-out", "out", "plots", "csv", "plot", "work", "junit",
-          "test", "validation", "validation-out", "truth-out")
-
-
 # -- running -------------------------------------------------------------------
-def _run(function, command, words, options, *, own=(), managed=_FILES, progress=None, quiet=False):
-    check(function, command, options, own=own, managed=managed)
-    args = command.split() + list(words) + option_words(options)
-    if quiet and "quiet" in command_options(command):
-        args.append("--quiet")
-    return run_captured("lpvid", args, progress)
-
-
-def _raise_unless_answer(code, output, messages, result=None):
-    if code not in (0, 1):
-        raise LpvidError(code, error_message(output, messages, EXIT_CODES.get(code, "")), result)
 
 
 def _report(path):
@@ -165,7 +149,7 @@ def _bounds_command(function, command, cls, u, y, rho, model, bounds, *, data, r
         _remove_earlier_outputs(report_path, out_model)
         if out_model:
             words += ["--model-out", out_model]
-        code, output, messages = _run(function, command, words + _bound_words(*bounds), options, progress=progress,
+        code, output, messages = run(function, command, words + _bound_words(*bounds), options, progress=progress,
                                       quiet=quiet)
         report = _report(report_path)
         result = cls(command=command, code=code, report=report, output=output, messages=messages,
@@ -175,7 +159,7 @@ def _bounds_command(function, command, cls, u, y, rho, model, bounds, *, data, r
         if out_model and os.path.isfile(out_model):
             result.model = Model.from_file(out_model)
             result.model.report = report
-        _raise_unless_answer(code, output, messages, result if report else None)
+        raise_unless_answer(code, output, messages, result if report else None)
         return result
 
 
@@ -267,7 +251,7 @@ def tradeoff(u=None, y=None, rho=None, model=None, *, lambdas=None, data=None, r
                                           "--plots", ws]
         if lambdas is not None:
             words += ["--lambdas"] + [number_text(v) for v in lambdas]
-        code, output, messages = _run("tradeoff", "tradeoff", words, options, own=("lambdas",), progress=progress,
+        code, output, messages = run("tradeoff", "tradeoff", words, options, own=("lambdas",), progress=progress,
                                       quiet=quiet)
         report = _report(report_path)
         certs = _certificates(report, keep)
@@ -278,7 +262,7 @@ def tradeoff(u=None, y=None, rho=None, model=None, *, lambdas=None, data=None, r
                                                verified=bool(p.get("verified")),
                                                certificate=certs.get(p.get("certificate"))))
         result._plots = _plots(ws)
-        _raise_unless_answer(code, output, messages, result if report else None)
+        raise_unless_answer(code, output, messages, result if report else None)
         return result
 
 
@@ -334,7 +318,7 @@ def diagnose(u=None, y=None, rho=None, model=None, *, test=None, delta=None, dma
             words += ["--test"] + tests
         if figures:
             words += ["--plots", os.path.join(ws, "plots")]
-        code, output, messages = _run("diagnose", "diagnose", words + _bound_words(delta, dmax, lambda_), options,
+        code, output, messages = run("diagnose", "diagnose", words + _bound_words(delta, dmax, lambda_), options,
                                       progress=progress, quiet=quiet)
         report = _report(report_path)
         certs = _certificates(report, keep)
@@ -346,7 +330,7 @@ def diagnose(u=None, y=None, rho=None, model=None, *, test=None, delta=None, dma
             result.model = Model.from_file(out_model)
             result.model.report = report
         result._plots = _plots(os.path.join(ws, "plots")) if figures else {}
-        _raise_unless_answer(code, output, messages, result if report else None)
+        raise_unless_answer(code, output, messages, result if report else None)
         return result
 
 
@@ -393,10 +377,10 @@ def fit_linear(u=None, y=None, *, data=None, order=None, validation=None, out_di
         if order is not None:
             words += ["--order", number_text(order)]
         report_path, out_model = os.path.join(ws, "fit-linear.json"), os.path.join(ws, "fit-linear.model.json")
-        code, output, messages = _run("fit_linear", "fit-linear", words + ["--model-out", out_model, "--report",
+        code, output, messages = run("fit_linear", "fit-linear", words + ["--model-out", out_model, "--report",
                                                                           report_path], options, progress=progress,
                                       quiet=quiet)
-        _raise_unless_answer(code, output, messages)
+        raise_unless_answer(code, output, messages)
         model = Model.from_file(out_model)
         model.report = _report(report_path)
         return model
@@ -426,27 +410,7 @@ def simulate(model, u=None, rho=None, *, data=None, x0=None, out_dir=None, **opt
     simulate`), from the model's x0 or x0=[...]. Returns a Simulation: y
     (samples x outputs, offset included) and z (the uncertainty channel's
     input)."""
-    m = as_model(model)
-    if x0 is not None:
-        m = Model(m.document)
-        m.document["x0"] = [number_text(v) for v in x0]
-    with workspace("simulate", out_dir) as ws:
-        model_path = _model_file(ws, m)
-        u_names, y_names, rho_names = m.columns
-        if data is None:
-            zeros = None if u is None else np.zeros((len(u), len(y_names)))
-            paths = data_files(ws, m.document, u, zeros, rho)
-        else:
-            paths = data_files(ws, m.document, None, None, None, data)
-        out = os.path.join(ws, "simulate.csv")
-        code, output, messages = _run("simulate", "simulate", ["--data", paths[0], "--model", model_path, "--out",
-                                                               out], options)
-        _raise_unless_answer(code, output, messages)
-        table = read_table(out)
-    ys = [k for k in table if k.endswith("_hat")]
-    zs = [k for k in table if k not in ys]
-    stack = (lambda keys: np.column_stack([table[k] for k in keys]) if keys else np.zeros((0, 0)))
-    return Simulation(y=stack(ys), z=stack(zs), columns=list(table))
+    return simulate_document(as_model(model).document, u, rho, data=data, x0=x0, out_dir=out_dir, **options)
 
 
 def _model_files(ws, models):
@@ -513,8 +477,8 @@ def compare(u=None, y=None, models=None, rho=None, *, data=None, model=None, pre
         words += ["--report", report_path, "--out", series]
         if figures:
             words += ["--plots", ws]  # the figure is ws/compare.png
-        code, output, messages = _run("compare", "compare", words, options, progress=progress, quiet=quiet)
-        _raise_unless_answer(code, output, messages)
+        code, output, messages = run("compare", "compare", words, options, progress=progress, quiet=quiet)
+        raise_unless_answer(code, output, messages)
         report = _report(report_path)
         table = read_table(series) if os.path.isfile(series) else {}
         result = Comparison(command="compare", code=code, report=report, output=output, messages=messages,
@@ -559,8 +523,8 @@ def generate(which="example1", *, out_dir=None, **options):
             extra = {"model-out": "model.json"}
         for flag, name in extra.items():
             words += [f"--{flag}", os.path.join(ws, name)]
-        code, output, messages = _run("generate", "generate", words, options)
-        _raise_unless_answer(code, output, messages)
+        code, output, messages = run("generate", "generate", words, options)
+        raise_unless_answer(code, output, messages)
         result = Generated(command="generate", code=code, report={}, output=output, messages=messages,
                            out_dir=ws if out_dir is not None else None)
         for root, _, names in os.walk(ws):
@@ -587,11 +551,11 @@ def oracle(command, *, cases=None, out_dir=None, progress=None, **options):
         words = ["--command", command, "--report", report_path, "--work", os.path.join(ws, "work")]
         if cases is not None:
             words += ["--cases", number_text(cases)]
-        code, output, messages = _run("oracle", "oracle", words, options, own=("cases",), progress=progress)
+        code, output, messages = run("oracle", "oracle", words, options, own=("cases",), progress=progress)
         report = _report(report_path)
         result = OracleRun(command="oracle", code=code, report=report, output=output, messages=messages,
                            out_dir=ws if out_dir is not None else None, cases=report.get("cases") or [])
-        _raise_unless_answer(code, output, messages, result if report else None)
+        raise_unless_answer(code, output, messages, result if report else None)
         result.passed = code == 0
         return result
 

@@ -14,6 +14,7 @@ import os
 
 from ._errors import LpvidError
 from ._files import model_columns, read_json, write_model
+from ._simulate import simulate_document
 
 
 class Model:
@@ -96,8 +97,7 @@ class Model:
         scheduling rho), from the model's x0 (or x0=[...]). Returns a
         Simulation with y (samples x outputs) and z (the uncertainty
         channel's input). See lpvid.simulate."""
-        from ._commands import simulate
-        return simulate(self, u, rho, data=data, x0=x0, **options)
+        return simulate_document(self.document, u, rho, data=data, x0=x0, **options)
 
 
 def as_model(model):

@@ -12,7 +12,7 @@
 #include <map>
 #include <string>
 
-#include "certify/certify.h"
+#include "certify/certify_types.h"
 
 namespace lpvid {
 

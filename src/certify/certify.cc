@@ -13,7 +13,6 @@
 #include "lmi/relaxed_bmi_lmi.h"
 #include "certify/bound_scaling.h"
 #include "certify/dual_certify.h"
-#include "certify/fixed_bounds.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
@@ -31,12 +30,6 @@ double toeplitz_norm2(const Mat<double>& taps, Eigen::Index horizon, Eigen::Inde
   const Mat<double> T = tap_toeplitz_dense(padded, ny, nz);
   Eigen::SelfAdjointEigenSolver<Mat<double>> es(T.transpose() * T, Eigen::EigenvaluesOnly);
   return std::max(0.0, es.eigenvalues().maxCoeff());
-}
-
-/// Step 6: the certificate through its JSON text and back, checked by the
-/// verifier's core: what a file would carry is what is checked, once.
-CertificateVerdict round_trip_check(const Certificate& c, const Experiment<Rational>& exp) {
-  return check_certificate(parse_certificate(certificate_json(c), "the certificate (in memory)"), exp);
 }
 
 /// Steps 5–6, shared by both forms: δ² with the smallest margin whose
@@ -66,14 +59,13 @@ void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 n
   if (N > 300) margin = std::max(margin, 16.0 * (N + 1) * N * 0x1.0p-53);
   for (int attempt = 0; attempt < 5; ++attempt, margin *= 100) {
     if (o.objective.delta_fixed()) {
-      const Rational delta = fixed_delta(o);
-      c.delta2 = delta * delta;
+      c.delta2 = o.objective.delta.exact * o.objective.delta.exact;
     } else {
       c.delta2 = round_up_to_digits(exact_rational_of_double(norm2 * (1.0 + margin) + 1e-300), 12);
     }
     c.info["delta2_margin"] = margin;
     const Stopwatch check;
-    v = round_trip_check(c, exp);
+    v = check_round_trip(c, exp, "the certificate (in memory)");  // step 6: as a file would carry it
     checking += check.seconds();
     if (v.holds || o.objective.delta_fixed()) break;
   }
@@ -98,8 +90,7 @@ void finish_certificate(Certificate& c, const Experiment<Rational>& exp, Norm2 n
 /// ‖d‖²/(n·ny) rounded up. Returns false (with out.reason) if a fixed d_max fails.
 bool set_dmax2(Certificate& c, const Rational& dd, const Rational& N, const CertifyOptions& o, CertifiedBounds& out) {
   if (o.objective.dmax_fixed()) {
-    const Rational dmax = fixed_dmax(o);
-    c.dmax2 = dmax * dmax;
+    c.dmax2 = o.objective.dmax.exact * o.objective.dmax.exact;
     if (dd > N * c.dmax2) {
       out.reason = "after rounding, ||d||^2/(n*ny) = " + double_to_text(nearest_double(dd / N)) +
                    " exceeds the fixed dmax^2";
@@ -139,7 +130,7 @@ void certify_taps(const LpvModel<Rational>& model, const Experiment<Rational>& e
   double shrink = 1.0;
   if (o.objective.delta_fixed()) {
     const double norm = std::sqrt(toeplitz_norm2(taps, horizon, ny, nz));
-    const double cap = o.objective.delta * (1.0 - 1e-8);
+    const double cap = o.objective.delta.approx * (1.0 - 1e-8);
     if (norm > cap) shrink = cap / norm;
   }
   for (Eigen::Index i = 0; i < taps.rows(); ++i)
@@ -177,22 +168,6 @@ ExactSignals exact_signals(const LpvModel<Rational>& model, const Experiment<Rat
 
 }  // namespace
 
-Rational objective_at(const BoundObjective& obj, const Rational& delta2, const Rational& dmax2) {
-  switch (obj.kind) {
-    case BoundObjective::Kind::kMinDelta:
-      return delta2;
-    case BoundObjective::Kind::kMinDmax:
-      return dmax2;
-    case BoundObjective::Kind::kWeighted: {
-      const Rational lambda = rational_from_text(double_to_text(obj.lambda));
-      return lambda * delta2 + (Rational(1) - lambda) * dmax2;
-    }
-    case BoundObjective::Kind::kFeasibility:
-      break;
-  }
-  return Rational(0);
-}
-
 namespace {
 
 std::string status_reason(const DeltaFormSolution& sol, const char* what) {
@@ -201,23 +176,6 @@ std::string status_reason(const DeltaFormSolution& sol, const char* what) {
 }
 
 }  // namespace
-
-void name_certificate_data(Certificate& c, const CertifyOptions& o, const Experiment<Rational>& exp) {
-  if (o.records.size() < 2) {
-    set_data_reference(c, o.data);
-    return;
-  }
-  if (!several_records(exp.records) || exp.records.size() != o.records.size())
-    throw std::invalid_argument("certification: " + std::to_string(o.records.size()) + " record references for " +
-                                std::to_string(std::max<size_t>(1, exp.records.size())) + " records of data");
-  set_record_references(c, o.records, exp.record_x0);
-}
-
-BoundObjective solver_objective(BoundObjective objective) {
-  if (objective.dmax_fixed()) objective.dmax *= 1.0 - 1e-7;
-  if (objective.delta_fixed()) objective.delta *= 1.0 - 1e-7;
-  return objective;
-}
 
 CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<Rational>& model,
                                  const Simulation<Rational>& sim, const Experiment<Rational>& exp, SignalScales* scales) {
@@ -235,44 +193,6 @@ CertifiedBounds certify_fixed(const LpvModel<Rational>& model, const Experiment<
                               const CertifyOptions& options, SdpSolver& solver) {
   return mode == ToeplitzMode::kSignal ? certify_fixed_model(model, exp, options, solver)
                                        : certify_fixed_model_paper(model, exp, options, solver);
-}
-
-CertifyOutcome outcome_of(const CertifiedBounds& b, const BoundObjective& objective) {
-  if (b.verified()) return CertifyOutcome::kVerified;
-  if (b.invalidated()) return CertifyOutcome::kInvalidated;
-  if (objective.kind == BoundObjective::Kind::kFeasibility) return CertifyOutcome::kUndecided;
-  if (b.solve_status == SolveStatus::kBackendError || b.solve_status == SolveStatus::kIterationLimit)
-    return CertifyOutcome::kSolverFailed;
-  return CertifyOutcome::kNotVerified;
-}
-
-const char* to_string(CertifyOutcome outcome) {
-  switch (outcome) {
-    case CertifyOutcome::kVerified: return "verified";
-    case CertifyOutcome::kInvalidated: return "invalidated";
-    case CertifyOutcome::kUndecided: return "undecided";
-    case CertifyOutcome::kSolverFailed: return "solver_failed";
-    case CertifyOutcome::kNotVerified: return "not_verified";
-  }
-  return "?";
-}
-
-std::string solve_status_text(const CertifiedBounds& b) {
-  return b.solve_status ? to_string(*b.solve_status) : "given taps (no solve)";
-}
-
-void add_stage_seconds(CertifiedBounds& into, const CertifiedBounds& from) {
-  into.signals_seconds += from.signals_seconds;
-  into.solve_seconds += from.solve_seconds;
-  into.upper_build_seconds += from.upper_build_seconds;
-  into.verify_seconds += from.verify_seconds;
-  into.total_seconds += from.total_seconds;
-}
-
-double relative_gap(const CertifiedBounds& b) {
-  if (!b.verified() || !b.lower.verified) return NAN;
-  if (b.upper == 0) return 0.0;
-  return nearest_double((b.upper - b.lower.value) / b.upper);
 }
 
 namespace {
@@ -513,7 +433,7 @@ CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment
   c.w = Mat<Rational>::Zero(n, ny);
   // A fixed δ = 0 forces T_w = 0: w = 0 exactly (the solver's w is only as
   // small as its tolerance, which the exact check of δ² = 0 rejects).
-  const bool zero_w = o.objective.delta_fixed() && o.objective.delta == 0.0;
+  const bool zero_w = o.objective.delta_fixed() && o.objective.delta.approx == 0.0;
   for (Eigen::Index k = zero_w ? n : sol.leading_zeros; k < n; ++k)
     for (Eigen::Index i = 0; i < ny; ++i) c.w(k, i) = round_to_digits(sol.w(k, i), o.digits);
   if (!set_dmax2(c, squared_norm(Mat<Rational>(r - c.w)), Rational(static_cast<long>(n * ny)), o, out)) return out;

@@ -54,7 +54,7 @@ void check_and_keep(Certificate& c, const Experiment<Rational>& exp, const Certi
   c.info["tool"] = "lpvid";
   c.info["objective"] = o.objective.describe();
   const Stopwatch check;
-  const CertificateVerdict v = check_certificate(parse_certificate(certificate_json(c), "the dual certificate (in memory)"), exp);
+  const CertificateVerdict v = check_round_trip(c, exp, "the dual certificate (in memory)");
   out.check_seconds += check.seconds();
   out.verified = v.holds;
   out.verifier_details = v.details;

@@ -24,18 +24,13 @@
 
 #include "core/scalar.h"
 #include "data/experiment.h"
-#include "certify/certify.h"
+#include "certify/certify_types.h"
+#include "certify/path_dual_build.h"
 #include "lmi/delta_form_lmi.h"
 #include "model/lpv_model.h"
 #include "model/simulate.h"
 
 namespace lpvid {
-
-/// The relative change of the compact dual's U (‖U' − U‖₂ ≤ this·‖U‖₂) that
-/// a compact certificate is built to survive: a verifier compiled elsewhere
-/// (another compiler, SIMD width or BLAS) rebuilds U in floating point with
-/// other last bits (docs/dual_certificates.md, "Portable acceptance").
-inline constexpr double kPathDualRebuildTolerance = 0x1.0p-30;
 
 /// A dual certificate's outcome.
 struct DualOutcome {

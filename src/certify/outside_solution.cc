@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "certify/certify.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"

@@ -21,7 +21,7 @@
 
 #include "core/scalar.h"
 #include "data/experiment.h"
-#include "certify/certify.h"
+#include "certify/certify_types.h"
 #include "lmi/delta_form_lmi.h"
 #include "model/lpv_model.h"
 #include "solvers/lmi_program.h"

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "certify/dual_certify.h"
-#include "certify/fixed_bounds.h"
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
 #include "toeplitz/fir.h"
@@ -138,8 +136,8 @@ DualClaim claim_of(const BoundObjective& obj) {
 
 FixedValues fixed_values(const CertifyOptions& o, DualClaim claim) {
   FixedValues f;
-  if (o.objective.delta_fixed()) f.delta2 = fixed_delta(o) * fixed_delta(o);
-  if (o.objective.dmax_fixed()) f.dmax2 = fixed_dmax(o) * fixed_dmax(o);
+  if (o.objective.delta_fixed()) f.delta2 = o.objective.delta.exact * o.objective.delta.exact;
+  if (o.objective.dmax_fixed()) f.dmax2 = o.objective.dmax.exact * o.objective.dmax.exact;
   if (claim == DualClaim::kWeighted) f.lambda = rational_from_text(double_to_text(o.objective.lambda));
   return f;
 }

@@ -10,13 +10,19 @@
 #include <utility>
 
 #include "core/scalar.h"
-#include "certify/certify.h"
+#include "certify/certify_types.h"
 #include "lmi/delta_form_lmi.h"
 #include "toeplitz/delta_form_dual.h"
 #include "verify/certificate/certificate_file.h"
 #include "verify/certificate/path_dual.h"
 
 namespace lpvid {
+
+/// The relative change of the compact dual's U (‖U' − U‖₂ ≤ this·‖U‖₂) that
+/// a compact certificate is built to survive: a verifier compiled elsewhere
+/// (another compiler, SIMD width or BLAS) rebuilds U in floating point with
+/// other last bits (docs/dual_certificates.md, "Portable acceptance").
+inline constexpr double kPathDualRebuildTolerance = 0x1.0p-30;
 
 /// x on the decimal grid of `unit` (an exact power of ten), as a rational.
 Rational on_grid(double x, double unit_d, const Rational& unit);

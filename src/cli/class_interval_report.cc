@@ -6,6 +6,7 @@
 #include "certify/certificate_files.h"
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
+#include "cli/help_text.h"
 
 namespace lpvid::cli {
 
@@ -14,10 +15,11 @@ void add_class_interval_options(CLI::App* cmd, ClassIntervalArgs& a) {
                 "skip the class interval (the certified lower end of Theorem 3.1's optimum over every theta of the "
                 "correction basis, or of a box around the found theta when the corrections move z)");
   cmd->add_option("--class-box", a.box,
-                  "half-width of the class box: each correction that moves z may move it by this fraction of ||z|| "
-                  "(default 0.01)")
+                  with_default("half-width of the class box: each correction that moves z may move it by this fraction "
+                               "of ||z||",
+                               a.box))
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--class-leaves", a.leaves, "leaves of the class bound's branch and bound (default 31)")
+  cmd->add_option("--class-leaves", a.leaves, with_default("leaves of the class bound's branch and bound", a.leaves))
       ->check(CLI::Range(1, 4095));
 }
 

@@ -25,6 +25,8 @@
 #include "diagnose/record_roles.h"
 #include "model/model_file.h"
 #include "solvers/external_solvers.h"
+#include "solvers/solver_factory.h"
+#include "cli/help_text.h"
 
 namespace lpvid::cli {
 namespace {
@@ -35,7 +37,7 @@ struct DiagnoseArgs {
   std::vector<std::string> validation_columns;  ///< replaces the model's u, y columns in order
   std::vector<std::string> validation_names;    ///< headerless validation file
   std::string validation_rows;
-  double holdout = 0.3;
+  double holdout = RolePlan{}.holdout;
   /// The test role: scored once, after the selection, never fitted or used to
   /// choose. Same column conventions as the validation options. Several test
   /// sets: --test given more than once (files with the same columns) or
@@ -272,7 +274,8 @@ void add_diagnose_role_options(CLI::App& cmd, DiagnoseArgs& a) {
                  "the last --holdout share once instead")
       ->check(CLI::Range(1, 20));
   cmd.add_option("--holdout", a.holdout,
-                 "with --folds 1: fraction of --data held out for validation when none is given (0.3)")
+                 "with --folds 1: fraction of --data held out for validation when none is given (" +
+                     double_to_text(a.holdout) + ")")
       ->excludes(validation);
   cmd.add_option("--warmup", a.warmup,
                  "samples at the start of the test part (and of each fold) used for the initial state and left out "
@@ -295,10 +298,10 @@ void add_diagnose_role_options(CLI::App& cmd, DiagnoseArgs& a) {
 
 /// The candidate effects and their selection.
 void add_diagnose_search_options(CLI::App& cmd, DiagnoseArgs& a) {
-  cmd.add_option("--max-effects", a.max_effects, "effects to add at most (default 3)")->check(CLI::Range(0, 20));
-  cmd.add_option("--min-gain", a.min_gain, "relative validation-RMS reduction an effect must reach (default 0.05)");
-  cmd.add_option("--degree", a.degree, "largest degree of basis-term monomials (default 2)")->check(CLI::Range(1, 6));
-  cmd.add_option("--max-input-delay", a.max_delay, "largest input delay tried (default 5)")->check(CLI::Range(0, 100));
+  cmd.add_option("--max-effects", a.max_effects, with_default("effects to add at most", a.max_effects))->check(CLI::Range(0, 20));
+  cmd.add_option("--min-gain", a.min_gain, with_default("relative validation-RMS reduction an effect must reach", a.min_gain));
+  cmd.add_option("--degree", a.degree, with_default("largest degree of basis-term monomials", a.degree))->check(CLI::Range(1, 6));
+  cmd.add_option("--max-input-delay", a.max_delay, with_default("largest input delay tried", a.max_delay))->check(CLI::Range(0, 100));
   cmd.add_option("--state-degree", a.state_degree,
                  "candidates x1^1..x1^D in A, scheduled on the model's own state (model column \"@x1\"; 0: none; default 3)")
       ->check(CLI::Range(0, 6));
@@ -306,7 +309,8 @@ void add_diagnose_search_options(CLI::App& cmd, DiagnoseArgs& a) {
                "keep A, B as declared in every candidate fit (default: each candidate is also fitted with A, B "
                "re-fitted jointly, and the selection rows pick the better of the two)");
   cmd.add_option("--init-samples", a.init_samples,
-                 "selection samples used to fit the initial state, every sample still scored (default 5); unlike "
+                 "selection samples used to fit the initial state, every sample still scored (default " +
+                     std::to_string(a.init_samples) + "); unlike "
                  "--warmup, they are not left out of the RMS")
       ->check(CLI::Range(1, 100000));
   cmd.add_flag("!--no-input-scheduling", a.input_scheduling,

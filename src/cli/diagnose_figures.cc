@@ -85,12 +85,10 @@ void draw_tests(const DiagnoseReport& in, const std::string& d, DiagnoseFigures&
   const DiagnoseResult& res = *in.result;
   if (!in.tests || res.tests.empty()) return;
   out.test_heading = true;
-  double dmax_after = 0;  // the largest certified d_max over the windows: it holds on each of them
-  bool all_verified = !res.after.empty();
-  for (const WindowBounds& w : res.after) {
-    all_verified = all_verified && w.bounds.verified();
-    dmax_after = std::max(dmax_after, w.bounds.dmax);
-  }
+  // The largest certified d_max over the windows: it holds on each of them.
+  const BoundsSummary after = res.bounds_summary(DiagnoseSide::kAfter);
+  const bool all_verified = after.all_verified;
+  const double dmax_after = after.dmax;
   for (size_t t = 0; t < res.tests.size() && t < in.tests->size(); ++t) {
     const Experiment<double>& e = (*in.tests)[t];
     TestRecordPlot tp;

@@ -46,25 +46,17 @@ ojson window_json(const WindowBounds& w) {
 
 /// Over all windows: δ, d_max are the largest of the per-window bounds (each
 /// window satisfies them on its own rows; nothing is claimed across windows).
-ojson side_json(double rms_est, double rms_val, const std::vector<WindowBounds>& ws) {
+ojson side_json(double rms_est, double rms_val, const DiagnoseResult& res, DiagnoseSide side) {
   ojson j = ojson::object();
   j["rms_estimation"] = number_or_null(rms_est);
   j["rms_validation"] = number_or_null(rms_val);
-  bool all = !ws.empty();
-  double delta = 0, dmax = 0;
-  int uninformative = 0;
+  const BoundsSummary s = res.bounds_summary(side);
   ojson list = ojson::array();
-  for (const WindowBounds& w : ws) {
-    all = all && w.bounds.verified();
-    delta = std::max(delta, w.bounds.delta);
-    dmax = std::max(dmax, w.bounds.dmax);
-    uninformative += w.bounds.verified() && !w.informative ? 1 : 0;
-    list.push_back(window_json(w));
-  }
-  j["delta"] = all ? ojson(delta) : ojson(nullptr);
-  j["dmax"] = all ? ojson(dmax) : ojson(nullptr);
-  j["verified"] = all;
-  j["uninformative_windows"] = uninformative;
+  for (const WindowBounds& w : side == DiagnoseSide::kBefore ? res.before : res.after) list.push_back(window_json(w));
+  j["delta"] = s.all_verified ? ojson(s.delta) : ojson(nullptr);
+  j["dmax"] = s.all_verified ? ojson(s.dmax) : ojson(nullptr);
+  j["verified"] = s.all_verified;
+  j["uninformative_windows"] = s.uninformative;
   j["windows"] = std::move(list);
   j["bounds_meaning"] = "Theorem 2.1 on exactly the rows of each window: the model (numbers rounded to 12 digits, "
                         "initial state = the fitted model's own state at the window's first row) explains them with "
@@ -277,8 +269,8 @@ ojson figures_json(const DiagnoseFigures& figures) {
 
 /// before / after: the figures and bounds of each side with its Theorem 3.1 run.
 void add_sides(ojson& j, const DiagnoseResult& res) {
-  j["before"] = side_json(res.rank.before_estimation, res.rank.before_validation, res.before);
-  j["after"] = side_json(res.rank.after_estimation, res.rank.after_validation, res.after);
+  j["before"] = side_json(res.rank.before_estimation, res.rank.before_validation, res, DiagnoseSide::kBefore);
+  j["after"] = side_json(res.rank.after_estimation, res.rank.after_validation, res, DiagnoseSide::kAfter);
   j["before"]["theorem_3_1"] = identification_json(res.before_id);
   j["after"]["theorem_3_1"] = identification_json(res.after_id);
 }

@@ -183,9 +183,8 @@ void print_windows(const DiagnoseResult& res) {
     std::cout << "  window " << i + 1 << " (estimation rows " << res.before[i].begin << ":" << res.before[i].end << ")\n"
               << "              before: " << bound_line(res.before[i]) << "\n"
               << "              after:  " << bound_line(res.after[i]) << "\n";
-  int uninformative = 0;
-  for (const auto* side : {&res.before, &res.after})
-    for (const WindowBounds& w : *side) uninformative += w.bounds.verified() && !w.informative ? 1 : 0;
+  const int uninformative =
+      res.bounds_summary(DiagnoseSide::kBefore).uninformative + res.bounds_summary(DiagnoseSide::kAfter).uninformative;
   if (uninformative > 0)
     std::cout << "  " << uninformative << " of " << 2 * res.before.size()
               << " verified bounds are uninformative: dmax >= the RMS of the measured output's deviation "

@@ -20,6 +20,7 @@
 #include "fit/linear_fit.h"
 #include "fit/output_error_fit.h"
 #include "model/model_file.h"
+#include "cli/help_text.h"
 
 namespace lpvid::cli {
 namespace {
@@ -188,7 +189,7 @@ Runner add_fit_linear_command(CLI::App& app) {
   cmd->add_option("--u", a->u, "input column(s) (default u)")->delimiter(',');
   cmd->add_option("--y", a->y, "output column (default y)")->delimiter(',');
   cmd->add_option("--order", a->order, "model order N >= 1, or auto (default)");
-  cmd->add_option("--max-order", a->max_order, "largest order tried by --order auto (default 5)");
+  cmd->add_option("--max-order", a->max_order, with_default("largest order tried by --order auto", a->max_order));
   cmd->add_flag("--offset", a->offset, "fit a constant output offset (model \"offset\" with basis 1)");
   cmd->add_option("--model-out", a->out, "model file to write (lpvid-model/1)");
   cmd->add_option("--report", a->report, "JSON report");

@@ -14,6 +14,7 @@
 #include "examples/paper_example1.h"
 #include "examples/paper_example2.h"
 #include "model/model_file.h"
+#include "cli/help_text.h"
 
 namespace lpvid::cli {
 namespace {
@@ -126,14 +127,14 @@ Runner add_generate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "generate", "Write a data set with a known answer (the paper's Example 1, or an Example 2 flavour with an offset)");
   cmd->add_option("which", a->which, "data set: example1, example2 (eq. 20: output offset Phi(rho)), effect-case (an effect the written model does not declare) or random (a random case of the property tests' generator with an oracle task; --out is then a folder)");
-  cmd->add_option("--n", a->n, "samples (default 60)");
+  cmd->add_option("--n", a->n, with_default("samples", a->n));
   cmd->add_option("--noise-std", a->noise_std,
                                     "standard deviation of the white output noise (example1/example2: default 0, paper "
                                     "Table II: variance 0.1; effect-case: default 0.02)")
                         ->check(CLI::NonNegativeNumber);
   add_renamed_option(*cmd, "--noise-variance", "--noise-std",
                      "one name per idea: give the standard deviation, e.g. --noise-std 0.316 for variance 0.1");
-  cmd->add_option("--seed", a->seed, "random seed (default 1)");
+  cmd->add_option("--seed", a->seed, with_default("random seed", a->seed));
   cmd->add_option("--out", a->out, "data CSV to write (effect-case: the estimation record; random: the case folder)")->required();
   add_random_case_flags(*cmd, a->random);
   std::string kinds;

@@ -16,6 +16,7 @@
 #include "identify/fix_and_certify.h"
 #include "model/model_file.h"
 #include "solvers/external_solvers.h"
+#include "cli/help_text.h"
 
 namespace lpvid::cli {
 namespace {
@@ -28,7 +29,7 @@ struct IdentifyArgs {
   bool free_x0 = false;
   bool no_offset = false;
   std::string method = "relaxation";
-  long alt_taps = 16;
+  long alt_taps = IdentifyOptions{}.taps;
   std::vector<std::string> basis;  ///< --basis: replaces the model's correction basis
   std::string model_out;           ///< --model-out: the identified exact model
   ClassIntervalArgs class_interval;
@@ -93,13 +94,13 @@ int render_no_solution(const IdentifiedModel& id, const IdentifyOptions& opt, co
   report["message"] = res.message;
   // The relaxation (and the alternating method) are restrictions of the
   // BMI: their infeasibility says nothing about the model class.
-  if (id.outcome == CertifyOutcome::kUndecided) {
+  if (id.outcome() == CertifyOutcome::kUndecided) {
     report["status"] = "undecided";
     std::cout << "  -> UNDECIDED: the " << (opt.method == IdentifyMethod::kAlternating ? "alternating (local) method" : "relaxation")
               << " found no consistent model at the given bounds; its infeasibility is not an invalidation of the model class\n";
   }
   write_json(report_path, report);
-  return exit_code(id.outcome);
+  return exit_code(id.outcome());
 }
 
 /// The report of an identification with a solution (without class interval and model file).
@@ -193,7 +194,7 @@ Runner add_identify_command(CLI::App& app) {
                   "relaxation: the paper's linearised BMI (default); alternating: Delta/theta block-coordinate descent "
                   "in the Delta form, every iterate feasible for the true BMI (fast for long records)")
       ->check(CLI::IsMember({"relaxation", "alternating"}));
-  cmd->add_option("--alt-taps", args->alt_taps, "FIR taps of Delta in --method alternating (default 16)")
+  cmd->add_option("--alt-taps", args->alt_taps, with_default("FIR taps of Delta in --method alternating", args->alt_taps))
       ->check(CLI::Range(1L, 100000L));
   cmd->add_flag("--free-x0", args->free_x0, "the initial state is an unknown too");
   cmd->add_option("--basis", args->basis, "correction basis, e.g. 1,rho1,rho1*rho2 (replaces the model's)")

@@ -15,6 +15,8 @@
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "model/model_file.h"
+#include "solvers/solver_factory.h"
+#include "cli/help_text.h"
 
 namespace lpvid::cli {
 
@@ -66,7 +68,7 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds) {
   if (needs_bounds) {
     auto* d = app.add_option("--delta", o.delta_text, "fix delta (exact decimal); minimise dmax");
     auto* m = app.add_option("--dmax", o.dmax_text, "fix dmax (RMS noise bound, exact decimal); minimise delta");
-    auto* l = app.add_option("--lambda", o.lambda, "minimise lambda*delta^2 + (1-lambda)*dmax^2 (default 0.5)");
+    auto* l = app.add_option("--lambda", o.lambda, with_default("minimise lambda*delta^2 + (1-lambda)*dmax^2", BoundObjective{}.lambda));
     l->excludes(d)->excludes(m);
   }
 }
@@ -77,7 +79,7 @@ BoundObjective make_objective(const CommonOptions& o) {
   BoundObjective b;
   auto read = [](const std::string& text, const char* flag) {
     if (auto e = number_text_problem(text)) throw InputError(std::string(flag) + ": " + *e);
-    return double_from_text(text);
+    return ExactBound::from_text(text);
   };
   const bool fd = !o.delta_text.empty(), fm = !o.dmax_text.empty();
   if (fd && fm) {
@@ -92,7 +94,7 @@ BoundObjective make_objective(const CommonOptions& o) {
     b.dmax = read(o.dmax_text, "--dmax");
   } else {
     b.kind = BoundObjective::Kind::kWeighted;
-    b.lambda = o.lambda.value_or(0.5);
+    b.lambda = o.lambda.value_or(b.lambda);  // BoundObjective's default
   }
   b.validate();
   return b;
@@ -344,8 +346,6 @@ CertifyOptions certify_options(const CommonOptions& c, const Inputs& in) {
     };
   }
   co.delta_norm = delta_norm_of(c);
-  co.fixed_delta_text = c.delta_text;
-  co.fixed_dmax_text = c.dmax_text;
   return co;
 }
 

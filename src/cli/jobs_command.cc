@@ -22,6 +22,7 @@
 #include "jobs/window_check.h"
 #include "model/model_file.h"
 #include "model/simulate.h"
+#include "cli/help_text.h"
 
 namespace lpvid::cli {
 namespace {
@@ -356,8 +357,8 @@ Runner add_jobs_command(CLI::App& app) {
   common->command = "jobs plan";
   p->add_option("--dir", plan->dir, "folder for the plan, the window models, jobs.txt and (later) the certificates")
       ->required();
-  p->add_option("--window-length", plan->window, "rows per window (default 200)")->check(CLI::Range(2L, 1000000000L));
-  p->add_option("--min-last", plan->min_last, "a last window shorter than this joins the one before (default 50)")
+  p->add_option("--window-length", plan->window, with_default("rows per window", plan->window))->check(CLI::Range(2L, 1000000000L));
+  p->add_option("--min-last", plan->min_last, with_default("a last window shorter than this joins the one before", plan->min_last))
       ->check(CLI::Range(1L, 1000000000L));
   add_renamed_option(*p, "--window", "--window-length", "rows per window, as in diagnose; diagnose's --window is B:E ranges");
   // The jobs write the certificates and SDP files (one per window), 'jobs merge' the report; the plan runs no solver.

@@ -13,13 +13,14 @@
 #include "core/input_error.h"
 #include "identify/basis_selection.h"
 #include "solvers/external_solvers.h"
+#include "cli/help_text.h"
 
 namespace lpvid::cli {
 namespace {
 
 struct SelectArgs {
   CommonOptions common;
-  int max_degree = 2;
+  int max_degree = BasisSelectionOptions{}.max_degree;
   bool iterate = false;
   int max_iterations = IdentifyOptions{}.max_iterations;
   double rel_tol = IdentifyOptions{}.rel_tol;
@@ -115,8 +116,6 @@ BasisSelectionOptions selection_options(const SelectArgs& a, const Inputs& in) {
   BasisSelectionOptions o;
   o.delta = in.objective.delta;
   o.dmax = in.objective.dmax;
-  o.delta_text = c.delta_text;
-  o.dmax_text = c.dmax_text;
   o.max_degree = a.max_degree;
   o.iterate = a.iterate;
   o.max_iterations = a.max_iterations;
@@ -184,15 +183,11 @@ nlohmann::ordered_json render_not_found(const BasisSelectionResult& r, const Sel
   std::cout << "\nNo basis up to degree " << a.max_degree << " gives a model consistent with the data at delta = "
             << c.delta_text << ", dmax = " << c.dmax_text << "\n";
   if (!a.iterate) std::cout << "  (the relaxation at S_I cannot make large corrections at tight bounds: try --iterate)\n";
-  bool unverified = false;
-  for (const BasisStep& s : r.steps) unverified = unverified || s.verdict == BasisVerdict::kUnverified;
-  const bool certified = certified_cannot_explain(r);
-  if (certified)
+  if (r.outcome == SelectionOutcome::kCannotExplain)
     std::cout << "  certified: the largest basis tried (step " << r.steps.back().index
               << ") cannot explain the data, so no basis of these terms can (class certificate)\n";
   nlohmann::ordered_json report;
-  // "cannot explain" only with a whole-class certificate of the largest basis
-  report["status"] = certified ? "cannot_explain" : unverified ? "not_verified" : "not_decided";
+  report["status"] = to_string(r.outcome);
   report["delta"] = nullptr;
   report["dmax"] = nullptr;
   report["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
@@ -247,7 +242,7 @@ void add_selection_json(nlohmann::ordered_json& report, const BasisSelectionResu
   report["order"] = basis_json(r.order, scheduling);
   report["steps"] = nlohmann::ordered_json::array();
   for (const BasisStep& s : r.steps) report["steps"].push_back(step_json(s, scheduling));
-  if (r.found) {
+  if (r.found()) {
     const BasisStep& f = r.steps[static_cast<size_t>(r.final_step)];
     report["final_basis"] = basis_json(f.basis, scheduling);
     report["final_step"] = f.index;
@@ -275,12 +270,16 @@ int run_select(SelectArgs& a) {
   if (!stem.empty()) write_step_certificates(r, stem);
   print_legend(c, a.iterate);
   print_step_notes(r);
-  nlohmann::ordered_json report = r.found ? render_found(r, c, final_cert) : render_not_found(r, a);
+  nlohmann::ordered_json report = r.found() ? render_found(r, c, final_cert) : render_not_found(r, a);
   add_selection_json(report, r, a, in);
   write_json(c.report_path, report);
-  if (r.found) return kExitOk;
-  if (report["status"] == "cannot_explain") return kExitInvalidated;
-  return report["status"] == "not_verified" ? kExitNotVerified : kExitUndecided;
+  switch (r.outcome) {
+    case SelectionOutcome::kFound: return kExitOk;
+    case SelectionOutcome::kCannotExplain: return kExitInvalidated;
+    case SelectionOutcome::kNotVerified: return kExitNotVerified;
+    case SelectionOutcome::kNotDecided: break;
+  }
+  return kExitUndecided;
 }
 
 }  // namespace
@@ -292,7 +291,7 @@ Runner add_select_basis_command(CLI::App& app) {
       "Appendix algorithm: grow the correction basis until consistent at --delta/--dmax, then prune; a basis is "
       "'cannot_explain' only with a class certificate (lpvid-verify checks it), else 'not_decided'");
   add_common_options(*cmd, a->common, true);
-  cmd->add_option("--max-degree", a->max_degree, "largest total degree of a candidate term (default 2)")
+  cmd->add_option("--max-degree", a->max_degree, with_default("largest total degree of a candidate term", a->max_degree))
       ->check(CLI::Range(0, 8));
   cmd->add_flag("--iterate", a->iterate,
                 "per basis: minimise dmax at delta with iterated re-linearisation (beyond the paper), then certify");
@@ -305,10 +304,10 @@ Runner add_select_basis_command(CLI::App& app) {
   cmd->add_flag("--no-class-bound", a->no_class,
                 "do not try class certificates: every step not consistent is then not_decided (or unverified)");
   cmd->add_option("--class-box", a->class_box,
-                  "half-width of the class box of a step whose corrections move z: each may move z by this fraction "
-                  "of ||z|| (default 0.01)")
+                  with_default("half-width of the class box of a step whose corrections move z: each may move z by this fraction "
+                  "of ||z||", a->class_box))
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--class-leaves", a->class_leaves, "leaves of a step's class certificate (default 31)")
+  cmd->add_option("--class-leaves", a->class_leaves, with_default("leaves of a step's class certificate", a->class_leaves))
       ->check(CLI::Range(1, 4095));
   return [cmd, a] { return cmd->parsed() ? run_select(*a) : -1; };
 }

@@ -17,14 +17,26 @@
 #include "fit/output_error_fit.h"
 #include "fit/output_score.h"
 #include "model/simulate.h"
+#include "solvers/solver_factory.h"
 
 namespace lpvid {
 
+BoundsSummary DiagnoseResult::bounds_summary(DiagnoseSide side) const {
+  const std::vector<WindowBounds>& ws = side == DiagnoseSide::kBefore ? before : after;
+  BoundsSummary s;
+  s.all_verified = !ws.empty();
+  for (const WindowBounds& w : ws) {
+    s.all_verified = s.all_verified && w.bounds.verified();
+    s.delta = std::max(s.delta, w.bounds.delta);
+    s.dmax = std::max(s.dmax, w.bounds.dmax);
+    s.uninformative += w.bounds.verified() && !w.informative ? 1 : 0;
+  }
+  return s;
+}
+
 bool DiagnoseResult::verified() const {
-  bool all = !before.empty() && before.size() == after.size();
-  for (const auto* side : {&before, &after})
-    for (const WindowBounds& w : *side) all = all && w.bounds.verified();
-  return all;
+  return before.size() == after.size() && bounds_summary(DiagnoseSide::kBefore).all_verified &&
+         bounds_summary(DiagnoseSide::kAfter).all_verified;
 }
 
 namespace {

@@ -108,6 +108,19 @@ struct ShownRecord {
   ResidualAnalysis before, after; ///< of data.y − y_before and data.y − y_after (residual_analysis.h)
 };
 
+/// The bound windows of one model (before or after) summarised: what the
+/// text report, the JSON report and the figures state about them.
+struct BoundsSummary {
+  bool all_verified = false;  ///< at least one window, and every one verified
+  /// The largest δ and d_max over the windows (each window satisfies them on
+  /// its own rows; nothing is claimed across windows). Meaningful when all_verified.
+  double delta = 0, dmax = 0;
+  int uninformative = 0;      ///< verified windows whose d_max does not beat the constant model (WindowBounds::informative)
+};
+
+/// Which model of a diagnosis: the declared one or the one with the effects.
+enum class DiagnoseSide { kBefore, kAfter };
+
 struct DiagnoseResult {
   RankingResult rank;
   LpvModel<double> before_model, after_model;  ///< as rounded for the certificates
@@ -129,6 +142,8 @@ struct DiagnoseResult {
   /// the map is not the identity): u on the estimation record; v = ŷ + Φ
   /// along it (the model's own x0; y's range when v is not finite).
   std::optional<MapRange> input_map_range, output_map_range;
+  /// The windows of `side` summarised.
+  BoundsSummary bounds_summary(DiagnoseSide side) const;
   /// Every window's bound, before and after, verified exactly.
   bool verified() const;
   /// kVerified when verified(), else kNotVerified (the report states each

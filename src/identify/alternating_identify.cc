@@ -106,7 +106,7 @@ IterateRecord delta_step(const AffineResidual<double>& a, const Vec<double>& p, 
 /// A fixed (δ, d_max): the accepted iterate's d_max must reach the given
 /// one; otherwise "infeasible" for this local method (never an invalidation).
 void judge_given_dmax(const BoundObjective& objective, const IterateRecord& accepted, IdentifyResult& out) {
-  const double given = objective.dmax * objective.dmax;
+  const double given = objective.dmax.approx * objective.dmax.approx;
   if (accepted.dmax2 > given) {
     out.status = SolveStatus::kPrimalInfeasible;
     out.message = "alternating descent found no parameters with dmax <= the given bound at the given delta (a "

@@ -43,7 +43,7 @@
 /// d_max² ≤ the given d_max² (status kPrimalInfeasible otherwise, which here
 /// only means "not shown consistent by this local method").
 
-#include "identify/identify.h"
+#include "identify/identify_types.h"
 
 namespace lpvid {
 

@@ -71,6 +71,22 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// The selection's outcome: found when a step was kept; otherwise "cannot
+/// explain" only with a whole-class certificate of the largest basis grown
+/// (the last grow or initial step), else not verified when some step's
+/// answer failed the exact check, else not decided.
+SelectionOutcome outcome_of(const std::vector<BasisStep>& steps, int final_step) {
+  if (final_step >= 0) return SelectionOutcome::kFound;
+  for (auto s = steps.rbegin(); s != steps.rend(); ++s)
+    if (s->phase == "grow" || s->phase == "initial") {
+      if (s->verdict == BasisVerdict::kCannotExplain) return SelectionOutcome::kCannotExplain;
+      break;
+    }
+  for (const BasisStep& s : steps)
+    if (s.verdict == BasisVerdict::kUnverified) return SelectionOutcome::kNotVerified;
+  return SelectionOutcome::kNotDecided;
+}
+
 class Selector {
  public:
   Selector(const LpvModel<Rational>& mq, const LpvModel<double>& md, const Experiment<Rational>& eq,
@@ -105,9 +121,9 @@ class Selector {
       }
     }
     r.steps = steps_;
-    r.found = final_step >= 0;
     r.final_step = final_step;
-    if (r.found) r.basis = steps_[static_cast<size_t>(final_step)].basis;
+    if (final_step >= 0) r.basis = steps_[static_cast<size_t>(final_step)].basis;
+    r.outcome = outcome_of(r.steps, final_step);
     return r;
   }
 
@@ -149,8 +165,6 @@ class Selector {
     co.objective.kind = BoundObjective::Kind::kFeasibility;
     co.objective.delta = o_.delta;
     co.objective.dmax = o_.dmax;
-    co.fixed_delta_text = o_.delta_text;
-    co.fixed_dmax_text = o_.dmax_text;
     co.solver = o_.solver;
     return co;
   }
@@ -337,7 +351,8 @@ const char* to_string(BasisVerdict v) {
 BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                                   const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                   const BasisSelectionOptions& options, SdpSolver& solver) {
-  if (!(options.delta >= 0) || !(options.dmax >= 0) || !std::isfinite(options.delta) || !std::isfinite(options.dmax))
+  const double delta = options.delta.approx, dmax = options.dmax.approx;
+  if (!(delta >= 0) || !(dmax >= 0) || !std::isfinite(delta) || !std::isfinite(dmax))
     throw InputError("select-basis: delta and dmax must be finite and non-negative");
   if (options.max_degree < 0 || options.max_degree > kMaxMonomialPower)
     throw InputError("select-basis: --max-degree must be in 0.." + std::to_string(kMaxMonomialPower));
@@ -345,10 +360,14 @@ BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvMo
   return sel.run();
 }
 
-bool certified_cannot_explain(const BasisSelectionResult& result) {
-  for (auto s = result.steps.rbegin(); s != result.steps.rend(); ++s)
-    if (s->phase == "grow" || s->phase == "initial") return s->verdict == BasisVerdict::kCannotExplain;
-  return false;
+const char* to_string(SelectionOutcome outcome) {
+  switch (outcome) {
+    case SelectionOutcome::kFound: return "found";
+    case SelectionOutcome::kCannotExplain: return "cannot_explain";
+    case SelectionOutcome::kNotVerified: return "not_verified";
+    case SelectionOutcome::kNotDecided: return "not_decided";
+  }
+  return "not_decided";
 }
 
 std::string monotonicity_violation(const std::vector<BasisStep>& steps) {

@@ -141,8 +141,7 @@ struct BasisStep {
 };
 
 struct BasisSelectionOptions {
-  double delta = 0, dmax = 0;        ///< the given bounds (d_max RMS, docs/design.md §7.4)
-  std::string delta_text, dmax_text; ///< their exact text for the certificate (empty: the doubles)
+  ExactBound delta, dmax;            ///< the given bounds (d_max RMS, docs/design.md §7.4)
   int max_degree = 2;
   bool iterate = false;
   int max_iterations = IdentifyOptions{}.max_iterations;
@@ -157,10 +156,23 @@ struct BasisSelectionOptions {
   std::function<void(const BasisStep&)> on_step;  ///< progress (called after each step)
 };
 
+/// How a selection ended: the one stored status, decided once by
+/// select_basis in this order.
+enum class SelectionOutcome {
+  kFound,          ///< a consistent (verified) model was found
+  kCannotExplain,  ///< none: the largest basis grown carries a whole-class "cannot explain" certificate
+  kNotVerified,    ///< none, and some step's solver answer failed the exact check
+  kNotDecided,     ///< none, and nothing certifies that none exists (the initial value)
+};
+/// "found", "cannot_explain", "not_verified", "not_decided" (the report's status).
+const char* to_string(SelectionOutcome outcome);
+
 struct BasisSelectionResult {
   std::vector<Monomial> order;       ///< the candidates, in growth order
   std::vector<BasisStep> steps;
-  bool found = false;                ///< a consistent (verified) model was found
+  SelectionOutcome outcome = SelectionOutcome::kNotDecided;
+  /// A consistent (verified) model was found.
+  bool found() const { return outcome == SelectionOutcome::kFound; }
   int final_step = -1;               ///< index into steps of the answer (found only)
   std::vector<Monomial> basis;       ///< the final basis (found only)
 };
@@ -171,10 +183,6 @@ struct BasisSelectionResult {
 BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                                   const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                                   const BasisSelectionOptions& options, SdpSolver& solver);
-
-/// The selection's answer when it found no consistent basis: true when the
-/// largest basis grown carries a whole-class "cannot explain" certificate.
-bool certified_cannot_explain(const BasisSelectionResult& result);
 
 /// Monotonicity of the verdicts (adding terms can only help): returns a
 /// description of the first pair of steps with basis_i ⊆ basis_j, step i

@@ -216,7 +216,7 @@ std::string certify_tree(const LpvModel<Rational>& model_q, const Experiment<Rat
   c.info["tool"] = "lpvid";
   c.info["objective"] = certify.objective.describe();
   c.info["box_fraction"] = o.box_fraction;
-  const CertificateVerdict v = check_certificate(parse_certificate(certificate_json(c), "the class certificate (in memory)"), exp_q);
+  const CertificateVerdict v = check_round_trip(c, exp_q, "the class certificate (in memory)");
   if (!v.holds) return "the class certificate failed the exact check: " + v.reason;
   out.lower = c.lower_bound;
   out.certificate = std::move(c);

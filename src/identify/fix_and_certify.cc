@@ -52,13 +52,13 @@ IdentifiedModel identify_and_certify(const LpvModel<Rational>& model_q, const Lp
   IdentifiedModel out;
   out.fit = identify(model_d, exp_d, identify_options, solver);
   if (!has_solution(out.fit.status)) {
-    out.outcome = out.fit.status == SolveStatus::kPrimalInfeasible ? CertifyOutcome::kUndecided : CertifyOutcome::kSolverFailed;
+    out.bounds.outcome =
+        out.fit.status == SolveStatus::kPrimalInfeasible ? CertifyOutcome::kUndecided : CertifyOutcome::kSolverFailed;
     return out;
   }
   out.fixed = fix_parameters(model_q, out.fit.layout, out.fit.p, certify_options.digits, exp_q.record_x0);
   out.bounds = certify_identified(out.fixed.model, with_fixed_initial_states(exp_q, out.fixed), out.fit.taps,
                                   certify_options, solver, &out.taps_note);
-  out.outcome = out.bounds.outcome;
   return out;
 }
 

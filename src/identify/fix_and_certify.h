@@ -57,10 +57,11 @@ struct IdentifiedModel {
   FixedParameters fixed;
   CertifiedBounds bounds;
   std::string taps_note;  ///< why the fit's own Δ did not certify (then Theorem 2.1 was solved again)
-  /// How it ended: the certification's outcome; without a fit, kUndecided
-  /// when the relaxation (a restriction of the BMI) was infeasible — that
-  /// invalidates nothing — and kSolverFailed otherwise.
-  CertifyOutcome outcome = CertifyOutcome::kSolverFailed;
+  /// How it ended, the one stored status (bounds.outcome): the
+  /// certification's outcome; without a fit, kUndecided when the relaxation
+  /// (a restriction of the BMI) was infeasible — that invalidates nothing —
+  /// and kSolverFailed otherwise.
+  CertifyOutcome outcome() const { return bounds.outcome; }
 };
 IdentifiedModel identify_and_certify(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                                      const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,

@@ -101,8 +101,6 @@ std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, con
     CertifyOptions co = o.certify;
     co.objective = obj;
     co.solver = o.solver;
-    co.fixed_delta_text.clear();
-    co.fixed_dmax_text.clear();
     LpvModel<Rational> fixed = model_q;
     Experiment<Rational> exp_fixed = exp_q;
     bool have_model = true;

@@ -181,7 +181,8 @@ PlannedClaim planned_claim(const JobPlan& plan) {
   p.data_sha256 = plan.data_sha256;
   p.mode = toeplitz_mode_from_string(plan.toeplitz);
   p.objective = objective_kind_of(plan.objective);
-  const BoundObjective o{p.objective};
+  BoundObjective o;
+  o.kind = p.objective;
   if (o.delta_fixed()) p.delta2 = squared_text(plan.delta_text);
   if (o.dmax_fixed()) p.dmax2 = squared_text(plan.dmax_text);
   // the jobs write λ as double_to_text of the option's double (0.5 by default)

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "core/exact_bound.h"
+
 namespace lpvid {
 
 struct BoundObjective {
@@ -15,8 +17,8 @@ struct BoundObjective {
     kFeasibility,  ///< δ and d_max both fixed: is the model consistent?
   };
   Kind kind = Kind::kWeighted;
-  double delta = 0.0;   ///< the fixed δ (kMinDmax, kFeasibility)
-  double dmax = 0.0;    ///< the fixed d_max (kMinDelta, kFeasibility)
+  ExactBound delta;     ///< the fixed δ (kMinDmax, kFeasibility): exact for certificates, approx for solvers
+  ExactBound dmax;      ///< the fixed d_max (kMinDelta, kFeasibility)
   double lambda = 0.5;  ///< λ ∈ [0, 1] (kWeighted); the default is 0.5
 
   bool delta_fixed() const { return kind == Kind::kMinDmax || kind == Kind::kFeasibility; }

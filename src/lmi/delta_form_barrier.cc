@@ -23,9 +23,9 @@
 namespace lpvid {
 
 bool barrier_applies(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective) {
-  return z.cols() >= 1 && r.cols() >= 1 && !(objective.kind == BoundObjective::Kind::kMinDelta && !(objective.dmax > 0)) &&
+  return z.cols() >= 1 && r.cols() >= 1 && !(objective.kind == BoundObjective::Kind::kMinDelta && !(objective.dmax.approx > 0)) &&
          !(objective.kind == BoundObjective::Kind::kWeighted && !(objective.lambda > 0 && objective.lambda < 1)) &&
-         !(objective.delta_fixed() && !(objective.delta > 0));
+         !(objective.delta_fixed() && !(objective.delta.approx > 0));
 }
 
 namespace {
@@ -440,8 +440,8 @@ Problem make_problem(const Mat<double>& z, const Mat<double>& r, const BoundObje
   p.t_var = !objective.delta_fixed();
   p.s_var = objective.kind != BoundObjective::Kind::kMinDelta;  // fixed bounds go through min d_max²
   const double kz = sigma_z / sigma_r;
-  p.t_fix = objective.delta * objective.delta * kz * kz;
-  p.s_fix = objective.dmax * objective.dmax / (sigma_r * sigma_r);
+  p.t_fix = objective.delta.approx * objective.delta.approx * kz * kz;
+  p.s_fix = objective.dmax.approx * objective.dmax.approx / (sigma_r * sigma_r);
   if (objective.kind == BoundObjective::Kind::kWeighted) {
     p.ct = objective.lambda / (sigma_z * sigma_z);
     p.cs = 1.0 - objective.lambda;
@@ -640,8 +640,8 @@ class BarrierRun {
     write_duals(out, sigma_r, kz);
     const double s = s_of(pt_);
     out.taps = Eigen::Map<const Dense>(x_.data(), p_.L, p_.q()) / kz;  // column i·nz + j: entry (i, j) over l
-    out.delta2 = p_.t_var ? x_(nt_) / (kz * kz) : objective.delta * objective.delta;
-    out.dmax2 = feasibility_ ? objective.dmax * objective.dmax : s * sigma_r * sigma_r;
+    out.delta2 = p_.t_var ? x_(nt_) / (kz * kz) : objective.delta.approx * objective.delta.approx;
+    out.dmax2 = feasibility_ ? objective.dmax.approx * objective.dmax.approx : s * sigma_r * sigma_r;
     out.path_mu = found_feasible_ ? 0.0 : mu_;  // a point found on the way is not centred
     out.solve.status = infeasible_ ? SolveStatus::kPrimalInfeasible : SolveStatus::kOptimal;
     out.solve.iterations = newton_;

@@ -13,15 +13,6 @@
 
 namespace lpvid {
 
-Eigen::Index check_uncertainty_excited(const Mat<double>& z) {
-  const Eigen::Index m = leading_zero_samples(z);
-  if (m == z.rows() || z.cols() == 0)
-    throw InputError(
-        "ill-posed data: the uncertainty channel z is identically zero along the experiment (for example u = 0 "
-        "with x0 = 0), so the data says nothing about the uncertainty and delta is undetermined");
-  return m;
-}
-
 void read_delta_solution(const SolveResult& solve, const DeltaScaledVariables& v, const BoundObjective& objective,
                          Mat<double>& taps, double& delta2, double& dmax2) {
   const Eigen::Index q = v.ny * v.nz;
@@ -31,9 +22,9 @@ void read_delta_solution(const SolveResult& solve, const DeltaScaledVariables& v
   if (ok)
     for (Eigen::Index l = 0; l < v.K; ++l)
       for (Eigen::Index c = 0; c < q; ++c) taps(l, c) = solve.x[static_cast<size_t>(v.tap0 + l * q + c)] / kz;
-  delta2 = v.t >= 0 && ok ? std::max(0.0, solve.x[static_cast<size_t>(v.t)]) / (kz * kz) : objective.delta * objective.delta;
+  delta2 = v.t >= 0 && ok ? std::max(0.0, solve.x[static_cast<size_t>(v.t)]) / (kz * kz) : objective.delta.approx * objective.delta.approx;
   dmax2 = v.s >= 0 && ok ? std::max(0.0, solve.x[static_cast<size_t>(v.s)]) * v.sigma_r * v.sigma_r
-                         : objective.dmax * objective.dmax;
+                         : objective.dmax.approx * objective.dmax.approx;
 }
 
 namespace {
@@ -77,9 +68,9 @@ void describe(DeltaFormLayout& f, const BoundObjective& obj) {
                          "sigma_r / sigma_z)"}};
   if (f.t >= 0) a.emplace_back("delta2_variable", "delta2 is delta^2 times (sigma_z/sigma_r)^2 (original = value * "
                                                   "(sigma_r/sigma_z)^2)");
-  else a.emplace_back("delta_fixed", double_to_text(obj.delta));
+  else a.emplace_back("delta_fixed", double_to_text(obj.delta.approx));
   if (f.s >= 0) a.emplace_back("dmax2_variable", "dmax2 is d_max^2 / sigma_r^2 (original = value * sigma_r^2)");
-  else a.emplace_back("dmax_fixed", double_to_text(obj.dmax));
+  else a.emplace_back("dmax_fixed", double_to_text(obj.dmax.approx));
   if (obj.kind == BoundObjective::Kind::kWeighted) a.emplace_back("lambda", double_to_text(obj.lambda));
   if (several_records(f.records)) {
     std::string lengths;
@@ -158,7 +149,7 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
   // (C1'): [t I, T_Δ; T_Δᵀ, I] ⪰ 0, size L·ny + L·nz.
   const int A = p.add_block("C1_delta_form", static_cast<int>(f.L * (f.ny + f.nz)));
   const int off = static_cast<int>(f.L * f.ny);
-  const double t_fixed = obj.delta * obj.delta * kz * kz;
+  const double t_fixed = obj.delta.approx * obj.delta.approx * kz * kz;
   for (int i = 0; i < off; ++i) {
     if (f.t >= 0)
       p.add_entry(A, f.t, i, i, 1.0);
@@ -174,7 +165,7 @@ DeltaFormLayout build(const Mat<double>& z, const Mat<double>& r, const BoundObj
                       static_cast<int>(off + b * f.nz + j), 1.0);
 
   // (C2): [N s, dᵀ; d, I] ⪰ 0, d = r − Δ∗z (record by record).
-  const int B = add_noise_block(p, f.s, obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r), rs);
+  const int B = add_noise_block(p, f.s, obj.dmax.approx * obj.dmax.approx / (f.sigma_r * f.sigma_r), rs);
   add_fir_terms(f, zs, B);
   add_free_variables(f, regressors, B);
   return f;

@@ -33,6 +33,7 @@
 
 #include "core/scalar.h"
 #include "lmi/bound_objective.h"
+#include "lmi/noise_block.h"
 #include "solvers/lmi_program.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/record_segments.h"
@@ -95,11 +96,6 @@ struct DeltaFormSolution {
 DeltaFormSolution solve_delta_form(const Mat<double>& z, const Mat<double>& r, const BoundObjective& objective,
                                    SdpSolver& solver, const SolverOptions& options, Eigen::Index max_taps = 0,
                                    const Mat<double>& free_regressors = {}, const RecordLengths& records = {});
-
-/// Throws the InputError of solve_delta_form when z has no nonzero sample
-/// (or nz = 0); returns the number of leading zero samples m. Shared with
-/// delta_kyp_lmi.h.
-Eigen::Index check_uncertainty_excited(const Mat<double>& z);
 
 /// Where a Δ-form program (this file or delta_kyp_lmi.h) keeps its scaled
 /// variables: h_l(i, j) at tap0 + l·ny·nz + i·nz + j (K taps), δ²' at t and

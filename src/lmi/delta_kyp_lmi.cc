@@ -33,7 +33,7 @@ void add_kyp_block(KypLayout& f, const BoundObjective& obj, double kz) {
     if (f.t >= 0)
       p.add_entry(A, f.t, i, i, 1.0);
     else
-      p.add_entry(A, -1, i, i, obj.delta * obj.delta * kz * kz);
+      p.add_entry(A, -1, i, i, obj.delta.approx * obj.delta.approx * kz * kz);
   }
   for (int i = 0; i < W; ++i) p.add_entry(A, -1, S + i, S + i, 1.0);
   for (Eigen::Index l = 0; l < f.K; ++l)
@@ -80,7 +80,7 @@ void add_noise_qr_block(KypLayout& f, const BoundObjective& obj, const Mat<doubl
   if (f.s >= 0)
     p.add_entry(B, f.s, 0, 0, N);
   else
-    p.add_entry(B, -1, 0, 0, N * obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r));
+    p.add_entry(B, -1, 0, 0, N * obj.dmax.approx * obj.dmax.approx / (f.sigma_r * f.sigma_r));
   for (Eigen::Index a = 0; a < rr; ++a) {
     p.add_entry(B, -1, static_cast<int>(1 + a), static_cast<int>(1 + a), 1.0);
     if (R(a, nv) != 0.0) p.add_entry(B, -1, 0, static_cast<int>(1 + a), R(a, nv));

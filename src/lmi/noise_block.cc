@@ -1,9 +1,19 @@
 #include "lmi/noise_block.h"
 
 #include "core/rms.h"
-#include "lmi/delta_form_lmi.h"
+#include "core/input_error.h"
+#include "toeplitz/fir.h"
 
 namespace lpvid {
+
+Eigen::Index check_uncertainty_excited(const Mat<double>& z) {
+  const Eigen::Index m = leading_zero_samples(z);
+  if (m == z.rows() || z.cols() == 0)
+    throw InputError(
+        "ill-posed data: the uncertainty channel z is identically zero along the experiment (for example u = 0 "
+        "with x0 = 0), so the data says nothing about the uncertainty and delta is undetermined");
+  return m;
+}
 
 SignalScaling signal_scaling(const Mat<double>& z, const Mat<double>& r) {
   SignalScaling s;

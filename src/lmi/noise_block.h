@@ -7,6 +7,11 @@
 
 namespace lpvid {
 
+/// Throws the InputError of solve_delta_form when z has no nonzero sample
+/// (or nz = 0); returns the number of leading zero samples m. Shared by the
+/// Δ-form programs (delta_form_lmi.h, delta_kyp_lmi.h).
+Eigen::Index check_uncertainty_excited(const Mat<double>& z);
+
 /// Sizes of Theorem 2.1's signals and the scales its programs are solved
 /// in: z/σ_z with σ_z the RMS of z from its first non-zero sample (m leading
 /// zero samples, horizon L = n − m), r/σ_r with σ_r the RMS of r (1 when

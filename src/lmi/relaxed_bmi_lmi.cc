@@ -84,7 +84,7 @@ void add_c1_block(Layout& f, const AffineSignals& sig, const Mat<double>& zbar, 
     }
   }
   const double kz = f.sigma_z / f.sigma_r;
-  const double t_fixed = obj.delta * obj.delta * kz * kz;
+  const double t_fixed = obj.delta.approx * obj.delta.approx * kz * kz;
   for (Eigen::Index a = 0; a < f.L; ++a) {
     check_deadline("the relaxed program was built");  // O(L^2) entries: a stop request is seen once per row
     for (Eigen::Index i = 0; i < f.ny; ++i) {
@@ -121,7 +121,7 @@ Layout build(const AffineSignals& sig, const Vec<double>& q_bar, const BoundObje
   add_c1_block(f, sig, zbar, paper, obj);
 
   // (C2): [N s, dᵀ; d, I], d = rb − R q − w.
-  const int B = add_noise_block(p, f.s, obj.dmax * obj.dmax / (f.sigma_r * f.sigma_r), Mat<double>(sig.rb / f.sigma_r));
+  const int B = add_noise_block(p, f.s, obj.dmax.approx * obj.dmax.approx / (f.sigma_r * f.sigma_r), Mat<double>(sig.rb / f.sigma_r));
   for (Eigen::Index k = 0; k < f.n; ++k)
     for (Eigen::Index i = 0; i < f.ny; ++i) {
       const int row = static_cast<int>(1 + k * f.ny + i);
@@ -170,9 +170,9 @@ RelaxedSolution solve_relaxed(const AffineSignals& sig, const Vec<double>& q_bar
   // solver's tolerance on t' magnified by 1/kz² (large when σ_z ≪ σ_r, e.g.
   // when the iteration shrinks z), so it is read as 0.
   out.delta2 = f.t >= 0 && ok ? std::max(0.0, out.solve.x[static_cast<size_t>(f.t)] / (kz * kz))
-                              : objective.delta * objective.delta;
+                              : objective.delta.approx * objective.delta.approx;
   out.dmax2 = f.s >= 0 && ok ? std::max(0.0, out.solve.x[static_cast<size_t>(f.s)] * f.sigma_r * f.sigma_r)
-                             : objective.dmax * objective.dmax;
+                             : objective.dmax.approx * objective.dmax.approx;
   return out;
 }
 

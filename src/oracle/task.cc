@@ -38,8 +38,8 @@ BoundObjective objective_of(const OracleTask& task) {
     case TaskKind::kWeighted: o.kind = BoundObjective::Kind::kWeighted; break;
     case TaskKind::kDecide: o.kind = BoundObjective::Kind::kFeasibility; break;
   }
-  if (!task.delta.empty()) o.delta = double_from_text(task.delta);
-  if (!task.dmax.empty()) o.dmax = double_from_text(task.dmax);
+  if (!task.delta.empty()) o.delta = ExactBound::from_text(task.delta);
+  if (!task.dmax.empty()) o.dmax = ExactBound::from_text(task.dmax);
   if (!task.lambda.empty()) o.lambda = double_from_text(task.lambda);
   return o;
 }

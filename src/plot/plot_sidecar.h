@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "plot/gnuplot.h"
+#include "plot/plot_spec.h"
 
 namespace lpvid {
 

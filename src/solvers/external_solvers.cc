@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "solvers/sdpa_file.h"
 #include "solvers/sdpa_sidecar.h"
+#include "solvers/solver_factory.h"
 
 namespace lpvid {
 

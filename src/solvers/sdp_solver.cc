@@ -7,8 +7,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "solvers/csdp_backend.h"
-#include "solvers/sdpa_backend.h"
 
 // OpenBLAS's own thread control (the library is linked by CMake).
 extern "C" {
@@ -32,16 +30,6 @@ const char* to_string(SolveStatus status) {
 
 bool has_solution(SolveStatus status) {
   return status == SolveStatus::kOptimal || status == SolveStatus::kOptimalInaccurate;
-}
-
-std::vector<std::string> available_solvers() { return {"csdp", "sdpa"}; }
-
-std::unique_ptr<SdpSolver> make_solver(const std::string& name) {
-  if (name == "csdp") return std::make_unique<CsdpSolver>();
-  if (name == "sdpa") return std::make_unique<SdpaSolver>();
-  std::string known;
-  for (const std::string& n : available_solvers()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown SDP solver '" + name + "' (available: " + known + ")");
 }
 
 void validate_options(const SolverOptions& o) {

@@ -123,12 +123,6 @@ class SdpSolver {
   virtual SolveResult solve(const LmiProgram& program, const SolverOptions& options) = 0;
 };
 
-/// The names make_solver accepts: {"csdp", "sdpa"}.
-std::vector<std::string> available_solvers();
-
-/// A new backend by name. Throws std::invalid_argument for an unknown name,
-/// listing the available ones.
-std::unique_ptr<SdpSolver> make_solver(const std::string& name);
 
 /// Throws std::invalid_argument for nonsense options (non-positive or
 /// non-finite tolerances, max_iterations < 1, threads < 1, …).

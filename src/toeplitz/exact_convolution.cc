@@ -5,7 +5,7 @@
 
 #include "core/gmp_raii.h"
 #include "core/stop_request.h"
-#include "toeplitz/record_segments.h"
+#include "toeplitz/record_lengths.h"
 
 namespace lpvid {
 namespace {

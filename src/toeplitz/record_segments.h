@@ -17,36 +17,9 @@
 
 #include "core/scalar.h"
 #include "toeplitz/exact_convolution.h"
+#include "toeplitz/record_lengths.h"
 
 namespace lpvid {
-
-/// n_1 … n_K (each ≥ 1); empty: one record of all rows.
-using RecordLengths = std::vector<Eigen::Index>;
-
-/// The lengths, {n} when `lengths` is empty; throws std::invalid_argument
-/// when they do not add up to n or one is not positive.
-inline RecordLengths record_lengths_of(const RecordLengths& lengths, Eigen::Index n) {
-  if (lengths.empty()) return RecordLengths{n};
-  Eigen::Index sum = 0;
-  for (const Eigen::Index l : lengths) {
-    if (l <= 0) throw std::invalid_argument("a record has " + std::to_string(l) + " rows (each record needs at least one)");
-    sum += l;
-  }
-  if (sum != n)
-    throw std::invalid_argument("the records' lengths add up to " + std::to_string(sum) + ", not the " + std::to_string(n) +
-                                " stacked rows");
-  return lengths;
-}
-
-/// True when `lengths` describes more than one record.
-inline bool several_records(const RecordLengths& lengths) { return lengths.size() > 1; }
-
-/// The first row of each record (K entries) and, last, the total.
-inline std::vector<Eigen::Index> record_starts(const RecordLengths& lengths) {
-  std::vector<Eigen::Index> s{0};
-  for (const Eigen::Index l : lengths) s.push_back(s.back() + l);
-  return s;
-}
 
 /// Number of leading rows k of z.middleRows(first, count) with z_k = 0 exactly.
 template <typename T>

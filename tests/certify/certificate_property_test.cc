@@ -15,6 +15,7 @@
 #include "data/csv_reader.h"
 #include "certify/certify.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"

@@ -25,6 +25,7 @@
 #include "certify/dual_certify.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "support/scratch_dir.h"
 #include "verify/certificate/certificate_check.h"

@@ -15,6 +15,7 @@
 #include "examples/paper_example1.h"
 #include "certify/certify.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "support/scratch_dir.h"
 #include "verify/certificate/certificate_check.h"

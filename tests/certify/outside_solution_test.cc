@@ -21,6 +21,7 @@
 #include "solvers/sdpa_sidecar.h"
 #include "support/fixtures.h"
 #include "support/scratch_dir.h"
+#include "solvers/solver_factory.h"
 
 namespace lpvid {
 namespace {

@@ -18,6 +18,7 @@
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/cli_runner.h"
 #include "support/fixtures.h"
 #include "support/gen_identify.h"

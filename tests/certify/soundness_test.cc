@@ -26,6 +26,7 @@
 #include "certify/certify.h"
 #include "lmi/delta_form_lmi.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "toeplitz/fir.h"
 #include "verify/certificate/certificate_check.h"

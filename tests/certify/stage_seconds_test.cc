@@ -8,6 +8,7 @@
 #include "cli/report.h"
 #include "examples/paper_example1.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "support/scratch_dir.h"
 

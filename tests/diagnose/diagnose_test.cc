@@ -22,6 +22,7 @@
 #include "fit/output_error_fit.h"
 #include "examples/effect_cases.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "verify/certificate/certificate_check.h"
 

@@ -15,6 +15,7 @@
 #include "certify/certify.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "verify/certificate/certificate_check.h"
 

@@ -11,6 +11,7 @@
 #include "diagnose/window_identification.h"
 #include "examples/random_case.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_models.h"
 
 namespace lpvid {

@@ -35,6 +35,7 @@
 #include "fit/output_error_fit.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/scratch_dir.h"
 #include "verify/certificate/certificate_check.h"
 

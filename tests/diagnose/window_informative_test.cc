@@ -19,6 +19,7 @@
 #include "support/scratch_dir.h"
 #include "support/siso_window_case.h"
 #include "verify/certificate/certificate_check.h"
+#include "solvers/solver_factory.h"
 
 namespace lpvid {
 namespace {

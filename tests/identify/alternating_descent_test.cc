@@ -33,8 +33,10 @@
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "identify/alternating_identify.h"
+#include "identify/identify.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 
 namespace lpvid {

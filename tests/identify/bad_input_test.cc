@@ -14,6 +14,7 @@
 #include "identify/identify.h"
 #include "lmi/delta_form_lmi.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "verify/certificate/certificate_check.h"
 

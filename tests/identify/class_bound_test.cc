@@ -12,6 +12,7 @@
 
 #include "identify/class_interval.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "verify/certificate/certificate_check.h"
 #include "verify/certificate/certificate_file.h"

@@ -38,6 +38,7 @@
 #include "identify/class_bound.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "verify/certificate/certificate_check.h"
 #include "verify/certificate/certificate_file.h"

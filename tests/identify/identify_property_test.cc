@@ -22,6 +22,7 @@
 #include "data/experiment_builder.h"
 #include "model/model_file.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "verify/certificate/certificate_check.h"
 #include "verify/certificate/certificate_file.h"

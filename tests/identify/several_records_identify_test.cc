@@ -36,6 +36,7 @@
 #include "identify/identify.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
 #include "verify/certificate/certificate_check.h"

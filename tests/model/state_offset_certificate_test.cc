@@ -21,6 +21,7 @@
 #include "certify/certify.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_identify.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "verify/certificate/certificate_check.h"

@@ -16,6 +16,7 @@
 #include "core/number_text.h"
 #include "identify/basis_selection.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/cli_runner.h"
 #include "support/gen_identify.h"
 #include "verify/certificate/certificate_check.h"
@@ -65,10 +66,8 @@ TEST(SelectBasisCertified, ATooSmallAdditiveBasisIsCertifiedUnableToExplainTheDa
     const LpvModel<double> model_d = convert_model<double>(c.model);
     const Experiment<double> exp_d = read_experiment(data, model_d);
     BasisSelectionOptions o;
-    o.delta_text = rounded_up(c.delta);
-    o.dmax_text = rounded_up(c.dmax);
-    o.delta = double_from_text(o.delta_text);
-    o.dmax = double_from_text(o.dmax_text);
+    o.delta = ExactBound::from_text(rounded_up(c.delta));
+    o.dmax = ExactBound::from_text(rounded_up(c.dmax));
     o.unknowns.offset = false;
     o.prune = false;
     o.max_degree = 0;

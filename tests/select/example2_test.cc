@@ -23,6 +23,7 @@
 #include "model/model_file.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "verify/certificate/certificate_check.h"
 
 #include "support/scratch_dir.h"

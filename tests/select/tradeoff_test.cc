@@ -28,6 +28,7 @@
 #include "plot/tradeoff_plot.h"
 #include "identify/tradeoff.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "verify/certificate/certificate_check.h"
 
 #include "support/scratch_dir.h"

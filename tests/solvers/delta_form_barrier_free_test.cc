@@ -15,6 +15,7 @@
 #include "lmi/delta_form_lmi.h"
 #include "lmi/free_regressors.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
 #include "toeplitz/tap_toeplitz.h"
@@ -103,7 +104,7 @@ RC_GTEST_PROP(DeltaFormFree, OptimumEqualsTheGeneralSdpSolverWithFreeVariables, 
     obj.kind = BoundObjective::Kind::kMinDelta;
     obj.dmax = pr.norm() / std::sqrt(N) * (*rc::gen::inRange(5, 95) / 100.0);
     const Eigen::Index head = leading_zero_samples(c.z) * c.r.cols();
-    RC_PRE(pr.head(head).squaredNorm() < 0.9 * N * obj.dmax * obj.dmax);
+    RC_PRE(pr.head(head).squaredNorm() < 0.9 * N * obj.dmax.approx * obj.dmax.approx);
   }
   BarrierOptions tight;
   tight.rel_gap = 1e-7;

@@ -11,6 +11,7 @@
 #include "lmi/delta_form_lmi.h"
 #include "toeplitz/fir.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "toeplitz/tap_toeplitz.h"
 #include "support/barrier_finite_differences.h"
 
@@ -62,7 +63,7 @@ RC_GTEST_PROP(DeltaFormBarrier, OptimumEqualsTheGeneralSdpSolvers, ()) {
     obj.dmax = s.r.norm() / std::sqrt(static_cast<double>(s.r.rows())) * (*rc::gen::inRange(5, 95) / 100.0);
     // feasible for some Δ: the rows before the first nonzero z fit in N·d_max²
     const Eigen::Index lead = leading_zero_samples(s.z);
-    RC_PRE(s.r.topRows(lead).squaredNorm() < 0.9 * static_cast<double>(s.r.rows()) * obj.dmax * obj.dmax);
+    RC_PRE(s.r.topRows(lead).squaredNorm() < 0.9 * static_cast<double>(s.r.rows()) * obj.dmax.approx * obj.dmax.approx);
   } else {
     obj.kind = BoundObjective::Kind::kWeighted;
     obj.lambda = *rc::gen::inRange(5, 96) / 100.0;

@@ -20,6 +20,7 @@
 #include "lmi/delta_form_lmi.h"
 #include "lmi/delta_form_solve.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/barrier_finite_differences.h"
 #include "toeplitz/delta_form_dual.h"
 #include "toeplitz/record_segments.h"

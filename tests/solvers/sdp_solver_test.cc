@@ -1,4 +1,5 @@
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>

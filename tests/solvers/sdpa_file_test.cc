@@ -17,6 +17,7 @@
 
 #include "core/input_error.h"
 #include "solvers/sdp_solver.h"
+#include "solvers/solver_factory.h"
 #include "support/gen_lmi.h"
 
 namespace lpvid {

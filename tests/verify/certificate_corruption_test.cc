@@ -28,6 +28,7 @@
 #include "support/scratch_dir.h"
 #include "verify/certificate/certificate_check.h"
 #include "verify/certificate/certificate_file.h"
+#include "solvers/solver_factory.h"
 
 namespace lpvid {
 namespace {

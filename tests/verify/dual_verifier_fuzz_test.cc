@@ -38,6 +38,7 @@
 #include "verify/certificate/certificate_check.h"
 #include "verify/psd/psd_command.h"
 #include "verify/psd/work_limits.h"
+#include "solvers/solver_factory.h"
 
 namespace lpvid {
 namespace {

@@ -253,13 +253,13 @@ CertificateVerdict check_claim(const Certificate& c, Experiment<Rational> exp, s
   if (is_dual_claim(c.claim)) return check_dual_claim(c, exp, sim, details.str());
   const PrimalCheck p = check_primal_point(c, exp, sim, details);
   if (c.claim == CertificateClaim::kNotAWitness) {
-    if (p.result == PrimalCheck::kConditionFails) return {true, "", p.text, "", ""};
+    if (p.result == PrimalCheck::kConditionFails) return CertificateVerdict::holding(p.text);
     return invalid_verdict(p.result == PrimalCheck::kHolds ? "the point satisfies (C1) and (C2): it is a witness"
                                                            : p.text,
                            p.result == PrimalCheck::kHolds ? p.text : details.str());
   }
   if (p.result != PrimalCheck::kHolds) return invalid_verdict(p.reason, details.str());
-  return {true, "", p.text, "", ""};
+  return CertificateVerdict::holding(p.text);
 }
 }  // namespace
 
@@ -279,6 +279,10 @@ CertificateVerdict check_certificate(const Certificate& c, const Experiment<Rati
   std::ostringstream details;
   details << "data in memory (" << exp.n() << " rows); ";
   return with_claim(check_claim(c, exp, details), c);
+}
+
+CertificateVerdict check_round_trip(const Certificate& c, const Experiment<Rational>& exp, const std::string& name) {
+  return check_certificate(parse_certificate(certificate_json(c), name), exp);
 }
 
 CertificateVerdict check_certificate(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {

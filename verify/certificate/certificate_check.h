@@ -26,24 +26,9 @@
 #include "data/data_reference.h"
 #include "data/experiment.h"
 #include "verify/certificate/certificate_file.h"
+#include "verify/certificate/certificate_verdict.h"
 
 namespace lpvid {
-
-struct CertificateVerdict {
-  /// The certificate's claim (Certificate::claim: consistent, invalidated or
-  /// a lower bound) was checked exactly and holds.
-  bool holds = false;
-  std::string reason;   ///< why not (empty when it holds)
-  std::string details;  ///< what was checked, sizes, which PSD path decided
-  /// The first line lpvid-verify prints when the claim holds: "consistent",
-  /// "invalidated" or "lower_bound <value>" (the claimed value, ≈).
-  std::string claim_text;
-  /// What exactly was claimed, echoed by lpvid-verify under the first line:
-  /// the Toeplitz mode, δ² and d_max² as exact numbers (the fixed ones for a
-  /// dual claim) and, for a lower bound, the objective and its value rounded
-  /// down (never above what was proved).
-  std::string claim_echo;
-};
 
 /// The data file a check reads: `data_file` when given; else the recorded
 /// path (relative to `certificate_dir`) when it exists; else the file of the
@@ -59,6 +44,12 @@ std::string certificate_data_path(const Certificate& c, const std::string& certi
 /// at: that is the file layer below. Certification runs this on the
 /// experiment it was given, before any file exists.
 CertificateVerdict check_certificate(const Certificate& c, const Experiment<Rational>& exp);
+
+/// The core on the certificate as a file would carry it: `c` written as its
+/// JSON text, read back (parse errors name it `name`) and checked on `exp`.
+/// What certification checks before any file exists, so that what is
+/// written is what was checked.
+CertificateVerdict check_round_trip(const Certificate& c, const Experiment<Rational>& exp, const std::string& name);
 
 /// The file layer, steps 1–2 then the core: the data file's bytes must hash to
 /// the certificate's sha256, its exact rows are parsed from those bytes and

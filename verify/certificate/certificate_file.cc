@@ -195,23 +195,6 @@ void parse_primal_point(const JsonNode& root, const std::string& file, Certifica
 
 }  // namespace
 
-const char* to_string(CertificateClaim c) {
-  switch (c) {
-    case CertificateClaim::kConsistent:
-      return "consistent";
-    case CertificateClaim::kInvalidated:
-      return "invalidated";
-    case CertificateClaim::kLowerBound:
-      return "lower_bound";
-    case CertificateClaim::kNotAWitness:
-      return "not_a_witness";
-    case CertificateClaim::kClassLowerBound:
-      return "class_lower_bound";
-    case CertificateClaim::kClassInvalidated:
-      return "class_invalidated";
-  }
-  return "?";
-}
 
 Certificate parse_certificate(std::string_view text, const std::string& file) {
   const JsonNode root = parse_exact_json(text, file);

@@ -155,7 +155,7 @@ CertificateVerdict check_class_claim(const Certificate& c, const Experiment<Rati
     << " boxed), " << w.leaves << " leaves of horizon " << s.horizon << ", every leaf's dual point checked exactly; lowest leaf "
     << approx_text(w.lowest, 8);
   if (std::string why = claim_problem(c, w.lowest); !why.empty()) return invalid_verdict(why, d.str());
-  return {true, "", d.str(), "", ""};
+  return CertificateVerdict::holding(d.str());
 }
 
 }  // namespace lpvid

@@ -19,7 +19,8 @@
 #include <string>
 
 #include "data/experiment.h"
-#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate.h"
+#include "verify/certificate/certificate_verdict.h"
 
 namespace lpvid {
 

@@ -65,7 +65,7 @@ CertificateVerdict check_path_dual_on_grid(const Certificate& c, const Simulatio
     return invalid_verdict("U - u_floor*I is not PSD (" + psd.reason + "), so Y1 is not shown PSD", d.str());
   d << "; U - u_floor*I (size " << U_grid.rows() << ") is " << verdict_word(psd.verdict) << " ("
     << (psd.decided_by_filter ? "floating filter with rigorous bound" : "exact elimination") << "), so Y1 is PSD";
-  return {true, "", d.str(), "", ""};
+  return CertificateVerdict::holding(d.str());
 }
 
 CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Rational>& exp, const Simulation<Rational>& sim,
@@ -111,7 +111,7 @@ CertificateVerdict check_dual_claim(const Certificate& c, const Experiment<Ratio
     return invalid_verdict("the dual matrix Y1 is not PSD (" + psd.reason + ")", d.str());
   d << "; Y1 (size " << c.dual.Y1.rows() << ") is " << verdict_word(psd.verdict) << " ("
     << (psd.decided_by_filter ? "floating filter with rigorous bound" : "exact elimination") << ")";
-  return {true, "", d.str(), "", ""};
+  return CertificateVerdict::holding(d.str());
 }
 
 }  // namespace lpvid

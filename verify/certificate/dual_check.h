@@ -17,7 +17,8 @@
 #include "data/experiment.h"
 #include "model/simulate.h"
 #include "toeplitz/record_segments.h"
-#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate.h"
+#include "verify/certificate/certificate_verdict.h"
 
 namespace lpvid {
 

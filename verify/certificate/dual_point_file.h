@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/model_json_tree.h"
-#include "verify/certificate/certificate_file.h"
+#include "verify/certificate/certificate.h"
 
 namespace lpvid {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/scalar.h"
-#include "verify/certificate/certificate_check.h"
+#include "verify/certificate/certificate_verdict.h"
 #include "verify/psd/exact_psd.h"
 
 namespace lpvid {
@@ -28,7 +28,7 @@ inline std::string psd_note(const PsdResult& r) {
 
 /// The verdict "the claim does not hold", with the reason and what was checked.
 inline CertificateVerdict invalid_verdict(std::string reason, std::string details = "") {
-  return {false, std::move(reason), std::move(details), "", ""};
+  return CertificateVerdict::invalid(std::move(reason), std::move(details));
 }
 
 }  // namespace lpvid

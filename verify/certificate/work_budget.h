@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "data/experiment.h"
-#include "verify/certificate/certificate_file.h"
+#include "verify/certificate/certificate.h"
 
 namespace lpvid {
 
