@@ -2,7 +2,11 @@
 // data (RMS and fit % per output, the rows compared, the initial state
 // used), the figure a user checks before and after a change of the model.
 // Several --model give one table; --u/--y/--rho map the models' columns to
-// the data's in memory (cli/compare_columns.h).
+// the data's in memory (cli/compare_columns.h). The command reads the models
+// and the records, makes one call, compare_models (fit/compare_models.h),
+// and renders its result: the text, the JSON report, the series CSV, the
+// figure and the model with its fitted x0.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,12 +24,8 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "data/csv_reader.h"
-#include "data/experiment_builder.h"
-#include "fit/k_step_prediction.h"
-#include "fit/output_error_fit.h"
-#include "fit/output_score.h"
+#include "fit/compare_models.h"
 #include "model/model_file.h"
-#include "model/simulate.h"
 
 namespace lpvid::cli {
 namespace {
@@ -50,29 +50,6 @@ std::string percent_text(double x) {
   return buf;
 }
 
-/// One model on one record: its rows (first: the file row of its row 0), the
-/// model with its own x0 (fitted or as in the file), the compared output
-/// (free run or k-step prediction) and the scores.
-struct ComparedRecord {
-  std::string file;
-  long first = 0;
-  Eigen::Index skip = 0;
-  Experiment<double> exp;
-  LpvModel<double> model;
-  Mat<double> yhat;
-  OutputScores s;
-};
-
-/// One --model: its path, its model with the column mapping applied, and its
-/// comparison on each record.
-struct ComparedModel {
-  std::string path, name;
-  LpvModel<double> model;
-  std::vector<ComparedRecord> records;
-  OutputScores pooled;
-  Eigen::Index samples = 0;
-};
-
 TextTable read_record(const CompareArgs& a, const RecordOption& r) {
   try {
     return a.names.empty() ? read_table(r.path) : read_table(r.path, a.names);
@@ -82,44 +59,30 @@ TextTable read_record(const CompareArgs& a, const RecordOption& r) {
   }
 }
 
-Eigen::Index state_window(const CompareArgs& a, const LpvModel<double>& m) {
-  return a.predict_window > 0 ? a.predict_window : std::max(1, m.nx);
+/// Each --data read, its columns checked against --u/--y/--rho, with its --rows.
+std::vector<CompareRecord> read_records(const CompareArgs& a, const std::vector<RecordOption>& recs) {
+  std::vector<CompareRecord> out;
+  for (const RecordOption& r : recs) {
+    CompareRecord c{r.path, read_record(a, r), std::nullopt, r.rows_text};
+    check_mapped_columns(a.columns, c.table.header, r.path);
+    if (!r.rows_text.empty()) c.rows = parse_row_range(r.rows_text, "--rows");
+    out.push_back(std::move(c));
+  }
+  return out;
 }
 
-ComparedRecord compare_record(const CompareArgs& a, const std::string& path, const LpvModel<double>& model,
-                              const RecordOption& r, bool fit_x0) {
-  ComparedRecord c{r.path, 0, a.warmup, {}, model, {}, {}};
-  const TextTable table = read_record(a, r);
-  check_mapped_columns(a.columns, table.header, r.path);
-  c.exp = make_experiment<double>(table, model.columns);
-  if (!r.rows_text.empty()) {
-    const auto [b, e] = parse_row_range(r.rows_text, "--rows");
-    if (e > c.exp.n())
-      throw InputError("--rows " + r.rows_text + ": " + (a.data_paths.size() > 1 ? r.path + " has" : std::string("the data has")) +
-                       " only " + std::to_string(c.exp.n()) + " rows");
-    c.exp = select_rows(c.exp, b, e);
-    c.first = b;
-  }
-  if (a.warmup >= c.exp.n())
-    throw InputError("--warmup " + std::to_string(a.warmup) + " leaves nothing to score in " + std::to_string(c.exp.n()) +
-                     " rows" + (a.data_paths.size() > 1 ? " of " + r.path : ""));
-  // x0: the model's, or fitted (multi-start, fit/output_error_fit.h) on the
-  // warm-up rows, or on all compared rows without --warmup
-  if (fit_x0) {
-    const FitResult f = fit_initial_state(c.model, c.exp, a.warmup > 0 ? a.warmup : c.exp.n());
-    if (!f.finite) throw InputError(path + ": no initial state keeps the simulation finite on the rows of " + r.path);
-    c.model.x0 = f.model.x0;
-  }
-  c.yhat = a.predict > 0 ? k_step_prediction(c.model, c.exp, a.predict, state_window(a, c.model), c.skip)
-                         : simulate(c.model, c.exp).output;
-  const Eigen::Index scored = c.exp.n() - c.skip;
-  c.s = score_outputs(c.exp.y.bottomRows(scored), c.yhat.bottomRows(scored));
-  return c;
+CompareOptions compare_options(const CompareArgs& a, bool fit_x0) {
+  CompareOptions o;
+  o.fit_x0 = fit_x0;
+  o.warmup = a.warmup;
+  o.predict = a.predict;
+  o.predict_window = a.predict_window;
+  return o;
 }
 
-std::string prediction_text(const CompareArgs& a, const LpvModel<double>& m) {
+std::string prediction_text(const CompareArgs& a, const ModelComparison& m) {
   if (a.predict == 0) return "free run";
-  return std::to_string(a.predict) + "-step-ahead prediction, state re-fitted on " + std::to_string(state_window(a, m)) +
+  return std::to_string(a.predict) + "-step-ahead prediction, state re-fitted on " + std::to_string(m.state_window) +
          " output samples ending " + std::to_string(a.predict) + " rows before each";
 }
 
@@ -130,14 +93,14 @@ void print_scores(const OutputScores& s, const std::vector<std::string>& names) 
   if (s.rms.size() > 1) std::printf("  %-16s %14.6g %10s\n", "all outputs", s.rms_all, percent_text(s.fit_percent_all).c_str());
 }
 
-void print_record(const CompareArgs& a, const std::string& path, const ComparedRecord& c, bool fit_x0) {
+void print_record(const CompareArgs& a, const ModelComparison& m, const RecordComparison& c, bool fit_x0) {
   const Eigen::Index scored = c.exp.n() - c.skip;
-  std::cout << "lpvid compare: " << path << " on " << c.file << " rows " << c.first + c.skip << ":" << c.first + c.exp.n()
+  std::cout << "lpvid compare: " << m.file << " on " << c.file << " rows " << c.first + c.skip << ":" << c.first + c.exp.n()
             << " (" << scored << " samples";
   if (c.skip > 0) std::cout << "; x0 fitted on the " << c.skip << " rows before them";
   else std::cout << (fit_x0 ? "; x0 fitted on these rows" : "; x0 as in the model file");
-  std::cout << ", " << prediction_text(a, c.model) << ")\n";
-  print_scores(c.s, c.model.columns.y);
+  std::cout << ", " << prediction_text(a, m) << ")\n";
+  print_scores(c.scores, c.model.columns.y);
   std::cout << "  (fit % = 100*(1 - ||y - yhat|| / ||y - mean(y)||): 100 perfect, 0 no better than the mean)\n";
   if (fit_x0) {
     std::cout << "  x0          ";
@@ -147,86 +110,68 @@ void print_record(const CompareArgs& a, const std::string& path, const ComparedR
 }
 
 /// The prediction and column fields of a model's report.
-void add_model_fields(nlohmann::ordered_json& r, const CompareArgs& a, const LpvModel<double>& m) {
+void add_model_fields(nlohmann::ordered_json& r, const CompareArgs& a, const ModelComparison& m) {
   r["prediction"] = a.predict > 0 ? "k_step" : "free_run";
   r["predict_steps"] = a.predict;
-  if (a.predict > 0) r["state_window"] = state_window(a, m);
-  r["columns"] = {{"u", m.columns.u}, {"y", m.columns.y}, {"rho", m.columns.rho}};
+  if (a.predict > 0) r["state_window"] = m.state_window;
+  const ColumnMap& columns = m.model.columns;
+  r["columns"] = {{"u", columns.u}, {"y", columns.y}, {"rho", columns.rho}};
 }
 
 /// The report fields of one record (the whole report for one --data).
-nlohmann::ordered_json record_json(const CompareArgs& a, const std::string& path, const ComparedRecord& c, bool fit_x0) {
+nlohmann::ordered_json record_json(const CompareArgs& a, const ModelComparison& m, const RecordComparison& c, bool fit_x0) {
   nlohmann::ordered_json r;
   r["data"] = c.file;
-  r["model"] = path;
+  r["model"] = m.file;
   r["rows"] = {c.first + c.skip, c.first + c.exp.n()};
   r["warmup_rows"] = c.skip;
   r["x0"] = fit_x0 ? (c.skip > 0 ? "fitted on the warm-up rows" : "fitted on the compared rows") : "model file";
   r["x0_values"] = std::vector<double>(c.model.x0.data(), c.model.x0.data() + c.model.x0.size());
   nlohmann::ordered_json outs = nlohmann::ordered_json::array();
-  for (size_t i = 0; i < c.s.rms.size(); ++i)
-    outs.push_back({{"name", c.model.columns.y[i]}, {"rms", c.s.rms[i]}, {"fit_percent", c.s.fit_percent[i]}});
+  for (size_t i = 0; i < c.scores.rms.size(); ++i)
+    outs.push_back({{"name", c.model.columns.y[i]}, {"rms", c.scores.rms[i]}, {"fit_percent", c.scores.fit_percent[i]}});
   r["outputs"] = outs;
-  r["rms"] = c.s.rms_all;
-  r["fit_percent"] = c.s.fit_percent_all;
-  r["finite"] = c.s.finite;
-  add_model_fields(r, a, c.model);
+  r["rms"] = c.scores.rms_all;
+  r["fit_percent"] = c.scores.fit_percent_all;
+  r["finite"] = c.scores.finite;
+  add_model_fields(r, a, m);
   return r;
 }
-
-/// Each record compared on its own (its own x0), then every scored sample of
-/// every record pooled.
-ComparedModel compare_model(const CompareArgs& a, const std::string& path, const LpvModel<double>& model,
-                            const std::vector<RecordOption>& recs, bool fit_x0) {
-  ComparedModel m{path, "", model, {}, {}, 0};
-  for (const RecordOption& r : recs) m.records.push_back(compare_record(a, path, model, r, fit_x0));
-  for (const ComparedRecord& c : m.records) m.samples += c.exp.n() - c.skip;
-  Mat<double> y(m.samples, model.ny), yhat(m.samples, model.ny);
-  Eigen::Index at = 0;
-  for (const ComparedRecord& c : m.records) {
-    const Eigen::Index scored = c.exp.n() - c.skip;
-    y.middleRows(at, scored) = c.exp.y.bottomRows(scored);
-    yhat.middleRows(at, scored) = c.yhat.bottomRows(scored);
-    at += scored;
-  }
-  m.pooled = score_outputs(y, yhat);
-  return m;
-}
-
 /// One model's report: the one-record report, or the pooled report with
 /// its records.
-nlohmann::ordered_json model_json(const CompareArgs& a, const ComparedModel& m, bool fit_x0) {
-  if (m.records.size() == 1) return record_json(a, m.path, m.records.front(), fit_x0);
+nlohmann::ordered_json model_json(const CompareArgs& a, const ModelComparison& m, bool fit_x0) {
+  if (m.records.size() == 1) return record_json(a, m, m.records.front(), fit_x0);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const ComparedRecord& c : m.records) list.push_back(record_json(a, m.path, c, fit_x0));
+  for (const RecordComparison& c : m.records) list.push_back(record_json(a, m, c, fit_x0));
   nlohmann::ordered_json r;
   r["data"] = a.data_paths;
-  r["model"] = m.path;
+  r["model"] = m.file;
   r["samples"] = m.samples;
   r["rms"] = m.pooled.rms_all;
   r["fit_percent"] = m.pooled.fit_percent_all;
   r["finite"] = m.pooled.finite;
   r["records"] = list;
-  add_model_fields(r, a, m.model);
+  add_model_fields(r, a, m);
   return r;
 }
 
-void print_model(const CompareArgs& a, const ComparedModel& m, bool fit_x0) {
-  for (const ComparedRecord& c : m.records) print_record(a, m.path, c, fit_x0);
+void print_model(const CompareArgs& a, const ModelComparison& m, bool fit_x0) {
+  for (const RecordComparison& c : m.records) print_record(a, m, c, fit_x0);
   if (m.records.size() == 1) return;
   std::cout << "pooled: " << m.records.size() << " records, " << m.samples << " samples (each record from its own x0)\n";
   print_scores(m.pooled, m.model.columns.y);
 }
 
 /// The table of several models: one row per model, RMS and fit % per output.
-void print_table(const std::vector<ComparedModel>& ms) {
+void print_table(const std::vector<ModelComparison>& ms, const std::vector<std::string>& names) {
   const std::vector<std::string>& outs = ms.front().model.columns.y;
   std::printf("\n  %-24s", "model");
   for (const std::string& o : outs) std::printf(" %14s %8s", ("RMS " + o).c_str(), "fit %");
   if (outs.size() > 1) std::printf(" %14s %8s", "RMS all", "fit %");
   std::printf("\n");
-  for (const ComparedModel& m : ms) {
-    std::printf("  %-24s", m.name.c_str());
+  for (size_t k = 0; k < ms.size(); ++k) {
+    const ModelComparison& m = ms[k];
+    std::printf("  %-24s", names[k].c_str());
     for (size_t i = 0; i < outs.size(); ++i)
       std::printf(" %14.6g %8s", m.pooled.rms[i], percent_text(m.pooled.fit_percent[i]).c_str());
     if (outs.size() > 1) std::printf(" %14.6g %8s", m.pooled.rms_all, percent_text(m.pooled.fit_percent_all).c_str());
@@ -276,12 +221,12 @@ std::vector<LpvModel<double>> read_models(const CompareArgs& a) {
 }
 
 /// --out, --plots, --model-out of one record.
-void write_record_files(const CompareArgs& a, const std::vector<ComparedModel>& ms, const SignalInfo& info,
-                        nlohmann::ordered_json& report) {
-  const ComparedRecord& c0 = ms.front().records.front();
+void write_record_files(const CompareArgs& a, const std::vector<ModelComparison>& ms,
+                        const std::vector<std::string>& names, const SignalInfo& info, nlohmann::ordered_json& report) {
+  const RecordComparison& c0 = ms.front().records.front();
   const ComparedRows rows{c0.first, c0.skip, c0.exp.y, c0.model.columns.y, info};
   std::vector<ComparedSeries> series;
-  for (const ComparedModel& m : ms) series.push_back({m.name, m.records.front().yhat});
+  for (size_t k = 0; k < ms.size(); ++k) series.push_back({names[k], ms[k].records.front().yhat});
   if (!a.out.empty()) {
     write_compare_series(a.out, rows, series);
     std::cout << "  series      " << a.out << " (row" << (info.sample_time > 0 ? ", time_s" : "")
@@ -290,7 +235,7 @@ void write_record_files(const CompareArgs& a, const std::vector<ComparedModel>& 
   }
   const std::string png = a.plots_dir.empty() ? "" : (std::filesystem::path(a.plots_dir) / "compare.png").string();
   if (!a.plots_dir.empty()) std::filesystem::create_directories(a.plots_dir);
-  const std::string plotted = plot_compare(png, rows, series, "lpvid compare on " + std::filesystem::path(c0.file).filename().string() + " (" + prediction_text(a, c0.model) + ")");
+  const std::string plotted = plot_compare(png, rows, series, "lpvid compare on " + std::filesystem::path(c0.file).filename().string() + " (" + prediction_text(a, ms.front()) + ")");
   if (!plotted.empty()) {
     std::cout << "  plot        " << plotted << "\n";
     report["plot"] = plotted.rfind("no plot", 0) == 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(png);
@@ -301,6 +246,27 @@ void write_record_files(const CompareArgs& a, const std::vector<ComparedModel>& 
   }
 }
 
+/// The report: one model's, or the table of several (printed) and their
+/// reports as a "models" list.
+nlohmann::ordered_json compare_report(const CompareArgs& a, const std::vector<ModelComparison>& ms,
+                                      const std::vector<std::string>& names, const std::vector<RecordOption>& recs,
+                                      bool fit_x0) {
+  if (ms.size() == 1) return model_json(a, ms.front(), fit_x0);
+  print_table(ms, names);
+  nlohmann::ordered_json report;
+  report["data"] = recs.size() == 1 ? nlohmann::ordered_json(recs.front().path) : nlohmann::ordered_json(a.data_paths);
+  report["warmup_rows"] = a.warmup;
+  report["prediction"] = a.predict > 0 ? "k_step" : "free_run";
+  report["predict_steps"] = a.predict;
+  report["models"] = nlohmann::ordered_json::array();
+  for (size_t k = 0; k < ms.size(); ++k) {
+    nlohmann::ordered_json j = model_json(a, ms[k], fit_x0);
+    j["name"] = names[k];
+    report["models"].push_back(j);
+  }
+  return report;
+}
+
 int run_compare(const CompareArgs& a) {
   const bool fit_x0 = a.x0 == "fit" || a.warmup > 0;
   const std::vector<RecordOption> recs = pair_data_and_rows(a.data_paths, a.rows_texts, a.data_rows_order);
@@ -308,35 +274,18 @@ int run_compare(const CompareArgs& a) {
   const std::vector<LpvModel<double>> models = read_models(a);
   const SignalInfo info = compare_signal_info(a, models);
   const std::vector<std::string> names = model_names(a.models);
-  std::vector<ComparedModel> ms;
-  bool finite = true;
-  for (size_t i = 0; i < models.size(); ++i) {
-    ms.push_back(compare_model(a, a.models[i], models[i], recs, fit_x0));
-    ms.back().name = names[i];
-    print_model(a, ms.back(), fit_x0);
-    finite = finite && ms.back().pooled.finite;
-  }
-  nlohmann::ordered_json report;
-  if (ms.size() == 1) {
-    report = model_json(a, ms.front(), fit_x0);
-  } else {
-    print_table(ms);
-    report["data"] = recs.size() == 1 ? nlohmann::ordered_json(recs.front().path) : nlohmann::ordered_json(a.data_paths);
-    report["warmup_rows"] = a.warmup;
-    report["prediction"] = a.predict > 0 ? "k_step" : "free_run";
-    report["predict_steps"] = a.predict;
-    report["models"] = nlohmann::ordered_json::array();
-    for (const ComparedModel& m : ms) {
-      nlohmann::ordered_json j = model_json(a, m, fit_x0);
-      j["name"] = m.name;
-      report["models"].push_back(j);
-    }
-  }
+  const CompareResult result = compare_models(models, a.models, read_records(a, recs), compare_options(a, fit_x0));
+  // the models compared before one that could not be are shown before its error
+  for (const ModelComparison& m : result.models) print_model(a, m, fit_x0);
+  if (result.failure) std::rethrow_exception(result.failure);
+  const std::vector<ModelComparison>& ms = result.models;
+  nlohmann::ordered_json report = compare_report(a, ms, names, recs, fit_x0);
   if (info.sample_time > 0) report["sample_time"] = info.sample_time;
   if (!info.units.empty())
     for (const auto& [col, unit] : info.units) report["units"][col] = unit;
-  if (recs.size() == 1) write_record_files(a, ms, info, report);
+  if (recs.size() == 1) write_record_files(a, ms, names, info, report);
   write_json(a.report, report);
+  const bool finite = std::all_of(ms.begin(), ms.end(), [](const ModelComparison& m) { return m.pooled.finite; });
   return finite ? kExitOk : kExitSolver;
 }
 

@@ -12,16 +12,15 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "certify/certificate_files.h"
-#include "identify/class_interval.h"
-#include "identify/fix_and_certify.h"
 #include "model/simulate.h"
 #include "oracle/answer.h"
 #include "oracle/judge.h"
 #include "oracle/outside_command.h"
+#include "oracle/reference.h"
 #include "oracle/task.h"
+#include "oracle/witness.h"
 #include "solvers/external_solvers.h"
 #include "verify/certificate/certificate_check.h"
-#include "verify/certificate/certificate_file.h"
 
 namespace lpvid::cli {
 namespace {
@@ -63,98 +62,6 @@ std::string claim_words(const OracleTask& task, const OracleAnswer& a) {
     case TaskKind::kIdentify: s = "dmax = " + text(*a.dmax) + " with theta"; break;
   }
   return a.witness ? s + " +witness" : s;
-}
-
-/// The exact check of the witness at the claimed values (the task's fixed
-/// values for the others). A failing witness leaves a "not_a_witness"
-/// certificate in the folder (its bytes kept in `held`), checked again from the file.
-WitnessResult check_witness(const OracleTask& task, const OracleAnswer& a, const LpvModel<Rational>& model,
-                            const Inputs& in, const fs::path& folder, HeldFiles& held) {
-  WitnessResult r;
-  if (!a.witness) return r;
-  Certificate c;
-  set_data_reference(c, in.data);
-  c.model = model;
-  c.mode = ToeplitzMode::kSignal;
-  const Rational delta = task.delta.empty() ? *a.delta : rational_from_text(task.delta);
-  const Rational dmax = task.dmax.empty() ? *a.dmax : rational_from_text(task.dmax);
-  c.delta2 = delta * delta;
-  c.dmax2 = dmax * dmax;
-  if (a.witness->taps_form) {
-    c.form = CertificateForm::kDelta;
-    c.taps = a.witness->taps;
-    c.horizon = a.witness->horizon;
-  } else {
-    c.form = CertificateForm::kW;
-    c.w = a.witness->w;
-  }
-  c.info["tool"] = "lpvid oracle";
-  c.info["meaning"] = "the outside implementation's witness, judged at its claimed values";
-  const CertificateVerdict holds = check_certificate(c, in.exp_q);
-  if (holds.holds) {
-    r.status = WitnessResult::kHolds;
-    r.text = holds.details;
-    return r;
-  }
-  c.claim = CertificateClaim::kNotAWitness;
-  const CertificateVerdict fails = check_certificate(c, in.exp_q);
-  if (!fails.holds) {
-    r.status = WitnessResult::kMalformed;
-    r.text = holds.reason;
-    return r;
-  }
-  r.certificate = (folder / "witness.not_a_witness.json").string();
-  write_certificate_at(c, r.certificate, &held);
-  r.status = WitnessResult::kFails;
-  r.text = holds.reason;
-  return r;
-}
-
-/// identify: the class lower end of `id`'s class interval, its certificate
-/// written to lpvid's folder (its bytes kept in `held`).
-ClassReference class_reference(const ClassInterval& ci, const fs::path& folder, HeldFiles& held) {
-  ClassReference k;
-  const ClassBoundResult& b = ci.bound;
-  if (!b.certified) {
-    k.reason = b.reason;
-    return k;
-  }
-  k.verified = true;
-  k.lower = b.lower;
-  k.certificate = (folder / "lpvid.class.json").string();
-  write_certificate_at(*b.certificate, k.certificate, &held);
-  k.whole_class = b.whole_class;
-  k.center = b.certificate->region.center;
-  k.radius = b.certificate->region.radius;
-  k.free = b.certificate->region.free;
-  return k;
-}
-
-/// identify: lpvid's own identification of the task (Theorem 3.1, iterated
-/// relaxation, θ fixed and certified), the reference for "suboptimal", and
-/// its class interval (identify/class_interval.h; in the convex case the
-/// class optimum replaces lpvid's θ when it certifies lower), whose lower
-/// end refutes claims below it. The certificates' bytes are kept in `held`.
-void identify_reference(const Inputs& in, const CommonOptions& c, const fs::path& folder, SdpSolver& solver,
-                        ReferenceResult& ref, HeldFiles& held) {
-  IdentifyOptions opt;
-  opt.objective = in.objective;
-  opt.iterate = true;
-  CertifyOptions co = certify_options(c, in);
-  co.lower_end = false;
-  IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, solver);
-  if (!id.bounds.verified()) {
-    ref.klass.reason = "lpvid's own identification was not certified";
-    return;
-  }
-  ClassBoundOptions cbo;
-  cbo.unknowns = opt.unknowns;
-  ref.klass =
-      class_reference(class_interval(id, in.model_q, in.model_d, in.exp_q, in.exp_d, co, cbo, solver), folder, held);
-  ref.identified_verified = true;
-  ref.identified = id.bounds.dmax2;
-  ref.identified_certificate =
-      write_certificates(id.bounds, (folder / "lpvid.identify.cert.json").string(), &held).certificate;
 }
 
 using CaseFiles = std::map<std::string, std::string>;
@@ -308,14 +215,15 @@ std::optional<NotJudged> read_answer(const CommandRun& run, const CaseSetup& s, 
 /// written (bytes kept), the judgement, its evidence re-checked from the
 /// file, and last every file lpvid holds compared with the disk.
 void judge_case(CaseSetup& s, const OracleAnswer& answer, const LpvModel<Rational>& judged, const CertifiedBounds& b,
-                const ReferenceResult& identified, const OracleCaseOptions& o, const fs::path& mine) {
+                const IdentifiedReference& identified, const OracleCaseOptions& o, const fs::path& mine) {
   CaseReport& rep = s.rep;
-  const WitnessResult witness = check_witness(s.task, answer, judged, s.in, mine, s.held);
+  const WitnessResult witness =
+      judge_witness(s.task, answer, judged, s.in.data, s.in.exp_q, mine.string(), s.held);
   ReferenceResult ref =
       reference_of(b, s.in.objective, write_certificates(b, (mine / "lpvid.cert.json").string(), &s.held));
-  ref.identified_verified = identified.identified_verified;
-  ref.identified = identified.identified;
-  ref.identified_certificate = identified.identified_certificate;
+  ref.identified_verified = identified.verified;
+  ref.identified = identified.dmax2;
+  ref.identified_certificate = identified.certificate;
   ref.klass = identified.klass;
   if (s.task.kind == TaskKind::kIdentify) rep.klass = ref.klass;
   rep.judgement = judge(s.task, answer, ref, witness, o.tolerance);
@@ -346,10 +254,12 @@ CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   auto solver = make_solver_for_cli(s.c.solver, "");
   const CertifyOptions co = certify_options(s.c, in);
   const bool identify = s.task.kind == TaskKind::kIdentify;
-  ReferenceResult identified;
+  IdentifiedReference identified;
   CertifiedBounds b;
-  if (identify) identify_reference(in, s.c, mine, *solver, identified, s.held);
-  else b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
+  if (identify)
+    identified = identify_reference(in.model_q, in.model_d, in.exp_q, in.exp_d, co, *solver, mine.string(), s.held);
+  else
+    b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
   rep.lpvid_seconds = seconds_since(started);
   const CommandRun run = outside.get();
   rep.outside_seconds = run.seconds;

@@ -1,7 +1,8 @@
 #pragma once
 /// One case of `lpvid oracle`: lpvid's own copy of its inputs, the outside
-/// command run on a fresh copy, lpvid's own certification of the same task,
-/// the exact check of the answer's witness, and the verdict (oracle/judge.h)
+/// command run on a fresh copy, lpvid's own certification of the same task
+/// (an identify task: its reference, oracle/reference.h), the exact check of
+/// the answer's witness (oracle/witness.h), and the verdict (oracle/judge.h)
 /// with its evidence re-checked from the file.
 ///
 /// The command under test never touches what it is judged on. lpvid holds

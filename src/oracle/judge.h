@@ -49,6 +49,7 @@
 #include "certify/certify.h"
 #include "oracle/answer.h"
 #include "oracle/task.h"
+#include "oracle/witness.h"
 
 namespace lpvid {
 
@@ -106,13 +107,6 @@ struct ReferenceResult {
 /// The reference of a task from lpvid's certified bounds and the files its
 /// certificates were written to.
 ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& objective, const CertificateFiles& files);
-
-/// The exact check of the answer's witness at the claimed values.
-struct WitnessResult {
-  enum Status { kNone, kHolds, kFails, kMalformed } status = kNone;
-  std::string text;         ///< the verifier's words
-  std::string certificate;  ///< kFails: the "not_a_witness" certificate (checked)
-};
 
 struct Judgement {
   OracleVerdict verdict = OracleVerdict::kUndecided;
