@@ -165,7 +165,8 @@ void class_part(const RandomCase& c, IdentifiedModel& id, const CertifyOptions& 
   o.max_leaves = leaves;
   o.box_fraction = box;
   const Stopwatch sw;
-  const ClassInterval ci = class_interval(id, c.model, md, c.exp, ed, co, o, solver);
+  ClassInterval ci = class_interval(id, c.model, md, c.exp, ed, co, o, solver);
+  adopt_class_optimum(id, ci);
   r.class_wall = sw.wall();
   r.class_cpu = sw.cpu();
   r.U = nearest_double(id.bounds.upper);
@@ -173,7 +174,7 @@ void class_part(const RandomCase& c, IdentifiedModel& id, const CertifyOptions& 
   r.free = static_cast<long>(ci.bound.free.size());
   r.boxed = r.P - r.free;
   r.leaves = ci.bound.leaves;
-  if (!ci.bound.certified) {
+  if (!ci.bound.certified()) {
     r.verified = "no";
     r.reason += "class bound not certified: " + ci.bound.reason + "; ";
     return;

@@ -131,21 +131,21 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
                static_cast<long>(exp.n()), b.signals_seconds, b.solve_seconds, b.upper_build_seconds, b.verify_seconds,
                b.lower.seconds - b.lower.check_seconds, b.lower.check_seconds, row.certify, row.cpu_certify);
   if (!b.verified()) std::fprintf(stderr, "  (n = %ld: no upper end: %s)\n", static_cast<long>(exp.n()), b.reason.c_str());
-  if (!b.lower.verified) std::fprintf(stderr, "  (n = %ld: no lower end: %s)\n", static_cast<long>(exp.n()), b.lower.reason.c_str());
+  if (!b.lower.verified()) std::fprintf(stderr, "  (n = %ld: no lower end: %s)\n", static_cast<long>(exp.n()), b.lower.reason.c_str());
   t0 = StageClock{};
   row.upper_ok = b.verified() && check_certificate_file(files.certificate).holds ? "yes" : "NO";
   row.verify_upper = t0.wall();
   row.cpu_verify_upper = t0.cpu();
-  if (b.lower.verified && b.lower.verifier_details.find("compact dual form not used") != std::string::npos)
+  if (b.lower.verified() && b.lower.verifier_details.find("compact dual form not used") != std::string::npos)
     std::fprintf(stderr, "  (n = %ld: %s)\n", static_cast<long>(exp.n()), b.lower.verifier_details.c_str());
-  if (b.lower.verified) {
+  if (b.lower.verified()) {
     t0 = StageClock{};
     row.lower_ok = check_certificate_file(files.lower).holds ? "yes" : "NO";
     row.verify_lower = t0.wall();
     row.kb_lower = kilobytes(files.lower);
   }
   if (b.verified()) row.kb_upper = kilobytes(files.certificate);
-  if (!b.lower.verified) return row;
+  if (!b.lower.verified()) return row;
   // Invalidation below the certified lower end.
   const double dmax = 0.9 * std::sqrt(nearest_double(b.lower.value));
   CertifyOptions io = co;

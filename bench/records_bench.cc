@@ -97,16 +97,16 @@ Row run(const LpvModel<Rational>& model, const std::vector<Experiment<Rational>>
   row.gap = relative_gap(b);
   if (b.verified()) row.upper = std::sqrt(nearest_double(b.dmax2));
   if (!b.verified()) std::fprintf(stderr, "  (%s: no upper end: %s)\n", tag.c_str(), b.reason.c_str());
-  if (!b.lower.verified) std::fprintf(stderr, "  (%s: no lower end: %s)\n", tag.c_str(), b.lower.reason.c_str());
+  if (!b.lower.verified()) std::fprintf(stderr, "  (%s: no lower end: %s)\n", tag.c_str(), b.lower.reason.c_str());
   const CertificateFiles files = write_certificates(b, (dir / (tag + ".cert.json")).string());
-  bool all = b.verified() && b.lower.verified;
+  bool all = b.verified() && b.lower.verified();
   if (b.verified()) {
     t0 = std::chrono::steady_clock::now();
     all = check_certificate_file(files.certificate).holds && all;
     row.verify_upper = seconds_since(t0);
     row.kb_upper = kilobytes(files.certificate);
   }
-  if (b.lower.verified) {
+  if (b.lower.verified()) {
     t0 = std::chrono::steady_clock::now();
     all = check_certificate_file(files.lower).holds && all;
     row.verify_lower = seconds_since(t0);

@@ -280,7 +280,7 @@ def select_basis(r):
             "--report", "sel.json", "--certificate", "sel.cert.json")
     r.lpvid("generate", "example1", "--n", "60", "--seed", "1", "--noise-std", "0.05", "--out", "ex1n.csv")
     r.lpvid("select-basis", "--data", "ex1n.csv", "--model", "initial_model.json", "--delta", "0.1", "--dmax", "0.06",
-            "--max-degree", "1", "--report", "sel2.json", "--certificate", "sel2.cert.json", expect=5)
+            "--degree", "1", "--report", "sel2.json", "--certificate", "sel2.cert.json", expect=5)
     for c in r.glob("*.json"):
         if ".step" in c or ".cert" in c:
             r.verify("certificate", c)

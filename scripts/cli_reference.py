@@ -42,6 +42,7 @@ exit code 2 and names the new option, never doing something else silently.
 | jobs plan | `--window N` (rows per window) | `--window-length N` (diagnose's `--window` is B:E ranges) |
 | diagnose | `--max-delay K` (input delays) | `--max-input-delay K` (generate's `--max-delay` is Delta's zero taps) |
 | diagnose | `--max-degree` after the command | the input limit goes before the command; the candidates' degree is `--degree` |
+| select-basis | `--max-degree` after the command (the candidate terms' degree until now) | the input limit goes before the command; the terms' degree is `--degree`, as in diagnose |
 | fit-linear | `--validation-u U --validation-y Y` | `--validation-columns U...,Y` (inputs then output, as in diagnose) |
 | fit-linear | `--validation-data` | `--validation` |
 | fit-linear | `--out` | `--model-out` (`--out` is a data CSV elsewhere) |

@@ -223,7 +223,7 @@ def select_basis(u=None, y=None, rho=None, model=None, *, delta=None, dmax=None,
     """The basis-selection algorithm of the paper's Appendix (`lpvid
     select-basis`): grow the correction basis until the model is consistent
     at (delta, dmax), then prune. Arguments as for invalidate; options of
-    `lpvid select-basis --help` (max_degree=2, iterate=True, ...). Returns
+    `lpvid select-basis --help` (degree=2, iterate=True, ...). Returns
     a BasisSelection (basis: the final basis; steps: every step)."""
     r = _bounds_command("select_basis", "select-basis", BasisSelection, u, y, rho, model, (delta, dmax, None),
                         data=data, records=records, x0=x0, out_dir=out_dir, progress=progress, quiet=quiet,

@@ -257,13 +257,14 @@ void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, Certif
   if (s.dual_c1.size() == 0) return;
   if (run.o.progress) run.o.progress("building and checking the lower end's dual certificate");
   DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, s, run.o);
-  if (d.verified && (!out.lower.verified || d.bound > out.lower.value)) {
-    out.lower.verified = true;
+  if (d.verified && (!out.lower.verified() || d.bound > out.lower.value)) {
+    out.lower.outcome = LowerEndOutcome::kCertified;
     out.lower.value = d.bound;
     out.lower.certificate = std::move(d.certificate);
     out.lower.verifier_details = d.verifier_details + (d.note.empty() ? "" : " (" + d.note + ")");
     out.lower.reason.clear();
-  } else if (!out.lower.verified) {
+  } else if (!out.lower.verified()) {
+    out.lower.outcome = LowerEndOutcome::kNotCertified;
     out.lower.reason = d.reason;
   }
   out.lower.seconds += d.seconds;

@@ -74,7 +74,7 @@ void add_stage_seconds(CertifiedBounds& into, const CertifiedBounds& from) {
 }
 
 double relative_gap(const CertifiedBounds& b) {
-  if (!b.verified() || !b.lower.verified) return NAN;
+  if (!b.verified() || !b.lower.verified()) return NAN;
   if (b.upper == 0) return 0.0;
   return nearest_double((b.upper - b.lower.value) / b.upper);
 }

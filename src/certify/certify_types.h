@@ -81,6 +81,13 @@ enum class CertifyOutcome {
 };
 const char* to_string(CertifyOutcome outcome);
 
+/// How the lower end of an optimised bound ended.
+enum class LowerEndOutcome {
+  kNotTried,      ///< no dual certificate was attempted (fixed bounds, lower_end off, no solve): the initial value
+  kCertified,     ///< a dual certificate was made and checked exactly
+  kNotCertified,  ///< attempted, none passed: CertifiedBounds::LowerEnd::reason says why
+};
+
 struct CertifiedBounds {
   /// How it ended: the one stored status. Undecided until a certificate
   /// passes (kVerified, kInvalidated); the certifying function then decides
@@ -118,7 +125,11 @@ struct CertifiedBounds {
   /// The certified interval [lower, upper] of the objective (δ², d_max², or
   /// λδ² + (1−λ)d_max²; upper from the primal certificate, lower from the dual one).
   struct LowerEnd {
-    bool verified = false;
+    /// How the lower end ended: the one stored status (not tried until the
+    /// dual stage runs; certify_fixed_model decides it).
+    LowerEndOutcome outcome = LowerEndOutcome::kNotTried;
+    /// A dual certificate of the lower end was made and checked exactly.
+    bool verified() const { return outcome == LowerEndOutcome::kCertified; }
     std::string reason;       ///< why there is no certified lower end
     Rational value;           ///< the certified lower end on the objective
     std::optional<Certificate> certificate;  ///< its checked certificate ("lower_bound")

@@ -35,7 +35,7 @@ void write_step_certificates(BasisSelectionResult& result, const std::string& st
     s.certificate = s.verdict == BasisVerdict::kConsistent ? file : "";
     if (s.same_as >= 0) {
       s.class_certificate = result.steps[static_cast<size_t>(s.same_as)].class_certificate;
-    } else if (s.klass && s.klass->certified) {
+    } else if (s.klass && s.klass->certified()) {
       s.class_certificate = stem + ".step" + std::to_string(s.index) + ".class.json";
       write_certificate_at(*s.klass->certificate, s.class_certificate);
     }

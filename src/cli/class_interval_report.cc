@@ -58,7 +58,7 @@ nlohmann::ordered_json report_class_interval(const ClassInterval& ci, const Cert
   nlohmann::ordered_json j;
   std::cout << "\nClass interval (Theorem 3.1 over " << (r.whole_class ? "every theta of the correction basis" : "a box around the found theta")
             << ", exact check)\n";
-  if (!r.certified) {
+  if (!r.certified()) {
     std::cout << "  no certified class lower end: " << r.reason << "\n";
     j["lower_verified"] = false;
     j["reason"] = r.reason;

@@ -163,6 +163,7 @@ int run_identify(IdentifyArgs& a) {
     cbo.box_fraction = a.class_interval.box;
     cbo.max_leaves = a.class_interval.leaves;
     klass = class_interval(id, in.model_q, in.model_d, in.exp_q, in.exp_d, co, cbo, *solver);
+    adopt_class_optimum(id, *klass);  // the class optimum, when certified lower, replaces the found theta
   }
   const CertifiedBounds& b = id.bounds;
   const std::string certificate = named_certificate_path(a.common);

@@ -147,14 +147,14 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
   j["upper"] = b.verified() ? nlohmann::ordered_json(double_up(b.upper)) : nlohmann::ordered_json(nullptr);
   j["upper_verified"] = b.verified();
   if (b.verified()) j["upper_exact"] = exact_decimal_or_fraction(b.upper);
-  j["lower"] = b.lower.verified ? nlohmann::ordered_json(double_down(b.lower.value)) : nlohmann::ordered_json(nullptr);
-  j["lower_verified"] = b.lower.verified;
-  if (b.lower.verified) j["lower_exact"] = exact_decimal_or_fraction(b.lower.value);
+  j["lower"] = b.lower.verified() ? nlohmann::ordered_json(double_down(b.lower.value)) : nlohmann::ordered_json(nullptr);
+  j["lower_verified"] = b.lower.verified();
+  if (b.lower.verified()) j["lower_exact"] = exact_decimal_or_fraction(b.lower.value);
   const double gap = relative_gap(b);
   j["relative_gap"] = std::isfinite(gap) ? nlohmann::ordered_json(gap) : nlohmann::ordered_json(nullptr);
   j["lower_certificate"] =
-      b.lower.verified && !files.lower.empty() ? nlohmann::ordered_json(files.lower) : nlohmann::ordered_json(nullptr);
-  if (!b.lower.verified) j["lower_reason"] = b.lower.reason;
+      b.lower.verified() && !files.lower.empty() ? nlohmann::ordered_json(files.lower) : nlohmann::ordered_json(nullptr);
+  if (!b.lower.verified()) j["lower_reason"] = b.lower.reason;
   j["full_horizon"] = b.full_horizon;
   j["note"] = b.full_horizon ? "both ends from the full-horizon program"
                              : "upper end from a K-tap restriction (it can only raise the upper end); lower end from its "
@@ -179,7 +179,7 @@ std::string bounds_text(const CertifiedBounds& b, const CertificateFiles& files,
                                     : files.certificate + " checked exactly by the verifier")
       << "\n"
       << "              " << b.verifier_details << "\n";
-    if (b.lower.verified) {
+    if (b.lower.verified()) {
       o << "  interval    [" << lower_text(b.lower.value) << ", " << upper_text(b.upper)
         << "]  relative gap " << relative_gap(b) << "  (objective; both ends verified"
         << (b.full_horizon ? ", full horizon" : ", upper end from " + std::to_string(b.taps) + " taps") << ")"

@@ -14,6 +14,7 @@
 #include "identify/basis_selection.h"
 #include "solvers/external_solvers.h"
 #include "cli/help_text.h"
+#include "cli/refused_alias.h"
 
 namespace lpvid::cli {
 namespace {
@@ -91,8 +92,8 @@ std::string class_region_text(const ClassBoundResult& k) {
 nlohmann::ordered_json class_json(const BasisStep& s) {
   if (!s.klass) return nullptr;
   const ClassBoundResult& k = *s.klass;
-  nlohmann::ordered_json j{{"certified", k.certified}};
-  if (!k.certified) {
+  nlohmann::ordered_json j{{"certified", k.certified()}};
+  if (!k.certified()) {
     j["reason"] = k.reason;
     return j;
   }
@@ -291,8 +292,12 @@ Runner add_select_basis_command(CLI::App& app) {
       "Appendix algorithm: grow the correction basis until consistent at --delta/--dmax, then prune; a basis is "
       "'cannot_explain' only with a class certificate (lpvid-verify checks it), else 'not_decided'");
   add_common_options(*cmd, a->common, true);
-  cmd->add_option("--max-degree", a->max_degree, with_default("largest total degree of a candidate term", a->max_degree))
+  cmd->add_option("--degree", a->max_degree, with_default("largest total degree of a candidate term", a->max_degree))
       ->check(CLI::Range(0, 8));
+  // One meaning per name: --max-degree is the input limit (before the command); the terms' degree is --degree, as in diagnose.
+  add_refused_option(*cmd, "--max-degree",
+                     "is the input limit on a model's polynomial degree, not the candidate terms' degree: give it "
+                     "before the command (lpvid --max-degree N select-basis ...), or --degree D for the candidate terms");
   cmd->add_flag("--iterate", a->iterate,
                 "per basis: minimise dmax at delta with iterated re-linearisation (beyond the paper), then certify");
   cmd->add_option("--max-iterations", a->max_iterations, "solves of --iterate per basis")->capture_default_str()

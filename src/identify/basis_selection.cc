@@ -203,7 +203,7 @@ class Selector {
       centre = Vec<double>::Zero(build_affine_residual(md, with_state_scheduling(md, ed_), cbo.unknowns).num_params());
     ClassBoundResult k = class_lower_bound(mq, md, eq_, ed_, centre, certify_options(), cbo);
     s.solves += k.leaves;
-    if (k.certified) {
+    if (k.certified()) {
       s.verdict = k.whole_class ? BasisVerdict::kCannotExplain : BasisVerdict::kBoxInvalidated;
       s.detail = (k.whole_class ? "no theta of this basis" : "no theta of the box around the " +
                                                                  std::string(s.class_centered_at_fit ? "identified theta" : "initial model (theta = 0)")) +

@@ -132,7 +132,7 @@ struct BasisStep {
   bool kept = false;                 ///< remove phase: the removal was kept
   ParameterLayout layout;            ///< of the certified model's parameters
   Vec<double> p;                     ///< the rounded parameters (12 digits) that were certified
-  /// The class certificate's attempt (not consistent steps only; `klass.certified`
+  /// The class certificate's attempt (not consistent steps only; `klass->certified()`
   /// ⇔ kCannotExplain or kBoxInvalidated); `class_centered_at_fit`: its box is
   /// centred at the step's identified parameters (else at zero).
   std::optional<ClassBoundResult> klass;

@@ -233,7 +233,7 @@ ClassBoundResult class_lower_bound(const LpvModel<Rational>& model_q, const LpvM
   ClassBoundResult out;
   const auto done = [&](std::string reason) {
     out.reason = std::move(reason);
-    out.certified = out.reason.empty();
+    out.outcome = out.reason.empty() ? ClassBoundOutcome::kCertified : ClassBoundOutcome::kNotCertified;
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
   };

@@ -38,8 +38,19 @@ struct ClassBoundOptions {
   double upper = 0;             ///< the certified upper end it is compared with (0: split to the budget)
 };
 
+/// How a class bound ended.
+enum class ClassBoundOutcome {
+  kNotTried,      ///< no class bound was attempted: the initial value
+  kCertified,     ///< a class certificate was made and checked exactly
+  kNotCertified,  ///< attempted, none passed: ClassBoundResult::reason says why
+};
+
 struct ClassBoundResult {
-  bool certified = false;
+  /// The one stored status, decided by class_lower_bound (or by
+  /// class_interval when the bound could not run).
+  ClassBoundOutcome outcome = ClassBoundOutcome::kNotTried;
+  /// A class certificate was made and checked exactly.
+  bool certified() const { return outcome == ClassBoundOutcome::kCertified; }
   std::string reason;                ///< why not (empty when certified)
   Rational lower;                    ///< the certified lower end (the claim's lower_bound; 0 for an invalidation)
   std::optional<Certificate> certificate;

@@ -6,7 +6,7 @@
 
 namespace lpvid {
 
-ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
+ClassInterval class_interval(const IdentifiedModel& id, const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
                              const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
                              const CertifyOptions& certify, ClassBoundOptions options, SdpSolver& solver) {
   ClassInterval out;
@@ -17,24 +17,30 @@ ClassInterval class_interval(IdentifiedModel& id, const LpvModel<Rational>& mode
     throw;  // the user's --timeout or a requested stop ends the command
   } catch (const std::exception& e) {
     // the found θ and its bounds stand; only the class's lower end is missing
+    out.bound.outcome = ClassBoundOutcome::kNotCertified;
     out.bound.reason = std::string("the class bound failed: ") + e.what();
     return out;
   }
-  if (!out.bound.certified) return out;
+  if (!out.bound.certified()) return out;
   if (out.bound.whole_class && out.bound.best_p.size() == id.fixed.value.size() &&
       out.bound.best_objective < options.upper) {
     FixedParameters optimum = fix_parameters(model_q, id.fit.layout, out.bound.best_p, certify.digits, exp_q.record_x0);
     CertifiedBounds b =
         certify_identified(optimum.model, with_fixed_initial_states(exp_q, optimum), Mat<double>(), certify, solver);
-    if (b.verified() && b.upper < id.bounds.upper) {
-      id.fixed = std::move(optimum);
-      id.bounds = std::move(b);
-      out.adopted = true;
-    }
+    if (b.verified() && b.upper < id.bounds.upper) out.better = ClassOptimum{std::move(optimum), std::move(b)};
   }
-  const double U = nearest_double(id.bounds.upper), L = nearest_double(out.bound.lower);
+  const double U = nearest_double(out.better ? out.better->bounds.upper : id.bounds.upper);
+  const double L = nearest_double(out.bound.lower);
   out.relative_gap = U > 0 ? (U - L) / U : 0.0;
   return out;
+}
+
+void adopt_class_optimum(IdentifiedModel& id, ClassInterval& interval) {
+  if (!interval.better) return;
+  id.fixed = std::move(interval.better->fixed);
+  id.bounds = std::move(interval.better->bounds);
+  interval.better.reset();
+  interval.adopted = true;
 }
 
 }  // namespace lpvid

@@ -29,14 +29,14 @@ ReferenceResult reference_of(const CertifiedBounds& b, const BoundObjective& obj
     r.upper = b.upper;
     r.upper_certificate = certificate;
   }
-  if (b.lower.verified && objective.kind != BoundObjective::Kind::kFeasibility) {
+  if (b.lower.verified() && objective.kind != BoundObjective::Kind::kFeasibility) {
     r.lower_verified = true;
     r.lower = b.lower.value;
     r.lower_certificate = files.lower;
   }
   if (r.outcome == CertifyOutcome::kInvalidated) r.invalidation_certificate = certificate;
   if (!b.verified()) r.reason = b.reason;
-  if (!b.lower.verified && !b.lower.reason.empty()) r.reason += (r.reason.empty() ? "" : "; ") + b.lower.reason;
+  if (!b.lower.verified() && !b.lower.reason.empty()) r.reason += (r.reason.empty() ? "" : "; ") + b.lower.reason;
   return r;
 }
 

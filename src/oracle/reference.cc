@@ -13,7 +13,7 @@ namespace {
 ClassReference class_reference(const ClassInterval& ci, const std::filesystem::path& folder, WrittenFiles& written) {
   ClassReference k;
   const ClassBoundResult& b = ci.bound;
-  if (!b.certified) {
+  if (!b.certified()) {
     k.reason = b.reason;
     return k;
   }
@@ -48,7 +48,9 @@ IdentifiedReference identify_reference(const LpvModel<Rational>& model_q, const 
   ClassBoundOptions cbo;
   cbo.unknowns = opt.unknowns;
   const std::filesystem::path dir(folder);
-  ref.klass = class_reference(class_interval(id, model_q, model_d, exp_q, exp_d, co, cbo, solver), dir, written);
+  ClassInterval ci = class_interval(id, model_q, model_d, exp_q, exp_d, co, cbo, solver);
+  adopt_class_optimum(id, ci);
+  ref.klass = class_reference(ci, dir, written);
   ref.verified = true;
   ref.dmax2 = id.bounds.dmax2;
   ref.certificate = write_certificates(id.bounds, (dir / "lpvid.identify.cert.json").string(), &written).certificate;

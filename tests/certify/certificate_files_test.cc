@@ -52,7 +52,7 @@ TEST(CertificateFiles, WrittenCertificatesPassTheFileLayer) {
   ASSERT_TRUE(b.verified()) << b.reason;
   EXPECT_EQ(b.outcome, CertifyOutcome::kVerified);
   ASSERT_TRUE(b.certificate.has_value());
-  ASSERT_TRUE(b.lower.verified) << b.lower.reason;
+  ASSERT_TRUE(b.lower.verified()) << b.lower.reason;
   ASSERT_TRUE(b.lower.certificate.has_value());
   EXPECT_TRUE(check_certificate(*b.certificate, k.exp).holds);
   EXPECT_TRUE(check_certificate(*b.lower.certificate, k.exp).holds);

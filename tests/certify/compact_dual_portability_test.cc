@@ -117,7 +117,7 @@ RC_GTEST_PROP(CompactDualPortability, LowerEndHoldsForEveryRebuildWithinTheToler
   write_experiment_csv(data, ic.model, ic.exp);
   auto solver = make_solver("csdp");
   const CertifiedBounds b = certify_fixed_model(ic.model, ic.exp, certify_options(min_dmax_objective(ic.delta), data), *solver);
-  RC_PRE(b.verified() && b.lower.verified && b.lower.certificate.has_value());
+  RC_PRE(b.verified() && b.lower.verified() && b.lower.certificate.has_value());
   RC_PRE(b.lower.certificate->form == CertificateForm::kDualDeltaPath);
   const Checked genuine = checked(*b.lower.certificate, ic.exp);
   Checked forged = genuine;  // above the certified upper end: false

@@ -138,7 +138,7 @@ RC_GTEST_PROP(DualCertificateProperty, LowerEndIsBelowUpperEndAndBelowTheTruth, 
   const std::string path = dir.file("c.json");
   const CertifiedBounds b = written(certify_fixed_model(ic.model, ic.exp, certify_options(obj, data), *solver), path);
   RC_ASSERT(b.verified());
-  RC_ASSERT(b.lower.verified);
+  RC_ASSERT(b.lower.verified());
   RC_ASSERT(b.lower.value <= b.upper);
   const Rational truth_delta2 = rational_from_text(double_to_text(ic.delta)) * rational_from_text(double_to_text(ic.delta));
   const Rational truth_dmax2 = rational_from_text(double_to_text(ic.dmax)) * rational_from_text(double_to_text(ic.dmax));
@@ -214,7 +214,7 @@ TEST(DualCertificate, KypWorksOnMimoExample1) {
   const CertifiedBounds b = written(certify_fixed_model(model, exp, co, *solver), dir.file("c.json"));
   ASSERT_TRUE(b.verified()) << b.reason;
   EXPECT_TRUE(check_certificate_file(dir.file("c.json")).holds);
-  ASSERT_TRUE(b.lower.verified) << b.lower.reason;
+  ASSERT_TRUE(b.lower.verified()) << b.lower.reason;
   EXPECT_LE(b.lower.value, b.upper);
 }
 

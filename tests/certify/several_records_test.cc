@@ -204,7 +204,7 @@ TEST_F(SeveralRecords, RecordOrderDoesNotChangeTheBounds) {
   };
   const CertifiedBounds ab = bounds({a, b}), ba = bounds({b, a});
   ASSERT_TRUE(ab.verified() && ba.verified()) << ab.reason << " / " << ba.reason;
-  ASSERT_TRUE(ab.lower.verified && ba.lower.verified) << ab.lower.reason << " / " << ba.lower.reason;
+  ASSERT_TRUE(ab.lower.verified() && ba.lower.verified()) << ab.lower.reason << " / " << ba.lower.reason;
   const double u1 = nearest_double(ab.upper), u2 = nearest_double(ba.upper);
   EXPECT_NEAR(u1, u2, 1e-4 * u1);
   EXPECT_LE(ab.lower.value, ba.upper);

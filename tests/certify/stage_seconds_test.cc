@@ -29,7 +29,7 @@ TEST(StageSeconds, EachStageIsTimedAndTheStagesFitInTheCall) {
   auto solver = make_solver("csdp");
   const CertifiedBounds b = certify_fixed_model(model, exp, gen::certify_options(gen::min_dmax_objective(1.0), data), *solver);
   ASSERT_TRUE(b.verified()) << b.reason;
-  ASSERT_TRUE(b.lower.verified) << b.lower.reason;
+  ASSERT_TRUE(b.lower.verified()) << b.lower.reason;
   EXPECT_GT(b.signals_seconds, 0);
   EXPECT_GT(b.solve_seconds, 0);
   EXPECT_GT(b.upper_build_seconds, 0);

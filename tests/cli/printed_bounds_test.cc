@@ -64,7 +64,7 @@ TEST(PrintedBoundsJson, TheIntervalEndsAreRoundedOutwards) {
   CertifiedBounds b;
   b.outcome = CertifyOutcome::kVerified;
   b.upper = Rational(1, 3);
-  b.lower.verified = true;
+  b.lower.outcome = LowerEndOutcome::kCertified;
   b.lower.value = Rational(1, 10);
   BoundObjective objective;
   objective.kind = BoundObjective::Kind::kMinDmax;

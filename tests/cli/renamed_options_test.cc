@@ -52,6 +52,8 @@ TEST_F(RenamedOptions, IgnoredOptionsAreRefused) {
   refused("fit-linear", "--data d.csv --order 2 --max-order 3", {"--max-order", "--order auto"});
   // diagnose --max-degree was taken as the input limit on polynomial degrees
   refused("diagnose", "--data d.csv --model m.json --max-degree 3", {"--max-degree", "--degree"});
+  // select-basis --max-degree was its candidate terms' degree: one meaning per name, now --degree as in diagnose
+  refused("select-basis", "--data d.csv --model m.json --delta 0.1 --dmax 0.1 --max-degree 1", {"--max-degree", "--degree"});
 }
 
 TEST_F(RenamedOptions, HiddenFromHelp) {

@@ -63,7 +63,7 @@ ClassRun run_class(const IdentCase& c, const BoundObjective& objective, const Ve
   o.max_leaves = leaves;
   o.box_fraction = box;
   ClassRun run{class_lower_bound(c.model, convert_model<double>(c.model), c.exp, exp_d, centre, co, o), dir.file("class.json")};
-  if (run.result.certified) write_certificate_at(*run.result.certificate, run.certificate_file);
+  if (run.result.certified()) write_certificate_at(*run.result.certificate, run.certificate_file);
   return run;
 }
 
@@ -78,12 +78,12 @@ RC_GTEST_PROP(ClassBound, NeverAboveTheObjectiveOfTheTrueTheta, ()) {
   RC_PRE(truth.size() > 0);
   ScratchDir dir("class-member");
   const ClassRun run = run_class(c, min_dmax_objective(c.delta), truth, dir);
-  RC_LOG() << "certified " << run.result.certified << " " << run.result.reason << ", lower "
+  RC_LOG() << "certified " << run.result.certified() << " " << run.result.reason << ", lower "
            << nearest_double(run.result.lower) << ", dmax^2 " << c.dmax * c.dmax << ", whole " << run.result.whole_class << "\n";
   RC_CLASSIFY(run.result.whole_class, "whole class (z does not depend on theta)");
-  RC_CLASSIFY(run.result.certified, "certified");
-  RC_TAG(run.result.certified ? std::string("ok") : run.result.reason.substr(0, 60));
-  if (!run.result.certified) return;
+  RC_CLASSIFY(run.result.certified(), "certified");
+  RC_TAG(run.result.certified() ? std::string("ok") : run.result.reason.substr(0, 60));
+  if (!run.result.certified()) return;
   // d_max is the double the case was made with; the truth's exact d has RMS 0.9·d_max up to rounding.
   RC_ASSERT(nearest_double(run.result.lower) <= c.dmax * c.dmax * (1 + 1e-9));
   RC_ASSERT(check_certificate_file(run.certificate_file).holds);
@@ -113,7 +113,9 @@ struct Identified {
     ClassBoundOptions o;
     o.unknowns = io.unknowns;
     o.max_leaves = leaves;
-    return class_interval(id, c.model, model_d, c.exp, exp_d, co, o, *solver);
+    ClassInterval ci = class_interval(id, c.model, model_d, c.exp, exp_d, co, o, *solver);
+    adopt_class_optimum(id, ci);
+    return ci;
   }
 };
 
@@ -128,9 +130,9 @@ RC_GTEST_PROP(ClassBound, NeverAboveTheFoundThetasCertifiedUpperEnd, ()) {
   RC_PRE(run.id.bounds.verified());
   const ClassInterval ci = run.interval(5);
   const IdentifiedModel& id = run.id;
-  RC_CLASSIFY(ci.bound.certified, "certified");
+  RC_CLASSIFY(ci.bound.certified(), "certified");
   RC_CLASSIFY(ci.bound.whole_class, "whole class");
-  if (!ci.bound.certified) return;
+  if (!ci.bound.certified()) return;
   RC_LOG() << "L " << nearest_double(ci.bound.lower) << " U " << nearest_double(id.bounds.upper) << "\n";
   RC_ASSERT(ci.bound.lower <= id.bounds.upper);
   RC_ASSERT(check_certificate(*ci.bound.certificate, c.exp).holds);
@@ -160,7 +162,7 @@ TEST(ClassBound, AdditiveClassIntervalIsTightAndCertified) {
     const IdentifiedModel& id = run.id;
     const CertifyOptions& co = run.co;
     auto& solver = run.solver;
-    ASSERT_TRUE(ci.bound.certified) << ci.bound.reason;
+    ASSERT_TRUE(ci.bound.certified()) << ci.bound.reason;
     EXPECT_TRUE(ci.bound.whole_class);
     EXPECT_LE(ci.bound.lower, id.bounds.upper);
     EXPECT_LE(ci.relative_gap, 1e-4) << "lower " << nearest_double(ci.bound.lower) << " upper " << nearest_double(id.bounds.upper);
@@ -188,7 +190,7 @@ BoxedCertificate boxed_certificate() {
     if (truth.size() == 0) continue;
     ScratchDir dir("class-boxed");
     const ClassRun run = run_class(c, weighted_objective(0.5), truth, dir, 3, 0.002);
-    if (run.result.certified && run.result.lower > 0 && run.result.certificate->region.nodes.size() > 1)
+    if (run.result.certified() && run.result.lower > 0 && run.result.certificate->region.nodes.size() > 1)
       return {c, *run.result.certificate};
   }
   return {};

@@ -125,8 +125,8 @@ std::vector<Vec<Rational>> region_members(const Certificate& c, uint64_t seed) {
 /// truth) is certified below it. Returns whether a class bound was certified.
 bool check_class_meaning(const TruthCase& t, SdpSolver& solver, uint64_t seed, std::string& log) {
   const ClassBoundResult k = class_bound_of(t, min_dmax_objective(t.delta));
-  log += "class bound: " + (k.certified ? "L = " + approx_text(k.lower, 8) : "none (" + k.reason + ")") + "\n";
-  if (!k.certified) return false;
+  log += "class bound: " + (k.certified() ? "L = " + approx_text(k.lower, 8) : "none (" + k.reason + ")") + "\n";
+  if (!k.certified()) return false;
   EXPECT_TRUE(check_certificate(*k.certificate, t.exp).holds);
   std::vector<Vec<Rational>> members = region_members(*k.certificate, seed);
   if (t.truth) {

@@ -299,9 +299,10 @@ TEST(SeveralRecordsIdentify, ClassIntervalOverTwoRecordsIsCertified) {
   const LpvModel<Rational> model_q = example1_initial_model();
   auto solver = make_solver("csdp");
   const CertifyOptions co = record_certify_options(weighted_identify(false).objective, 2);
-  const ClassInterval ci = class_interval(id, model_q, convert_model<double>(model_q), r.exp_q, nearest_double(r.exp_q), co,
-                                          {}, *solver);
-  ASSERT_TRUE(ci.bound.certified) << ci.bound.reason;
+  ClassInterval ci = class_interval(id, model_q, convert_model<double>(model_q), r.exp_q, nearest_double(r.exp_q), co,
+                                    {}, *solver);
+  adopt_class_optimum(id, ci);
+  ASSERT_TRUE(ci.bound.certified()) << ci.bound.reason;
   EXPECT_LE(ci.bound.lower, id.bounds.upper);
   ASSERT_TRUE(ci.bound.certificate.has_value());
   ASSERT_EQ(ci.bound.certificate->records.size(), 2u);

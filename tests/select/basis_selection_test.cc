@@ -262,7 +262,7 @@ TEST(SelectBasis, SolverInfeasibleWithoutAClassCertificateIsNotDecided) {
     EXPECT_NE(s.detail.find("the solver found"), std::string::npos) << s.detail;
     EXPECT_NE(s.detail.find("no class certificate: "), std::string::npos) << s.detail;
     ASSERT_TRUE(s.klass.has_value());
-    EXPECT_FALSE(s.klass->certified);
+    EXPECT_FALSE(s.klass->certified());
     EXPECT_TRUE(s.class_certificate.empty());
   }
   EXPECT_FALSE(r.found());

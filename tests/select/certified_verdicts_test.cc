@@ -105,7 +105,7 @@ TEST_F(SelectBasisCli, EveryCannotExplainNamesAClassCertificateThatLpvidVerifyAc
   // S_I finds no model): box_invalidated, never cannot_explain.
   const std::string src = LPVID_SOURCE_DIR;
   const int code = run("select-basis", "--quiet --data " + src + "/fixtures/example1/noise_free_n40.csv --model " + src +
-                                           "/fixtures/example1/initial_model.json --delta 0.05 --dmax 0.01 --max-degree 1"
+                                           "/fixtures/example1/initial_model.json --delta 0.05 --dmax 0.01 --degree 1"
                                            " --report " + file("r.json") + " --certificate " + file("s.cert.json"));
   EXPECT_EQ(code, 5) << output();  // no consistent basis, and not certified for the largest one
   const nlohmann::json r = read_json(file("r.json"));

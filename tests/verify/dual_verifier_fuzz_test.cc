@@ -80,7 +80,7 @@ struct GenuineDuals {
     ClassBoundOptions o;
     o.max_leaves = 3;
     const ClassInterval ci = class_interval(id, model, model_d, exp, exp_d, co, o, solver);
-    if (!ci.bound.certified) throw std::runtime_error("no class certificate: " + ci.bound.reason);
+    if (!ci.bound.certified()) throw std::runtime_error("no class certificate: " + ci.bound.reason);
     const std::string path = dir.file("class.json");
     write_certificate_at(*ci.bound.certificate, path);
     std::ifstream in(path, std::ios::binary);
@@ -96,7 +96,7 @@ struct GenuineDuals {
     o.data = read_data_table(data).reference;
     o.dense_dual = dense_dual;
     const CertifiedBounds b = certify_fixed_model(model, exp, o, solver);
-    if (!b.lower.verified) throw std::runtime_error("no verified lower end: " + b.lower.reason);
+    if (!b.lower.verified()) throw std::runtime_error("no verified lower end: " + b.lower.reason);
     const std::string path = dir.file(dense_dual ? "dense.json" : "compact.json");
     write_certificates(b, path);
     std::ifstream in(lower_certificate_path(path), std::ios::binary);
