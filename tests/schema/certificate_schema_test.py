@@ -6,7 +6,7 @@ Writes certificates with the built `lpvid` on fixtures/example1 (a primal
 --toeplitz paper, a dual "invalidated" one) and validates each against the
 schema; then checks that broken copies (a required field removed, another
 format version, a key of the other form) FAIL. Also checks that the schema's
-version is the one verify/certificate/certificate_file.h reads, so neither can drift.
+version is the one verify/certificate/certificate.h names (the reader in certificate_file.h accepts it), so neither can drift.
 
 usage: certificate_schema_test.py LPVID SOURCE_DIR WORK_DIR
 """
@@ -36,7 +36,7 @@ with open(os.path.join(source, "docs", "certificate.schema.json"), encoding="utf
     schema = json.load(f)
 jsonschema.Draft202012Validator.check_schema(schema)
 validator = jsonschema.Draft202012Validator(schema)
-with open(os.path.join(source, "verify", "certificate", "certificate_file.h"), encoding="utf-8") as f:
+with open(os.path.join(source, "verify", "certificate", "certificate.h"), encoding="utf-8") as f:
     version = re.search(r'kCertificateFormat = "([^"]+)"', f.read()).group(1)
 check(schema["properties"]["format"]["const"] == version and schema["$id"].endswith(version),
       f"schema format const and $id name {version}, the version the reader accepts")
