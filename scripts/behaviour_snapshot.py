@@ -320,6 +320,20 @@ def jobs(r):
     r.lpvid("jobs", "merge", "--dir", "J")
 
 
+@case("records", "two records of one system (effect case, n 300): invalidate and identify with per-record figures, "
+      "diagnose with the estimation records' scores; verify")
+def records(r):
+    r.lpvid("generate", "effect-case", "--effect", "input_saturation", "--n", "300", "--seed", "5", "--out", "est.csv",
+            "--validation-out", "test.csv", "--model-out", "declared.json", "--truth-out", "truth.json")
+    two = ["--data", "est.csv", "--rows", "0:150", "--data", "est.csv", "--rows", "150:300"]
+    r.lpvid("invalidate", *two, "--model", "truth.json", "--delta", "0.05", "--report", "inv.report.json")
+    r.lpvid("identify", *two, "--model", "declared.json", "--basis", "1", "--report", "id.report.json")
+    r.lpvid("diagnose", *two, "--model", "declared.json", "--test", "test.csv", "--warmup", "10", "--max-effects", "1",
+            "--report", "dg.report.json", "--model-out", "after.json")
+    for c in r.glob("*.cert*.json"):
+        r.verify("certificate", c)
+
+
 @case("oracle", "lpvid oracle: examples/oracle/my_impl.py (confirmed), a scaled toy (refuted), identify tasks")
 def oracle(r):
     lpvid = os.path.join(r.bin, "lpvid")

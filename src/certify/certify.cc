@@ -257,7 +257,7 @@ void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, Certif
   if (s.dual_c1.size() == 0) return;
   if (run.o.progress) run.o.progress("building and checking the lower end's dual certificate");
   DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, s, run.o);
-  if (d.verified && (!out.lower.verified() || d.bound > out.lower.value)) {
+  if (d.verified() && (!out.lower.verified() || d.bound > out.lower.value)) {
     out.lower.outcome = LowerEndOutcome::kCertified;
     out.lower.value = d.bound;
     out.lower.certificate = std::move(d.certificate);
@@ -269,7 +269,7 @@ void certify_lower_end(const CertifyRun& run, const DeltaFormSolution& s, Certif
   }
   out.lower.seconds += d.seconds;
   out.lower.check_seconds += d.check_seconds;
-  if (run.o.progress) run.o.progress(stage_done("lower end", d.verified, d.seconds - d.check_seconds, d.check_seconds));
+  if (run.o.progress) run.o.progress(stage_done("lower end", d.verified(), d.seconds - d.check_seconds, d.check_seconds));
 }
 
 /// Fixed bounds without a primal certificate: a restricted program's
@@ -296,13 +296,13 @@ void decide_fixed_bounds(const CertifyRun& run, const DeltaFormSolution& first, 
   if (out.verified() || full.solve.status != SolveStatus::kPrimalInfeasible || full.dual_c1.size() == 0) return;
   if (run.o.progress) run.o.progress("infeasible: building and checking the dual certificate of invalidation");
   DualOutcome d = certify_dual(run.model, run.exact.exp, run.exact.sim, full, run.o);
-  if (d.verified) out.outcome = CertifyOutcome::kInvalidated;
+  if (d.verified()) out.outcome = CertifyOutcome::kInvalidated;
   out.lower.seconds = d.seconds;
   out.lower.check_seconds = d.check_seconds;
-  if (run.o.progress) run.o.progress(stage_done("invalidation", d.verified, d.seconds - d.check_seconds, d.check_seconds));
+  if (run.o.progress) run.o.progress(stage_done("invalidation", d.verified(), d.seconds - d.check_seconds, d.check_seconds));
   out.lower.verifier_details = d.verifier_details;
-  if (d.verified) out.certificate = std::move(d.certificate);
-  if (!d.verified) out.reason += "; no exact invalidation certificate: " + d.reason;
+  if (d.verified()) out.certificate = std::move(d.certificate);
+  if (!d.verified()) out.reason += "; no exact invalidation certificate: " + d.reason;
 }
 
 /// An optimised bound: the lower end from the first solve's dual (KYP has

@@ -56,7 +56,7 @@ void check_and_keep(Certificate& c, const Experiment<Rational>& exp, const Certi
   const Stopwatch check;
   const CertificateVerdict v = check_round_trip(c, exp, "the dual certificate (in memory)");
   out.check_seconds += check.seconds();
-  out.verified = v.holds;
+  out.status = v.holds ? DualOutcome::Status::kHolds : DualOutcome::Status::kFails;
   out.verifier_details = v.details;
   out.bound = c.claim == CertificateClaim::kInvalidated ? bound : c.lower_bound;
   if (!v.holds) {
@@ -212,10 +212,10 @@ DualOutcome certify_dual(const LpvModel<Rational>& model, const Experiment<Ratio
                          const Simulation<Rational>& sim, const DeltaFormSolution& s, const CertifyOptions& o) {
   if (s.path_mu > 0 && !o.dense_dual) {
     DualOutcome compact = certify_dual_path(model, exp, sim, s, o);
-    if (compact.verified) return compact;
+    if (compact.verified()) return compact;
     DualOutcome dense = certify_dual_dense(model, exp, sim, s.dual_c1, s.dual_c2, o);
     dense.note = "compact dual form not used: " + compact.reason;
-    if (!dense.verified) dense.reason = "compact form: " + compact.reason + "; dense form: " + dense.reason;
+    if (!dense.verified()) dense.reason = "compact form: " + compact.reason + "; dense form: " + dense.reason;
     dense.seconds += compact.seconds;
     dense.check_seconds += compact.check_seconds;
     return dense;

@@ -34,7 +34,10 @@ namespace lpvid {
 
 /// A dual certificate's outcome.
 struct DualOutcome {
-  bool verified = false;         ///< the certificate was checked exactly and holds
+  /// Set once, by the exact check of the built certificate; undecided until then.
+  enum class Status { kNotChecked, kHolds, kFails };
+  Status status = Status::kNotChecked;
+  bool verified() const { return status == Status::kHolds; }  ///< the certificate was checked exactly and holds
   std::string reason;            ///< why not
   Rational bound;                ///< the claimed number: invalidation margin (> 0) or the lower end on the objective
   double seconds = 0;            ///< building + checking

@@ -7,7 +7,7 @@
 #include "cli/commands.h"
 #include "cli/refused_alias.h"
 #include "cli/inputs.h"
-#include "cli/record_figures.h"
+#include "cli/records_report.h"
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "certify/outside_solution.h"

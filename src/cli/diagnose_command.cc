@@ -218,7 +218,6 @@ DiagnoseReport diagnose_report(const DiagnoseArgs& a, const RoleRecords& roles, 
   ri.model_out = a.model_out;
   ri.solver = a.common.solver;
   ri.certificates_named = !named_certificate_path(a.common).empty();
-  score_estimation_records(ri);
   return ri;
 }
 

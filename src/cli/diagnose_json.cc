@@ -223,9 +223,9 @@ ojson pooled_tests_json(const DiagnoseResult& res) {
 /// Several estimation records: each one's free-run figures of the models before and after.
 ojson estimation_records_json(const DiagnoseReport& in) {
   ojson out = ojson::array();
-  for (size_t k = 0; k < in.records.size() && k < in.record_scores.size(); ++k) {
+  for (size_t k = 0; k < in.records.size() && k < in.result->estimation_records.records.size(); ++k) {
     const EstimationRecord& r = in.records[k];
-    const EstimationRecordScore& s = in.record_scores[k];
+    const EstimationRecordScore& s = in.result->estimation_records.records[k];
     out.push_back({{"file", r.data.file},
                    {"rows", {r.data.row_begin, r.data.row_end}},
                    {"sha256", r.data.sha256},

@@ -17,13 +17,6 @@
 
 namespace lpvid::cli {
 
-/// One estimation record's free-run figures of the models before and after
-/// (simulated record by record from the fitted x0).
-struct EstimationRecordScore {
-  Eigen::Index samples = 0;
-  OutputScores before, after;
-};
-
 struct DiagnoseReport {
   std::string command_line_data, validation, plots_dir, model_out, solver;
   std::string estimation;  ///< file and rows of the fit role
@@ -40,16 +33,9 @@ struct DiagnoseReport {
   long file_row_offset = 0;
   std::vector<std::string> validation_outputs;  ///< the validation data's output column names (plot legends)
   /// The estimation records (two or more: the report's per-record lines and
-  /// its `records` list; one: nothing added).
+  /// its `records` list with result->estimation_records; one: nothing added).
   std::vector<EstimationRecord> records;
-  /// With two or more records: each one's scores (as records), then the pooled ones
-  /// (set by score_estimation_records).
-  std::vector<EstimationRecordScore> record_scores;
-  EstimationRecordScore pooled_records;
 };
-
-/// Fills record_scores and pooled_records when there are two or more records.
-void score_estimation_records(DiagnoseReport& report);
 
 /// How a test set is scored: "free run; x0 from the first N samples (warm-up), …".
 std::string test_rule_text(const FreeRunScore& score);

@@ -277,10 +277,10 @@ void print_records(const DiagnoseReport& in) {
     return "before: RMS " + num(s.before.rms_all) + ", fit " + num(s.before.fit_percent_all, 4) + " %   after: RMS " +
            num(s.after.rms_all) + ", fit " + num(s.after.fit_percent_all, 4) + " %\n";
   };
-  for (size_t k = 0; k < in.records.size() && k < in.record_scores.size(); ++k)
-    std::cout << "  record " << k + 1 << " (" << in.records[k].text << ", " << in.record_scores[k].samples
-              << " samples): " << line(in.record_scores[k]);
-  std::cout << "  pooled (" << in.pooled_records.samples << " samples): " << line(in.pooled_records);
+  for (size_t k = 0; k < in.records.size() && k < in.result->estimation_records.records.size(); ++k)
+    std::cout << "  record " << k + 1 << " (" << in.records[k].text << ", " << in.result->estimation_records.records[k].samples
+              << " samples): " << line(in.result->estimation_records.records[k]);
+  std::cout << "  pooled (" << in.result->estimation_records.pooled.samples << " samples): " << line(in.result->estimation_records.pooled);
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include "cli/class_interval_report.h"
 #include "cli/commands.h"
 #include "cli/inputs.h"
-#include "cli/record_figures.h"
+#include "cli/records_report.h"
 #include "cli/report.h"
 #include "core/file_io.h"
 #include "core/input_error.h"

@@ -4,7 +4,7 @@
 
 #include "cli/commands.h"
 #include "cli/inputs.h"
-#include "cli/record_figures.h"
+#include "cli/records_report.h"
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "certify/certify.h"

@@ -20,8 +20,8 @@
 #include "jobs/merge.h"
 #include "jobs/plan.h"
 #include "jobs/window_check.h"
+#include "jobs/window_states.h"
 #include "model/model_file.h"
-#include "model/simulate.h"
 #include "cli/help_text.h"
 
 namespace lpvid::cli {
@@ -123,7 +123,9 @@ JobPlan plan_header(const CommonOptions& c, const PlanArgs& a, const Inputs& in)
 /// simulated in floating point, 12 digits declared).
 void plan_windows(JobPlan& plan, const std::vector<RowWindow>& windows, long first_row, const Inputs& in,
                   const fs::path& dir, const std::string& program, const std::string& options) {
-  const Simulation<double> sim = simulate(in.model_d, in.exp_d);
+  std::vector<Eigen::Index> first_rows;
+  for (const RowWindow& w : windows) first_rows.push_back(w.first);
+  const std::vector<Vec<Rational>> x0 = jobs::window_start_states(in.model_d, in.exp_d, first_rows, 12);
   for (size_t k = 0; k < windows.size(); ++k) {
     const auto [b, e] = windows[k];
     JobWindow w;
@@ -134,10 +136,8 @@ void plan_windows(JobPlan& plan, const std::vector<RowWindow>& windows, long fir
     w.certificate = window_name(w.index, ".cert.json");
     w.report = window_name(w.index, ".report.json");
     LpvModel<Rational> m = in.model_q;
-    for (Eigen::Index i = 0; i < m.x0.size(); ++i) {
-      m.x0(i) = round_to_digits(sim.x(b, i), 12);
-      w.x0.push_back(rational_to_text(m.x0(i)));
-    }
+    m.x0 = x0[k];
+    for (Eigen::Index i = 0; i < m.x0.size(); ++i) w.x0.push_back(rational_to_text(m.x0(i)));
     write_model_file((dir / w.model).string(), m);
     w.command = shell_quote(program) + " invalidate --quiet --data " + shell_quote(plan.data_path) + " --rows " +
                 std::to_string(w.file_begin) + ":" + std::to_string(w.file_end) + " --model " +

@@ -12,7 +12,6 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "certify/certificate_files.h"
-#include "model/simulate.h"
 #include "oracle/answer.h"
 #include "oracle/judge.h"
 #include "oracle/outside_command.h"

@@ -12,7 +12,6 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "model/model_file.h"
-#include "model/simulate.h"
 
 namespace lpvid::cli {
 

@@ -28,6 +28,7 @@
 #include "data/experiment.h"
 #include "diagnose/bound_windows.h"
 #include "diagnose/effect_ranking.h"
+#include "diagnose/record_scores.h"
 #include "diagnose/residual_analysis.h"
 #include "diagnose/window_bounds.h"
 #include "diagnose/window_identification.h"
@@ -136,6 +137,9 @@ struct DiagnoseResult {
   /// estimation residual energy that the candidate's added output signal
   /// explains (least-squares projection, residual_analysis.h candidate_shares).
   std::vector<std::vector<double>> estimation_shares;
+  /// The free-run scores of the models before and after on each estimation
+  /// record (Experiment::records; one record: that record) and pooled.
+  RecordScores estimation_records;
   /// The after model's free run on the estimation record (empty if not finite).
   Mat<double> estimation_after;
   /// The after model's static maps are drawn over these ranges (set when

@@ -230,7 +230,6 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
   ri.folds = true;
   ri.records = c.roles.records;
   const std::string report = c.dir.file("report.json");
-  cli::score_estimation_records(ri);
   const cli::DiagnoseFigures figures = cli::draw_diagnose_figures(ri);
   cli::print_diagnose_text(ri, figures);
   cli::write_diagnose_json(ri, figures, report);

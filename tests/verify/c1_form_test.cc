@@ -107,7 +107,7 @@ RC_GTEST_PROP(VerifyC1WForm, ReducedCheckAgreesWithTheFullMatrix, ()) {
   RC_CLASSIFY(expected, "holds");
   RC_CLASSIFY(delta2 == 0, "delta2 = 0");
   RC_LOG() << got.text << "\n";
-  RC_ASSERT(got.holds == expected);
+  RC_ASSERT(got.holds() == expected);
 }
 
 // Exact boundary: z random (z_0 = 0 sometimes: T_z singular), w = α·Q·z with
@@ -131,7 +131,7 @@ RC_GTEST_PROP(VerifyC1WForm, ExactBoundaryDeltaSquaredEqualsAlphaSquared, ()) {
     const C1Outcome got = w_form(Tz, w, delta2);
     RC_LOG() << got.text << "\n";
     RC_ASSERT(full_psd(full_w_matrix(Tz, w, delta2)) == expected);
-    RC_ASSERT(got.holds == expected);
+    RC_ASSERT(got.holds() == expected);
   }
 }
 
@@ -146,7 +146,7 @@ RC_GTEST_PROP(VerifyC1WForm, NonCausalWFailsForEveryDelta, ()) {
   const Rational delta2 = *gen::positive_rational() * pow10(*rc::gen::element(0, 10, 200));
   const Mat<Rational> Tz = signal_toeplitz(z);
   RC_ASSERT(!full_psd(full_w_matrix(Tz, w, delta2)));
-  RC_ASSERT(!w_form(Tz, w, delta2).holds);
+  RC_ASSERT(!w_form(Tz, w, delta2).holds());
 }
 
 TEST(VerifyC1WForm, TextNamesTheMatrixAndTheCase) {
@@ -155,17 +155,17 @@ TEST(VerifyC1WForm, TextNamesTheMatrixAndTheCase) {
   w << Rational(1, 2), Rational(1), Rational(0);  // w = z/2: δ² ≥ 1/4
   const Mat<Rational> Tz = signal_toeplitz(z);
   const C1Outcome holds = w_form(Tz, w, Rational(1, 4));
-  EXPECT_TRUE(holds.holds);
+  EXPECT_TRUE(holds.holds());
   EXPECT_NE(holds.text.find("(C1) holds: delta2*T_z'T_z - T_w'T_w"), std::string::npos) << holds.text;
   EXPECT_NE(holds.text.find("(size 3)"), std::string::npos) << holds.text;
   const C1Outcome fails = w_form(Tz, w, Rational(1, 5));
-  EXPECT_FALSE(fails.holds);
+  EXPECT_FALSE(fails.holds());
   EXPECT_NE(fails.text.find("(C1) fails: delta2*T_z'T_z - T_w'T_w"), std::string::npos) << fails.text;
   const C1Outcome zero = w_form(Tz, w, Rational(0));
-  EXPECT_FALSE(zero.holds);
+  EXPECT_FALSE(zero.holds());
   EXPECT_NE(zero.text.find("delta2 = 0 but w(0,0)"), std::string::npos) << zero.text;
   const C1Outcome no_w = w_form(Tz, Mat<Rational>::Zero(3, 1), Rational(0));
-  EXPECT_TRUE(no_w.holds);
+  EXPECT_TRUE(no_w.holds());
   EXPECT_NE(no_w.text.find("w = 0"), std::string::npos) << no_w.text;
 }
 
@@ -185,13 +185,13 @@ TEST(VerifyC1WForm, DeltaSquaredFarOutsideTheDoubleRange) {
     const Rational alpha2 = pow10(k);
     const Mat<Rational> w = z * pow10(k / 2);  // T_wᵀT_w = 10^k·T_zᵀT_z
     const C1Outcome at = w_form(Tz, w, alpha2);
-    EXPECT_TRUE(at.holds) << at.text;
+    EXPECT_TRUE(at.holds()) << at.text;
     const C1Outcome above = w_form(Tz, w, alpha2 * (Rational(1) + pow10(-20)));
-    EXPECT_TRUE(above.holds) << above.text;
+    EXPECT_TRUE(above.holds()) << above.text;
     EXPECT_NE(above.text.find("scaled by 2^"), std::string::npos) << above.text;
     EXPECT_NE(above.text.find("PD (floating filter"), std::string::npos) << above.text;
     const C1Outcome below = w_form(Tz, w, alpha2 * (Rational(1) - pow10(-20)));
-    EXPECT_FALSE(below.holds) << below.text;
+    EXPECT_FALSE(below.holds()) << below.text;
   }
 }
 
@@ -208,7 +208,7 @@ RC_GTEST_PROP(VerifyC1DeltaForm, AgreesWithTheUnbalancedFullMatrix, ()) {
   const bool expected = full_psd(full_delta_matrix(taps, L, ny, nz, delta2));
   RC_CLASSIFY(expected, "holds");
   RC_LOG() << got.text << "\n";
-  RC_ASSERT(got.holds == expected);
+  RC_ASSERT(got.holds() == expected);
 }
 
 // The Schur complement by the displacement recurrence (verify/certificate/
@@ -240,7 +240,7 @@ RC_GTEST_PROP(VerifyC1DeltaForm, SingleTapBoundary, ()) {
            {h * h, true}, {h * h * (Rational(1) - eps), h == 0}, {h * h * (Rational(1) + eps), true}}) {
     const C1Outcome got = check_c1_delta_form(taps, L, 1, 1, delta2);
     RC_LOG() << got.text << "\n";
-    RC_ASSERT(got.holds == expected);
+    RC_ASSERT(got.holds() == expected);
   }
 }
 
@@ -259,10 +259,10 @@ RC_GTEST_PROP(VerifyC1DeltaForm, RankOneTapBoundary, ()) {
   RC_PRE(norm2 > 0);
   const C1Outcome at = check_c1_delta_form(taps, L, ny, nz, norm2);
   RC_LOG() << at.text << "\n";
-  RC_ASSERT(at.holds);
+  RC_ASSERT(at.holds());
   const C1Outcome below = check_c1_delta_form(taps, L, ny, nz, norm2 * (Rational(1) - pow10(-30)));
   RC_LOG() << below.text << "\n";
-  RC_ASSERT(!below.holds);
+  RC_ASSERT(!below.holds());
 }
 
 // A hostile input: δ² = 10^−5000 on a horizon of 40 samples.
@@ -270,19 +270,19 @@ TEST(VerifyC1DeltaForm, TinyDeltaSquaredIsDecidedAtOnce) {
   const Rational delta2 = pow10(-5000);
   Mat<Rational> taps = Mat<Rational>::Zero(3, 1);
   const C1Outcome zero = check_c1_delta_form(taps, 40, 1, 1, delta2);
-  EXPECT_TRUE(zero.holds) << zero.text;
+  EXPECT_TRUE(zero.holds()) << zero.text;
   EXPECT_NE(zero.text.find("s = 2^-8305"), std::string::npos) << zero.text;
   taps(1, 0) = Rational(1, 1000);
   const C1Outcome big = check_c1_delta_form(taps, 40, 1, 1, delta2);
-  EXPECT_FALSE(big.holds);
+  EXPECT_FALSE(big.holds());
   EXPECT_NE(big.text.find("tap 1 entry (0,0)"), std::string::npos) << big.text;
   taps(1, 0) = pow10(-2501);  // |h| < δ: the norm of T_Δ = h·S decides
   taps(2, 0) = pow10(-2501);
   const C1Outcome small = check_c1_delta_form(taps, 40, 1, 1, delta2);
-  EXPECT_TRUE(small.holds) << small.text;
+  EXPECT_TRUE(small.holds()) << small.text;
   taps(0, 0) = Rational(9, 10) * pow10(-2500);  // ‖T_Δ‖ ≈ 1.1·δ > δ
   const C1Outcome over = check_c1_delta_form(taps, 40, 1, 1, delta2);
-  EXPECT_FALSE(over.holds) << over.text;
+  EXPECT_FALSE(over.holds()) << over.text;
 }
 
 TEST(VerifyPowerOfTwo, MagnitudeAndSqrtScale) {

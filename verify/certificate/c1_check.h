@@ -12,15 +12,21 @@
 ///    δ²I − T_ΔᵀT_Δ) after balancing.
 
 #include <string>
+#include <utility>
 
 #include "core/scalar.h"
 
 namespace lpvid {
 
+/// The decision on (C1), made once by one of the two named constructors.
 struct C1Outcome {
-  bool holds = false;
+  enum class Status { kFails, kHolds };
+  Status status = Status::kFails;
   /// "(C1) holds: <matrix> (size N) is PSD (…)" or "(C1) fails: <why>".
   std::string text;
+  static C1Outcome holding(std::string text) { return {Status::kHolds, std::move(text)}; }
+  static C1Outcome failing(std::string text) { return {Status::kFails, std::move(text)}; }
+  bool holds() const { return status == Status::kHolds; }
 };
 
 /// Form "w": `gram_z` = T_zᵀT_z (n × n, exact; taken by value to reuse its

@@ -69,11 +69,11 @@ C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, E
       }
   if (arg_t >= 0 && largest > delta2) {
     const Eigen::Index i = arg_c / nz, j = arg_c % nz;
-    return {false, "(C1) fails: " + full + " is not PSD: tap " + std::to_string(arg_t) + " entry (" + std::to_string(i) +
+    return C1Outcome::failing("(C1) fails: " + full + " is not PSD: tap " + std::to_string(arg_t) + " entry (" + std::to_string(i) +
                        "," + std::to_string(j) + ") = h = " + approx_text(taps(arg_t, arg_c)) +
                        " has h^2 > delta2, so its 2x2 principal submatrix [delta2, h; h, 1] (rows " +
                        std::to_string(arg_t * ny + i) + " and " + std::to_string(L * ny + j) +
-                       ") has determinant delta2 - h^2 < 0 (exact comparison of rationals)"};
+                       ") has determinant delta2 - h^2 < 0 (exact comparison of rationals)");
   }
   // 2. Balanced by diag(I/s, I), then the Schur complement (3.).
   const auto [s, s_text] = delta2 > 0 ? balancing_scale(delta2) : std::pair<Rational, std::string>(Rational(1), "1");
@@ -84,8 +84,8 @@ C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, E
   const std::string which = std::string(ny <= nz ? "d2*I - T*T'" : "d2*I - T'*T") + ", T = T_Delta/s, d2 = delta2/s^2" +
                             ", s = " + s_text + " (Schur complement of " + full + ")";
   const PsdResult psd = decide_psd(M);
-  if (psd.verdict == PsdVerdict::kNotPsd) return {false, "(C1) fails: " + which + " is not PSD (" + psd.reason + ")"};
-  return {true, "(C1) holds: " + which + " (size " + std::to_string(M.rows()) + ") is " + psd_note(psd)};
+  if (psd.verdict == PsdVerdict::kNotPsd) return C1Outcome::failing("(C1) fails: " + which + " is not PSD (" + psd.reason + ")");
+  return C1Outcome::holding("(C1) holds: " + which + " (size " + std::to_string(M.rows()) + ") is " + psd_note(psd));
 }
 
 }  // namespace lpvid

@@ -62,13 +62,13 @@ C1Outcome check_c1_w_form(Mat<Rational> gram_z, const Mat<Rational>& w, const Ra
         break;
       }
   if (first_k < 0)
-    return {true, "(C1) holds: w = 0, so " + full + " = diag(T_z'T_z, delta2*I) is PSD (a Gram matrix and delta2 >= 0)"};
+    return C1Outcome::holding("(C1) holds: w = 0, so " + full + " = diag(T_z'T_z, delta2*I) is PSD (a Gram matrix and delta2 >= 0)");
   // (b) δ² = 0 with T_w ≠ 0.
   if (CGAL::is_zero(delta2)) {
     const Eigen::Index row = n + first_k * ny + first_i;
-    return {false, "(C1) fails: delta2 = 0 but w(" + std::to_string(first_k) + "," + std::to_string(first_i) + ") = " +
+    return C1Outcome::failing("(C1) fails: delta2 = 0 but w(" + std::to_string(first_k) + "," + std::to_string(first_i) + ") = " +
                        approx_text(w(first_k, first_i)) + " is not zero: the 2x2 principal submatrix of " + full +
-                       " on rows 0 and " + std::to_string(row) + " is [T_z'T_z(0,0), w; w, 0], determinant -w^2 < 0"};
+                       " on rows 0 and " + std::to_string(row) + " is [T_z'T_z(0,0), w; w, 0], determinant -w^2 < 0");
   }
   // (c) δ² > 0: the Schur complement of δ²I, times δ².
   gram_z *= delta2;
@@ -79,8 +79,8 @@ C1Outcome check_c1_w_form(Mat<Rational> gram_z, const Mat<Rational>& w, const Ra
     which += " (scaled by 2^" + std::to_string(-*e) + ")";
   }
   const PsdResult psd = decide_psd(gram_z);
-  if (psd.verdict == PsdVerdict::kNotPsd) return {false, "(C1) fails: " + which + " is not PSD (" + psd.reason + ")"};
-  return {true, "(C1) holds: " + which + " (size " + std::to_string(gram_z.rows()) + ") is " + psd_note(psd)};
+  if (psd.verdict == PsdVerdict::kNotPsd) return C1Outcome::failing("(C1) fails: " + which + " is not PSD (" + psd.reason + ")");
+  return C1Outcome::holding("(C1) holds: " + which + " (size " + std::to_string(gram_z.rows()) + ") is " + psd_note(psd));
 }
 
 }  // namespace lpvid

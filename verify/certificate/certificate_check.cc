@@ -372,7 +372,7 @@ PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>&
                            : check_c1_w_form(c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)
                                                                               : paper_gram(c.model, exp),
                                              w, c.delta2);
-  if (!c1.holds) return fails(c1.text);
+  if (!c1.holds()) return fails(c1.text);
   details << "; " << c1.text;
   return {PrimalCheck::kHolds, "", details.str()};
 }

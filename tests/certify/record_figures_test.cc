@@ -1,10 +1,11 @@
-// The figures of each record and of all records pooled (cli/record_figures.h)
+// The figures of each record and of all records pooled (certify/record_figures.h) and their table (cli/records_report.h)
 // on two records of two samples each, every number worked out by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "cli/record_figures.h"
+#include "certify/record_figures.h"
+#include "cli/records_report.h"
 
 namespace lpvid {
 namespace {
@@ -14,7 +15,7 @@ TEST(RecordFigures, EachRecordAndThePooledLineByHand) {
   y << 0, 2, 0, 4;  // record 1: mean 1, ||y - mean||^2 = 2; record 2: mean 2, 8; pooled: mean 1.5, 11
   r << 1, 1, 2, 0;  // ||r_1||^2 = 2, ||r_2||^2 = 4
   w << 1, 0, 0, 0;  // d = r - w = (0, 1 | 2, 0): ||d_1||^2 = 1, ||d_2||^2 = 4
-  const cli::RecordTable t = cli::record_figures(y, r, {2, 2}, w);
+  const RecordTable t = record_figures(y, r, {2, 2}, w);
   ASSERT_EQ(t.records.size(), 2u);
   EXPECT_EQ(t.records[0].samples, 2);
   EXPECT_DOUBLE_EQ(t.records[0].rms_residual, 1.0);
@@ -35,7 +36,7 @@ TEST(RecordFigures, WithoutACertificateThereIsNoNoiseColumn) {
   Mat<double> y(3, 1), r(3, 1);
   y << 1, 2, 3;
   r << 0, 0, 1;
-  const cli::RecordTable t = cli::record_figures(y, r, {}, std::nullopt);  // one record
+  const RecordTable t = record_figures(y, r, {}, std::nullopt);  // one record
   ASSERT_EQ(t.records.size(), 1u);
   EXPECT_FALSE(t.records[0].rms_noise.has_value());
   EXPECT_FALSE(t.records[0].dmax_share.has_value());

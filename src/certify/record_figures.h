@@ -8,17 +8,13 @@
 /// pooled noise energy.
 
 #include <optional>
-#include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "certify/certify.h"
-#include "data/data_reference.h"
+#include "certify/certify_types.h"
 #include "data/experiment.h"
 #include "model/lpv_model.h"
 
-namespace lpvid::cli {
+namespace lpvid {
 
 struct RecordFigures {
   long samples = 0;
@@ -42,17 +38,4 @@ RecordTable record_figures(const Mat<double>& y, const Mat<double>& r, const std
 /// of `b`'s consistency certificate (Δ form) when there is one.
 RecordTable record_figures(const LpvModel<double>& model, const Experiment<double>& exp, const CertifiedBounds& b);
 
-/// The report's "records" list: file, rows [b, e] or null, sha256, samples
-/// and the figures of each record (refs and t.records in the same order).
-nlohmann::ordered_json records_json(const std::vector<DataReference>& refs, const RecordTable& t);
-
-/// The readable table: one line per record and a "pooled" line.
-std::string records_text(const std::vector<DataReference>& refs, const RecordTable& t);
-
-/// Adds the records list and the pooled figures ("records", "records_pooled")
-/// to `report` and returns the readable table; nothing for one record (its
-/// report is the one-record report).
-std::string add_record_figures(nlohmann::ordered_json& report, const std::vector<DataReference>& refs,
-                               const LpvModel<double>& model, const Experiment<double>& exp, const CertifiedBounds& b);
-
-}  // namespace lpvid::cli
+}  // namespace lpvid
