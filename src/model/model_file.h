@@ -8,8 +8,9 @@
 /// Numbers may be JSON numbers or strings holding a decimal or `p/q`
 /// ("0.1", "-1/3", "2.5e-3"). The Rational reader turns the *text* into an
 /// exact rational (0.1 is 1/10); the double reader gives the nearest double of
-/// the same text. Neither goes through nlohmann's double. JSON numbers that
-/// overflow a double (1e400) are a syntax error: write them as strings.
+/// the same text (json/json_number.h's number_from_json). Neither goes
+/// through nlohmann's double. JSON numbers that overflow a double (1e400) are
+/// a syntax error: write them as strings.
 /// `//` and `/* */` comments are ignored, so docs/design.md §11.1's example reads as is.
 ///
 /// Keys (unknown keys are rejected everywhere, with the list of allowed keys,
@@ -62,12 +63,13 @@
 ///
 /// ## Writing
 ///
-/// Rational numbers are written as JSON integers when they are integers that
-/// fit in 64 bits, otherwise as strings: a terminating decimal ("-0.3") when
-/// the denominator is 2^a·5^b with at most 40 decimals, else "p/q". Doubles
-/// are written as JSON numbers in the shortest text that reads back as the
-/// same double. Only non-zero correction A_i/B_i are written; x0 only when
-/// non-zero; state_offset only when it has a basis.
+/// Numbers are written by json/json_number.h (number_to_json): rational
+/// numbers as JSON integers when they are integers that fit in 64 bits,
+/// otherwise as strings: a terminating decimal ("-0.3") when the denominator
+/// is 2^a·5^b with at most 40 decimals, else "p/q". Doubles as JSON numbers in
+/// the shortest text that reads back as the same double. Only non-zero
+/// correction A_i/B_i are written; x0 only when non-zero; state_offset only
+/// when it has a basis.
 
 #include <string>
 #include <string_view>
@@ -75,8 +77,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/scalar.h"
+#include "json/json_tree.h"
 #include "model/lpv_model.h"
-#include "model/model_json_tree.h"
 
 namespace lpvid {
 
@@ -116,21 +118,6 @@ std::string write_model_json(const LpvModel<double>& model);
 void write_model_file(const std::string& path, const LpvModel<Rational>& model);
 void write_model_file(const std::string& path, const LpvModel<double>& model);
 
-// ---- exact numbers in JSON (shared with the certificate reader/writer) ----
-
-/// The JSON value of a rational as described under "Writing".
-nlohmann::ordered_json rational_to_json(const Rational& q);
-/// The JSON value of a finite double (throws std::invalid_argument otherwise).
-nlohmann::ordered_json double_to_json(double x);
-/// rational_to_json or double_to_json.
-inline nlohmann::ordered_json number_to_json(const Rational& q) { return rational_to_json(q); }
-inline nlohmann::ordered_json number_to_json(double x) { return double_to_json(x); }
-
-/// A JSON number or a string holding a number, read as T. Throws InputError
-/// "file:line: path: reason".
-template <typename T>
-T number_from_json(const JsonNode& node, const std::string& file, const std::string& path);
-
 extern template LpvModel<double> read_model_file<double>(const std::string&);
 extern template LpvModel<Rational> read_model_file<Rational>(const std::string&);
 extern template LpvModel<double> parse_model_json<double>(std::string_view, const std::string&);
@@ -138,7 +125,5 @@ extern template LpvModel<Rational> parse_model_json<Rational>(std::string_view, 
 extern template LpvModel<double> model_from_json<double>(const JsonNode&, const std::string&, const std::string&);
 extern template LpvModel<Rational> model_from_json<Rational>(const JsonNode&, const std::string&,
                                                              const std::string&);
-extern template double number_from_json<double>(const JsonNode&, const std::string&, const std::string&);
-extern template Rational number_from_json<Rational>(const JsonNode&, const std::string&, const std::string&);
 
 }  // namespace lpvid

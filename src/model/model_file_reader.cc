@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "core/limits.h"
 #include "core/number_text.h"
+#include "json/json_number.h"
 #include "model/state_scheduling.h"
 
 namespace lpvid {
@@ -24,18 +25,6 @@ std::string member_path(const std::string& base, std::string_view key) {
   return base.empty() ? std::string(key) : base + "." + std::string(key);
 }
 std::string index_path(const std::string& base, size_t i) { return base + "[" + std::to_string(i) + "]"; }
-
-const char* article_kind(Kind kind) {
-  switch (kind) {
-    case Kind::kObject: return "an object";
-    case Kind::kArray: return "an array";
-    case Kind::kString: return "a string";
-    case Kind::kNumber: return "a number";
-    case Kind::kBool: return "a boolean";
-    case Kind::kNull: return "null";
-  }
-  return "a value";
-}
 
 bool is_name_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
@@ -542,19 +531,6 @@ class ModelReader {
 
 }  // namespace
 
-template <typename T>
-T number_from_json(const JsonNode& node, const std::string& file, const std::string& path) {
-  if (node.kind != Kind::kNumber && node.kind != Kind::kString)
-    throw_input_error(file, node.line, path,
-                      std::string("expected a number (or a string holding a decimal or p/q), got ") +
-                          article_kind(node.kind));
-  try {
-    return number_from_text<T>(node.text);
-  } catch (const InputError& e) {
-    throw_input_error(file, node.line, path, e.what());
-  }
-}
-
 // ------------------------------------------------------------- models
 
 template <typename T>
@@ -579,7 +555,5 @@ template LpvModel<double> parse_model_json<double>(std::string_view, const std::
 template LpvModel<Rational> parse_model_json<Rational>(std::string_view, const std::string&);
 template LpvModel<double> model_from_json<double>(const JsonNode&, const std::string&, const std::string&);
 template LpvModel<Rational> model_from_json<Rational>(const JsonNode&, const std::string&, const std::string&);
-template double number_from_json<double>(const JsonNode&, const std::string&, const std::string&);
-template Rational number_from_json<Rational>(const JsonNode&, const std::string&, const std::string&);
 
 }  // namespace lpvid

@@ -1,14 +1,12 @@
 #include "model/model_file.h"
-/// Writing lpvid-model/1 files and exact number text (the reader is
-/// model_file_reader.cc).
+/// Writing lpvid-model/1 files (the exact number text is json/json_number.h's;
+/// the reader is model_file_reader.cc).
 
-#include <cmath>
-#include <gmp.h>
 #include <stdexcept>
 
 #include "core/file_io.h"
 #include "core/input_error.h"
-#include "core/number_text.h"
+#include "json/json_number.h"
 #include "model/state_scheduling.h"
 
 namespace lpvid {
@@ -263,21 +261,6 @@ void write_file(const std::string& path, const LpvModel<T>& model) {
 }
 
 }  // namespace
-
-// ------------------------------------------------------------- numbers
-
-
-nlohmann::ordered_json rational_to_json(const Rational& q) {
-  mpz_srcptr num = mpq_numref(q.mpq());
-  if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) == 0 && mpz_fits_slong_p(num))
-    return nlohmann::ordered_json(static_cast<std::int64_t>(mpz_get_si(num)));
-  return nlohmann::ordered_json(exact_decimal_or_fraction(q));
-}
-
-nlohmann::ordered_json double_to_json(double x) {
-  if (!std::isfinite(x)) throw std::invalid_argument("cannot write a non-finite number to JSON");
-  return nlohmann::ordered_json(x);
-}
 
 nlohmann::ordered_json model_to_json(const LpvModel<Rational>& model) { return to_json(model); }
 nlohmann::ordered_json model_to_json(const LpvModel<double>& model) { return to_json(model); }

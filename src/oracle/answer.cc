@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "model/json_members.h"
-#include "model/model_file.h"
-#include "model/model_json_tree.h"
+#include "json/json_members.h"
+#include "json/json_number.h"
+#include "json/json_tree.h"
 #include "model/simulate.h"
 
 namespace lpvid {

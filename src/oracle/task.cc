@@ -6,9 +6,9 @@
 
 #include "core/input_error.h"
 #include "core/number_text.h"
-#include "model/json_members.h"
-#include "model/model_file.h"
-#include "model/model_json_tree.h"
+#include "json/json_members.h"
+#include "json/json_number.h"
+#include "json/json_tree.h"
 
 namespace lpvid {
 

@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "json/json_number.h"
 #include "support/generators.h"
 
 #include "support/input_error_text.h"

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/model_json_tree.h"
+#include "json/json_tree.h"
 #include "verify/certificate/certificate.h"
 
 namespace lpvid {

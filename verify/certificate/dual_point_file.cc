@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "core/input_error.h"
-#include "model/json_members.h"
-#include "model/model_file.h"
+#include "json/json_members.h"
+#include "json/json_number.h"
 
 namespace lpvid {
 namespace {

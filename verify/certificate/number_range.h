@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "model/model_json_tree.h"
+#include "json/json_tree.h"
 
 namespace lpvid {
 

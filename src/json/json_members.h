@@ -1,15 +1,15 @@
 #pragma once
-/// Reading and writing the members of exact JSON trees (model_json_tree.h)
-/// with errors that name the file, the line and the JSON path: shared by the
-/// certificate file (verify/certificate/certificate_file.h) and the oracle's task and
-/// answer files (oracle/).
+/// Reading and writing the members of exact JSON trees (json_tree.h) with
+/// errors that name the file, the line and the JSON path: shared by the
+/// certificate file (verify/certificate/certificate_file.h) and the oracle's
+/// task and answer files (oracle/).
 
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "core/scalar.h"
-#include "model/model_json_tree.h"
+#include "json/json_tree.h"
 
 namespace lpvid {
 
@@ -21,7 +21,7 @@ std::string string_member(const JsonNode& obj, const char* key, const std::strin
 long integer_member(const JsonNode& n, const std::string& file, const std::string& path);
 /// A list of rows of `cols` exact numbers each.
 Mat<Rational> matrix_member(const JsonNode& n, const std::string& file, const std::string& path, Eigen::Index cols);
-/// The rows of `m` as lists of exact numbers (model_file.h's rational_to_json).
+/// The rows of `m` as lists of exact numbers (json_number.h's rational_to_json).
 nlohmann::ordered_json matrix_json(const Mat<Rational>& m);
 
 }  // namespace lpvid

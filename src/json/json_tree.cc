@@ -1,4 +1,4 @@
-#include "model/model_json_tree.h"
+#include "json/json_tree.h"
 
 #include <iterator>
 #include <unordered_set>
@@ -236,6 +236,19 @@ const JsonNode* JsonNode::find(std::string_view key) const {
   for (const auto& [k, v] : members)
     if (k == key) return &v;
   return nullptr;
+}
+
+const char* article_kind(JsonNode::Kind kind) {
+  using Kind = JsonNode::Kind;
+  switch (kind) {
+    case Kind::kObject: return "an object";
+    case Kind::kArray: return "an array";
+    case Kind::kString: return "a string";
+    case Kind::kNumber: return "a number";
+    case Kind::kBool: return "a boolean";
+    case Kind::kNull: return "null";
+  }
+  return "a value";
 }
 
 JsonNode parse_exact_json(std::string_view text, const std::string& name) {

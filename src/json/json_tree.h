@@ -6,6 +6,11 @@
 ///
 /// Also: a pretty printer for nlohmann::ordered_json that keeps matrices and
 /// short objects on one line (used by the model and certificate writers).
+///
+/// The floor src/json (the exact JSON layer, on src/core only): this tree,
+/// exact numbers (json_number.h) and members read with located errors
+/// (json_members.h). The model file (model/model_file.h), the certificate
+/// files (verify/certificate/) and the oracle's files (oracle/) sit above it.
 
 #include <string>
 #include <string_view>
@@ -34,6 +39,10 @@ struct JsonNode {
   /// Member `key` of an object, or nullptr (also for non-objects).
   const JsonNode* find(std::string_view key) const;
 };
+
+/// The kind with its article, for messages: "an object", "an array",
+/// "a string", "a number", "a boolean", "null".
+const char* article_kind(JsonNode::Kind kind);
 
 /// Largest nesting depth accepted (a model file needs 5).
 constexpr int kMaxJsonDepth = 64;

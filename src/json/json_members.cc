@@ -1,7 +1,7 @@
-#include "model/json_members.h"
+#include "json/json_members.h"
 
 #include "core/input_error.h"
-#include "model/model_file.h"
+#include "json/json_number.h"
 
 namespace lpvid {
 
