@@ -158,14 +158,14 @@ void certify_truth(const RandomCase& c, const ParameterLayout& layout, const Cer
 
 void class_part(const RandomCase& c, IdentifiedModel& id, const CertifyOptions& co, int leaves, double box,
                 SdpSolver& solver, const std::string& cert_path, Row& r) {
-  const LpvModel<double> md = convert_model<double>(c.model);
-  const Experiment<double> ed = nearest_double(c.exp);
+  // the double views rounded from the exact ones
+  const Problem problem{c.model, convert_model<double>(c.model), c.exp, nearest_double(c.exp)};
   ClassBoundOptions o;
   o.unknowns.offset = false;
   o.max_leaves = leaves;
   o.box_fraction = box;
   const Stopwatch sw;
-  ClassInterval ci = class_interval(id, c.model, md, c.exp, ed, co, o, solver);
+  ClassInterval ci = class_interval(id, problem, co, o, solver);
   adopt_class_optimum(id, ci);
   r.class_wall = sw.wall();
   r.class_cpu = sw.cpu();
@@ -209,8 +209,9 @@ Row run_row(UncertaintyStructure structure, int m, int n, int leaves, double box
   co.progress = [tag](const std::string& stage) { std::fprintf(stderr, "  [%s] %s\n", tag.c_str(), stage.c_str()); };
   auto solver = make_solver("csdp");
   const Stopwatch sw;
-  IdentifiedModel id = identify_and_certify(c.model, convert_model<double>(c.model), c.exp, nearest_double(c.exp), io,
-                                            co, *solver);
+  // the double views rounded from the exact ones
+  const Problem problem{c.model, convert_model<double>(c.model), c.exp, nearest_double(c.exp)};
+  IdentifiedModel id = identify_and_certify(problem, io, co, *solver);
   r.ident_wall = sw.wall();
   r.ident_cpu = sw.cpu();
   r.P = static_cast<long>(id.fit.layout.size());

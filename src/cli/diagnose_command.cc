@@ -242,8 +242,9 @@ int run_diagnose(DiagnoseArgs& a) {
   progress("data read (" + std::to_string(roles.est_d.n()) + " estimation rows); fitting the declared model" +
            (by_folds ? " on the whole record and on each fold's training rows" : ""));
   // the one library call: verified bounds before and after, on the bound windows of the estimation data
-  DiagnoseResult result =
-      diagnose(declared, roles.est_d, roles.est_q, by_folds ? no_selection : roles.selection.exp, tests, o, *solver);
+  // (its two views, each read from the text, copied side by side)
+  DiagnoseResult result = diagnose(declared, ExperimentViews{roles.est_q, roles.est_d},
+                                   by_folds ? no_selection : roles.selection.exp, tests, o, *solver);
   write_diagnose_certificates(result, certificates);  // the Theorem 3.1 windows
   if (!a.model_out.empty()) write_model_file(a.model_out, result.after.front().model);
   // the renderers: figures first (the text and the JSON list them), then the text, then the JSON

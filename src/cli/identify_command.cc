@@ -152,7 +152,7 @@ int run_identify(IdentifyArgs& a) {
   CertifyOptions co = certify_options(a.common, in);
   co.solver = opt.solver;
   auto solver = make_solver_for_cli(a.common.solver, a.common.write_sdpa);
-  IdentifiedModel id = identify_and_certify(in.model_q, in.model_d, in.exp_q, in.exp_d, opt, co, *solver);
+  IdentifiedModel id = identify_and_certify(in, opt, co, *solver);
   print_solves(id.fit);
   if (!has_solution(id.fit.status)) return render_no_solution(id, opt, a.common.report_path);
 
@@ -162,7 +162,7 @@ int run_identify(IdentifyArgs& a) {
     cbo.unknowns = opt.unknowns;
     cbo.box_fraction = a.class_interval.box;
     cbo.max_leaves = a.class_interval.leaves;
-    klass = class_interval(id, in.model_q, in.model_d, in.exp_q, in.exp_d, co, cbo, *solver);
+    klass = class_interval(id, in, co, cbo, *solver);
     adopt_class_optimum(id, *klass);  // the class optimum, when certified lower, replaces the found theta
   }
   const CertifiedBounds& b = id.bounds;

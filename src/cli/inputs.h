@@ -17,6 +17,7 @@
 #include "data/data_reference.h"
 #include "lmi/bound_objective.h"
 #include "model/lpv_model.h"
+#include "model/problem.h"
 #include "solvers/sdp_solver.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 
@@ -59,11 +60,10 @@ DeltaNorm delta_norm_of(const CommonOptions& o);
 /// Registers the common options on a subcommand.
 void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds);
 
-struct Inputs {
-  Experiment<double> exp_d;
-  Experiment<Rational> exp_q;
-  LpvModel<double> model_d;
-  LpvModel<Rational> model_q;
+/// The model and the data (Problem: model_q, model_d, exp_q, exp_d, each
+/// view read from the text), passed on as `const Problem&`, and what was
+/// read beside them.
+struct Inputs : Problem {
   ToeplitzMode mode = ToeplitzMode::kSignal;
   BoundObjective objective;
   DataReference data;  ///< where exp_q's rows came from (file, sha256, --names, --rows); several records: the first

@@ -256,7 +256,7 @@ CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   IdentifiedReference identified;
   CertifiedBounds b;
   if (identify)
-    identified = identify_reference(in.model_q, in.model_d, in.exp_q, in.exp_d, co, *solver, mine.string(), s.held);
+    identified = identify_reference(in, co, *solver, mine.string(), s.held);
   else
     b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
   rep.lpvid_seconds = seconds_since(started);

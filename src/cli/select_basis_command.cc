@@ -267,7 +267,7 @@ int run_select(SelectArgs& a) {
   table.header();
   o.on_step = [&](const BasisStep& s) { table.row(s); };
   auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
-  BasisSelectionResult r = select_basis(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
+  BasisSelectionResult r = select_basis(in, o, *solver);
   if (!stem.empty()) write_step_certificates(r, stem);
   print_legend(c, a.iterate);
   print_step_notes(r);

@@ -181,7 +181,7 @@ int run_tradeoff(TradeoffArgs& a) {
             << std::setw(10) << "verified" << std::setw(13) << "delta_relax" << std::setw(13) << "dmax_relax"
             << std::setw(7) << "solves" << "time[s]\n";
   auto solver = make_solver_for_cli(c.solver, c.write_sdpa);
-  std::vector<TradeoffPoint> pts = tradeoff_curve(in.model_q, in.model_d, in.exp_q, in.exp_d, o, *solver);
+  std::vector<TradeoffPoint> pts = tradeoff_curve(in, o, *solver);
   if (!stem.empty()) write_tradeoff_certificates(pts, stem);
   std::cout << "\n  delta, dmax  = certified (the exact verifier accepted "
             << (stem.empty() ? std::string("the certificate in memory; ") + kNoCertificateFile + ")"

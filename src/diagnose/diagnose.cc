@@ -214,8 +214,8 @@ std::vector<RowWindow> all_pieces(const std::vector<JointWindow>& joint, bool to
 /// Step 3: Theorem 2.1 on every window, before and after: one independent
 /// job each (core/parallel_for.h); SDP solves serialise inside
 /// (solvers/sdp_solver.cc).
-void certify_windows(DiagnoseResult& out, const std::vector<JointWindow>& windows, const Experiment<double>& est_d,
-                     const Experiment<Rational>& est_q, const DiagnoseOptions& options, SdpSolver& solver) {
+void certify_windows(DiagnoseResult& out, const std::vector<JointWindow>& windows, const ExperimentViews& est,
+                     const DiagnoseOptions& options, SdpSolver& solver) {
   out.before.resize(windows.size());
   out.after.resize(windows.size());
   const unsigned threads = bound_threads(options);
@@ -230,9 +230,9 @@ void certify_windows(DiagnoseResult& out, const std::vector<JointWindow>& window
     WindowBounds& w = (after ? out.after : out.before)[i];
     const LpvModel<double>& model = after ? out.after_model : out.before_model;
     w = options.record_data.size() < 2
-            ? certify_window(model, est_d, est_q, windows[i][0].first, windows[i][0].second, options.file_row_offset,
+            ? certify_window(model, est, windows[i][0].first, windows[i][0].second, options.file_row_offset,
                              options.certify, own ? *own : solver)
-            : certify_joint_window(model, est_d, est_q, windows[i], options.record_data, options.certify, own ? *own : solver);
+            : certify_joint_window(model, est, windows[i], options.record_data, options.certify, own ? *own : solver);
     if (options.on_bound) options.on_bound(w, i, windows.size(), after);
     if (options.ranking.progress) {
       const std::lock_guard<std::mutex> lock(report);
@@ -270,13 +270,15 @@ void score_tests(DiagnoseResult& out, const std::vector<Experiment<double>>& tes
 
 }  // namespace
 
-DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_data,
-                        const Experiment<Rational>& est_q, const Experiment<double>& selection_data,
-                        const std::vector<Experiment<double>>& test_data, const DiagnoseOptions& options,
-                        SdpSolver& solver) {
+DiagnoseResult diagnose(const LpvModel<double>& declared, const ExperimentViews& est,
+                        const Experiment<double>& selection_data, const std::vector<Experiment<double>>& test_data,
+                        const DiagnoseOptions& options, SdpSolver& solver) {
   // every fit, score and choice reads the data at the fits' precision
   // (data/fitting_precision.h); the certificates read est_q, the data as written
-  const Experiment<double> est_d = at_fitting_precision(est_data), selection = at_fitting_precision(selection_data);
+  // (copied here beside its double view at that precision)
+  const ExperimentViews views{est.exp_q, at_fitting_precision(est.exp_d)};
+  const Experiment<double> selection = at_fitting_precision(selection_data);
+  const auto& [est_q, est_d] = views;
   std::vector<Experiment<double>> tests;
   for (const Experiment<double>& t : test_data) tests.push_back(at_fitting_precision(t));
   const std::vector<JointWindow> windows = bound_windows(est_d, options);
@@ -294,11 +296,11 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<doubl
   out.before_model.signal_info = out.after_model.signal_info = declared.signal_info;  // fits build new models
 
   // 3. Theorem 2.1 on every window; Theorem 3.1 on the first
-  certify_windows(out, windows, est_d, est_q, options, solver);
+  certify_windows(out, windows, views, options, solver);
   if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
   // optional: a failure here is this stage's (WindowIdentification::failed); every result above stands
   for (auto [model, id] : {std::pair{&out.before_model, &out.before_id}, std::pair{&out.after_model, &out.after_id}}) {
-    *id = try_identify_on_window(*model, est_d, est_q, windows[0][0].first, windows[0][0].second, options.file_row_offset,
+    *id = try_identify_on_window(*model, views, windows[0][0].first, windows[0][0].second, options.file_row_offset,
                                  options.certify, solver);
     if (!id->failed.empty() && options.ranking.progress) options.ranking.progress(id->failed + " (the diagnosis stands)");
   }

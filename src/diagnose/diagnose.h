@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "data/experiment.h"
+#include "data/experiment_views.h"
 #include "diagnose/bound_windows.h"
 #include "diagnose/effect_ranking.h"
 #include "diagnose/record_scores.h"
@@ -162,13 +163,13 @@ struct DiagnoseResult {
 FreeRunScore pooled_test_score(const std::vector<Experiment<double>>& tests, const std::vector<const Mat<double>*>& yhat,
                                Eigen::Index warmup);
 
-/// Runs steps 1–4. `est_q` is the exact copy of `est_d` (the same rows);
+/// Runs steps 1–4. `est` is the estimation record in its exact and double
+/// views (the same rows; the fits read the doubles at data/fitting_precision.h);
 /// `tests` may be empty; each test set is scored once, separately (a
 /// benchmark with a multisine and an "arrow" record). Throws InputError for
 /// windows outside the estimation record or too short a selection/test set.
-DiagnoseResult diagnose(const LpvModel<double>& declared, const Experiment<double>& est_d,
-                        const Experiment<Rational>& est_q, const Experiment<double>& selection,
-                        const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options,
-                        SdpSolver& solver);
+DiagnoseResult diagnose(const LpvModel<double>& declared, const ExperimentViews& est,
+                        const Experiment<double>& selection, const std::vector<Experiment<double>>& tests,
+                        const DiagnoseOptions& options, SdpSolver& solver);
 
 }  // namespace lpvid

@@ -40,9 +40,9 @@ LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0)
   return parse_model_json<Rational>(write_model_json(c), "fitted model");
 }
 
-WindowBounds certify_window(const LpvModel<double>& model, const Experiment<double>& est_d,
-                            const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
-                            long file_row_offset, CertifyOptions options, SdpSolver& solver) {
+WindowBounds certify_window(const LpvModel<double>& model, const ExperimentViews& est, Eigen::Index begin,
+                            Eigen::Index end, long file_row_offset, CertifyOptions options, SdpSolver& solver) {
+  const auto& [est_q, est_d] = est;
   if (begin < 0 || end <= begin || end > est_q.n())
     throw InputError("bound window " + std::to_string(begin) + ":" + std::to_string(end) + " is outside the " +
                      std::to_string(est_q.n()) + " estimation samples");
@@ -97,15 +97,15 @@ Experiment<Rational> joint_data(const LpvModel<double>& model, const Experiment<
 
 }  // namespace
 
-WindowBounds certify_joint_window(const LpvModel<double>& model, const Experiment<double>& est_d,
-                                  const Experiment<Rational>& est_q, const std::vector<RowWindow>& pieces,
-                                  const std::vector<DataReference>& record_data, CertifyOptions options,
-                                  SdpSolver& solver) {
+WindowBounds certify_joint_window(const LpvModel<double>& model, const ExperimentViews& est,
+                                  const std::vector<RowWindow>& pieces, const std::vector<DataReference>& record_data,
+                                  CertifyOptions options, SdpSolver& solver) {
+  const auto& [est_q, est_d] = est;
   if (pieces.size() == 1) {
     const auto [k, first] = record_of_row(est_d.records, pieces[0].first);
-    if (record_data.empty()) return certify_window(model, est_d, est_q, pieces[0].first, pieces[0].second, 0, options, solver);
+    if (record_data.empty()) return certify_window(model, est, pieces[0].first, pieces[0].second, 0, options, solver);
     options.data = record_data[k];  // its file; certify_window sets the rows
-    return certify_window(model, est_d, est_q, pieces[0].first, pieces[0].second,
+    return certify_window(model, est, pieces[0].first, pieces[0].second,
                           record_data[k].row_begin - static_cast<long>(first), options, solver);
   }
   for (const auto& [b, e] : pieces)

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "data/experiment.h"
+#include "data/experiment_views.h"
 #include "certify/certify.h"
 #include "diagnose/bound_windows.h"
 #include "model/lpv_model.h"
@@ -60,13 +61,12 @@ LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits = Cert
 /// Exact (decimal) copy of a double model, x0 replaced by `x0`.
 LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0);
 
-/// Certifies `model` (fitted on `est_d` with x0 at sample 0) on est rows
-/// [begin, end). `options.data` (its rows set to the window's),
-/// `objective`, `solver`, `max_taps` are used as given; `file_row_offset`
-/// is the data-file row of estimation sample 0.
-WindowBounds certify_window(const LpvModel<double>& model, const Experiment<double>& est_d,
-                            const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
-                            long file_row_offset, CertifyOptions options, SdpSolver& solver);
+/// Certifies `model` (fitted on `est.exp_d` with x0 at sample 0) on the
+/// estimation rows [begin, end) of `est.exp_q`. `options.data` (its rows set
+/// to the window's), `objective`, `solver`, `max_taps` are used as given;
+/// `file_row_offset` is the data-file row of estimation sample 0.
+WindowBounds certify_window(const LpvModel<double>& model, const ExperimentViews& est, Eigen::Index begin,
+                            Eigen::Index end, long file_row_offset, CertifyOptions options, SdpSolver& solver);
 
 /// Theorem 2.1 on a joint window of stacked records: ONE claim (one Δ, one
 /// noise bound) over its pieces, each a record of its own, certified from the
@@ -75,9 +75,8 @@ WindowBounds certify_window(const LpvModel<double>& model, const Experiment<doub
 /// `record_data[k]` is where estimation record k's rows are in its file (the
 /// window that was read); `records` are the estimation records' lengths. One
 /// piece: certify_window.
-WindowBounds certify_joint_window(const LpvModel<double>& model, const Experiment<double>& est_d,
-                                  const Experiment<Rational>& est_q, const std::vector<RowWindow>& pieces,
-                                  const std::vector<DataReference>& record_data, CertifyOptions options,
-                                  SdpSolver& solver);
+WindowBounds certify_joint_window(const LpvModel<double>& model, const ExperimentViews& est,
+                                  const std::vector<RowWindow>& pieces, const std::vector<DataReference>& record_data,
+                                  CertifyOptions options, SdpSolver& solver);
 
 }  // namespace lpvid

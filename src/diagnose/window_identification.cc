@@ -4,13 +4,15 @@
 #include "data/experiment_builder.h"
 #include "toeplitz/affine_residual.h"
 #include "identify/fix_and_certify.h"
+#include "model/problem.h"
 #include "model/simulate.h"
 
 namespace lpvid {
 
-WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
-                                        const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
-                                        long file_row_offset, const CertifyOptions& options, SdpSolver& solver) {
+WindowIdentification identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est, Eigen::Index begin,
+                                        Eigen::Index end, long file_row_offset, const CertifyOptions& options,
+                                        SdpSolver& solver) {
+  const auto& [est_q, est_d] = est;
   WindowIdentification out;
   if (fitted.statics.has_output()) {
     out.why_not = std::string("the model has a static output map (") + to_string(fitted.statics.output.kind) +
@@ -28,9 +30,8 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   const Vec<double> xb = fitted.nx > 0 ? Vec<double>(sim.x.row(begin).transpose()) : Vec<double>();
   LpvModel<Rational> mq = exact_model(fitted, xb);
   mq.correction = zero_correction<Rational>(basis, mq.nx, mq.nu);
-  const LpvModel<double> md = convert_model<double>(mq);
-  const Experiment<Rational> wq = select_rows(est_q, begin, end);
-  const Experiment<double> wd = select_rows(est_d, begin, end);
+  // the window's problem: the double model is the exact one converted; the data are the window's rows of each view
+  const Problem window{mq, convert_model<double>(mq), select_rows(est_q, begin, end), select_rows(est_d, begin, end)};
 
   IdentifyOptions io;
   io.objective = options.objective;
@@ -48,7 +49,7 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   co.data.row_begin = out.bounds.file_begin;
   co.data.row_end = out.bounds.file_end;
   co.lower_end = false;  // the diagnose report states δ, d_max here, not the interval
-  IdentifiedModel id = identify_and_certify(mq, md, wq, wd, io, co, solver);
+  IdentifiedModel id = identify_and_certify(window, io, co, solver);
   out.result = std::move(id.fit);
   if (!has_solution(out.result.status)) {
     out.bounds.bounds.reason = "identification ended with " + std::string(to_string(out.result.status));
@@ -56,15 +57,15 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   }
   out.bounds.model = std::move(id.fixed.model);
   out.bounds.bounds = std::move(id.bounds);
-  judge_informative(out.bounds, wd.y);
+  judge_informative(out.bounds, window.exp_d.y);
   return out;
 }
 
-WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
-                                            const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
-                                            long file_row_offset, const CertifyOptions& options, SdpSolver& solver) {
+WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est,
+                                            Eigen::Index begin, Eigen::Index end, long file_row_offset,
+                                            const CertifyOptions& options, SdpSolver& solver) {
   try {
-    return identify_on_window(fitted, est_d, est_q, begin, end, file_row_offset, options, solver);
+    return identify_on_window(fitted, est, begin, end, file_row_offset, options, solver);
   } catch (const RunStopped&) {
     throw;  // the user's --timeout or a requested stop ends the run, not a window or a stage
   } catch (const std::exception& e) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "data/experiment_views.h"
 #include "diagnose/window_bounds.h"
 #include "identify/identify.h"
 
@@ -29,15 +30,15 @@ struct WindowIdentification {
   WindowBounds bounds;             ///< the identified model's certified bounds on the window
 };
 
-WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
-                                        const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
-                                        long file_row_offset, const CertifyOptions& options, SdpSolver& solver);
+WindowIdentification identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est, Eigen::Index begin,
+                                        Eigen::Index end, long file_row_offset, const CertifyOptions& options,
+                                        SdpSolver& solver);
 
 /// identify_on_window, as an optional stage: an exception (a diverging free
 /// run, a solver or numeric failure) becomes `failed` = "the optional Theorem
 /// 3.1 stage failed: <reason>" instead of ending the caller's work.
-WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const Experiment<double>& est_d,
-                                            const Experiment<Rational>& est_q, Eigen::Index begin, Eigen::Index end,
-                                            long file_row_offset, const CertifyOptions& options, SdpSolver& solver);
+WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est,
+                                            Eigen::Index begin, Eigen::Index end, long file_row_offset,
+                                            const CertifyOptions& options, SdpSolver& solver);
 
 }  // namespace lpvid

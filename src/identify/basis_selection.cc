@@ -89,9 +89,8 @@ SelectionOutcome outcome_of(const std::vector<BasisStep>& steps, int final_step)
 
 class Selector {
  public:
-  Selector(const LpvModel<Rational>& mq, const LpvModel<double>& md, const Experiment<Rational>& eq,
-           const Experiment<double>& ed, const BasisSelectionOptions& o, SdpSolver& s)
-      : mq_(mq), md_(md), eq_(eq), ed_(ed), o_(o), solver_(s) {}
+  Selector(const Problem& p, const BasisSelectionOptions& o, SdpSolver& s)
+      : mq_(p.model_q), md_(p.model_d), eq_(p.exp_q), ed_(p.exp_d), o_(o), solver_(s) {}
 
   BasisSelectionResult run() {
     BasisSelectionResult r;
@@ -192,16 +191,17 @@ class Selector {
   }
 
   /// A step not certified consistent: the class certificate over the
-  /// basis (whole class, or a box centred at `centre`, zero when empty).
-  void certify_class(BasisStep& s, const LpvModel<Rational>& mq, const LpvModel<double>& md, Vec<double> centre) {
+  /// step's basis (whole class, or a box centred at `centre`, zero when empty).
+  void certify_class(BasisStep& s, const Problem& step, Vec<double> centre) {
     if (!o_.class_certificates || s.verdict == BasisVerdict::kConsistent) return;
     ClassBoundOptions cbo = o_.klass;
     cbo.unknowns = unknowns();
     cbo.upper = 0;
     s.class_centered_at_fit = centre.size() > 0;
     if (!s.class_centered_at_fit)
-      centre = Vec<double>::Zero(build_affine_residual(md, with_state_scheduling(md, ed_), cbo.unknowns).num_params());
-    ClassBoundResult k = class_lower_bound(mq, md, eq_, ed_, centre, certify_options(), cbo);
+      centre = Vec<double>::Zero(
+          build_affine_residual(step.model_d, with_state_scheduling(step.model_d, ed_), cbo.unknowns).num_params());
+    ClassBoundResult k = class_lower_bound(step, centre, certify_options(), cbo);
     s.solves += k.leaves;
     if (k.certified()) {
       s.verdict = k.whole_class ? BasisVerdict::kCannotExplain : BasisVerdict::kBoxInvalidated;
@@ -217,11 +217,11 @@ class Selector {
   }
 
   void solve(BasisStep& s) {
-    const LpvModel<Rational> mq = with_correction_basis(mq_, s.basis);
-    const LpvModel<double> md = with_correction_basis(md_, s.basis);
+    // the model with the step's basis, in both views, beside the data (copied)
+    const Problem step{with_correction_basis(mq_, s.basis), with_correction_basis(md_, s.basis), eq_, ed_};
     Vec<double> centre;
-    identify_step(s, mq, md, centre);
-    certify_class(s, mq, md, centre);
+    identify_step(s, step.model_q, step.model_d, centre);
+    certify_class(s, step, centre);
   }
 
   /// The solver's side of a step: the fit and its certification (`centre`: the fit's parameters, if any).
@@ -348,15 +348,13 @@ const char* to_string(BasisVerdict v) {
   return "unverified";
 }
 
-BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                  const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                  const BasisSelectionOptions& options, SdpSolver& solver) {
+BasisSelectionResult select_basis(const Problem& problem, const BasisSelectionOptions& options, SdpSolver& solver) {
   const double delta = options.delta.approx, dmax = options.dmax.approx;
   if (!(delta >= 0) || !(dmax >= 0) || !std::isfinite(delta) || !std::isfinite(dmax))
     throw InputError("select-basis: delta and dmax must be finite and non-negative");
   if (options.max_degree < 0 || options.max_degree > kMaxMonomialPower)
     throw InputError("select-basis: --max-degree must be in 0.." + std::to_string(kMaxMonomialPower));
-  Selector sel(model_q, model_d, exp_q, exp_d, options, solver);
+  Selector sel(problem, options, solver);
   return sel.run();
 }
 

@@ -88,6 +88,7 @@
 #include "identify/class_bound.h"
 #include "identify/identify.h"
 #include "model/lpv_model.h"
+#include "model/problem.h"
 #include "model/monomial.h"
 #include "solvers/sdp_solver.h"
 
@@ -177,12 +178,9 @@ struct BasisSelectionResult {
   std::vector<Monomial> basis;       ///< the final basis (found only)
 };
 
-/// Runs the algorithm. `model_q`/`model_d` and `exp_q`/`exp_d` are the same
-/// model and data read exactly and as doubles (cli/inputs.h). Throws
-/// InputError for bad input.
-BasisSelectionResult select_basis(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                  const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                  const BasisSelectionOptions& options, SdpSolver& solver);
+/// Runs the algorithm on `problem`'s model and data (its exact and double
+/// views, model/problem.h). Throws InputError for bad input.
+BasisSelectionResult select_basis(const Problem& problem, const BasisSelectionOptions& options, SdpSolver& solver);
 
 /// Monotonicity of the verdicts (adding terms can only help): returns a
 /// description of the first pair of steps with basis_i ⊆ basis_j, step i

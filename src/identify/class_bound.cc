@@ -225,10 +225,9 @@ std::string certify_tree(const LpvModel<Rational>& model_q, const Experiment<Rat
 
 }  // namespace
 
-ClassBoundResult class_lower_bound(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                   const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                   const Vec<double>& found_p, const CertifyOptions& certify,
+ClassBoundResult class_lower_bound(const Problem& problem, const Vec<double>& found_p, const CertifyOptions& certify,
                                    const ClassBoundOptions& o) {
+  const auto& [model_q, model_d, exp_q, exp_d] = problem;
   const auto t0 = std::chrono::steady_clock::now();
   ClassBoundResult out;
   const auto done = [&](std::string reason) {

@@ -23,6 +23,7 @@
 #include "certify/certify.h"
 #include "data/experiment.h"
 #include "model/lpv_model.h"
+#include "model/problem.h"
 #include "toeplitz/affine_residual.h"
 #include "verify/certificate/certificate_file.h"
 
@@ -70,9 +71,7 @@ struct ClassBoundResult {
 /// `found_p` is the identified θ (layout of the affine residual for
 /// `options.unknowns`): the box's centre. `certify` gives the objective, its
 /// fixed values' exact texts and the data reference.
-ClassBoundResult class_lower_bound(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                   const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                   const Vec<double>& found_p, const CertifyOptions& certify,
+ClassBoundResult class_lower_bound(const Problem& problem, const Vec<double>& found_p, const CertifyOptions& certify,
                                    const ClassBoundOptions& options);
 
 }  // namespace lpvid

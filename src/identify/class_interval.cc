@@ -6,13 +6,13 @@
 
 namespace lpvid {
 
-ClassInterval class_interval(const IdentifiedModel& id, const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                             const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                             const CertifyOptions& certify, ClassBoundOptions options, SdpSolver& solver) {
+ClassInterval class_interval(const IdentifiedModel& id, const Problem& problem, const CertifyOptions& certify,
+                             ClassBoundOptions options, SdpSolver& solver) {
+  const auto& [model_q, model_d, exp_q, exp_d] = problem;
   ClassInterval out;
   options.upper = nearest_double(id.bounds.upper);
   try {
-    out.bound = class_lower_bound(model_q, model_d, exp_q, exp_d, id.fixed.value, certify, options);
+    out.bound = class_lower_bound(problem, id.fixed.value, certify, options);
   } catch (const RunStopped&) {
     throw;  // the user's --timeout or a requested stop ends the command
   } catch (const std::exception& e) {

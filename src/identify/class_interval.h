@@ -11,6 +11,7 @@
 
 #include "identify/class_bound.h"
 #include "identify/fix_and_certify.h"
+#include "model/problem.h"
 
 namespace lpvid {
 
@@ -33,9 +34,8 @@ struct ClassInterval {
 /// `id` must hold a verified certification of an optimised objective (not
 /// fixed bounds); it is not changed. Several records: not certified, reason
 /// "no class bound: several records (not implemented)".
-ClassInterval class_interval(const IdentifiedModel& id, const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                             const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                             const CertifyOptions& certify, ClassBoundOptions options, SdpSolver& solver);
+ClassInterval class_interval(const IdentifiedModel& id, const Problem& problem, const CertifyOptions& certify,
+                             ClassBoundOptions options, SdpSolver& solver);
 
 /// Takes the better class optimum of `interval`, if any, as the identified
 /// model: id.fixed and id.bounds become it, interval.adopted is set.

@@ -45,10 +45,9 @@ CertifiedBounds certify_identified(const LpvModel<Rational>& fixed, const Experi
   return certify_fixed_model(fixed, exp, options, solver);
 }
 
-IdentifiedModel identify_and_certify(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                     const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                     const IdentifyOptions& identify_options, const CertifyOptions& certify_options,
-                                     SdpSolver& solver) {
+IdentifiedModel identify_and_certify(const Problem& problem, const IdentifyOptions& identify_options,
+                                     const CertifyOptions& certify_options, SdpSolver& solver) {
+  const auto& [model_q, model_d, exp_q, exp_d] = problem;
   IdentifiedModel out;
   out.fit = identify(model_d, exp_d, identify_options, solver);
   if (!has_solution(out.fit.status)) {

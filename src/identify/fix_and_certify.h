@@ -18,6 +18,7 @@
 #include "certify/certify.h"
 #include "identify/identify.h"
 #include "model/lpv_model.h"
+#include "model/problem.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {
@@ -63,9 +64,7 @@ struct IdentifiedModel {
   /// and kSolverFailed otherwise.
   CertifyOutcome outcome() const { return bounds.outcome; }
 };
-IdentifiedModel identify_and_certify(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                     const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                     const IdentifyOptions& identify_options, const CertifyOptions& certify_options,
-                                     SdpSolver& solver);
+IdentifiedModel identify_and_certify(const Problem& problem, const IdentifyOptions& identify_options,
+                                     const CertifyOptions& certify_options, SdpSolver& solver);
 
 }  // namespace lpvid

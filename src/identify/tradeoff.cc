@@ -82,9 +82,8 @@ bool identify_point(const LpvModel<Rational>& model_q, const LpvModel<double>& m
 
 }  // namespace
 
-std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                          const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                          const TradeoffOptions& o, SdpSolver& solver) {
+std::vector<TradeoffPoint> tradeoff_curve(const Problem& problem, const TradeoffOptions& o, SdpSolver& solver) {
+  const auto& [model_q, model_d, exp_q, exp_d] = problem;
   const std::vector<double> lambdas = o.lambdas.empty() ? default_lambda_grid() : o.lambdas;
   for (double l : lambdas)
     if (!(l >= 0.0 && l <= 1.0)) throw InputError("tradeoff: lambda " + lambda_text(l) + " is outside [0, 1]");

@@ -34,6 +34,7 @@
 #include "certify/certify.h"
 #include "identify/identify.h"
 #include "model/lpv_model.h"
+#include "model/problem.h"
 #include "solvers/sdp_solver.h"
 
 namespace lpvid {
@@ -67,9 +68,7 @@ struct TradeoffOptions {
 
 /// Sweeps λ. Throws InputError for a λ outside [0, 1]. The certificates are
 /// in each point's bounds; nothing is written.
-std::vector<TradeoffPoint> tradeoff_curve(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                          const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                          const TradeoffOptions& options, SdpSolver& solver);
+std::vector<TradeoffPoint> tradeoff_curve(const Problem& problem, const TradeoffOptions& options, SdpSolver& solver);
 
 /// λ as the CSV and the plot labels write it (shortest stream text: 0.25).
 std::string lambda_text(double lambda);

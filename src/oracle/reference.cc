@@ -30,17 +30,15 @@ ClassReference class_reference(const ClassInterval& ci, const std::filesystem::p
 
 }  // namespace
 
-IdentifiedReference identify_reference(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                       const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                       const CertifyOptions& certify, SdpSolver& solver, const std::string& folder,
-                                       WrittenFiles& written) {
+IdentifiedReference identify_reference(const Problem& problem, const CertifyOptions& certify, SdpSolver& solver,
+                                       const std::string& folder, WrittenFiles& written) {
   IdentifiedReference ref;
   IdentifyOptions opt;
   opt.objective = certify.objective;
   opt.iterate = true;
   CertifyOptions co = certify;
   co.lower_end = false;
-  IdentifiedModel id = identify_and_certify(model_q, model_d, exp_q, exp_d, opt, co, solver);
+  IdentifiedModel id = identify_and_certify(problem, opt, co, solver);
   if (!id.bounds.verified()) {
     ref.klass.reason = "lpvid's own identification was not certified";
     return ref;
@@ -48,7 +46,7 @@ IdentifiedReference identify_reference(const LpvModel<Rational>& model_q, const 
   ClassBoundOptions cbo;
   cbo.unknowns = opt.unknowns;
   const std::filesystem::path dir(folder);
-  ClassInterval ci = class_interval(id, model_q, model_d, exp_q, exp_d, co, cbo, solver);
+  ClassInterval ci = class_interval(id, problem, co, cbo, solver);
   adopt_class_optimum(id, ci);
   ref.klass = class_reference(ci, dir, written);
   ref.verified = true;

@@ -14,6 +14,7 @@
 #include "certify/certify.h"
 #include "data/experiment.h"
 #include "model/lpv_model.h"
+#include "model/problem.h"
 #include "oracle/judge.h"
 #include "solvers/sdp_solver.h"
 
@@ -31,9 +32,7 @@ struct IdentifiedReference {
 /// class lower end, the certificates written to `folder` as
 /// lpvid.identify.cert.json and lpvid.class.json, their bytes added to
 /// `written`.
-IdentifiedReference identify_reference(const LpvModel<Rational>& model_q, const LpvModel<double>& model_d,
-                                       const Experiment<Rational>& exp_q, const Experiment<double>& exp_d,
-                                       const CertifyOptions& certify, SdpSolver& solver, const std::string& folder,
-                                       WrittenFiles& written);
+IdentifiedReference identify_reference(const Problem& problem, const CertifyOptions& certify, SdpSolver& solver,
+                                       const std::string& folder, WrittenFiles& written);
 
 }  // namespace lpvid

@@ -33,8 +33,8 @@ using gen::ScratchDir;
 
 struct OffsetCase {
   LpvModel<double> declared;
-  Experiment<double> est_d, selection, test;
-  Experiment<Rational> est_q;
+  ExperimentViews est;  ///< each view read from the file
+  Experiment<double> selection, test;
   std::string data;
 };
 
@@ -44,8 +44,8 @@ OffsetCase offset_case(const ScratchDir& dir) {
   o.data = dir.file("est.csv");
   gen::write_experiment_csv(o.data, c.declared, c.estimation);
   o.declared = convert_model<double>(c.declared);
-  o.est_q = gen::read_experiment<Rational>(o.data, c.declared);
-  o.est_d = gen::read_experiment<double>(o.data, o.declared);
+  o.est.exp_q = gen::read_experiment<Rational>(o.data, c.declared);
+  o.est.exp_d = gen::read_experiment<double>(o.data, o.declared);
   // the validation record of the case, cut in two: selection, then test
   const Experiment<double> val = nearest_double(c.validation);
   o.selection = select_rows(val, 0, 100);
@@ -75,7 +75,7 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   const OffsetCase c = offset_case(dir);
   auto solver = make_solver("csdp");
 
-  DiagnoseResult r = diagnose(c.declared, c.est_d, c.est_q, c.selection, {c.test}, options(c), *solver);
+  DiagnoseResult r = diagnose(c.declared, c.est, c.selection, {c.test}, options(c), *solver);
   cli::write_diagnose_certificates(r, dir.file("a.json"));  // as lpvid diagnose names them
   ASSERT_EQ(r.rank.chosen.size(), 1u);
   EXPECT_EQ(r.rank.chosen.front().kind, "output_offset");
@@ -120,7 +120,7 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   const RankingRound& first = r.rank.rounds.front();
   ASSERT_GE(first.chosen, 0);
   EXPECT_GT(r.estimation_shares[0][static_cast<size_t>(first.chosen)], 0.5);
-  ASSERT_EQ(r.estimation_after.rows(), c.est_d.n());
+  ASSERT_EQ(r.estimation_after.rows(), c.est.exp_d.n());
 
   // the test role: the chosen models' free-run RMS, computed here again
   ASSERT_EQ(r.tests.size(), 1u);
@@ -135,7 +135,7 @@ TEST(Diagnose, FindsTheOffsetAndTheTestSetChoosesNothing) {
   Experiment<double> wrong = c.test;
   wrong.y *= 10.0;
   for (const std::vector<Experiment<double>>& t : {std::vector<Experiment<double>>{wrong, c.test}, std::vector<Experiment<double>>{}}) {
-    const DiagnoseResult s = diagnose(c.declared, c.est_d, c.est_q, c.selection, t, options(c), *solver);
+    const DiagnoseResult s = diagnose(c.declared, c.est, c.selection, t, options(c), *solver);
     ASSERT_EQ(s.tests.size(), t.size());
     ASSERT_EQ(s.rank.chosen.size(), 1u);
     EXPECT_EQ(s.rank.chosen.front().label, r.rank.chosen.front().label);
@@ -158,14 +158,14 @@ TEST(Diagnose, BadOptionsAreRefusedBeforeAnyWork) {
   auto solver = make_solver("csdp");
   DiagnoseOptions o = options(c);
   o.windows = {{150, 250}};  // the estimation record has 200 rows
-  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {}, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est, c.selection, {}, o, *solver), InputError);
   o = options(c);
   o.threads = 2;  // no solver factory
-  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {}, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est, c.selection, {}, o, *solver), InputError);
   o = options(c);
   const Experiment<double> short_sel = select_rows(c.selection, 0, 6);
-  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, short_sel, {}, o, *solver), InputError);
-  EXPECT_THROW(diagnose(c.declared, c.est_d, c.est_q, c.selection, {c.test, short_sel}, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est, short_sel, {}, o, *solver), InputError);
+  EXPECT_THROW(diagnose(c.declared, c.est, c.selection, {c.test, short_sel}, o, *solver), InputError);
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.before.json")));
 }
 

@@ -117,7 +117,7 @@ CertifiedTruth certify_truth(const EffectCase& c, const ScratchDir& dir, Eigen::
   co.data = read_data_table(data).reference;
   co.max_taps = 16;
   auto solver = make_solver("csdp");
-  const WindowBounds w = certify_window(truth, est_d, est_q, begin, end, 0, co, *solver);
+  const WindowBounds w = certify_window(truth, ExperimentViews{est_q, est_d}, begin, end, 0, co, *solver);
   return {w, write_certificates(w.bounds, dir.file("cert.json")).certificate};
 }
 

@@ -19,8 +19,7 @@ namespace {
 
 struct Diverging {
   LpvModel<double> model;
-  Experiment<double> d;
-  Experiment<Rational> q;
+  ExperimentViews est;  ///< the double view converted from the exact one
 };
 
 Diverging diverging_case(uint64_t seed) {
@@ -31,7 +30,7 @@ Diverging diverging_case(uint64_t seed) {
   c.model.A = ParamMatrix<Rational>(c.model.nx, c.model.nx);
   c.model.A.add(constant_monomial(c.model.scheduling.size()),
                 Mat<Rational>(Mat<Rational>::Identity(c.model.nx, c.model.nx) * Rational(1000)));
-  return {convert_model<double>(c.model), gen::to_double_experiment(c.exp), c.exp};
+  return {convert_model<double>(c.model), {c.exp, gen::to_double_experiment(c.exp)}};
 }
 
 CertifyOptions weighted() {
@@ -45,7 +44,7 @@ TEST(FinishedWork, AWindowThatCannotBeCertifiedIsNotVerifiedWithItsReason) {
     const Diverging c = diverging_case(seed);
     auto solver = make_solver("csdp");
     WindowBounds w;
-    ASSERT_NO_THROW(w = certify_window(c.model, c.d, c.q, 0, c.d.n(), 0, weighted(), *solver));
+    ASSERT_NO_THROW(w = certify_window(c.model, c.est, 0, c.est.exp_d.n(), 0, weighted(), *solver));
     EXPECT_FALSE(w.bounds.verified());
     EXPECT_NE(w.bounds.reason.find("certification failed on this window"), std::string::npos) << w.bounds.reason;
     EXPECT_NE(w.bounds.reason.find("no solver was called"), std::string::npos) << w.bounds.reason;
@@ -56,9 +55,9 @@ TEST(FinishedWork, AFailedTheorem31StageIsThatStagesFailure) {
   for (uint64_t seed : {1u, 2u, 3u}) {
     const Diverging c = diverging_case(seed);
     auto solver = make_solver("csdp");
-    EXPECT_ANY_THROW(identify_on_window(c.model, c.d, c.q, 0, c.d.n(), 0, weighted(), *solver));
+    EXPECT_ANY_THROW(identify_on_window(c.model, c.est, 0, c.est.exp_d.n(), 0, weighted(), *solver));
     WindowIdentification id;
-    ASSERT_NO_THROW(id = try_identify_on_window(c.model, c.d, c.q, 0, c.d.n(), 0, weighted(), *solver));
+    ASSERT_NO_THROW(id = try_identify_on_window(c.model, c.est, 0, c.est.exp_d.n(), 0, weighted(), *solver));
     EXPECT_TRUE(id.applicable);
     EXPECT_NE(id.failed.find("optional Theorem 3.1 stage failed"), std::string::npos) << id.failed;
     EXPECT_NE(id.failed.find("Theorem 3.1"), std::string::npos);

@@ -194,7 +194,8 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
   ASSERT_EQ(c.roles.records.size(), 2u);
   ASSERT_EQ(c.roles.est_d.records, (std::vector<Eigen::Index>{c.n, c.n}));
   auto solver = make_solver("csdp");
-  const DiagnoseResult r = diagnose(c.declared, c.roles.est_d, c.roles.est_q, Experiment<double>{}, c.tests, c.options, *solver);
+  const DiagnoseResult r = diagnose(c.declared, ExperimentViews{c.roles.est_q, c.roles.est_d}, Experiment<double>{},
+                                    c.tests, c.options, *solver);
   // the plant's effect, declared by the analogue
   ASSERT_FALSE(r.rank.chosen.empty());
   EXPECT_EQ(r.rank.chosen.front().kind, "abs_value");
@@ -255,8 +256,8 @@ TEST(SeveralRecordsDiagnose, JointBoundCertificateListsBothRecordsAndVerifies) {
   TwoRecords c;
   auto solver = make_solver("csdp");
   CertifyOptions o = diagnose_policy(c.options.certify);
-  WindowBounds w = certify_joint_window(c.declared, c.roles.est_d, c.roles.est_q, {{c.n - 100, c.n}, {c.n, c.n + 100}},
-                                        c.options.record_data, o, *solver);
+  WindowBounds w = certify_joint_window(c.declared, ExperimentViews{c.roles.est_q, c.roles.est_d},
+                                        {{c.n - 100, c.n}, {c.n, c.n + 100}}, c.options.record_data, o, *solver);
   ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   cli::write_window_certificate(w, c.dir.file("c.json"), 0, 1, false);
   std::ifstream f(w.certificate);

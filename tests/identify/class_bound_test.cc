@@ -62,7 +62,8 @@ ClassRun run_class(const IdentCase& c, const BoundObjective& objective, const Ve
   o.unknowns.offset = false;
   o.max_leaves = leaves;
   o.box_fraction = box;
-  ClassRun run{class_lower_bound(c.model, convert_model<double>(c.model), c.exp, exp_d, centre, co, o), dir.file("class.json")};
+  ClassRun run{class_lower_bound(Problem{c.model, convert_model<double>(c.model), c.exp, exp_d}, centre, co, o),
+               dir.file("class.json")};
   if (run.result.certified()) write_certificate_at(*run.result.certificate, run.certificate_file);
   return run;
 }
@@ -107,13 +108,13 @@ struct Identified {
     io.method = IdentifyMethod::kAlternating;
     io.unknowns.offset = offset;
     co = certify_options(io.objective, data);
-    id = identify_and_certify(c.model, model_d, c.exp, exp_d, io, co, *solver);
+    id = identify_and_certify(Problem{c.model, model_d, c.exp, exp_d}, io, co, *solver);
   }
   ClassInterval interval(int leaves) {
     ClassBoundOptions o;
     o.unknowns = io.unknowns;
     o.max_leaves = leaves;
-    ClassInterval ci = class_interval(id, c.model, model_d, c.exp, exp_d, co, o, *solver);
+    ClassInterval ci = class_interval(id, Problem{c.model, model_d, c.exp, exp_d}, co, o, *solver);
     adopt_class_optimum(id, ci);
     return ci;
   }

@@ -77,7 +77,8 @@ ClassBoundResult class_bound_of(const TruthCase& t, const BoundObjective& object
   Vec<double> centre = Vec<double>::Zero(P);
   if (t.truth)
     for (long i = 0; i < P; ++i) centre(i) = nearest_double((*t.truth)(i));
-  return class_lower_bound(t.model, convert_model<double>(t.model), t.exp, nearest_double(t.exp), centre,
+  // the double views rounded from the exact ones
+  return class_lower_bound(Problem{t.model, convert_model<double>(t.model), t.exp, nearest_double(t.exp)}, centre,
                            t.options(objective), o);
 }
 

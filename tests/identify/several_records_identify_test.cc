@@ -111,7 +111,8 @@ Identified identify_records(const Experiment<Rational>& exp_q, bool free_x0, boo
   const LpvModel<double> model_d = convert_model<double>(model_q);
   auto solver = make_solver("csdp");
   const IdentifyOptions io = weighted_identify(free_x0, !true_model);
-  Identified out{identify_and_certify(model_q, model_d, exp_q, nearest_double(exp_q), io,
+  // the double views rounded from the exact ones
+  Identified out{identify_and_certify(Problem{model_q, model_d, exp_q, nearest_double(exp_q)}, io,
                                       record_certify_options(io.objective, exp_q.records.size()), *solver),
                  exp_q};
   return out;
@@ -299,8 +300,9 @@ TEST(SeveralRecordsIdentify, ClassIntervalOverTwoRecordsIsCertified) {
   const LpvModel<Rational> model_q = example1_initial_model();
   auto solver = make_solver("csdp");
   const CertifyOptions co = record_certify_options(weighted_identify(false).objective, 2);
-  ClassInterval ci = class_interval(id, model_q, convert_model<double>(model_q), r.exp_q, nearest_double(r.exp_q), co,
-                                    {}, *solver);
+  // the double views rounded from the exact ones
+  ClassInterval ci = class_interval(
+      id, Problem{model_q, convert_model<double>(model_q), r.exp_q, nearest_double(r.exp_q)}, co, {}, *solver);
   adopt_class_optimum(id, ci);
   ASSERT_TRUE(ci.bound.certified()) << ci.bound.reason;
   EXPECT_LE(ci.bound.lower, id.bounds.upper);

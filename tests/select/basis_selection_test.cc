@@ -44,14 +44,11 @@ std::vector<std::string> texts(const std::vector<Monomial>& b, const std::vector
   return out;
 }
 
-/// Example 1 written as CSV and read back (the CLI's path), both scalars.
-struct Example1Data {
+/// Example 1 written as CSV and read back (the CLI's path), both scalars
+/// (the double model converted from the exact one).
+struct Example1Data : Problem {
   gen::ScratchDir dir{"select"};
   std::string csv;
-  LpvModel<Rational> model_q;
-  LpvModel<double> model_d;
-  Experiment<Rational> exp_q;
-  Experiment<double> exp_d;
   explicit Example1Data(int n) {
     Example1Options o;
     o.n = n;
@@ -202,7 +199,7 @@ TEST(SelectBasis, Example1IteratedFindsTheMissingRho2Squared) {
   o.iterate = true;
   auto solver = make_solver("csdp");
   const BasisSelectionResult r =
-      with_files(select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver), data.dir.file("sel"));
+      with_files(select_basis(data, o, *solver), data.dir.file("sel"));
   for (const BasisStep& s : r.steps)
     std::cout << "  step " << s.index << " " << s.phase << " {" << s.basis_text << "} " << to_string(s.verdict)
               << (s.dmax_relaxation >= 0 ? "  dmax_relax = " + std::to_string(s.dmax_relaxation) : "") << "\n";
@@ -231,7 +228,7 @@ TEST(SelectBasis, Example1PaperRelaxationAtLooserBounds) {
   const BasisSelectionOptions o = data.options("0.05", "0.3");
   auto solver = make_solver("csdp");
   const BasisSelectionResult r =
-      with_files(select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver), data.dir.file("sel"));
+      with_files(select_basis(data, o, *solver), data.dir.file("sel"));
   check_steps(r);
   ASSERT_TRUE(r.found());
   EXPECT_EQ(r.steps.front().verdict, BasisVerdict::kCannotExplain);
@@ -252,7 +249,7 @@ TEST(SelectBasis, SolverInfeasibleWithoutAClassCertificateIsNotDecided) {
   o.klass.max_leaves = 3;
   auto solver = make_solver("csdp");
   const BasisSelectionResult r =
-      with_files(select_basis(data.model_q, data.model_d, data.exp_q, data.exp_d, o, *solver), data.dir.file("sel"));
+      with_files(select_basis(data, o, *solver), data.dir.file("sel"));
   check_steps(r);
   ASSERT_EQ(r.steps.size(), 4u);
   EXPECT_EQ(r.steps[0].verdict, BasisVerdict::kCannotExplain);

@@ -74,7 +74,7 @@ TEST(SelectBasisCertified, ATooSmallAdditiveBasisIsCertifiedUnableToExplainTheDa
     for (const Monomial& m : c.model.correction.basis) o.max_degree = std::max(o.max_degree, m.degree());
     o.certify.data = read_data_table(data).reference;
     auto solver = make_solver("csdp");
-    BasisSelectionResult r = select_basis(c.model, model_d, c.exp, exp_d, o, *solver);
+    BasisSelectionResult r = select_basis(Problem{c.model, model_d, c.exp, exp_d}, o, *solver);
     cli::write_step_certificates(r, dir.file("sel"));
     for (const BasisStep& s : r.steps) {
       std::cout << "  n = " << c.exp.n() << " true basis {" << basis_text(c.model.correction.basis, c.model.scheduling)

@@ -73,7 +73,7 @@ TEST(Tradeoff, Example1CurveIsMonotoneAndCertified) {
   int called = 0;
   o.on_point = [&](const TradeoffPoint&) { ++called; };
   auto solver = make_solver("csdp");
-  std::vector<TradeoffPoint> pts = tradeoff_curve(mq, md, xq, xd, o, *solver);
+  std::vector<TradeoffPoint> pts = tradeoff_curve(Problem{mq, md, xq, xd}, o, *solver);
   cli::write_tradeoff_certificates(pts, dir.file("tr"));  // as lpvid tradeoff names them
   ASSERT_EQ(pts.size(), o.lambdas.size());
   EXPECT_EQ(called, static_cast<int>(pts.size()));

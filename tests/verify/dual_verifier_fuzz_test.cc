@@ -76,10 +76,11 @@ struct GenuineDuals {
     CertifyOptions co;
     co.objective = io.objective;
     co.data = read_data_table(data).reference;
-    IdentifiedModel id = identify_and_certify(model, model_d, exp, exp_d, io, co, solver);
+    const Problem problem{model, model_d, exp, exp_d};
+    IdentifiedModel id = identify_and_certify(problem, io, co, solver);
     ClassBoundOptions o;
     o.max_leaves = 3;
-    const ClassInterval ci = class_interval(id, model, model_d, exp, exp_d, co, o, solver);
+    const ClassInterval ci = class_interval(id, problem, co, o, solver);
     if (!ci.bound.certified()) throw std::runtime_error("no class certificate: " + ci.bound.reason);
     const std::string path = dir.file("class.json");
     write_certificate_at(*ci.bound.certificate, path);
