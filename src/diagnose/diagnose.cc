@@ -311,7 +311,7 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const ExperimentViews&
   for (const RankingRound& rr : out.rank.rounds) out.estimation_shares.push_back(estimation_shares(rr, est_d));
   validation_rms(out.after_model, est_d, out.shown.init_samples, &out.estimation_after);
   set_map_ranges(out, est_d);
-  out.estimation_records = score_records(out.before_model, out.after_model, est_data);  // the data as written
+  out.estimation_records = score_records(out.before_model, out.after_model, est.exp_d);  // the data as written
   if (!out.estimation_after.allFinite()) out.estimation_after.resize(0, 0);
   return out;
 }
