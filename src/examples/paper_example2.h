@@ -21,7 +21,7 @@
 /// The initial model has the LPV part exactly and declares the offset basis
 /// {1, rho1, rho1^2} WITHOUT values: `lpvid identify` identifies φ
 /// (Unknowns::offset). With noise-free data φ = (0.5, 0.8, −0.3) is
-/// recovered (tests/select/example2_test.cc).
+/// recovered (tests/examples/example2_test.cc).
 
 #include <cstdint>
 

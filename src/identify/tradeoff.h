@@ -21,7 +21,7 @@
 /// and to the fact that the models differ between λ's: the certified
 /// re-optimisation can only improve on the relaxation's pair. check_monotone
 /// takes the slack as a parameter; the tests use 1e-3 relative + 1e-6
-/// absolute (tests/select/tradeoff_test.cc). With `iterate` (non-convex
+/// absolute (tests/identify/tradeoff_test.cc). With `iterate` (non-convex
 /// procedure) nothing is guaranteed; the CLI reports violations as notes.
 
 #include <functional>

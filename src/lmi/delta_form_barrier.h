@@ -132,7 +132,7 @@ struct BarrierOptions {
   /// takes half of P = F⁻¹, of the Newton LDLᵀ's column updates and of the
   /// spectra and correlations (lmi/split_factorisations.h). Every number is
   /// computed by the same operations whatever the count: the same iterates,
-  /// bounds and certificates, bit for bit (tests/solvers/barrier_threads_test.cc).
+  /// bounds and certificates, bit for bit (tests/lmi/barrier_threads_test.cc).
   unsigned threads = 0;
 };
 

@@ -11,7 +11,7 @@
 /// the same operations: the split keeps at least two rows per part, since a
 /// one-row product is evaluated as a dot product), so the factors, the
 /// pivots and every solve are bit for bit those of Eigen::LDLT::compute —
-/// tests/solvers/split_factorisations_test.cc checks it. From 256 rows on, on
+/// tests/lmi/split_factorisations_test.cc checks it. From 256 rows on, on
 /// processors with AVX2, the loop runs in panels of 16 columns with the pivot
 /// order found first (split_factorisations.cc says why the bits stay Eigen's).
 /// The Newton system of the structured barrier (lmi/delta_form_barrier.cc)

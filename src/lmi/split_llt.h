@@ -16,7 +16,7 @@
 ///    walks the triangle in column panels of 4, each panel's entries its own
 ///    (a 4 × 4 diagonal block through a buffer, then the rows below); the
 ///    panels are shared between the threads, packed once.
-/// So the factor is bit for bit Eigen's — tests/solvers/split_llt_test.cc
+/// So the factor is bit for bit Eigen's — tests/lmi/split_llt_test.cc
 /// checks it — on one thread or two. Shared only from 1 024 rows on (below,
 /// one thread measured faster here).
 
