@@ -205,7 +205,7 @@ Row run_row(UncertaintyStructure structure, int m, int n, int leaves, double box
   io.unknowns.offset = false;
   CertifyOptions co;
   co.objective = io.objective;
-  co.data = read_data_table(data).reference;
+  co.records = {read_data_table(data).reference};
   co.progress = [tag](const std::string& stage) { std::fprintf(stderr, "  [%s] %s\n", tag.c_str(), stage.c_str()); };
   auto solver = make_solver("csdp");
   const Stopwatch sw;

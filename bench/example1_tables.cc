@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
         Vec<Rational> p(res.p.size());
         for (Eigen::Index i = 0; i < p.size(); ++i) p(i) = round_to_digits(res.p(i), 12);
         CertifyOptions co;
-        co.data = read_data_table(data).reference;
+        co.records = {read_data_table(data).reference};
         const CertifiedBounds b = certify_fixed_model(apply_parameters(mq, res.layout, p), eq, co, *solver);
         using bench::certified_cell;
         std::printf(" | %s %s", certified_cell(b.verified(), b.delta), certified_cell(b.verified(), b.dmax));

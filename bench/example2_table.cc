@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
   // Certifies a model without unknowns and prints its row.
   auto certify_row = [&](const char* name, const LpvModel<Rational>& model, const char* paper, double t_ident) {
     CertifyOptions co;
-    co.data = read_data_table(data).reference;
+    co.records = {read_data_table(data).reference};
     co.lower_end = false;
     co.progress = [](const std::string& line) { std::fprintf(stderr, "[example2_table]   %s\n", line.c_str()); };
     const auto t0 = std::chrono::steady_clock::now();

@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
           CertifyOptions co;
           co.max_taps = taps;
           co.delta_norm = DeltaNorm::kKyp;
-          co.data = read_data_table(data).reference;
+          co.records = {read_data_table(data).reference};
           const LpvModel<Rational> fixed = apply_parameters(mq, res.layout, p);
           const auto t1 = std::chrono::steady_clock::now();
           CertifiedBounds cb;

@@ -115,7 +115,7 @@ Row run(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const 
   CertifyOptions co;
   co.objective.kind = BoundObjective::Kind::kMinDmax;
   co.objective.delta = delta;
-  co.data = read_data_table(data).reference;
+  co.records = {read_data_table(data).reference};
   const std::string upper_file = (dir / (tag + ".interval.json")).string();
   co.progress = [tag](const std::string& stage) { std::fprintf(stderr, "  [%s] %s\n", tag.c_str(), stage.c_str()); };
   StageClock t0;

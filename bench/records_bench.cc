@@ -84,8 +84,6 @@ Row run(const LpvModel<Rational>& model, const std::vector<Experiment<Rational>>
     write_csv(path, experiment_columns(model.columns, records[k]));
     co.records.push_back(read_data_table(path).reference);
   }
-  co.data = co.records.front();
-  if (co.records.size() < 2) co.records.clear();
   co.progress = [tag](const std::string& stage) { std::fprintf(stderr, "  [%s] %s\n", tag.c_str(), stage.c_str()); };
   const Experiment<Rational> exp = stack_records(records);
   row.samples = static_cast<long>(exp.n());

@@ -14,7 +14,7 @@ std::string lower_certificate_path(const std::string& certificate_path) {
 }
 
 void write_certificate_at(const Certificate& c, const std::string& path, WrittenFiles* written) {
-  bool named = c.records.empty() ? !c.data_sha256.empty() : true;
+  bool named = !c.records.empty();
   for (const CertificateRecord& r : c.records) named = named && r.data.has_file();
   if (!named) throw InputError(path + ": the certificate names no data file (its experiment was not read from a file)");
   const std::string text = certificate_json(placed_at(c, path));

@@ -447,7 +447,7 @@ CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment
 
 CertifiedBounds certify_fixed_model_paper(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                           const CertifyOptions& o, SdpSolver& solver) {
-  if (several_records(exp_in.records))
+  if (exp_in.record_count() > 1)
     throw InputError("--toeplitz paper takes one record: its T_z = T_G12 T_u has no meaning across records (use the signal mode)");
   const Stopwatch total;
   CertifiedBounds out = certify_w_form(model, exp_in, o, solver, total);

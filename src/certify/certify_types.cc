@@ -1,5 +1,6 @@
 #include "certify/certify_types.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,13 +26,12 @@ Rational objective_at(const BoundObjective& obj, const Rational& delta2, const R
 
 
 void name_certificate_data(Certificate& c, const CertifyOptions& o, const Experiment<Rational>& exp) {
-  if (o.records.size() < 2) {
-    set_data_reference(c, o.data);
-    return;
-  }
-  if (!several_records(exp.records) || exp.records.size() != o.records.size())
-    throw std::invalid_argument("certification: " + std::to_string(o.records.size()) + " record references for " +
-                                std::to_string(std::max<size_t>(1, exp.records.size())) + " records of data");
+  if (o.records.empty()) return;  // an experiment made in memory: no data named
+  const size_t records = exp.record_count();
+  if (o.records.size() != records)
+    throw std::invalid_argument("certification: " + std::to_string(o.records.size()) + " record reference" +
+                                (o.records.size() == 1 ? "" : "s") + " for " + std::to_string(records) + " record" +
+                                (records == 1 ? "" : "s") + " of data");
   set_record_references(c, o.records, exp.record_x0);
 }
 

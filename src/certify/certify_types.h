@@ -31,11 +31,10 @@ struct CertifyOptions {
   int digits = 12;                       ///< significant digits of rounded taps
   long max_taps = 64;                    ///< K (0: the full horizon); see solve_delta_form
   DeltaNorm delta_norm = DeltaNorm::kToeplitz;
-  /// Where the experiment's rows came from (file, sha256, names, rows),
-  /// copied into every certificate; made where the data was read.
-  DataReference data;
-  /// Several records (two or more, in the order of Experiment::records):
-  /// where each one's rows came from; then `data` is unused.
+  /// Where each record of the experiment came from (file, sha256, names,
+  /// rows), one per record in the order of Experiment::records, made where
+  /// the data was read and copied into every certificate. Empty: an
+  /// experiment made in memory, whose certificates name no data.
   std::vector<DataReference> records;
   /// Also certify the lower end of the optimum (a dual certificate of the
   /// full-horizon problem: CertifiedBounds::lower), and for fixed bounds,
@@ -145,7 +144,8 @@ struct CertifiedBounds {
 };
 
 /// Names the data of a certificate made by certification with `o` on `exp`:
-/// `o.data` (one record) or `o.records` with each record's own x0 (several).
+/// one reference per record of `exp` (several: each with its own x0); none
+/// when `o.records` is empty. Throws std::invalid_argument when the counts differ.
 void name_certificate_data(Certificate& c, const CertifyOptions& o, const Experiment<Rational>& exp);
 
 /// Step 2's objective as the solver gets it: fixed bounds tightened by a

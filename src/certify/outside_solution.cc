@@ -73,7 +73,7 @@ std::string mismatch(const LmiProgram& file, const LmiProgram& expected) {
 
 Theorem21Program theorem21_program(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
                                    const CertifyOptions& options) {
-  if (several_records(exp_in.records))
+  if (exp_in.record_count() > 1)
     throw InputError("an outside solver's program (--write-sdpa, --solution) is written for one record; "
                      "certify several records with lpvid's own solvers");
   const Experiment<Rational> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns

@@ -183,11 +183,9 @@ DiagnoseOptions diagnose_options(const DiagnoseArgs& a, const Inputs& in, const 
   o.windows = bound_windows(a, roles.est_q.n());
   o.max_windows = static_cast<size_t>(a.max_windows);
   o.certify = diagnose_policy(certify_options(a.common, in));
-  o.certify.data = roles.data;  // the bytes est_q was parsed from; rows: set per window
+  o.certify.records.clear();  // the bytes est_q was parsed from, each record's rows as read (after any holdout)
+  for (const EstimationRecord& r : roles.records) o.certify.records.push_back(r.data);
   o.certify.lower_end = a.lower_ends;
-  o.file_row_offset = roles.file_offset;
-  if (roles.records.size() > 1)
-    for (const EstimationRecord& r : roles.records) o.record_data.push_back(r.data);
   o.on_bound = [certificates](WindowBounds& w, size_t window, size_t windows, bool after) {
     write_window_certificate(w, certificates, window, windows, after);
   };
@@ -211,7 +209,7 @@ DiagnoseReport diagnose_report(const DiagnoseArgs& a, const RoleRecords& roles, 
   ri.folds = by_folds;
   ri.fold_warmup = warmup;
   ri.test_warmup = warmup;
-  ri.file_row_offset = roles.file_offset;
+  ri.file_row_offset = roles.records.front().data.row_begin;
   ri.validation_outputs = roles.selection.outputs;
   ri.records = roles.records;
   ri.plots_dir = a.plots_dir;

@@ -150,6 +150,7 @@ std::vector<RecordOption> pair_data_and_rows(const std::vector<std::string>& pat
   std::vector<RecordOption> out;
   size_t d = 0, r = 0, x = 0;
   for (const char c : order) {
+    if (c == 'x' && x0s.empty()) continue;  // this command's --x0 is not per record (compare: model|fit)
     if (c == 'd') {
       out.push_back({paths.at(d++), "", ""});
       continue;
@@ -255,7 +256,6 @@ void stack_into(const std::vector<LoadedRecord>& recs, Inputs& in) {
   }
   in.exp_q = stack_records(qs);
   in.exp_d = stack_records(ds);
-  in.data = in.records.front();
   set_initial_states(recs, in);
 }
 
@@ -333,8 +333,7 @@ void print_options(const CommonOptions& o, const Inputs& in, const std::string& 
 CertifyOptions certify_options(const CommonOptions& c, const Inputs& in) {
   CertifyOptions co;
   co.objective = in.objective;
-  co.data = in.data;
-  if (in.records.size() >= 2) co.records = in.records;
+  co.records = in.records;
   co.solver.verbose = c.verbose;
   co.max_taps = c.max_taps;
   co.dense_dual = c.dense_dual;

@@ -66,8 +66,9 @@ void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds);
 struct Inputs : Problem {
   ToeplitzMode mode = ToeplitzMode::kSignal;
   BoundObjective objective;
-  DataReference data;  ///< where exp_q's rows came from (file, sha256, --names, --rows); several records: the first
-  std::vector<DataReference> records;  ///< one per record, in order (one record: {data})
+  /// Where each record's rows came from (file, sha256, --names, --rows),
+  /// one per record in order (at least one).
+  std::vector<DataReference> records;
 };
 
 /// Registers --data and --rows, both repeatable, on `app`; after parsing,
@@ -78,7 +79,8 @@ void add_data_and_rows(CLI::App& app, std::vector<std::string>& paths, std::vect
 
 /// Each --data with the --rows and --x0 after it (`order` as
 /// add_data_and_rows records it, 'x' per --x0). One --data: its --rows and
-/// --x0 anywhere (at most one each). Throws InputError for a --rows or --x0
+/// --x0 anywhere (at most one each). `x0s` empty: the command's --x0 is not
+/// per record (compare's model|fit) and its place is ignored. Throws InputError for a --rows or --x0
 /// before the first --data or two of them for one --data.
 std::vector<RecordOption> pair_data_and_rows(const std::vector<std::string>& paths, const std::vector<std::string>& rows,
                                              const std::string& order, const std::vector<std::string>& x0s = {});

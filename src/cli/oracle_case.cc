@@ -217,7 +217,7 @@ void judge_case(CaseSetup& s, const OracleAnswer& answer, const LpvModel<Rationa
                 const IdentifiedReference& identified, const OracleCaseOptions& o, const fs::path& mine) {
   CaseReport& rep = s.rep;
   const WitnessResult witness =
-      judge_witness(s.task, answer, judged, s.in.data, s.in.exp_q, mine.string(), s.held);
+      judge_witness(s.task, answer, judged, s.in.records.front(), s.in.exp_q, mine.string(), s.held);
   ReferenceResult ref =
       reference_of(b, s.in.objective, write_certificates(b, (mine / "lpvid.cert.json").string(), &s.held));
   ref.identified_verified = identified.verified;

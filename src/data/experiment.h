@@ -25,9 +25,11 @@ struct Experiment {
   Mat<T> u, y, rho;
   /// Several records (experiments) of one system stacked row-wise
   /// (toeplitz/record_segments.h): record k is the rows [start_k, start_k +
-  /// records[k]). Empty: one record of all rows. The model is simulated
-  /// record by record, each from its own initial state, and Δ acts on each
-  /// record from rest (docs/several_records.md).
+  /// records[k]). Empty: one record of all rows (how one file's data is
+  /// stored); read it through record_lengths() and record_count(), which
+  /// always name at least one record. The model is simulated record by
+  /// record, each from its own initial state, and Δ acts on each record from
+  /// rest (docs/several_records.md).
   std::vector<Eigen::Index> records;
   /// Record k's own initial state (an empty vector: the model's x0). Empty
   /// list: the model's x0 for every record.
@@ -36,6 +38,10 @@ struct Experiment {
   Eigen::Index nu() const { return u.cols(); }
   Eigen::Index ny() const { return y.cols(); }
   Eigen::Index n_rho() const { return rho.cols(); }
+  /// The records' lengths, at least one (all rows when `records` is empty).
+  std::vector<Eigen::Index> record_lengths() const { return records.empty() ? std::vector<Eigen::Index>{n()} : records; }
+  /// How many records, at least one.
+  size_t record_count() const { return records.empty() ? 1 : records.size(); }
 };
 
 /// The same experiment with every number rounded to the nearest double

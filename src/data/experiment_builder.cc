@@ -99,10 +99,10 @@ Experiment<T> select_rows(const Experiment<T>& exp, Eigen::Index begin, Eigen::I
   out.u = exp.u.middleRows(begin, len);
   out.y = exp.y.middleRows(begin, len);
   out.rho = exp.rho.middleRows(begin, len);
-  if (exp.records.empty() && exp.record_x0.empty()) return out;
+  if (exp.record_count() == 1 && exp.record_x0.empty()) return out;
   // Stacked records: the parts of the records inside the window stay records;
   // a record keeps its own x0 only when the window starts at its first row.
-  const std::vector<Eigen::Index> lengths = exp.records.empty() ? std::vector<Eigen::Index>{exp.n()} : exp.records;
+  const std::vector<Eigen::Index> lengths = exp.record_lengths();
   Eigen::Index first = 0;
   bool any_x0 = false;
   std::vector<Vec<T>> x0;

@@ -181,7 +181,7 @@ void announce_bound_cost(const std::vector<RowWindow>& windows, const LpvModel<d
 /// The bound windows as joint windows (diagnose/record_windows.h): one
 /// piece each for one record, the records' windows side by side for several.
 std::vector<JointWindow> bound_windows(const Experiment<double>& est_d, const DiagnoseOptions& options) {
-  if (options.record_data.size() < 2) {
+  if (est_d.record_count() == 1) {
     std::vector<JointWindow> out;
     for (const RowWindow& w :
          spread_windows(options.windows.empty() ? default_bound_windows(est_d.n()) : options.windows, options.max_windows))
@@ -229,10 +229,7 @@ void certify_windows(DiagnoseResult& out, const std::vector<JointWindow>& window
     auto own = threads > 1 ? options.make_solver() : nullptr;
     WindowBounds& w = (after ? out.after : out.before)[i];
     const LpvModel<double>& model = after ? out.after_model : out.before_model;
-    w = options.record_data.size() < 2
-            ? certify_window(model, est, windows[i][0].first, windows[i][0].second, options.file_row_offset,
-                             options.certify, own ? *own : solver)
-            : certify_joint_window(model, est, windows[i], options.record_data, options.certify, own ? *own : solver);
+    w = certify_joint_window(model, est, windows[i], options.certify, own ? *own : solver);
     if (options.on_bound) options.on_bound(w, i, windows.size(), after);
     if (options.ranking.progress) {
       const std::lock_guard<std::mutex> lock(report);
@@ -300,8 +297,7 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const ExperimentViews&
   if (options.ranking.progress) options.ranking.progress("Theorem 3.1 on the first window, before and after");
   // optional: a failure here is this stage's (WindowIdentification::failed); every result above stands
   for (auto [model, id] : {std::pair{&out.before_model, &out.before_id}, std::pair{&out.after_model, &out.after_id}}) {
-    *id = try_identify_on_window(*model, views, windows[0][0].first, windows[0][0].second, options.file_row_offset,
-                                 options.certify, solver);
+    *id = try_identify_on_window(*model, views, windows[0][0].first, windows[0][0].second, options.certify, solver);
     if (!id->failed.empty() && options.ranking.progress) options.ranking.progress(id->failed + " (the diagnosis stands)");
   }
   // 4. the test role

@@ -57,8 +57,11 @@ struct DiagnoseOptions {
   /// default windows.
   size_t max_windows = 0;
   /// Options of every certificate, with diagnose's policy (diagnose_policy)
-  /// by default. The certificates stay in the result (WindowBounds::bounds);
-  /// the front end names and writes them.
+  /// by default. `certify.records` is where each estimation record's rows are
+  /// in its file (its window as read), in stacking order: every certificate
+  /// names the file rows of its window (several records: of each piece of a
+  /// joint window, diagnose/record_windows.h). The certificates stay in the
+  /// result (WindowBounds::bounds); the front end names and writes them.
   CertifyOptions certify = diagnose_policy(CertifyOptions{});
   /// Called from the certifying job's thread as soon as a window's bound is
   /// certified (`window` of `windows`, before or after): a front end writes
@@ -66,13 +69,6 @@ struct DiagnoseOptions {
   /// progress line then shows), so that files appear as the run goes. Unset:
   /// nothing is written.
   std::function<void(WindowBounds& w, size_t window, size_t windows, bool after)> on_bound;
-  long file_row_offset = 0;  ///< data-file row of estimation sample 0 (certificates name file rows)
-  /// Several estimation records (est_d.records): where each record's rows
-  /// are in its file (its window as read), in stacking order; the bounds are
-  /// then certified on joint windows (diagnose/record_windows.h), each one
-  /// claim over its records with a certificate naming every record. Empty:
-  /// one record, `certify.data` and `file_row_offset` name it.
-  std::vector<DataReference> record_data;
   /// Windows certified at once; > 1 needs `make_solver` (one backend per
   /// job). Results do not depend on it.
   unsigned threads = 1;

@@ -136,8 +136,6 @@ RoleRecords load_role_records(const RolePlan& plan, const LpvModel<double>& decl
   RoleRecords out;
   std::vector<ReadRecord> recs{read_estimation(plan.data_path, plan.names, plan.rows, declared)};
   for (const RecordSource& m : plan.more_data) recs.push_back(read_estimation(m.path, m.names, m.rows, declared));
-  out.data = recs[0].file;
-  out.file_offset = recs[0].offset;
   if (plan.selection == SelectionRole::kHoldout) out.selection = hold_out_tails(plan, recs);
   stack_estimation(recs, out);
   if (plan.selection == SelectionRole::kFolds) out.selection = last_fold_block(plan, out);

@@ -70,15 +70,14 @@ struct EstimationRecord {
 };
 
 struct RoleRecords {
-  DataReference data;                ///< the estimation file as read (its sha256 names the certificates' data)
-  long file_offset = 0;              ///< file row of estimation sample 0
   Experiment<Rational> est_q;        ///< the fitted rows, exactly
   Experiment<double> est_d;          ///< the same rows
   RoleRecord selection;              ///< kFolds: the last block (shown, not a separate record)
   std::vector<RoleRecord> tests;
   std::string estimation_text;       ///< "file rows a:b (fit: …)"
-  /// Every estimation record in stacking order (one: `data` with its window);
-  /// est_q/est_d hold them stacked (Experiment::records) after any holdout.
+  /// Every estimation record in stacking order (at least one), each with its
+  /// file rows after any holdout (its sha256 names the certificates' data);
+  /// est_q/est_d hold them stacked (Experiment::records).
   std::vector<EstimationRecord> records;
 };
 

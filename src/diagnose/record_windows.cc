@@ -1,6 +1,10 @@
 #include "diagnose/record_windows.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/input_error.h"
 
 namespace lpvid {
 
@@ -11,6 +15,26 @@ std::pair<size_t, Eigen::Index> record_of_row(const std::vector<Eigen::Index>& r
     first += records[k];
   }
   return {records.empty() ? 0 : records.size() - 1, records.empty() ? 0 : first - records.back()};
+}
+
+DataReference piece_reference(const std::vector<DataReference>& references, const std::vector<Eigen::Index>& records,
+                              const RowWindow& piece) {
+  const auto [b, e] = piece;
+  const auto [k, first] = record_of_row(records, b);
+  if (!records.empty() && e > first + records[k])
+    throw InputError("rows " + std::to_string(b) + ":" + std::to_string(e) + " cross the end of record " +
+                     std::to_string(k + 1) + " (rows " + std::to_string(first) + ":" + std::to_string(first + records[k]) +
+                     " of the stacked records)");
+  if (references.empty()) {
+    DataReference none;
+    none.row_begin = static_cast<long>(b);
+    none.row_end = static_cast<long>(e);
+    return none;
+  }
+  if (references.size() != std::max<size_t>(1, records.size()))
+    throw std::invalid_argument(std::to_string(references.size()) + " record references for " +
+                                std::to_string(std::max<size_t>(1, records.size())) + " records");
+  return references[k].rows(static_cast<long>(b - first), static_cast<long>(e - first));
 }
 
 std::vector<JointWindow> joint_windows(Eigen::Index n, const std::vector<Eigen::Index>& records,

@@ -13,6 +13,7 @@
 /// One record: every window is one piece, as before.
 #include <vector>
 
+#include "data/data_reference.h"
 #include "diagnose/bound_windows.h"
 
 namespace lpvid {
@@ -26,5 +27,13 @@ std::vector<JointWindow> joint_windows(Eigen::Index n, const std::vector<Eigen::
 
 /// The record (index into the lengths) that holds stacked row `row`, and its first row.
 std::pair<size_t, Eigen::Index> record_of_row(const std::vector<Eigen::Index>& records, Eigen::Index row);
+
+/// Where the stacked rows `piece` are in their file: the rows of the record
+/// that holds them, as a window of that record's reference (`references[k]`:
+/// record k's rows as read, one per record). No references (data made in
+/// memory): a reference without a file whose rows are the stacked rows.
+/// Throws InputError when the piece is not inside one record.
+DataReference piece_reference(const std::vector<DataReference>& references, const std::vector<Eigen::Index>& records,
+                              const RowWindow& piece);
 
 }  // namespace lpvid

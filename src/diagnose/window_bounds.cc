@@ -41,7 +41,7 @@ LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0)
 }
 
 WindowBounds certify_window(const LpvModel<double>& model, const ExperimentViews& est, Eigen::Index begin,
-                            Eigen::Index end, long file_row_offset, CertifyOptions options, SdpSolver& solver) {
+                            Eigen::Index end, CertifyOptions options, SdpSolver& solver) {
   const auto& [est_q, est_d] = est;
   if (begin < 0 || end <= begin || end > est_q.n())
     throw InputError("bound window " + std::to_string(begin) + ":" + std::to_string(end) + " is outside the " +
@@ -49,10 +49,10 @@ WindowBounds certify_window(const LpvModel<double>& model, const ExperimentViews
   WindowBounds w;
   w.begin = begin;
   w.end = end;
-  w.file_begin = file_row_offset + static_cast<long>(begin);
-  w.file_end = file_row_offset + static_cast<long>(end);
-  options.data.row_begin = w.file_begin;
-  options.data.row_end = w.file_end;
+  const DataReference rows = piece_reference(options.records, est_q.records, {begin, end});
+  w.file_begin = rows.row_begin;
+  w.file_end = rows.row_end;
+  if (!options.records.empty()) options.records = {rows};  // the certificate names the window's file rows
   try {
     const Simulation<double> sim = simulate(model, est_d);
     const Vec<double> xb = model.nx > 0 ? Vec<double>(sim.x.row(begin).transpose()) : Vec<double>();
@@ -98,16 +98,9 @@ Experiment<Rational> joint_data(const LpvModel<double>& model, const Experiment<
 }  // namespace
 
 WindowBounds certify_joint_window(const LpvModel<double>& model, const ExperimentViews& est,
-                                  const std::vector<RowWindow>& pieces, const std::vector<DataReference>& record_data,
-                                  CertifyOptions options, SdpSolver& solver) {
+                                  const std::vector<RowWindow>& pieces, CertifyOptions options, SdpSolver& solver) {
   const auto& [est_q, est_d] = est;
-  if (pieces.size() == 1) {
-    const auto [k, first] = record_of_row(est_d.records, pieces[0].first);
-    if (record_data.empty()) return certify_window(model, est, pieces[0].first, pieces[0].second, 0, options, solver);
-    options.data = record_data[k];  // its file; certify_window sets the rows
-    return certify_window(model, est, pieces[0].first, pieces[0].second,
-                          record_data[k].row_begin - static_cast<long>(first), options, solver);
-  }
+  if (pieces.size() == 1) return certify_window(model, est, pieces[0].first, pieces[0].second, options, solver);
   for (const auto& [b, e] : pieces)
     if (b < 0 || e <= b || e > est_q.n())
       throw InputError("bound window " + std::to_string(b) + ":" + std::to_string(e) + " is outside the " +
@@ -116,8 +109,7 @@ WindowBounds certify_joint_window(const LpvModel<double>& model, const Experimen
   w.pieces = pieces;
   Mat<double> y(0, est_d.ny());
   for (const auto& [b, e] : pieces) {
-    const auto [k, first] = record_of_row(est_d.records, b);
-    w.records.push_back(record_data.at(k).rows(static_cast<long>(b - first), static_cast<long>(e - first)));
+    w.records.push_back(piece_reference(options.records, est_d.records, {b, e}));
     y.conservativeResize(y.rows() + (e - b), Eigen::NoChange);
     y.bottomRows(e - b) = est_d.y.middleRows(b, e - b);
   }

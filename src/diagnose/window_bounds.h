@@ -62,21 +62,20 @@ LpvModel<double> round_fitted_model(const LpvModel<double>& m, int digits = Cert
 LpvModel<Rational> exact_model(const LpvModel<double>& m, const Vec<double>& x0);
 
 /// Certifies `model` (fitted on `est.exp_d` with x0 at sample 0) on the
-/// estimation rows [begin, end) of `est.exp_q`. `options.data` (its rows set
-/// to the window's), `objective`, `solver`, `max_taps` are used as given;
-/// `file_row_offset` is the data-file row of estimation sample 0.
+/// estimation rows [begin, end) of `est.exp_q`, which lie inside one record.
+/// `options.records` (one reference per estimation record, each its rows as
+/// read; empty: no file) is narrowed to the window's file rows
+/// (piece_reference); `objective`, `solver`, `max_taps` are used as given.
 WindowBounds certify_window(const LpvModel<double>& model, const ExperimentViews& est, Eigen::Index begin,
-                            Eigen::Index end, long file_row_offset, CertifyOptions options, SdpSolver& solver);
+                            Eigen::Index end, CertifyOptions options, SdpSolver& solver);
 
 /// Theorem 2.1 on a joint window of stacked records: ONE claim (one Δ, one
 /// noise bound) over its pieces, each a record of its own, certified from the
 /// model's state at the piece's first row (simulated record by record from
-/// the fitted x0) with CertifyOptions::records naming each piece's file rows.
-/// `record_data[k]` is where estimation record k's rows are in its file (the
-/// window that was read); `records` are the estimation records' lengths. One
-/// piece: certify_window.
+/// the fitted x0). `options.records` is where each estimation record's rows
+/// are in its file (the window that was read); the certificate names each
+/// piece's file rows. One piece: certify_window.
 WindowBounds certify_joint_window(const LpvModel<double>& model, const ExperimentViews& est,
-                                  const std::vector<RowWindow>& pieces, const std::vector<DataReference>& record_data,
-                                  CertifyOptions options, SdpSolver& solver);
+                                  const std::vector<RowWindow>& pieces, CertifyOptions options, SdpSolver& solver);
 
 }  // namespace lpvid

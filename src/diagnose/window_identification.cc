@@ -2,6 +2,7 @@
 
 #include "core/deadline.h"
 #include "data/experiment_builder.h"
+#include "diagnose/record_windows.h"
 #include "toeplitz/affine_residual.h"
 #include "identify/fix_and_certify.h"
 #include "model/problem.h"
@@ -10,7 +11,7 @@
 namespace lpvid {
 
 WindowIdentification identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est, Eigen::Index begin,
-                                        Eigen::Index end, long file_row_offset, const CertifyOptions& options,
+                                        Eigen::Index end, const CertifyOptions& options,
                                         SdpSolver& solver) {
   const auto& [est_q, est_d] = est;
   WindowIdentification out;
@@ -43,11 +44,11 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   out.applicable = true;
   out.bounds.begin = begin;
   out.bounds.end = end;
-  out.bounds.file_begin = file_row_offset + static_cast<long>(begin);
-  out.bounds.file_end = file_row_offset + static_cast<long>(end);
+  const DataReference rows = piece_reference(options.records, est_q.records, {begin, end});
+  out.bounds.file_begin = rows.row_begin;
+  out.bounds.file_end = rows.row_end;
   CertifyOptions co = options;
-  co.data.row_begin = out.bounds.file_begin;
-  co.data.row_end = out.bounds.file_end;
+  if (!co.records.empty()) co.records = {rows};  // the certificate names the window's file rows
   co.lower_end = false;  // the diagnose report states δ, d_max here, not the interval
   IdentifiedModel id = identify_and_certify(window, io, co, solver);
   out.result = std::move(id.fit);
@@ -62,10 +63,11 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
 }
 
 WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est,
-                                            Eigen::Index begin, Eigen::Index end, long file_row_offset,
+                                            Eigen::Index begin, Eigen::Index end,
                                             const CertifyOptions& options, SdpSolver& solver) {
+  const DataReference rows = piece_reference(options.records, est.exp_q.records, {begin, end});
   try {
-    return identify_on_window(fitted, est, begin, end, file_row_offset, options, solver);
+    return identify_on_window(fitted, est, begin, end, options, solver);
   } catch (const RunStopped&) {
     throw;  // the user's --timeout or a requested stop ends the run, not a window or a stage
   } catch (const std::exception& e) {
@@ -74,8 +76,8 @@ WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, cons
     failed.failed = std::string("the optional Theorem 3.1 stage failed: ") + e.what();
     failed.bounds.begin = begin;
     failed.bounds.end = end;
-    failed.bounds.file_begin = file_row_offset + static_cast<long>(begin);
-    failed.bounds.file_end = file_row_offset + static_cast<long>(end);
+    failed.bounds.file_begin = rows.row_begin;
+    failed.bounds.file_end = rows.row_end;
     failed.bounds.bounds.reason = failed.failed;
     return failed;
   }

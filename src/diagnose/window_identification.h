@@ -31,14 +31,14 @@ struct WindowIdentification {
 };
 
 WindowIdentification identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est, Eigen::Index begin,
-                                        Eigen::Index end, long file_row_offset, const CertifyOptions& options,
+                                        Eigen::Index end, const CertifyOptions& options,
                                         SdpSolver& solver);
 
 /// identify_on_window, as an optional stage: an exception (a diverging free
 /// run, a solver or numeric failure) becomes `failed` = "the optional Theorem
 /// 3.1 stage failed: <reason>" instead of ending the caller's work.
 WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est,
-                                            Eigen::Index begin, Eigen::Index end, long file_row_offset,
+                                            Eigen::Index begin, Eigen::Index end,
                                             const CertifyOptions& options, SdpSolver& solver);
 
 }  // namespace lpvid

@@ -60,7 +60,7 @@ Vec<double> residual_or_huge(const Vec<double>& v, Eigen::Index m) {
 
 /// One record from the model's own x0 (no record list): what
 /// simulate_one_record simulates as simulate() would.
-bool single_record(const Experiment<double>& exp) { return exp.records.size() <= 1 && exp.record_x0.empty(); }
+bool single_record(const Experiment<double>& exp) { return exp.record_count() == 1 && exp.record_x0.empty(); }
 
 /// Whether a slot moves only the output map (C, D, the output offset, the
 /// output block): the states and the scheduling do not depend on it.

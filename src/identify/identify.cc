@@ -93,7 +93,7 @@ IdentifyResult identify(const LpvModel<double>& model, const Experiment<double>&
   const Experiment<double> exp = with_state_scheduling(model, exp_in);  // "@x<i>" columns
   options.objective.validate();
   if (options.method == IdentifyMethod::kAlternating) return identify_alternating(model, exp, options, solver);
-  if (several_records(exp.records)) return identify_records_alternating(model, exp, options, solver);
+  if (exp.record_count() > 1) return identify_records_alternating(model, exp, options, solver);
   ReducedProblem rp = reduce_problem(model, exp, options.unknowns);
   IdentifyResult out;
   out.layout = rp.residual.layout;

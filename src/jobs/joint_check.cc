@@ -28,8 +28,8 @@ std::string joint_record_mismatch(const PlannedClaim& p, const JobWindow& w, siz
 
 std::string joint_mismatch(const PlannedClaim& p, const JobPlan& plan, const LpvModel<Rational>& model,
                            const Certificate& c) {
-  if (c.records.size() != plan.windows.size())
-    return "names " + std::to_string(c.records.empty() ? 1 : c.records.size()) + " record(s), the plan's joint claim has " +
+  if (c.records.size() < 2 || c.records.size() != plan.windows.size())
+    return "names " + std::to_string(c.records.size()) + " record(s), the plan's joint claim has " +
            std::to_string(plan.windows.size()) + " (one per window)";
   for (size_t k = 0; k < c.records.size(); ++k)
     if (std::string why = joint_record_mismatch(p, plan.windows[k], k, c.records[k]); !why.empty()) return why;

@@ -201,9 +201,12 @@ LpvModel<Rational> window_model(const LpvModel<Rational>& planned, const JobWind
 
 std::string plan_mismatch(const PlannedClaim& p, const JobWindow& w, const LpvModel<Rational>& model,
                           const Certificate& c, WindowFile file) {
-  if (c.data_sha256 != p.data_sha256) return "made from other data (sha256 " + c.data_sha256 + ")";
-  if (c.row_begin != w.file_begin || c.row_end != w.file_end)
-    return "certifies rows " + std::to_string(c.row_begin) + ":" + std::to_string(c.row_end) + ", not the window's " +
+  if (c.records.size() != 1)
+    return "names " + std::to_string(c.records.size()) + " records, the plan's window is one record";
+  const DataReference& d = c.records.front().data;
+  if (d.sha256 != p.data_sha256) return "made from other data (sha256 " + d.sha256 + ")";
+  if (d.row_begin != w.file_begin || d.row_end != w.file_end)
+    return "certifies rows " + std::to_string(d.row_begin) + ":" + std::to_string(d.row_end) + ", not the window's " +
            std::to_string(w.file_begin) + ":" + std::to_string(w.file_end);
   if (c.mode != p.mode)
     return std::string("toeplitz mode ") + to_string(c.mode) + ", the plan's is " + to_string(p.mode);

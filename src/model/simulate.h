@@ -386,8 +386,8 @@ Experiment<T> record_of(const Experiment<T>& exp, Eigen::Index first, Eigen::Ind
 /// the trajectories are stacked like the records.
 template <typename T>
 Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp, SimulationParts parts = SimulationParts::kAll) {
-  if (exp.records.size() <= 1 && exp.record_x0.empty()) return simulate_one_record(model, exp, parts);
-  const std::vector<Eigen::Index> lengths = exp.records.empty() ? std::vector<Eigen::Index>{exp.n()} : exp.records;
+  if (exp.record_count() == 1 && exp.record_x0.empty()) return simulate_one_record(model, exp, parts);
+  const std::vector<Eigen::Index> lengths = exp.record_lengths();
   if (!exp.record_x0.empty() && exp.record_x0.size() != lengths.size())
     throw std::invalid_argument(std::to_string(exp.record_x0.size()) + " initial states for " +
                                 std::to_string(lengths.size()) + " records");

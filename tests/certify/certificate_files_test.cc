@@ -62,7 +62,7 @@ TEST(CertificateFiles, WrittenCertificatesPassTheFileLayer) {
   const CertificateFiles files = write_certificates(b, path);
   EXPECT_EQ(files.certificate, path);
   EXPECT_EQ(files.lower, (dir.path() / "sub" / "c.lower.json").string());
-  EXPECT_EQ(read_certificate(path).data_file, "../data.csv");
+  EXPECT_EQ(read_certificate(path).records.front().data.file, "../data.csv");
   const CertificateVerdict upper = check_certificate_file(files.certificate);
   const CertificateVerdict lower = check_certificate_file(files.lower);
   EXPECT_TRUE(upper.holds) << upper.reason;
@@ -89,7 +89,7 @@ TEST(CertificateFiles, CoreAndFileLayerAgreeOnAFalseClaim) {
   EXPECT_EQ(core.reason, file.reason);
 
   Certificate no_file = *b.certificate;
-  no_file.data_sha256.clear();
+  no_file.records.front().data.sha256.clear();
   EXPECT_THROW(write_certificate_at(no_file, dir.file("none.json")), InputError);
   EXPECT_FALSE(fs::exists(dir.file("none.json")));
 }

@@ -40,8 +40,8 @@ CertificateVerdict check_variant(const ScratchDir& root, const std::string& name
   fs::create_directories(dir);
   const std::string data = (dir / "data.csv").string();
   write_experiment_csv(data, model, exp);
-  c.data_file = "data.csv";
-  if (rehash) c.data_sha256 = sha256_hex(read_text_file(data));
+  c.records.front().data.file = "data.csv";
+  if (rehash) c.records.front().data.sha256 = sha256_hex(read_text_file(data));
   const std::string path = (dir / "certificate.json").string();
   write_certificate(path, c);
   return check_certificate_file(path);

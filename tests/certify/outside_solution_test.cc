@@ -36,7 +36,7 @@ struct OutsideSolution : ::testing::Test {
     o.objective.lambda = 0.5;
     o.max_taps = 6;
     o.lower_end = false;
-    o.data = read_data_table(gen::kExample1Fixtures + "noise_free_n40.csv").reference;
+    o.records = {read_data_table(gen::kExample1Fixtures + "noise_free_n40.csv").reference};
     return o;
   }
   /// The program at `p` and a CSDP solution file at `sol` whose y is all zeros.

@@ -92,7 +92,7 @@ struct SeveralRecords : gen::CliRunner {
     std::vector<DataReference> refs;
     const Experiment<Rational> exp = stacked(paths, refs);
     CertifyOptions o = gen::certify_options(gen::feasibility_objective(delta, dmax), paths.front());
-    if (refs.size() > 1) o.records = refs;
+    o.records = refs;
     const std::unique_ptr<SdpSolver> solver = make_solver("csdp");
     CertifiedBounds b = certify_fixed_model(model, exp, o, *solver);
     if (b.certificate) {

@@ -52,8 +52,8 @@ IdentCaseOptions soundness_options() {
 /// the generating values.
 Certificate truth_certificate(const IdentCase& c, const std::string& data_path) {
   Certificate cert;
-  cert.data_file = data_path;  // absolute
-  cert.data_sha256 = sha256_hex(read_text_file(data_path));
+  cert.records.front().data.file = data_path;  // absolute
+  cert.records.front().data.sha256 = sha256_hex(read_text_file(data_path));
   cert.model = c.truth;
   cert.mode = ToeplitzMode::kSignal;
   cert.form = CertificateForm::kDelta;

@@ -215,6 +215,20 @@ TEST_F(SeveralRecordsCli, CompareScoresEachRecordFromItsOwnStartAndPoolsThem) {
   EXPECT_NE(output().find("--out"), std::string::npos) << output();
 }
 
+// compare's --x0 (model|fit) is one option for the call, not one per record:
+// after two --data it fits each record's start (it crashed before), and a
+// fitted start is never worse than the model's on that record (least squares).
+TEST_F(SeveralRecordsCli, CompareFitsTheStartOfEachOfSeveralRecords) {
+  ASSERT_EQ(run("compare", "--data " + file("a.csv") + " --data " + file("b.csv") + " --rows 20:80 --model " +
+                               file("model.json") + " --x0 fit --report " + file("f.json")),
+            0)
+      << output();
+  const nlohmann::json r = read_json(file("f.json"));
+  ASSERT_EQ(r["records"].size(), 2u) << r.dump(1);
+  EXPECT_LE(r["records"][0]["rms"].get<double>(), std::sqrt(residual_energy(a, 0, 60) / 60) * (1 + 1e-9));
+  EXPECT_LE(r["records"][1]["rms"].get<double>(), std::sqrt(residual_energy(b, 20, 80) / 60) * (1 + 1e-9));
+}
+
 // The certificate of several records names every record and verifies.
 TEST_F(SeveralRecordsCli, TheCertificateNamesBothRecordsAndVerifies) {
   ASSERT_EQ(invalidate(two_records(), file("r.json")), 0) << output();

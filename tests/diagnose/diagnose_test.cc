@@ -57,7 +57,7 @@ DiagnoseOptions options(const OffsetCase& c) {
   DiagnoseOptions o;
   o.ranking.max_effects = 1;
   o.windows = {{0, 80}};
-  o.certify.data = read_data_table(c.data).reference;
+  o.certify.records = {read_data_table(c.data).reference};
   o.certify.max_taps = 16;
   o.certify.full_horizon_limit = 0;
   return o;

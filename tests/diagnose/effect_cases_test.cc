@@ -114,10 +114,10 @@ CertifiedTruth certify_truth(const EffectCase& c, const ScratchDir& dir, Eigen::
   const Experiment<Rational> est_q = read_experiment<Rational>(data, c.truth);
   const Experiment<double> est_d = read_experiment<double>(data, truth);
   CertifyOptions co;
-  co.data = read_data_table(data).reference;
+  co.records = {read_data_table(data).reference};
   co.max_taps = 16;
   auto solver = make_solver("csdp");
-  const WindowBounds w = certify_window(truth, ExperimentViews{est_q, est_d}, begin, end, 0, co, *solver);
+  const WindowBounds w = certify_window(truth, ExperimentViews{est_q, est_d}, begin, end, co, *solver);
   return {w, write_certificates(w.bounds, dir.file("cert.json")).certificate};
 }
 

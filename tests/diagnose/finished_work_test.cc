@@ -44,7 +44,7 @@ TEST(FinishedWork, AWindowThatCannotBeCertifiedIsNotVerifiedWithItsReason) {
     const Diverging c = diverging_case(seed);
     auto solver = make_solver("csdp");
     WindowBounds w;
-    ASSERT_NO_THROW(w = certify_window(c.model, c.est, 0, c.est.exp_d.n(), 0, weighted(), *solver));
+    ASSERT_NO_THROW(w = certify_window(c.model, c.est, 0, c.est.exp_d.n(), weighted(), *solver));
     EXPECT_FALSE(w.bounds.verified());
     EXPECT_NE(w.bounds.reason.find("certification failed on this window"), std::string::npos) << w.bounds.reason;
     EXPECT_NE(w.bounds.reason.find("no solver was called"), std::string::npos) << w.bounds.reason;
@@ -55,9 +55,9 @@ TEST(FinishedWork, AFailedTheorem31StageIsThatStagesFailure) {
   for (uint64_t seed : {1u, 2u, 3u}) {
     const Diverging c = diverging_case(seed);
     auto solver = make_solver("csdp");
-    EXPECT_ANY_THROW(identify_on_window(c.model, c.est, 0, c.est.exp_d.n(), 0, weighted(), *solver));
+    EXPECT_ANY_THROW(identify_on_window(c.model, c.est, 0, c.est.exp_d.n(), weighted(), *solver));
     WindowIdentification id;
-    ASSERT_NO_THROW(id = try_identify_on_window(c.model, c.est, 0, c.est.exp_d.n(), 0, weighted(), *solver));
+    ASSERT_NO_THROW(id = try_identify_on_window(c.model, c.est, 0, c.est.exp_d.n(), weighted(), *solver));
     EXPECT_TRUE(id.applicable);
     EXPECT_NE(id.failed.find("optional Theorem 3.1 stage failed"), std::string::npos) << id.failed;
     EXPECT_NE(id.failed.find("Theorem 3.1"), std::string::npos);

@@ -30,6 +30,7 @@
 #include "diagnose/fold_plan.h"
 #include "diagnose/record_roles.h"
 #include "diagnose/record_windows.h"
+#include "diagnose/window_identification.h"
 #include "examples/plant_analogues.h"
 #include "fit/linear_fit.h"
 #include "fit/output_error_fit.h"
@@ -182,10 +183,9 @@ struct TwoRecords {
     options.ranking.threads = 2;
     options.test_warmup = 10;
     options.windows = {{n - 100, n + 100}};  // meets both records: one claim over two pieces
-    options.certify.data = roles.data;
+    for (const EstimationRecord& r : roles.records) options.certify.records.push_back(r.data);
     options.certify.max_taps = 16;
     options.certify.full_horizon_limit = 0;
-    for (const EstimationRecord& r : roles.records) options.record_data.push_back(r.data);
   }
 };
 
@@ -212,6 +212,14 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
     EXPECT_EQ(w->records[1].file, c.roles.records[1].data.file);
     EXPECT_EQ(w->records[1].row_begin, 0);
     EXPECT_EQ(w->records[1].row_end, 100);
+  }
+  // the optional Theorem 3.1 stage on the first window (inside the first
+  // record) runs and names that record's file rows
+  for (const WindowIdentification* id : {&r.before_id, &r.after_id}) {
+    EXPECT_TRUE(id->failed.empty()) << id->failed;
+    if (!id->applicable) continue;
+    EXPECT_EQ(id->bounds.file_begin, c.n - 100);
+    EXPECT_EQ(id->bounds.file_end, c.n);
   }
   // each test record scored once, and pooled over both
   ASSERT_EQ(r.tests.size(), 2u);
@@ -257,7 +265,7 @@ TEST(SeveralRecordsDiagnose, JointBoundCertificateListsBothRecordsAndVerifies) {
   auto solver = make_solver("csdp");
   CertifyOptions o = diagnose_policy(c.options.certify);
   WindowBounds w = certify_joint_window(c.declared, ExperimentViews{c.roles.est_q, c.roles.est_d},
-                                        {{c.n - 100, c.n}, {c.n, c.n + 100}}, c.options.record_data, o, *solver);
+                                        {{c.n - 100, c.n}, {c.n, c.n + 100}}, o, *solver);
   ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   cli::write_window_certificate(w, c.dir.file("c.json"), 0, 1, false);
   std::ifstream f(w.certificate);
@@ -266,6 +274,40 @@ TEST(SeveralRecordsDiagnose, JointBoundCertificateListsBothRecordsAndVerifies) {
   EXPECT_EQ(j["records"].size(), 2u);
   const CertificateVerdict v = check_certificate_file(w.certificate);
   EXPECT_TRUE(v.holds) << w.certificate << ": " << v.reason;
+}
+
+// Theorem 3.1 on a window inside the SECOND record: the certificate names
+// that record's file and its rows there (not the first record's file at
+// stacked rows), and it is checked from the file.
+TEST(SeveralRecordsDiagnose, WindowInTheSecondRecordIsCertifiedOnItsOwnFile) {
+  TwoRecords c;
+  auto solver = make_solver("csdp");
+  CertifyOptions o = diagnose_policy(c.options.certify);
+  o.lower_end = false;
+  const ExperimentViews est{c.roles.est_q, c.roles.est_d};
+  const WindowIdentification id = try_identify_on_window(c.declared, est, c.n + 10, c.n + 110, o, *solver);
+  ASSERT_TRUE(id.failed.empty()) << id.failed;
+  ASSERT_TRUE(id.applicable) << id.why_not;
+  EXPECT_EQ(id.bounds.file_begin, 10);
+  EXPECT_EQ(id.bounds.file_end, 110);
+  ASSERT_TRUE(id.bounds.bounds.verified()) << id.bounds.bounds.reason;
+  ASSERT_EQ(id.bounds.bounds.certificate->records.size(), 1u);
+  const DataReference& named = id.bounds.bounds.certificate->records.front().data;
+  EXPECT_EQ(named.file, c.roles.records[1].data.file);
+  EXPECT_EQ(named.sha256, c.roles.records[1].data.sha256);
+  EXPECT_EQ(named.row_begin, 10);
+  EXPECT_EQ(named.row_end, 110);
+  WindowBounds w = id.bounds;
+  cli::write_window_certificate(w, c.dir.file("second.json"), 0, 1, false);
+  const CertificateVerdict v = check_certificate_file(w.certificate);
+  EXPECT_TRUE(v.holds) << w.certificate << ": " << v.reason;
+
+  // the plain Theorem 2.1 window there names the same rows
+  const WindowBounds b = certify_window(c.declared, est, c.n + 10, c.n + 110, o, *solver);
+  EXPECT_EQ(b.file_begin, 10);
+  EXPECT_EQ(b.file_end, 110);
+  ASSERT_TRUE(b.bounds.verified()) << b.bounds.reason;
+  EXPECT_EQ(b.bounds.certificate->records.front().data.file, c.roles.records[1].data.file);
 }
 
 }  // namespace

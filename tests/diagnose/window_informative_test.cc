@@ -35,7 +35,7 @@ WindowBounds certify_case(const ScratchDir& dir, const std::string& model_json, 
   const Experiment<Rational> eq = read_siso_csv(data, parse_model_json<Rational>(model_json, "model"));
   auto solver = make_solver("csdp");
   const CertifyOptions o = gen::certify_options(weighted_objective(), data);
-  WindowBounds w = certify_window(md, ExperimentViews{eq, ed}, 0, ed.n(), 0, o, *solver);
+  WindowBounds w = certify_window(md, ExperimentViews{eq, ed}, 0, ed.n(), o, *solver);
   w.certificate = write_certificates(w.bounds, dir.file("cert.json")).certificate;  // as lpvid diagnose names it
   return w;
 }

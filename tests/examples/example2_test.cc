@@ -110,7 +110,7 @@ TEST(Example2, IdentifiesTheOffsetAndCertifies) {
   const LpvModel<Rational> fixed = apply_parameters(mq, res.layout, pq);
   CertifyOptions co;
   co.objective = io.objective;
-  co.data = read_data_table(csv).reference;
+  co.records = {read_data_table(csv).reference};
   const CertifiedBounds b = certify_fixed_model(fixed, xq, co, *solver);
   ASSERT_TRUE(b.verified()) << b.reason;
   EXPECT_TRUE(check_certificate_file(write_certificates(b, dir.file("ex2.cert.json")).certificate).holds);

@@ -70,7 +70,7 @@ struct Example1Data : Problem {
     BasisSelectionOptions o;
     o.delta = ExactBound::from_text(delta);
     o.dmax = ExactBound::from_text(dmax);
-    o.certify.data = read_data_table(csv).reference;
+    o.certify.records = {read_data_table(csv).reference};
     return o;
   }
 };

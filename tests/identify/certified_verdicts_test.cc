@@ -72,7 +72,7 @@ TEST(SelectBasisCertified, ATooSmallAdditiveBasisIsCertifiedUnableToExplainTheDa
     o.prune = false;
     o.max_degree = 0;
     for (const Monomial& m : c.model.correction.basis) o.max_degree = std::max(o.max_degree, m.degree());
-    o.certify.data = read_data_table(data).reference;
+    o.certify.records = {read_data_table(data).reference};
     auto solver = make_solver("csdp");
     BasisSelectionResult r = select_basis(Problem{c.model, model_d, c.exp, exp_d}, o, *solver);
     cli::write_step_certificates(r, dir.file("sel"));

@@ -69,7 +69,7 @@ TEST(Tradeoff, Example1CurveIsMonotoneAndCertified) {
 
   TradeoffOptions o;
   o.lambdas = {1e-5, 1e-4, 1e-3, 1e-2, 0.1, 0.5};
-  o.certify.data = read_data_table(csv).reference;
+  o.certify.records = {read_data_table(csv).reference};
   int called = 0;
   o.on_point = [&](const TradeoffPoint&) { ++called; };
   auto solver = make_solver("csdp");

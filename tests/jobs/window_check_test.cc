@@ -30,8 +30,12 @@ TEST_F(JobsMerge, PlanMismatchNamesEachChangedValue) {
       {[](Certificate& c) { c.dmax2 = Rational(1, 4); }, "dmax^2 = 1/4"},
       {[](Certificate& c) { c.model.x0(0) = Rational(25); }, "x0 = [25 "},
       {[](Certificate& c) { c.model.x0(1) = Rational(-1, 3); }, "x0 = [0 -1/3]"},
-      {[](Certificate& c) { c.row_end = 59; }, "rows 0:59"},
-      {[](Certificate& c) { c.data_sha256[0] = c.data_sha256[0] == '0' ? '1' : '0'; }, "other data"},
+      {[](Certificate& c) { c.records.front().data.row_end = 59; }, "rows 0:59"},
+      {[](Certificate& c) {
+         std::string& sha = c.records.front().data.sha256;
+         sha[0] = sha[0] == '0' ? '1' : '0';
+       },
+       "other data"},
       {[](Certificate& c) { c.mode = ToeplitzMode::kPaper; }, "toeplitz mode paper"},
       {[](Certificate& c) { c.claim = CertificateClaim::kNotAWitness; }, "not_a_witness"},
       // class claims are not window claims, whatever they prove (an allow-list)

@@ -128,7 +128,7 @@ inline LpvModel<Rational> fold_rounded(const LpvModel<Rational>& model, const Pa
 inline CertifyOptions certify_options(const BoundObjective& objective, const std::string& data_path, long max_taps = 0) {
   CertifyOptions o;
   o.objective = objective;
-  o.data = read_data_table(data_path).reference;
+  o.records = {read_data_table(data_path).reference};
   o.max_taps = max_taps;
   return o;
 }

@@ -47,7 +47,7 @@ struct Genuine {
     const Experiment<Rational> exp = make_experiment<Rational>(read_table(data), model.columns);
     CertifyOptions o;
     o.objective.kind = BoundObjective::Kind::kWeighted;
-    o.data = read_data_table(data).reference;
+    o.records = {read_data_table(data).reference};
     o.lower_end = false;
     auto solver = make_solver("csdp");
     const CertifiedBounds b = certify_fixed_model(model, exp, o, *solver);

@@ -75,7 +75,7 @@ struct GenuineDuals {
     io.method = IdentifyMethod::kAlternating;
     CertifyOptions co;
     co.objective = io.objective;
-    co.data = read_data_table(data).reference;
+    co.records = {read_data_table(data).reference};
     const Problem problem{model, model_d, exp, exp_d};
     IdentifiedModel id = identify_and_certify(problem, io, co, solver);
     ClassBoundOptions o;
@@ -94,7 +94,7 @@ struct GenuineDuals {
     CertifyOptions o;
     o.objective.kind = BoundObjective::Kind::kMinDmax;
     o.objective.delta = 0.1;
-    o.data = read_data_table(data).reference;
+    o.records = {read_data_table(data).reference};
     o.dense_dual = dense_dual;
     const CertifiedBounds b = certify_fixed_model(model, exp, o, solver);
     if (!b.lower.verified()) throw std::runtime_error("no verified lower end: " + b.lower.reason);

@@ -28,8 +28,8 @@ class NotAWitness : public ::testing::Test {
     const std::string data = "u1,y1\n" + u0 + ",1\n1,2\n";
     write_text_file(dir.file("data.csv"), data, "data");
     Certificate c;
-    c.data_file = "data.csv";
-    c.data_sha256 = sha256_hex(data);
+    c.records.front().data.file = "data.csv";
+    c.records.front().data.sha256 = sha256_hex(data);
     LpvModel<Rational>& m = c.model;
     m.nx = m.nu = m.ny = 1;
     m.columns.u = {"u1"};

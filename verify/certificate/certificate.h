@@ -84,22 +84,22 @@ struct ClassRegion {
   std::vector<ClassNode> nodes;
 };
 
-/// One record of a certificate about several records ("records", docs/several_records.md):
-/// where its rows come from (file as written, sha256, names, rows) and its own initial state.
+/// One record of a certificate: where its rows come from (file as written,
+/// sha256, names of a headerless file, rows [begin, end), end = -1: to the
+/// last row) and, when the certificate names several records, its own
+/// initial state.
 struct CertificateRecord {
   DataReference data;
-  Vec<Rational> x0;  ///< empty: the model's x0
+  Vec<Rational> x0;  ///< empty: the model's x0 (always, for one record)
 };
 
 struct Certificate {
-  /// Two or more records under one Δ and one noise bound ("records" instead of
-  /// "data"; each simulated from its own x0, Δ acting on each from rest).
-  /// Empty: the one record named by the data_* fields below.
-  std::vector<CertificateRecord> records;
-  std::string data_file;                ///< as written in the file
-  std::string data_sha256;
-  std::vector<std::string> data_names;  ///< headerless files only
-  long row_begin = 0, row_end = -1;     ///< window [begin, end); end = -1: to the last row
+  /// The records the claim is about, at least one: one record is written as
+  /// "data", two or more as "records" (one Δ and one noise bound for all,
+  /// each simulated from its own x0, Δ acting on each from rest;
+  /// docs/several_records.md). A certificate made in memory names one record
+  /// without a file.
+  std::vector<CertificateRecord> records = std::vector<CertificateRecord>(1);
   LpvModel<Rational> model;
   ToeplitzMode mode = ToeplitzMode::kSignal;
   CertificateForm form = CertificateForm::kDelta;

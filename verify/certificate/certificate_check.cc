@@ -69,8 +69,8 @@ std::string recorded_data_path(const std::string& file, const std::string& certi
 }  // namespace
 
 std::string certificate_data_path(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
-  if (!data_file.empty()) return data_file;
-  return recorded_data_path(c.data_file, certificate_dir);
+  if (!data_file.empty() || c.records.empty()) return data_file;
+  return recorded_data_path(c.records.front().data.file, certificate_dir);
 }
 
 namespace {
@@ -158,13 +158,17 @@ CertificateData references_data(const Certificate& c, const std::vector<DataRefe
     tables.push_back(std::move(t));
   }
   charge_simulation(c, lengths, bits);
-  const bool several = !c.records.empty();
+  const bool several = c.records.size() > 1;
   std::vector<Experiment<Rational>> parts;
   for (size_t k = 0; k < refs.size(); ++k) {
     const std::string what = several ? "records[" + std::to_string(k) + "]" : "data";
     CertificateData one = window_rows(refs[k], *tables[k].table, c.model.columns, what, CertificateData{});
     if (!one.invalid.empty()) return one;
     if (!several) {
+      if (c.records.front().x0.size() != 0) {
+        out.invalid = "data: one record starts from the model's x0 (an own x0 is for several records)";
+        return out;
+      }
       one.path = out.path;
       return one;
     }
@@ -180,34 +184,27 @@ CertificateData references_data(const Certificate& c, const std::vector<DataRefe
   return out;
 }
 
-/// The one-record certificate's data reference.
-DataReference single_reference(const Certificate& c) {
-  DataReference ref;
-  ref.file = c.data_file;
-  ref.sha256 = c.data_sha256;
-  ref.names = c.data_names;
-  ref.row_begin = c.row_begin;
-  ref.row_end = c.row_end;
-  return ref;
-}
-
-/// The references a certificate names: its records, or its one "data".
+/// The references a certificate names, one per record.
 std::vector<DataReference> data_references(const Certificate& c) {
-  if (c.records.empty()) return {single_reference(c)};
   std::vector<DataReference> refs;
   for (const CertificateRecord& r : c.records) refs.push_back(r.data);
   return refs;
 }
 
 CertificateData certificate_data(const Certificate& c, const std::string& certificate_dir, const std::string& data_file) {
-  if (!c.records.empty() && !data_file.empty()) {
+  if (c.records.empty()) {
+    CertificateData out;
+    out.invalid = "the certificate names no data";
+    return out;
+  }
+  if (c.records.size() > 1 && !data_file.empty()) {
     CertificateData out;
     out.invalid = "--data names one file, but the certificate names " + std::to_string(c.records.size()) + " records";
     return out;
   }
   DataFileCache cache;
   return references_data(c, data_references(c), [&](const DataReference& ref) {
-    const std::string path = c.records.empty() ? certificate_data_path(c, certificate_dir, data_file)
+    const std::string path = c.records.size() == 1 ? certificate_data_path(c, certificate_dir, data_file)
                                                : recorded_data_path(ref.file, certificate_dir);
     return file_table(ref, path, cache);
   });

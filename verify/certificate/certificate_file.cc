@@ -139,6 +139,7 @@ DataReference parse_reference_object(const JsonNode& data, const std::string& fi
 void parse_records(const JsonNode& list, const std::string& file, Certificate& c) {
   if (!list.is_array() || list.items.size() < 2)
     throw_input_error(file, list.line, "records", "expected a list of two or more records (one record: \"data\")");
+  c.records.clear();
   for (size_t k = 0; k < list.items.size(); ++k) {
     const std::string path = "records[" + std::to_string(k) + "]";
     const JsonNode& item = list.items[k];
@@ -165,7 +166,7 @@ void parse_data_reference(const JsonNode& root, const std::string& file, Certifi
     parse_records(*records, file, c);
     return;
   }
-  set_data_reference(c, parse_reference_object(member(root, "data", file, ""), file, "data"));
+  c.records = {{parse_reference_object(member(root, "data", file, ""), file, "data"), {}}};
 }
 
 /// A primal point ("consistent", "not_a_witness"): δ², d_max² and the Δ taps or w.
@@ -257,14 +258,11 @@ std::string certificate_json(const Certificate& c) {
   nlohmann::ordered_json j;
   j["format"] = kCertificateFormat;
   j["claim"] = to_string(c.claim);
-  if (c.records.empty()) {
-    DataReference d;
-    d.file = c.data_file;
-    d.sha256 = c.data_sha256;
-    d.names = c.data_names;
-    d.row_begin = c.row_begin;
-    d.row_end = c.row_end;
-    j["data"] = reference_json(d);
+  if (c.records.empty()) throw std::invalid_argument("a certificate names at least one record");
+  if (c.records.size() == 1) {
+    if (c.records.front().x0.size() > 0)
+      throw std::invalid_argument("one record has the model's x0 (an own x0 is for several records)");
+    j["data"] = reference_json(c.records.front().data);
   } else {
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const CertificateRecord& r : c.records) {
@@ -302,22 +300,17 @@ void write_certificate(const std::string& path, const Certificate& c) {
   write_text_file(path, certificate_json(c), "certificate");
 }
 
-void set_data_reference(Certificate& c, const DataReference& data) {
-  c.data_file = data.file;
-  c.data_sha256 = data.sha256;
-  c.data_names = data.names;
-  c.row_begin = data.row_begin;
-  c.row_end = data.row_end;
-}
+void set_data_reference(Certificate& c, const DataReference& data) { c.records = {{data, {}}}; }
 
 void set_record_references(Certificate& c, const std::vector<DataReference>& records, const std::vector<Vec<Rational>>& x0) {
+  if (records.empty()) throw std::invalid_argument("a certificate names at least one record");
   if (!x0.empty() && x0.size() != records.size())
     throw std::invalid_argument(std::to_string(x0.size()) + " initial states for " + std::to_string(records.size()) + " records");
-  c.records.clear();
   if (records.size() == 1) {
     set_data_reference(c, records.front());
     return;
   }
+  c.records.clear();
   for (size_t k = 0; k < records.size(); ++k) c.records.push_back({records[k], x0.empty() ? Vec<Rational>() : x0[k]});
 }
 
@@ -334,7 +327,6 @@ std::string relative_to(const std::string& file, const std::filesystem::path& ce
 Certificate placed_at(Certificate c, const std::string& certificate_path) {
   namespace fs = std::filesystem;
   const fs::path cert_dir = fs::absolute(fs::path(certificate_path)).parent_path();
-  if (c.records.empty()) c.data_file = relative_to(c.data_file, cert_dir);
   for (CertificateRecord& r : c.records) r.data.file = relative_to(r.data.file, cert_dir);
   return c;
 }

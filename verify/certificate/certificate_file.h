@@ -97,8 +97,9 @@ void write_certificate(const std::string& path, const Certificate& c);
 /// (data/data_reference.h). The file stays as it was opened until the
 /// certificate is placed in a folder (placed_at).
 void set_data_reference(Certificate& c, const DataReference& data);
-/// Names several records (two or more; `x0` empty or one entry per record,
-/// an empty entry meaning the model's x0); one record goes to `data`.
+/// Names the records (at least one; two or more: `x0` empty or one entry
+/// per record, an empty entry meaning the model's x0; one record: its x0 is
+/// the model's and `x0` is not used).
 void set_record_references(Certificate& c, const std::vector<DataReference>& records,
                            const std::vector<Vec<Rational>>& x0 = {});
 /// The certificate as it is written at `certificate_path`: its data file

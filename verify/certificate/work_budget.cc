@@ -103,7 +103,7 @@ void charge_declared_work(const Certificate& c) {
     const double m = static_cast<double>(c.horizon) * std::min(ny, nz);  // (C1): δ²I − T_Δ T_Δᵀ, floating filter
     charge_total_work(kWorkPerCube * m * m * m, "the (C1) check of order " + number(m));
   }
-  if (records > 0) charge_total_work(kWorkPerRecord * static_cast<double>(records), std::to_string(records) + " records");
+  if (records > 1) charge_total_work(kWorkPerRecord * static_cast<double>(records), std::to_string(records) + " records");
 }
 
 namespace {
