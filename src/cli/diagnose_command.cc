@@ -180,7 +180,7 @@ DiagnoseOptions diagnose_options(const DiagnoseArgs& a, const Inputs& in, const 
   o.ranking.threads = static_cast<unsigned>(a.threads);
   o.ranking.progress = progress;
   o.test_warmup = warmup;
-  o.windows = bound_windows(a, roles.est_q.n());
+  o.windows = bound_windows(a, roles.est.exp_q.n());
   o.max_windows = static_cast<size_t>(a.max_windows);
   o.certify = diagnose_policy(certify_options(a.common, in));
   o.certify.records.clear();  // the bytes est_q was parsed from, each record's rows as read (after any holdout)
@@ -204,7 +204,7 @@ DiagnoseReport diagnose_report(const DiagnoseArgs& a, const RoleRecords& roles, 
   ri.validation = roles.selection.text;
   ri.estimation = roles.estimation_text;
   for (const RoleRecord& t : roles.tests) ri.test_sources.push_back(t.text);
-  ri.est = &roles.est_d;
+  ri.est = &roles.est.exp_d;
   ri.tests = &tests;
   ri.folds = by_folds;
   ri.fold_warmup = warmup;
@@ -237,11 +237,11 @@ int run_diagnose(DiagnoseArgs& a) {
   const DiagnoseOptions o = diagnose_options(a, in, roles, warmup, by_folds, certificates, progress);
   auto solver = o.make_solver();
   const Experiment<double> no_selection;  // fold mode: the folds come from the estimation record
-  progress("data read (" + std::to_string(roles.est_d.n()) + " estimation rows); fitting the declared model" +
+  progress("data read (" + std::to_string(roles.est.exp_d.n()) + " estimation rows); fitting the declared model" +
            (by_folds ? " on the whole record and on each fold's training rows" : ""));
   // the one library call: verified bounds before and after, on the bound windows of the estimation data
   // (its two views, each read from the text, copied side by side)
-  DiagnoseResult result = diagnose(declared, ExperimentViews{roles.est_q, roles.est_d},
+  DiagnoseResult result = diagnose(declared, roles.est,
                                    by_folds ? no_selection : roles.selection.exp, tests, o, *solver);
   write_diagnose_certificates(result, certificates);  // the Theorem 3.1 windows
   if (!a.model_out.empty()) write_model_file(a.model_out, result.after.front().model);

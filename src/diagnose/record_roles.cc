@@ -105,10 +105,10 @@ RoleRecord hold_out_tails(const RolePlan& plan, std::vector<ReadRecord>& recs) {
 /// last block (shown, not a separate record).
 RoleRecord last_fold_block(const RolePlan& plan, const RoleRecords& out) {
   RoleRecord r;
-  const std::vector<FoldBlock> blocks = blocked_folds(out.est_d.n(), out.est_d.records, plan.folds, plan.warmup);
-  r.exp = select_rows(out.est_d, blocks.back().first, blocks.back().last);
+  const std::vector<FoldBlock> blocks = blocked_folds(out.est.exp_d.n(), out.est.exp_d.records, plan.folds, plan.warmup);
+  r.exp = select_rows(out.est.exp_d, blocks.back().first, blocks.back().last);
   const EstimationRecord& last = out.records.back();
-  const long first_row = static_cast<long>(blocks.back().first - (out.est_d.n() - last.samples));
+  const long first_row = static_cast<long>(blocks.back().first - (out.est.exp_d.n() - last.samples));
   r.text = last.data.file + " rows " + rows_text(last.data.row_begin + first_row,
                                                  last.data.row_begin + first_row + (blocks.back().last - blocks.back().first));
   return r;
@@ -125,8 +125,8 @@ void stack_estimation(const std::vector<ReadRecord>& recs, RoleRecords& out) {
     out.records.push_back({r.file.rows(b, e), r.q.n(), r.file.file + " rows " + rows_text(b, e)});
     out.estimation_text += (out.estimation_text.empty() ? "" : "; ") + out.records.back().text;
   }
-  out.est_q = stack_records(q);
-  out.est_d = stack_records(d);
+  out.est.exp_q = stack_records(q);
+  out.est.exp_d = stack_records(d);
   out.estimation_text += " (fit: every model and candidate)";
 }
 

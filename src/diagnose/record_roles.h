@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "data/data_reference.h"
+#include "data/experiment_views.h"
 #include "data/experiment.h"
 #include "model/lpv_model.h"
 
@@ -70,14 +71,13 @@ struct EstimationRecord {
 };
 
 struct RoleRecords {
-  Experiment<Rational> est_q;        ///< the fitted rows, exactly
-  Experiment<double> est_d;          ///< the same rows
+  ExperimentViews est;               ///< the fitted rows, exactly (exp_q) and as doubles (exp_d)
   RoleRecord selection;              ///< kFolds: the last block (shown, not a separate record)
   std::vector<RoleRecord> tests;
   std::string estimation_text;       ///< "file rows a:b (fit: …)"
   /// Every estimation record in stacking order (at least one), each with its
   /// file rows after any holdout (its sha256 names the certificates' data);
-  /// est_q/est_d hold them stacked (Experiment::records).
+  /// `est` holds them stacked (Experiment::records).
   std::vector<EstimationRecord> records;
 };
 

@@ -192,16 +192,16 @@ struct TwoRecords {
 TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJointly) {
   TwoRecords c;
   ASSERT_EQ(c.roles.records.size(), 2u);
-  ASSERT_EQ(c.roles.est_d.records, (std::vector<Eigen::Index>{c.n, c.n}));
+  ASSERT_EQ(c.roles.est.exp_d.records, (std::vector<Eigen::Index>{c.n, c.n}));
   auto solver = make_solver("csdp");
-  const DiagnoseResult r = diagnose(c.declared, ExperimentViews{c.roles.est_q, c.roles.est_d}, Experiment<double>{},
+  const DiagnoseResult r = diagnose(c.declared, c.roles.est, Experiment<double>{},
                                     c.tests, c.options, *solver);
   // the plant's effect, declared by the analogue
   ASSERT_FALSE(r.rank.chosen.empty());
   EXPECT_EQ(r.rank.chosen.front().kind, "abs_value");
   // 4 folds over 2 equal records: 2 blocks in each, none across the seam
   ASSERT_EQ(r.rank.fold_blocks.size(), 4u);
-  for (const FoldBlock& f : r.rank.fold_blocks) EXPECT_GE(record_holding(c.roles.est_d.records, f.first, f.last), 0);
+  for (const FoldBlock& f : r.rank.fold_blocks) EXPECT_GE(record_holding(c.roles.est.exp_d.records, f.first, f.last), 0);
   // the bound window is one claim over both records, naming each record's file rows
   ASSERT_EQ(r.after.size(), 1u);
   for (const WindowBounds* w : {&r.before[0], &r.after[0]}) {
@@ -234,7 +234,7 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
   // that record alone from the fitted x0 (recomputed here record by record)
   cli::DiagnoseReport ri;
   ri.result = &r;
-  ri.est = &c.roles.est_d;
+  ri.est = &c.roles.est.exp_d;
   ri.tests = &c.tests;
   ri.folds = true;
   ri.records = c.roles.records;
@@ -252,7 +252,7 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
     const nlohmann::json& e = j["records"][k];
     EXPECT_EQ(e["sha256"].get<std::string>(), c.roles.records[k].data.sha256);
     EXPECT_EQ(e["samples"].get<Eigen::Index>(), c.n);
-    const Experiment<double> alone = select_rows(c.roles.est_d, static_cast<Eigen::Index>(k) * c.n, static_cast<Eigen::Index>(k + 1) * c.n);
+    const Experiment<double> alone = select_rows(c.roles.est.exp_d, static_cast<Eigen::Index>(k) * c.n, static_cast<Eigen::Index>(k + 1) * c.n);
     const Mat<double> res = alone.y - simulate(r.after_model, alone).output;
     EXPECT_NEAR(e["rms_after"].get<double>(), std::sqrt(res.squaredNorm() / static_cast<double>(res.size())), 1e-9);
   }
@@ -264,7 +264,7 @@ TEST(SeveralRecordsDiagnose, JointBoundCertificateListsBothRecordsAndVerifies) {
   TwoRecords c;
   auto solver = make_solver("csdp");
   CertifyOptions o = diagnose_policy(c.options.certify);
-  WindowBounds w = certify_joint_window(c.declared, ExperimentViews{c.roles.est_q, c.roles.est_d},
+  WindowBounds w = certify_joint_window(c.declared, c.roles.est,
                                         {{c.n - 100, c.n}, {c.n, c.n + 100}}, o, *solver);
   ASSERT_TRUE(w.bounds.verified()) << w.bounds.reason;
   cli::write_window_certificate(w, c.dir.file("c.json"), 0, 1, false);
@@ -284,7 +284,7 @@ TEST(SeveralRecordsDiagnose, WindowInTheSecondRecordIsCertifiedOnItsOwnFile) {
   auto solver = make_solver("csdp");
   CertifyOptions o = diagnose_policy(c.options.certify);
   o.lower_end = false;
-  const ExperimentViews est{c.roles.est_q, c.roles.est_d};
+  const ExperimentViews& est = c.roles.est;
   const WindowIdentification id = try_identify_on_window(c.declared, est, c.n + 10, c.n + 110, o, *solver);
   ASSERT_TRUE(id.failed.empty()) << id.failed;
   ASSERT_TRUE(id.applicable) << id.why_not;
