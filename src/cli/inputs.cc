@@ -12,9 +12,6 @@
 
 #include "core/input_error.h"
 #include "core/number_text.h"
-#include "data/csv_reader.h"
-#include "data/experiment_builder.h"
-#include "model/model_file.h"
 #include "solvers/solver_factory.h"
 #include "cli/help_text.h"
 
@@ -193,98 +190,32 @@ std::vector<RecordOption> data_records(const CommonOptions& o) {
 
 namespace {
 
-/// One record read once (sha256 of its bytes) and its --rows window applied.
-struct LoadedRecord {
-  Experiment<Rational> q;
-  Experiment<double> d;
-  DataReference ref;
-  std::vector<std::string> header;
-  Vec<Rational> x0;  ///< --x0 (empty: the model's)
-};
-
-/// One record from `data` (its file read once): with --rows only the
-/// window's cells are read as numbers (a job of `lpvid jobs` reads 200 rows
-/// of a long record, not all of them).
-LoadedRecord load_record(const RecordOption& r, const CommonOptions& o, const DataTable& data, const LpvModel<Rational>& model_q,
-                         const LpvModel<double>& model_d) {
-  TextTable window;
-  DataReference ref = data.reference;
-  const long rows = static_cast<long>(data.table.rows.size());
-  if (!r.rows_text.empty() && rows > 0) {  // an empty table: make_experiment says "no data rows"
-    const auto [b, e] = parse_row_range(r.rows_text, "--rows");
-    if (e > rows)
-      throw InputError("--rows " + r.rows_text + ": " + (o.data_paths.size() > 1 ? r.path + " has" : std::string("the data has")) +
-                       " only " + std::to_string(rows) + " rows");
-    window = select_table_rows(data.table, b, e);
-    ref = ref.rows(b, e);
+/// The records of the command line as the loader takes them: each --rows
+/// parsed here (InputError naming --rows), each --x0 read once the model's
+/// number of states is known.
+std::vector<RecordRequest> record_requests(const std::vector<RecordOption>& wanted) {
+  std::vector<RecordRequest> out;
+  for (const RecordOption& r : wanted) {
+    RecordRequest q{r.path, std::nullopt, "--rows " + r.rows_text, {}};
+    if (!r.rows_text.empty()) q.rows = parse_row_range(r.rows_text, "--rows");
+    if (!r.x0_text.empty()) q.x0 = [text = r.x0_text](Eigen::Index nx) { return parse_x0(text, nx); };
+    out.push_back(q);
   }
-  const TextTable& table = r.rows_text.empty() || rows == 0 ? data.table : window;
-  LoadedRecord rec{make_experiment<Rational>(table, model_q.columns), make_experiment<double>(table, model_d.columns), ref,
-                   data.table.header, {}};
-  if (!r.x0_text.empty()) rec.x0 = parse_x0(r.x0_text, model_q.nx);
-  return rec;
+  return out;
 }
 
-/// The --x0 of the records: one record's replaces the model's x0 (its
-/// certificate keeps the one-record form); several records' go to
-/// Experiment::record_x0 (an empty entry: the model's x0).
-void set_initial_states(const std::vector<LoadedRecord>& recs, Inputs& in) {
-  const bool any = std::any_of(recs.begin(), recs.end(), [](const LoadedRecord& r) { return r.x0.size() != 0; });
-  if (!any) return;
-  if (recs.size() == 1) {
-    in.model_q.x0 = recs.front().x0;
-    in.model_d.x0 = nearest_double(Mat<Rational>(recs.front().x0)).col(0);
-    return;
-  }
-  for (const LoadedRecord& r : recs) {
-    in.exp_q.record_x0.push_back(r.x0);
-    in.exp_d.record_x0.push_back(r.x0.size() ? Vec<double>(nearest_double(Mat<Rational>(r.x0)).col(0)) : Vec<double>());
-  }
-}
+}  // namespace
 
-/// The records side by side in `in` (exp_q, exp_d stacked; one reference each).
-void stack_into(const std::vector<LoadedRecord>& recs, Inputs& in) {
-  std::vector<Experiment<Rational>> qs;
-  std::vector<Experiment<double>> ds;
-  for (const LoadedRecord& r : recs) {
-    if (r.header.size() != recs[0].header.size())
-      throw InputError(r.ref.file + ": " + std::to_string(r.header.size()) + " columns, but " + recs[0].ref.file + " has " +
-                       std::to_string(recs[0].header.size()) + ": the records of one claim need the same columns");
-    qs.push_back(r.q);
-    ds.push_back(r.d);
-    in.records.push_back(r.ref);
-  }
-  in.exp_q = stack_records(qs);
-  in.exp_d = stack_records(ds);
-  set_initial_states(recs, in);
-}
-
-/// The bytes of the file at a path (read from disk, or held in memory).
-using FileBytes = std::function<std::string(const std::string& path)>;
-
-/// load_inputs with every input file's bytes from `bytes_of`.
-Inputs load_inputs_from(const CommonOptions& o, const FileBytes& bytes_of) {
+Inputs load_inputs(const CommonOptions& o) {
   // outputs first: a run that cannot write its report fails now, not at its end
   check_output_file(o.report_path, "report");
   check_output_file(o.certificate_path, "certificate");
   check_output_file(o.write_sdpa, "SDPA program");
   const std::vector<RecordOption> wanted = data_records(o);
+  const std::optional<std::vector<std::string>> names =
+      o.names.empty() ? std::nullopt : std::optional<std::vector<std::string>>(o.names);
   Inputs in;
-  const std::string model_text = bytes_of(o.model_path);
-  in.model_q = parse_model_json<Rational>(model_text, o.model_path);
-  in.model_d = parse_model_json<double>(model_text, o.model_path);
-  std::vector<LoadedRecord> recs;
-  std::map<std::string, DataTable> files;  // several windows of one file (a joint job): read and hashed once
-  for (const RecordOption& r : wanted) {
-    auto it = files.find(r.path);
-    if (it == files.end()) {
-      const std::optional<std::vector<std::string>> names =
-          o.names.empty() ? std::nullopt : std::optional<std::vector<std::string>>(o.names);
-      it = files.emplace(r.path, parse_data_table(bytes_of(r.path), r.path, names)).first;
-    }
-    recs.push_back(load_record(r, o, it->second, in.model_q, in.model_d));
-  }
-  stack_into(recs, in);
+  static_cast<LoadedProblem&>(in) = load_problem(o.model_path, record_requests(wanted), names, bytes_on_disk());
   if (!o.rows_text.empty() && wanted.size() == 1) {
     CommonOptions& mo = const_cast<CommonOptions&>(o);
     std::tie(mo.row_begin, mo.row_end) = parse_row_range(o.rows_text, "--rows");
@@ -292,20 +223,6 @@ Inputs load_inputs_from(const CommonOptions& o, const FileBytes& bytes_of) {
   in.mode = toeplitz_mode_from_string(o.toeplitz);
   in.objective = make_objective(o);
   return in;
-}
-
-}  // namespace
-
-Inputs load_inputs(const CommonOptions& o) {
-  return load_inputs_from(o, [](const std::string& path) { return read_text_file(path); });
-}
-
-Inputs load_inputs(const CommonOptions& o, const HeldFiles& held) {
-  return load_inputs_from(o, [&held](const std::string& path) {
-    const auto it = held.find(path);
-    if (it == held.end()) throw InputError(path + ": not among the files held in memory");
-    return it->second;
-  });
 }
 
 std::string data_lines(const CommonOptions& o, const Inputs& in) {

@@ -16,6 +16,7 @@
 #include "certify/certify.h"
 #include "data/data_reference.h"
 #include "lmi/bound_objective.h"
+#include "model/load_problem.h"
 #include "model/lpv_model.h"
 #include "model/problem.h"
 #include "solvers/sdp_solver.h"
@@ -61,14 +62,13 @@ DeltaNorm delta_norm_of(const CommonOptions& o);
 void add_common_options(CLI::App& app, CommonOptions& o, bool needs_bounds);
 
 /// The model and the data (Problem: model_q, model_d, exp_q, exp_d, each
-/// view read from the text), passed on as `const Problem&`, and what was
-/// read beside them.
-struct Inputs : Problem {
+/// view read from the text), passed on as `const Problem&`, where each
+/// record's rows came from (LoadedProblem::records: file, sha256, --names,
+/// --rows, one per record in order, at least one), and the options read
+/// beside them.
+struct Inputs : LoadedProblem {
   ToeplitzMode mode = ToeplitzMode::kSignal;
   BoundObjective objective;
-  /// Where each record's rows came from (file, sha256, --names, --rows),
-  /// one per record in order (at least one).
-  std::vector<DataReference> records;
 };
 
 /// Registers --data and --rows, both repeatable, on `app`; after parsing,
@@ -99,18 +99,10 @@ std::vector<RecordOption> data_records(const CommonOptions& o);
 /// reference and the fixed bounds' exact text.
 CertifyOptions certify_options(const CommonOptions& o, const Inputs& in);
 
-/// Reads and checks everything (throws InputError with file/line/field).
+/// Reads and checks everything (throws InputError with file/line/field):
+/// the output files can be written, then the model and the records
+/// (model/load_problem.h), then the objective.
 Inputs load_inputs(const CommonOptions& o);
-
-/// Bytes held in memory for files, by path.
-using HeldFiles = std::map<std::string, std::string>;
-
-/// The same from bytes in memory: every file load_inputs would read (the
-/// model, each --data) is taken from `held` under its path, never opened;
-/// the data references carry the sha256 of those bytes. A path not held is
-/// an InputError. `lpvid oracle` computes its reference this way, so that a
-/// file the program under test can reach never feeds it.
-Inputs load_inputs(const CommonOptions& o, const HeldFiles& held);
 
 /// Parses a row window "B:E" (0-based, E exclusive, 0 <= B < E) given to
 /// option `flag` (--rows, --window, --test-rows, ...); throws InputError

@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "cli/commands.h"
-#include "cli/oracle_case.h"
+#include "oracle/case_runner.h"
 #include "cli/random_cases.h"
 #include "cli/report.h"
 #include "core/file_io.h"

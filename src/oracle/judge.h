@@ -25,7 +25,7 @@
 ///  - tampered: a file of the case lpvid holds in memory (an input of
 ///    either copy, one of lpvid's certificates) changed, or a process of the
 ///    command was still running after it ended; nothing it answered is
-///    judged (set by the case runner, cli/oracle_case.h).
+///    judged (set by the case runner, oracle/case_runner.h).
 /// J is the task's objective at the claim: d_max² (min_dmax, identify), δ²
 /// (min_delta), λδ² + (1−λ)d_max² (weighted). The tolerance comes from the
 /// oracle's command line, never from a file the command under test can edit.

@@ -29,7 +29,7 @@
 #include "oracle/judge.h"
 #include "oracle/oracle_report.h"
 
-namespace lpvid::cli {
+namespace lpvid {
 
 /// lpvid's copy of a case: its name and the bytes of task.json, data.csv and
 /// model.json (the task naming "data.csv" and "model.json"), and files only
@@ -56,4 +56,4 @@ struct OracleCaseOptions {
 /// Runs and judges one case (copies written as above).
 CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& options);
 
-}  // namespace lpvid::cli
+}  // namespace lpvid

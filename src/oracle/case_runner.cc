@@ -1,4 +1,4 @@
-#include "cli/oracle_case.h"
+#include "oracle/case_runner.h"
 
 #include <chrono>
 #include <cstdio>
@@ -7,11 +7,13 @@
 #include <map>
 #include <optional>
 
-#include "cli/inputs.h"
+#include "certify/certificate_files.h"
+#include "certify/certify.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
-#include "certify/certificate_files.h"
+#include "model/load_problem.h"
+#include "model/simulate.h"
 #include "oracle/answer.h"
 #include "oracle/judge.h"
 #include "oracle/outside_command.h"
@@ -19,30 +21,35 @@
 #include "oracle/task.h"
 #include "oracle/witness.h"
 #include "solvers/external_solvers.h"
+#include "toeplitz/uncertainty_toeplitz.h"
 #include "verify/certificate/certificate_check.h"
 
-namespace lpvid::cli {
+namespace lpvid {
 namespace {
 
 namespace fs = std::filesystem;
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
+double case_seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The common options of `lpvid invalidate` for the task: lpvid certifies
-/// exactly what that command would.
-CommonOptions task_options(const OracleTask& task, const fs::path& folder, const std::string& solver) {
-  CommonOptions c;
-  c.command = "oracle";
-  c.quiet = true;
-  c.solver = solver;
-  c.data_path = (folder / task.data).string();
-  c.model_path = (folder / task.model).string();
-  c.delta_text = task.delta;
-  c.dmax_text = task.dmax;
-  if (!task.lambda.empty()) c.lambda = double_from_text(task.lambda);
-  return c;
+/// lpvid's inputs of the task in `folder`, read as `lpvid invalidate --data
+/// <folder>/data.csv --model <folder>/model.json` reads them, each file's
+/// bytes from `held` (never from the file just written): one record, every
+/// row, the model's x0.
+LoadedProblem case_inputs(const OracleTask& task, const fs::path& folder, const WrittenFiles& held) {
+  const RecordRequest record{(folder / task.data).string(), std::nullopt, "", {}};
+  return load_problem((folder / task.model).string(), {record}, std::nullopt, bytes_held(held));
+}
+
+/// What `lpvid invalidate --quiet` certifies the task with: its objective
+/// and the record's reference, every other option at its default.
+CertifyOptions case_certify_options(const OracleTask& task, const LoadedProblem& in) {
+  CertifyOptions co;
+  co.objective = objective_of(task);
+  co.objective.validate();
+  co.records = in.records;
+  return co;
 }
 
 std::string claim_words(const OracleTask& task, const OracleAnswer& a) {
@@ -66,7 +73,7 @@ std::string claim_words(const OracleTask& task, const OracleAnswer& a) {
 using CaseFiles = std::map<std::string, std::string>;
 
 /// Writes every file into `folder` (emptied first), each one's bytes kept in `held`.
-void write_case_files(const CaseFiles& files, const fs::path& folder, HeldFiles& held) {
+void write_case_files(const CaseFiles& files, const fs::path& folder, WrittenFiles& held) {
   std::error_code ec;
   fs::remove_all(folder, ec);
   fs::create_directories(folder, ec);
@@ -80,7 +87,7 @@ void write_case_files(const CaseFiles& files, const fs::path& folder, HeldFiles&
 
 /// The files of `held` whose bytes on disk are not the held ones (a removed
 /// or unreadable one included), as "a, b"; "" when none.
-std::string changed_files(const HeldFiles& held) {
+std::string changed_files(const WrittenFiles& held) {
   std::string changed;
   for (const auto& [path, text] : held) {
     bool same = false;
@@ -122,7 +129,7 @@ struct NotJudged {
   std::string reason;
   OracleVerdict verdict = OracleVerdict::kError;
 };
-std::optional<NotJudged> not_judged(const CommandRun& run, const HeldFiles& held, const std::string& out,
+std::optional<NotJudged> not_judged(const CommandRun& run, const WrittenFiles& held, const std::string& out,
                                     const OracleCaseOptions& o, const std::string& log) {
   const std::string changed = changed_files(held);
   if (!changed.empty()) return NotJudged{changed_reason(changed, "while the command ran"), OracleVerdict::kTampered};
@@ -168,9 +175,9 @@ void recheck_evidence(CaseReport& rep) {
 struct CaseSetup {
   CaseFiles files;
   OracleTask task;
-  CommonOptions c;
-  Inputs in;
-  HeldFiles held;
+  LoadedProblem in;
+  CertifyOptions certify;
+  WrittenFiles held;
   CaseReport rep;
 };
 CaseSetup set_up_case(const CaseCopy& copy, const OracleCaseOptions& o, const fs::path& mine, const fs::path& theirs) {
@@ -184,8 +191,8 @@ CaseSetup set_up_case(const CaseCopy& copy, const OracleCaseOptions& o, const fs
   CaseFiles mine_files = s.files;
   mine_files.insert(copy.lpvid_only.begin(), copy.lpvid_only.end());
   write_case_files(mine_files, mine, s.held);
-  s.c = task_options(s.task, mine, o.solver);
-  s.in = load_inputs(s.c, s.held);  // the bytes in memory, not the files just written
+  s.in = case_inputs(s.task, mine, s.held);  // the bytes in memory, not the files just written
+  s.certify = case_certify_options(s.task, s.in);
   s.rep.name = copy.name;
   s.rep.folder = theirs.string();
   s.rep.kind = s.task.kind;
@@ -219,7 +226,7 @@ void judge_case(CaseSetup& s, const OracleAnswer& answer, const LpvModel<Rationa
   const WitnessResult witness =
       judge_witness(s.task, answer, judged, s.in.records.front(), s.in.exp_q, mine.string(), s.held);
   ReferenceResult ref =
-      reference_of(b, s.in.objective, write_certificates(b, (mine / "lpvid.cert.json").string(), &s.held));
+      reference_of(b, s.certify.objective, write_certificates(b, (mine / "lpvid.cert.json").string(), &s.held));
   ref.identified_verified = identified.verified;
   ref.identified = identified.dmax2;
   ref.identified_certificate = identified.certificate;
@@ -242,7 +249,7 @@ CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   const fs::path mine = work / (copy.name + ".lpvid"), theirs = work / copy.name;
   CaseSetup s = set_up_case(copy, o, mine, theirs);
   CaseReport& rep = s.rep;
-  const Inputs& in = s.in;
+  const LoadedProblem& in = s.in;
   const std::string out = (theirs / "answer.json").string();
   const std::string command = substitute_placeholders(
       o.command, {{"data", (theirs / "data.csv").string()}, {"model", (theirs / "model.json").string()},
@@ -250,16 +257,16 @@ CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   // The outside command runs while lpvid certifies the same task.
   auto outside = std::async(std::launch::async, run_shell_command, command, o.case_timeout, rep.outside_log);
   const auto started = std::chrono::steady_clock::now();
-  auto solver = make_solver_for_cli(s.c.solver, "");
-  const CertifyOptions co = certify_options(s.c, in);
+  auto solver = make_solver_for_cli(o.solver, "");
+  const CertifyOptions& co = s.certify;
   const bool identify = s.task.kind == TaskKind::kIdentify;
   IdentifiedReference identified;
   CertifiedBounds b;
   if (identify)
     identified = identify_reference(in, co, *solver, mine.string(), s.held);
   else
-    b = certify_fixed(in.model_q, in.exp_q, in.mode, co, *solver);
-  rep.lpvid_seconds = seconds_since(started);
+    b = certify_fixed(in.model_q, in.exp_q, ToeplitzMode::kSignal, co, *solver);
+  rep.lpvid_seconds = case_seconds_since(started);
   const CommandRun run = outside.get();
   rep.outside_seconds = run.seconds;
   rep.outside_exit = run.exit_code;
@@ -276,11 +283,11 @@ CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   const LpvModel<Rational> judged = identify && !answer.failed ? fold_correction(in.model_q, answer.theta) : in.model_q;
   if (identify && !answer.failed) {
     const auto again = std::chrono::steady_clock::now();
-    b = certify_fixed(judged, in.exp_q, in.mode, co, *solver);
-    rep.lpvid_seconds += seconds_since(again);
+    b = certify_fixed(judged, in.exp_q, ToeplitzMode::kSignal, co, *solver);
+    rep.lpvid_seconds += case_seconds_since(again);
   }
   judge_case(s, answer, judged, b, identified, o, mine);
   return rep;
 }
 
-}  // namespace lpvid::cli
+}  // namespace lpvid
