@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     const auto model = lpvid::read_model_file<Rational>(dir + "/true_model.json");
     lpvid::CertifyOptions options;  // minimise 0.5·δ² + 0.5·d_max²
     const lpvid::DataTable data = lpvid::read_data_table(dir + "/noise_free_n40.csv");
-    options.data = data.reference;  // the certificate names this file and its sha256
+    options.records = {data.reference};  // the certificate names this file and its sha256 (one record)
     options.lower_end = false;  // only the primal certificate
     const auto exp = lpvid::make_experiment<Rational>(data.table, model.columns);
     const auto solver = lpvid::make_solver("csdp");
