@@ -99,9 +99,9 @@ Experiment<T> select_rows(const Experiment<T>& exp, Eigen::Index begin, Eigen::I
   out.u = exp.u.middleRows(begin, len);
   out.y = exp.y.middleRows(begin, len);
   out.rho = exp.rho.middleRows(begin, len);
-  if (exp.record_count() == 1 && exp.record_x0.empty()) return out;
-  // Stacked records: the parts of the records inside the window stay records;
-  // a record keeps its own x0 only when the window starts at its first row.
+  // The parts of the records inside the window stay records (one part: no
+  // record list); a record keeps its own x0 only when the window starts at
+  // its first row.
   const std::vector<Eigen::Index> lengths = exp.record_lengths();
   Eigen::Index first = 0;
   bool any_x0 = false;

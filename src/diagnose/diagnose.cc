@@ -188,7 +188,7 @@ std::vector<JointWindow> bound_windows(const Experiment<double>& est_d, const Di
       out.push_back({w});
     return out;
   }
-  const std::vector<JointWindow> all = joint_windows(est_d.n(), est_d.records, options.windows);
+  const std::vector<JointWindow> all = joint_windows(est_d.record_lengths(), options.windows);
   std::vector<RowWindow> index;  // spread_windows picks among the joint windows by their index
   for (size_t i = 0; i < all.size(); ++i) index.emplace_back(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
   std::vector<JointWindow> out;

@@ -212,7 +212,7 @@ std::vector<EffectCandidate> round_candidates(const LpvModel<double>& current, c
 Experiment<double> training_set(const Experiment<double>& est, const std::vector<FoldBlock>& blocks, size_t t) {
   if (t >= blocks.size()) return est;
   std::vector<Experiment<double>> parts;
-  for (const FoldBlock& p : training_pieces(est.n(), est.records, blocks, t)) parts.push_back(select_rows(est, p.first, p.last));
+  for (const FoldBlock& p : training_pieces(est.record_lengths(), blocks, t)) parts.push_back(select_rows(est, p.first, p.last));
   return parts.size() == 1 ? parts[0] : stack_records(parts);
 }
 
@@ -546,7 +546,7 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
                                     const RankingOptions& o) {
   RankingResult res;
   res.min_gain = o.min_gain;
-  res.fold_blocks = blocked_folds(est.n(), est.records, o.folds, o.fold_warmup);
+  res.fold_blocks = blocked_folds(est.record_lengths(), o.folds, o.fold_warmup);
   // before: the declared unknowns fitted on each training set
   const FitResult before = fit_declared(declared, est, o.fit);
   res.before = before.model;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 #include "core/input_error.h"
 
@@ -34,11 +35,11 @@ std::vector<FoldBlock> blocked_folds(Eigen::Index n, int k, Eigen::Index warmup)
 namespace {
 
 /// [first, first + length) of every record.
-std::vector<FoldBlock> record_spans(Eigen::Index n, const std::vector<Eigen::Index>& records) {
-  if (records.size() <= 1) return {FoldBlock{0, n}};
+std::vector<FoldBlock> record_spans(const std::vector<Eigen::Index>& lengths) {
+  if (lengths.empty()) throw std::invalid_argument("folds: no record lengths");
   std::vector<FoldBlock> out;
   Eigen::Index first = 0;
-  for (const Eigen::Index len : records) {
+  for (const Eigen::Index len : lengths) {
     out.push_back({first, first + len});
     first += len;
   }
@@ -71,9 +72,9 @@ std::vector<int> blocks_per_record(const std::vector<FoldBlock>& spans, int k, E
 
 }  // namespace
 
-std::vector<FoldBlock> blocked_folds(Eigen::Index n, const std::vector<Eigen::Index>& records, int k, Eigen::Index warmup) {
-  const std::vector<FoldBlock> spans = record_spans(n, records);
-  if (spans.size() == 1) return blocked_folds(n, k, warmup);
+std::vector<FoldBlock> blocked_folds(const std::vector<Eigen::Index>& lengths, int k, Eigen::Index warmup) {
+  const std::vector<FoldBlock> spans = record_spans(lengths);
+  const Eigen::Index n = spans.back().last;
   if (k < 2) throw InputError("--folds must be at least 2 (got " + std::to_string(k) + ")");
   const std::vector<int> share = blocks_per_record(spans, k, n);
   std::vector<FoldBlock> out;
@@ -91,11 +92,11 @@ std::vector<FoldBlock> blocked_folds(Eigen::Index n, const std::vector<Eigen::In
   return out;
 }
 
-std::vector<FoldBlock> training_pieces(Eigen::Index n, const std::vector<Eigen::Index>& records,
-                                       const std::vector<FoldBlock>& blocks, size_t t) {
+std::vector<FoldBlock> training_pieces(const std::vector<Eigen::Index>& lengths, const std::vector<FoldBlock>& blocks,
+                                       size_t t) {
   const FoldBlock& b = blocks[t];
   std::vector<FoldBlock> out;
-  for (const FoldBlock& s : record_spans(n, records)) {
+  for (const FoldBlock& s : record_spans(lengths)) {
     if (b.last <= s.first || b.first >= s.last) {
       out.push_back(s);
       continue;

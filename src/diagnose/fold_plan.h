@@ -44,22 +44,23 @@ Eigen::Index holdout_cut(Eigen::Index n, double holdout);
 /// block has more than 2·warmup samples (a warm-up and as many scored).
 std::vector<FoldBlock> blocked_folds(Eigen::Index n, int k, Eigen::Index warmup);
 
-/// Several records (the lengths of Experiment::records; empty or one: one
-/// record of n samples): the blocks are made WITHIN the records, never across
+/// Over the records of the given lengths (Experiment::record_lengths(), at
+/// least one): the blocks are made WITHIN the records, never across
 /// a seam. With k <= R records each record is one block (folds = records);
 /// with k > R every record gets at least one block and the k blocks are
 /// shared out in proportion to the records' lengths (largest remainders,
 /// ties to the earlier record); each record's blocks are blocked_folds of it.
-/// Throws InputError like blocked_folds for a block of at most 2·warmup samples.
-std::vector<FoldBlock> blocked_folds(Eigen::Index n, const std::vector<Eigen::Index>& records, int k, Eigen::Index warmup);
+/// Throws InputError like blocked_folds for a block of at most 2·warmup
+/// samples. One record of n samples gives blocked_folds(n, k, warmup).
+std::vector<FoldBlock> blocked_folds(const std::vector<Eigen::Index>& lengths, int k, Eigen::Index warmup);
 
 /// The rows fold t is fitted on, as separate records in row order: the
 /// longer of the two stretches of block t's own record beside it (all of
 /// that record's other rows when the block is at one end of it; nothing when
 /// the block is the whole record) and every other record whole. One record:
 /// the single stretch of the one-record rule above.
-std::vector<FoldBlock> training_pieces(Eigen::Index n, const std::vector<Eigen::Index>& records,
-                                       const std::vector<FoldBlock>& blocks, size_t t);
+std::vector<FoldBlock> training_pieces(const std::vector<Eigen::Index>& lengths, const std::vector<FoldBlock>& blocks,
+                                       size_t t);
 
 /// Held-out figures of one model family over the folds (+inf when a fold's
 /// fit or free run was not finite).

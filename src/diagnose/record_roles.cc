@@ -105,7 +105,7 @@ RoleRecord hold_out_tails(const RolePlan& plan, std::vector<ReadRecord>& recs) {
 /// last block (shown, not a separate record).
 RoleRecord last_fold_block(const RolePlan& plan, const RoleRecords& out) {
   RoleRecord r;
-  const std::vector<FoldBlock> blocks = blocked_folds(out.est.exp_d.n(), out.est.exp_d.records, plan.folds, plan.warmup);
+  const std::vector<FoldBlock> blocks = blocked_folds(out.est.exp_d.record_lengths(), plan.folds, plan.warmup);
   r.exp = select_rows(out.est.exp_d, blocks.back().first, blocks.back().last);
   const EstimationRecord& last = out.records.back();
   const long first_row = static_cast<long>(blocks.back().first - (out.est.exp_d.n() - last.samples));

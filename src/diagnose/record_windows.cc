@@ -8,22 +8,23 @@
 
 namespace lpvid {
 
-std::pair<size_t, Eigen::Index> record_of_row(const std::vector<Eigen::Index>& records, Eigen::Index row) {
+std::pair<size_t, Eigen::Index> record_of_row(const std::vector<Eigen::Index>& lengths, Eigen::Index row) {
+  if (lengths.empty()) throw std::invalid_argument("record_of_row: no record lengths");
   Eigen::Index first = 0;
-  for (size_t k = 0; k < records.size(); ++k) {
-    if (row < first + records[k]) return {k, first};
-    first += records[k];
+  for (size_t k = 0; k + 1 < lengths.size(); ++k) {
+    if (row < first + lengths[k]) return {k, first};
+    first += lengths[k];
   }
-  return {records.empty() ? 0 : records.size() - 1, records.empty() ? 0 : first - records.back()};
+  return {lengths.size() - 1, first};
 }
 
-DataReference piece_reference(const std::vector<DataReference>& references, const std::vector<Eigen::Index>& records,
+DataReference piece_reference(const std::vector<DataReference>& references, const std::vector<Eigen::Index>& lengths,
                               const RowWindow& piece) {
   const auto [b, e] = piece;
-  const auto [k, first] = record_of_row(records, b);
-  if (!records.empty() && e > first + records[k])
+  const auto [k, first] = record_of_row(lengths, b);
+  if (e > first + lengths[k])
     throw InputError("rows " + std::to_string(b) + ":" + std::to_string(e) + " cross the end of record " +
-                     std::to_string(k + 1) + " (rows " + std::to_string(first) + ":" + std::to_string(first + records[k]) +
+                     std::to_string(k + 1) + " (rows " + std::to_string(first) + ":" + std::to_string(first + lengths[k]) +
                      " of the stacked records)");
   if (references.empty()) {
     DataReference none;
@@ -31,15 +32,13 @@ DataReference piece_reference(const std::vector<DataReference>& references, cons
     none.row_end = static_cast<long>(e);
     return none;
   }
-  if (references.size() != std::max<size_t>(1, records.size()))
+  if (references.size() != lengths.size())
     throw std::invalid_argument(std::to_string(references.size()) + " record references for " +
-                                std::to_string(std::max<size_t>(1, records.size())) + " records");
+                                std::to_string(lengths.size()) + " records");
   return references[k].rows(static_cast<long>(b - first), static_cast<long>(e - first));
 }
 
-std::vector<JointWindow> joint_windows(Eigen::Index n, const std::vector<Eigen::Index>& records,
-                                       const std::vector<RowWindow>& given) {
-  const std::vector<Eigen::Index> lengths = records.size() > 1 ? records : std::vector<Eigen::Index>{n};
+std::vector<JointWindow> joint_windows(const std::vector<Eigen::Index>& lengths, const std::vector<RowWindow>& given) {
   std::vector<JointWindow> out;
   if (!given.empty()) {
     for (const auto& [b, e] : given) {

@@ -20,20 +20,21 @@ namespace lpvid {
 
 using JointWindow = std::vector<RowWindow>;  ///< row ranges of the stacked data, each inside one record
 
-/// The joint windows of `n` stacked rows in `records` (lengths; empty: one
-/// record): `given` (each cut at the seams) or, when empty, the default above.
-std::vector<JointWindow> joint_windows(Eigen::Index n, const std::vector<Eigen::Index>& records,
-                                       const std::vector<RowWindow>& given);
+/// The joint windows of the stacked records of the given lengths
+/// (Experiment::record_lengths(), at least one): `given` (each cut at the
+/// seams) or, when empty, the default above.
+std::vector<JointWindow> joint_windows(const std::vector<Eigen::Index>& lengths, const std::vector<RowWindow>& given);
 
-/// The record (index into the lengths) that holds stacked row `row`, and its first row.
-std::pair<size_t, Eigen::Index> record_of_row(const std::vector<Eigen::Index>& records, Eigen::Index row);
+/// The record (index into the lengths) that holds stacked row `row`, and its
+/// first row; a row past the end is in the last record.
+std::pair<size_t, Eigen::Index> record_of_row(const std::vector<Eigen::Index>& lengths, Eigen::Index row);
 
 /// Where the stacked rows `piece` are in their file: the rows of the record
 /// that holds them, as a window of that record's reference (`references[k]`:
 /// record k's rows as read, one per record). No references (data made in
 /// memory): a reference without a file whose rows are the stacked rows.
 /// Throws InputError when the piece is not inside one record.
-DataReference piece_reference(const std::vector<DataReference>& references, const std::vector<Eigen::Index>& records,
+DataReference piece_reference(const std::vector<DataReference>& references, const std::vector<Eigen::Index>& lengths,
                               const RowWindow& piece);
 
 }  // namespace lpvid

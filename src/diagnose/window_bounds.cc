@@ -49,7 +49,7 @@ WindowBounds certify_window(const LpvModel<double>& model, const ExperimentViews
   WindowBounds w;
   w.begin = begin;
   w.end = end;
-  const DataReference rows = piece_reference(options.records, est_q.records, {begin, end});
+  const DataReference rows = piece_reference(options.records, est_q.record_lengths(), {begin, end});
   w.file_begin = rows.row_begin;
   w.file_end = rows.row_end;
   if (!options.records.empty()) options.records = {rows};  // the certificate names the window's file rows
@@ -109,7 +109,7 @@ WindowBounds certify_joint_window(const LpvModel<double>& model, const Experimen
   w.pieces = pieces;
   Mat<double> y(0, est_d.ny());
   for (const auto& [b, e] : pieces) {
-    w.records.push_back(piece_reference(options.records, est_d.records, {b, e}));
+    w.records.push_back(piece_reference(options.records, est_d.record_lengths(), {b, e}));
     y.conservativeResize(y.rows() + (e - b), Eigen::NoChange);
     y.bottomRows(e - b) = est_d.y.middleRows(b, e - b);
   }

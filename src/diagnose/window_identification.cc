@@ -44,7 +44,7 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   out.applicable = true;
   out.bounds.begin = begin;
   out.bounds.end = end;
-  const DataReference rows = piece_reference(options.records, est_q.records, {begin, end});
+  const DataReference rows = piece_reference(options.records, est_q.record_lengths(), {begin, end});
   out.bounds.file_begin = rows.row_begin;
   out.bounds.file_end = rows.row_end;
   CertifyOptions co = options;
@@ -65,7 +65,7 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
 WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est,
                                             Eigen::Index begin, Eigen::Index end,
                                             const CertifyOptions& options, SdpSolver& solver) {
-  const DataReference rows = piece_reference(options.records, est.exp_q.records, {begin, end});
+  const DataReference rows = piece_reference(options.records, est.exp_q.record_lengths(), {begin, end});
   try {
     return identify_on_window(fitted, est, begin, end, options, solver);
   } catch (const RunStopped&) {
