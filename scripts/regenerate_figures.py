@@ -109,7 +109,7 @@ GEN_REPORT = "$TMP/gen.report.json"
 TANKS_EFFECTS = ("store cascade: two stores x1 -> x2 (A = I), outflow e*sqrt(max(x_i - c_i, 0)) and overflow "
                  "e*max(x_i - o_i, 0) from each, levels fitted; replaces the linear part (27 starts); "
                  "output_polynomial degree 3")
-TANKS_AFTER_RMS, TANKS_AFTER_FIT, TANKS_AFTER_HELD_OUT = 0.2921, 86.22, 0.2597
+TANKS_AFTER_RMS, TANKS_AFTER_FIT, TANKS_AFTER_HELD_OUT = 0.2922, 86.22, 0.2616
 
 RUNS = [
     {
@@ -144,7 +144,7 @@ RUNS = [
         "figures": [
             F("effect chosen first", js(GEN_REPORT, "effects", 0, "kind"), "output_polynomial", None, "README.md What the demo shows"),
             F("test RMS before", js(GEN_REPORT, "test", "rms_before"), 7.882, 0.001, "README.md What the demo shows"),
-            F("test RMS after", js(GEN_REPORT, "test", "rms_after"), 0.02075, 1e-5, "README.md What the demo shows"),
+            F("test RMS after", js(GEN_REPORT, "test", "rms_after"), 0.07182, 1e-5, "README.md What the demo shows"),
             F("'after' certificates consistent", rx(r"(\d+) of \d+ after checks consistent", cast=int), 2, 0,
               "docs/benchmarks.md The cascaded tanks demo"),
             F("time", wall, 0, "timing", "not documented"),

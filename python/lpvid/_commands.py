@@ -339,6 +339,7 @@ def _fill_diagnosis(result, report):
     if t:
         result.rms_before, result.rms_after = t.get("rms_before"), t.get("rms_after")
         result.fit_before, result.fit_after = t.get("fit_percent_before"), t.get("fit_percent_after")
+        result.after_worse, result.test_range = t.get("after_worse"), t.get("range") or []
     after = report.get("after") if isinstance(report.get("after"), dict) else {}
     result.delta, result.dmax = after.get("delta"), after.get("dmax")
     result.verified = bool(after.get("verified"))

@@ -154,8 +154,13 @@ class Diagnosis(Result):
     model: the model after diagnosis (a Model); effects: the effects added
     (the report's list); rms_before / rms_after and fit_before / fit_after:
     the test record's free-run RMS error and fit % (None without a test
-    record); delta, dmax: the after model's certified bounds (largest over
-    the bound windows); certificates: every certificate written."""
+    record); after_worse: the model after scores a larger test RMS than the
+    model before (stated, never used to choose); test_range: per signal of
+    the test record, its range against the estimation record's (the
+    report's list: signal, role, estimation_range, test_range,
+    samples_below, samples_above, outside_percent, beyond_width); delta,
+    dmax: the after model's certified bounds (largest over the bound
+    windows); certificates: every certificate written."""
 
     model: Optional[object] = None
     effects: list = dataclasses.field(default_factory=list)
@@ -163,6 +168,8 @@ class Diagnosis(Result):
     rms_after: Optional[float] = None
     fit_before: Optional[float] = None
     fit_after: Optional[float] = None
+    after_worse: Optional[bool] = None
+    test_range: list = dataclasses.field(default_factory=list)
     delta: Optional[float] = None
     dmax: Optional[float] = None
     verified: bool = False

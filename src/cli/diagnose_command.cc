@@ -203,14 +203,17 @@ DiagnoseReport diagnose_report(const DiagnoseArgs& a, const RoleRecords& roles, 
   ri.command_line_data = a.common.data_path;
   ri.validation = roles.selection.text;
   ri.estimation = roles.estimation_text;
-  for (const RoleRecord& t : roles.tests) ri.test_sources.push_back(t.text);
+  for (const RoleRecord& t : roles.tests) {
+    ri.test_sources.push_back(t.text);
+    ri.test_columns.push_back(t.columns);
+  }
   ri.est = &roles.est.exp_d;
   ri.tests = &tests;
   ri.folds = by_folds;
   ri.fold_warmup = warmup;
   ri.test_warmup = warmup;
   ri.file_row_offset = roles.records.front().data.row_begin;
-  ri.validation_outputs = roles.selection.outputs;
+  ri.validation_columns = roles.selection.columns;
   ri.records = roles.records;
   ri.plots_dir = a.plots_dir;
   ri.model_out = a.model_out;

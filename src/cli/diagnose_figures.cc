@@ -13,7 +13,7 @@ namespace {
 /// The legends' output names of the shown rows.
 std::vector<std::string> shown_output_names(const DiagnoseReport& in) {
   const DiagnoseResult& res = *in.result;
-  std::vector<std::string> names = in.validation_outputs;
+  std::vector<std::string> names = in.validation_columns.y;
   if (names.size() != static_cast<size_t>(res.shown.data.ny())) {  // held-out rows of --data
     names.clear();
     for (const std::string& y : res.before_model.columns.y) names.push_back(y + (in.folds ? " (last fold)" : " (held out)"));
@@ -101,6 +101,10 @@ void draw_tests(const DiagnoseReport& in, const std::string& d, DiagnoseFigures&
     tp.dmax_after = all_verified ? dmax_after : 0.0;
     tp.input_columns = res.before_model.columns.u;
     tp.output_columns = res.before_model.columns.y;
+    if (t < in.test_columns.size()) {
+      tp.input_names = in.test_columns[t].u;
+      tp.output_names = in.test_columns[t].y;
+    }
     tp.info = res.after_model.signal_info;
     tp.source = t < in.test_sources.size() ? in.test_sources[t] : e.source;
     const std::string path = d + (res.tests.size() > 1 ? "test" + std::to_string(t + 1) + ".png" : std::string("test.png"));

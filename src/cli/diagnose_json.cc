@@ -189,6 +189,25 @@ ojson analysis_json(const ResidualAnalysis& a) {
   return j;
 }
 
+/// Test record t's signals against the estimation record's ranges (TestScore::excursions).
+ojson test_range_json(const DiagnoseReport& in, size_t t) {
+  const ColumnMap names = t < in.test_columns.size() ? in.test_columns[t] : ColumnMap{};
+  const ColumnMap& est = in.result->before_model.columns;
+  ojson out = ojson::array();
+  for (const SignalExcursion& e : in.result->tests[t].excursions)
+    out.push_back({{"signal", signal_column(names, e.role, e.column)},
+                   {"estimation_signal", signal_column(est, e.role, e.column)},
+                   {"role", to_string(e.role)},
+                   {"estimation_range", {number_or_null(e.estimation_lo), number_or_null(e.estimation_hi)}},
+                   {"test_range", {number_or_null(e.test_lo), number_or_null(e.test_hi)}},
+                   {"samples", e.samples},
+                   {"samples_below", e.below},
+                   {"samples_above", e.above},
+                   {"outside_percent", 100.0 * e.outside_share()},
+                   {"beyond_width", e.beyond()}});
+  return out;
+}
+
 ojson tests_json(const DiagnoseReport& in) {
   ojson tests = ojson::array();
   for (size_t t = 0; t < in.result->tests.size(); ++t) {
@@ -203,6 +222,8 @@ ojson tests_json(const DiagnoseReport& in) {
                      {"rms_after", number_or_null(ta.rms)},
                      {"fit_percent_before", number_or_null(tb.fit_percent)},
                      {"fit_percent_after", number_or_null(ta.fit_percent)},
+                     {"after_worse", ts.after_worse()},
+                     {"range", test_range_json(in, t)},
                      {"note", "scored once, after the effects were selected on the validation (selection) data; the "
                               "models were fitted on the estimation rows only"}});
   }

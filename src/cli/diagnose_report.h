@@ -21,6 +21,7 @@ struct DiagnoseReport {
   std::string command_line_data, validation, plots_dir, model_out, solver;
   std::string estimation;  ///< file and rows of the fit role
   std::vector<std::string> test_sources;  ///< each test set's file, columns and rows (as result.tests)
+  std::vector<ColumnMap> test_columns;    ///< each test set's column names (as result.tests)
   const DiagnoseResult* result = nullptr;  ///< everything computed; the rest here is what the files and rows are called
   const Experiment<double>* est = nullptr;  ///< the estimation record (plotted)
   const std::vector<Experiment<double>>* tests = nullptr;  ///< the test records (as result.tests), for their plots
@@ -31,7 +32,7 @@ struct DiagnoseReport {
   Eigen::Index fold_warmup = 0, test_warmup = 0;
   std::string estimation_rows_text;  ///< "file rows a:b" of the estimation record (fold mode)
   long file_row_offset = 0;
-  std::vector<std::string> validation_outputs;  ///< the validation data's output column names (plot legends)
+  ColumnMap validation_columns;  ///< the validation data's column names (empty: rows of --data, named by the model)
   /// The estimation records (two or more: the report's per-record lines and
   /// its `records` list with result->estimation_records; one: nothing added).
   std::vector<EstimationRecord> records;
@@ -39,6 +40,19 @@ struct DiagnoseReport {
 
 /// How a test set is scored: "free run; x0 from the first N samples (warm-up), …".
 std::string test_rule_text(const FreeRunScore& score);
+
+/// A signal's column name in a record named by `names`: u1, y1, rho1, …
+/// when its role's list does not name it.
+std::string signal_column(const ColumnMap& names, SignalRole role, Eigen::Index column);
+
+/// "input", "output", "scheduling".
+const char* to_string(SignalRole role);
+
+/// One signal of a test record against the estimation record, in words:
+/// "yVal 2.164 to 10 (estimation yEst 2.912 to 10): 77 of 1024 samples
+/// outside (7.52 %, 77 below), the farthest 0.105 of the estimation range's
+/// width beyond it", or "…: inside".
+std::string excursion_text(const SignalExcursion& e, const ColumnMap& test_names, const ColumnMap& estimation_names);
 
 /// One figure written (or not) and where the text lists it.
 struct DrawnFigure {

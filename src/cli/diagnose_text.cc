@@ -62,14 +62,14 @@ std::string start_choice_text(const StartChoice& s) {
 }
 
 /// Whiteness and input correlation of a validation residual, one line.
-void print_analysis(const std::string& title, const ResidualAnalysis& a) {
+void print_analysis(const std::string& title, const ResidualAnalysis& a, const ColumnMap& names) {
   std::cout << "  " << title << ": RMS " << num(a.rms.overall);
   for (const AutocorrelationTest& t : a.whiteness.outputs)
     std::cout << "; autocorrelation: " << t.outside_99 << " of " << a.whiteness.max_lag
               << " lags outside the 99% band, Ljung-Box Q = " << num(t.q) << " (white if <= " << num(t.q_threshold)
               << "): " << (t.white ? "white" : "NOT white");
   for (const CrossCorrelation& c : a.input_correlation.pairs)
-    std::cout << "; with u" << c.input + 1 << ": max " << num(c.max_abs, 3) << " at lag " << c.max_lag_at
+    std::cout << "; with " << signal_column(names, SignalRole::kInput, c.input) << ": max " << num(c.max_abs, 3) << " at lag " << c.max_lag_at
               << (c.significant ? " (significant)" : "");
   std::cout << "\n";
 }
@@ -223,6 +223,28 @@ void print_certificates(const DiagnoseResult& res, bool named) {
   std::cout << " (check: lpvid-verify certificate FILE)\n";
 }
 
+/// Test record t against the estimation record's range, signal by signal:
+/// the signals outside it one line each, then the ones inside.
+void print_test_range(const DiagnoseReport& in, size_t t) {
+  const TestScore& ts = in.result->tests[t];
+  const ColumnMap names = t < in.test_columns.size() ? in.test_columns[t] : ColumnMap{};
+  const ColumnMap& est = in.result->before_model.columns;
+  std::string inside;
+  bool any_outside = false;
+  for (const SignalExcursion& e : ts.excursions) {
+    if (e.outside() == 0) {
+      inside += (inside.empty() ? "" : ", ") + signal_column(names, e.role, e.column) +
+                (e.role == SignalRole::kScheduling ? " (scheduling)" : "");
+      continue;
+    }
+    std::cout << (any_outside ? "         " : "  range: ") << "OUTSIDE the estimation range: "
+              << excursion_text(e, names, est) << "\n";
+    any_outside = true;
+  }
+  if (!inside.empty())
+    std::cout << (any_outside ? "         " : "  range: ") << "inside the estimation range: " << inside << "\n";
+}
+
 /// The test role: scored once per test set, for the models chosen above; then the pooled score.
 void print_tests(const DiagnoseReport& in) {
   const DiagnoseResult& res = *in.result;
@@ -236,6 +258,10 @@ void print_tests(const DiagnoseReport& in) {
               << "  rule: " << test_rule_text(tb) << "\n"
               << "  before: RMS " << num(tb.rms) << ", fit " << num(tb.fit_percent, 4) << " %   after: RMS " << num(ta.rms)
               << ", fit " << num(ta.fit_percent, 4) << " %\n";
+    print_test_range(in, t);
+    if (ts.after_worse())
+      std::cout << "  AFTER IS WORSE than before on this test record (RMS " << num(ta.rms) << " > " << num(tb.rms)
+                << "); stated here, not used to choose\n";
   }
   if (res.tests.size() < 2) return;
   const FreeRunScore &b = res.pooled_before, &a = res.pooled_after;
@@ -249,8 +275,9 @@ void print_residual_analysis(const DiagnoseReport& in) {
                                "; free run, x0 from its first samples; the final models were fitted on these rows too)\n"
                          : std::string("\nvalidation residual (free run)\n"));
   if (!in.result->shown.finite) return;
-  print_analysis("before", in.result->shown.before);
-  print_analysis("after ", in.result->shown.after);
+  const ColumnMap& names = in.validation_columns.u.empty() ? in.result->before_model.columns : in.validation_columns;
+  print_analysis("before", in.result->shown.before, names);
+  print_analysis("after ", in.result->shown.after, names);
 }
 
 void print_figures(const DiagnoseReport& in, const DiagnoseFigures& figures) {

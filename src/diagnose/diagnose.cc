@@ -34,6 +34,11 @@ BoundsSummary DiagnoseResult::bounds_summary(DiagnoseSide side) const {
   return s;
 }
 
+bool TestScore::after_worse() const {
+  if (!std::isfinite(after.rms)) return std::isfinite(before.rms);
+  return std::isfinite(before.rms) && after.rms > before.rms;
+}
+
 bool DiagnoseResult::verified() const {
   return before.size() == after.size() && bounds_summary(DiagnoseSide::kBefore).all_verified &&
          bounds_summary(DiagnoseSide::kAfter).all_verified;
@@ -247,10 +252,12 @@ void certify_windows(DiagnoseResult& out, const std::vector<JointWindow>& window
 }
 
 /// Step 4: the test role, scored once per test set, after everything else was chosen.
-void score_tests(DiagnoseResult& out, const std::vector<Experiment<double>>& tests, const DiagnoseOptions& options) {
+void score_tests(DiagnoseResult& out, const Experiment<double>& estimation, const std::vector<Experiment<double>>& tests,
+                 const DiagnoseOptions& options) {
   for (const Experiment<double>& test : tests) {
     TestScore t;
     t.samples = test.n();
+    t.excursions = signal_excursions(estimation, test);
     t.before = warmup_score(out.before_model, test, options.test_warmup, &t.y_before);
     t.after = warmup_score(out.after_model, test, options.test_warmup, &t.y_after);
     out.tests.push_back(t);
@@ -301,7 +308,7 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const ExperimentViews&
     if (!id->failed.empty() && options.ranking.progress) options.ranking.progress(id->failed + " (the diagnosis stands)");
   }
   // 4. the test role
-  score_tests(out, tests, options);
+  score_tests(out, est_d, tests, options);
   // 5. what the report shows beside the numbers above
   out.shown = shown_record(out, est_d, selection, options);
   for (const RankingRound& rr : out.rank.rounds) out.estimation_shares.push_back(estimation_shares(rr, est_d));

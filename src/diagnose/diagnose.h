@@ -28,6 +28,7 @@
 #include "data/experiment.h"
 #include "data/experiment_views.h"
 #include "diagnose/bound_windows.h"
+#include "diagnose/signal_ranges.h"
 #include "diagnose/effect_ranking.h"
 #include "diagnose/record_scores.h"
 #include "diagnose/residual_analysis.h"
@@ -84,6 +85,13 @@ struct TestScore {
   Eigen::Index samples = 0;
   FreeRunScore before, after;
   Mat<double> y_before, y_after;  ///< the two models' free runs on the test record (x0 from its warm-up)
+  /// Each measured signal of the test record against its range on the
+  /// estimation records (diagnose/signal_ranges.h).
+  std::vector<SignalExcursion> excursions;
+  /// The model after scores a larger test RMS than the model before (or
+  /// only the model before has a finite one). Stated in the report, never
+  /// used to choose: the test record is scored after every choice.
+  bool after_worse() const;
 };
 
 /// An interval of a static map's argument: where the report draws the

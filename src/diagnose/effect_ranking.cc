@@ -100,6 +100,7 @@ ojson static_map_json(const StaticMap<double>& g) {
     m["upper"] = g.upper;
   }
   if (g.kind == StaticKind::kPolynomial) m["coefficients"] = g.coefficients;
+  if (!g.range.empty()) m["range"] = g.range;  // linear beyond it (model/static_blocks.h)
   if (g.kind == StaticKind::kPiecewiseLinear) {
     m["knots"] = g.knots;
     m["values"] = g.coefficients;

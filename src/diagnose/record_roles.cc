@@ -39,7 +39,7 @@ RoleRecord load_other(const RecordSource& src, const RolePlan& plan, const LpvMo
   const std::vector<std::string>& names = src.path.empty() ? plan.names : src.names;
   const DataTable table = names.empty() ? read_data_table(path) : read_data_table(path, names);
   const ColumnMap columns = renamed_columns(renamed_from, declared, src.columns, "--" + role + "-columns");
-  RoleRecord r{make_experiment<double>(table.table, columns), path, columns.y};
+  RoleRecord r{make_experiment<double>(table.table, columns), path, columns};
   if (!src.columns.empty()) {
     r.text += " columns ";
     for (size_t i = 0; i < src.columns.size(); ++i) r.text += (i ? "," : "") + src.columns[i];

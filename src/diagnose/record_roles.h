@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "data/column_map.h"
 #include "data/data_reference.h"
 #include "data/experiment_views.h"
 #include "data/experiment.h"
@@ -36,11 +37,11 @@ struct RecordSource {
 };
 
 /// A loaded record: the experiment, what it is called in the report (file,
-/// columns, rows) and its output column names (plot legends).
+/// columns, rows) and its column names (plot legends, the report's lines).
 struct RoleRecord {
   Experiment<double> exp;
   std::string text;
-  std::vector<std::string> outputs;
+  ColumnMap columns;  ///< its u, y and ρ column names (empty: the estimation record's)
 };
 
 enum class SelectionRole { kFolds, kSeparate, kHoldout };

@@ -33,6 +33,44 @@ Window window_of(const Experiment<double>& exp, Eigen::Index first, Eigen::Index
   return w;
 }
 
+/// Whether the slots move the coefficients of the input (output) map.
+bool moves_map_coefficients(const std::vector<ParameterSlot>& slots, ParameterSlot::Where where) {
+  return std::any_of(slots.begin(), slots.end(), [where](const ParameterSlot& s) { return s.where == where; });
+}
+
+/// [min, max] of the entries of m in the window's cost rows (model/static_blocks.h:
+/// a polynomial map's range); empty when none is finite.
+std::vector<double> cost_rows_range(const Mat<double>& m, const Window& w) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (Eigen::Index i = w.first; i < std::min(w.last, m.rows()); ++i) {
+    if (i >= w.skip_first && i < w.skip_last) continue;
+    for (Eigen::Index j = 0; j < m.cols(); ++j)
+      if (std::isfinite(m(i, j))) {
+        lo = std::min(lo, m(i, j));
+        hi = std::max(hi, m(i, j));
+      }
+  }
+  return lo <= hi ? std::vector<double>{lo, hi} : std::vector<double>{};
+}
+
+/// A polynomial map whose coefficients the fit moved gets the range of its
+/// argument on the rows whose error the fit minimised (model/static_blocks.h):
+/// the input map's argument is the delayed measured input, the output map's
+/// ŷ + Φ of the fitted model. On those rows the map is the polynomial, so
+/// the fitted outputs are unchanged; beyond them it continues linearly.
+void set_fitted_ranges(LpvModel<double>& m, const Experiment<double>& exp, const Window& w, bool input, bool output) {
+  if (input && m.statics.input.kind == StaticKind::kPolynomial) {
+    const Eigen::Index d = std::min<Eigen::Index>(m.statics.input_delay, exp.n());
+    Mat<double> delayed(exp.n(), exp.nu());
+    for (Eigen::Index k = 0; k < exp.n(); ++k) delayed.row(k) = exp.u.row(k >= d ? k - d : 0);
+    m.statics.input.range = cost_rows_range(delayed, w);
+  }
+  if (output && m.statics.output.kind == StaticKind::kPolynomial) {
+    const Simulation<double> s = simulate(m, exp, SimulationParts::kOutput);
+    m.statics.output.range = s.yhat.allFinite() ? cost_rows_range(Mat<double>(s.yhat + s.offset), w) : std::vector<double>{};
+  }
+}
+
 /// Stacked residual y − output over the window; empty when not finite.
 Vec<double> residual_of_output(const Mat<double>& output, const Experiment<double>& exp, const Window& w) {
   const Eigen::Index rows = w.last - w.first;
@@ -242,6 +280,16 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
     shorter.last_sample = w.last;
     return fit_slots(model, slots, leading_rows(exp, w.last), shorter);
   }
+  // a polynomial map being fitted is the polynomial on every row while it is
+  // fitted; its range is set from the fitted model below
+  const bool input_map = moves_map_coefficients(slots, ParameterSlot::Where::kInputCoef);
+  const bool output_map = moves_map_coefficients(slots, ParameterSlot::Where::kOutputCoef);
+  if ((input_map && !model.statics.input.range.empty()) || (output_map && !model.statics.output.range.empty())) {
+    LpvModel<double> open = model;
+    if (input_map) open.statics.input.range.clear();
+    if (output_map) open.statics.output.range.clear();
+    return fit_slots(open, slots, exp, o);
+  }
   FitResult res;
   res.model = model;
   const Vec<double> p0 = slot_values(model, slots);
@@ -271,6 +319,7 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
       // terms; any other unstable start is not moved (its free run is judged as it is)
       if (state_scheduled(model.columns.rho, model.nx).empty() || model.state_offset.empty()) {
         res.rms = std::sqrt(r0.squaredNorm() / static_cast<double>(m));
+        set_fitted_ranges(res.model, exp, w, input_map, output_map);
         return res;
       }
       stable = nullptr;
@@ -280,6 +329,7 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
     res.iterations = fit.iterations;
   }
   res.model = with_slot_values(model, slots, p);
+  set_fitted_ranges(res.model, exp, w, input_map, output_map);
   const Vec<double> rf = residual(res.model, exp, w);
   res.finite = rf.size() == m;
   res.rms = res.finite ? std::sqrt(rf.squaredNorm() / static_cast<double>(m)) : std::numeric_limits<double>::infinity();

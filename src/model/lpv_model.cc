@@ -129,6 +129,7 @@ LpvModel<To> convert_model(const LpvModel<From>& m) {
     dst->upper = conv<To>(src->upper);
     for (const auto& c : src->coefficients) dst->coefficients.push_back(conv<To>(c));
     for (const auto& x : src->knots) dst->knots.push_back(conv<To>(x));
+    for (const auto& x : src->range) dst->range.push_back(conv<To>(x));
   }
   out.offset.basis = m.offset.basis;
   for (const auto& v : m.offset.values) out.offset.values.push_back(conv<To>(v));

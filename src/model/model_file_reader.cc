@@ -490,7 +490,14 @@ class ModelReader {
         if (!(g.lower <= g.upper)) fail(n, path, "lower must not exceed upper");
         break;
       case StaticKind::kPolynomial: {
-        check_keys(n, path, {"kind", "coefficients"});
+        check_keys(n, path, {"kind", "coefficients", "range"});
+        if (const JsonNode* r = n.find("range")) {
+          const std::string rp = member_path(path, "range");
+          expect(*r, Kind::kArray, rp);
+          if (r->items.size() != 2) fail(*r, rp, "a range is [lo, hi]: two numbers");
+          for (size_t i = 0; i < 2; ++i) g.range.push_back(number<T>(r->items[i], index_path(rp, i)));
+          if (!(g.range[0] <= g.range[1])) fail(*r, rp, "lo must not exceed hi");
+        }
         const JsonNode& c = required(n, path, "coefficients");
         const std::string cp = member_path(path, "coefficients");
         expect(c, Kind::kArray, cp);

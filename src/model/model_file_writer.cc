@@ -196,6 +196,7 @@ ojson model_static_map_json(const StaticMap<T>& g, const std::string& where) {
     ojson c = ojson::array();
     for (const T& x : g.coefficients) c.push_back(number_to_json(x));
     o["coefficients"] = std::move(c);
+    if (!g.range.empty()) o["range"] = ojson::array({number_to_json(g.range[0]), number_to_json(g.range[1])});
   }
   if (g.kind == StaticKind::kPiecewiseLinear) {
     ojson x = ojson::array(), v = ojson::array();

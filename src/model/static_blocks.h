@@ -27,7 +27,16 @@
 ///   saturation   g(v) = min(max(v, lower), upper)
 ///   dead_zone    g(v) = v − upper (v > upper), v − lower (v < lower), else 0
 ///   abs          g(v) = |v|
-///   polynomial   g(v) = Σ_k c_k v^k  (Horner)
+///   polynomial   g(v) = Σ_k c_k v^k  (Horner); with a "range" [lo, hi]
+///                (the argument's range on the data the map was fitted on)
+///                the polynomial holds inside it and the map continues
+///                linearly beyond it, with the polynomial's value and slope
+///                at the nearer end: g(v) = p(hi) + p'(hi)·(v − hi) above hi,
+///                p(lo) + p'(lo)·(v − lo) below lo. A fitted polynomial is no
+///                evidence outside the range it saw, and a cubic's own tail
+///                there can run anywhere; the linear continuation keeps the
+///                map's trend at its edge (continuous, with a continuous
+///                slope) and stays exact on rationals
 ///   piecewise_linear  knots x_0 < … < x_m (m ≥ 1), values g_0 … g_m: linear
 ///                interpolation between knots, the first and last segments
 ///                extended beyond them (a √, a one-sided clip, any monotone
@@ -74,6 +83,7 @@ struct StaticMap {
   T lower = T(0), upper = T(0);   ///< saturation and dead_zone (lower ≤ upper)
   std::vector<T> coefficients;    ///< polynomial c_0, c_1, … (at least one); piecewise_linear: the values g_i
   std::vector<T> knots;           ///< piecewise_linear x_0 < x_1 < … (as many as values, at least two)
+  std::vector<T> range;           ///< polynomial: empty (everywhere the polynomial) or {lo, hi}, lo ≤ hi (see above)
 
   bool is_identity() const { return kind == StaticKind::kIdentity; }
 
@@ -83,6 +93,8 @@ struct StaticMap {
       throw std::invalid_argument(where + ": lower must not exceed upper");
     if (kind == StaticKind::kPolynomial && coefficients.empty())
       throw std::invalid_argument(where + ": a polynomial needs at least one coefficient");
+    if (!range.empty() && (kind != StaticKind::kPolynomial || range.size() != 2 || !(range[0] <= range[1])))
+      throw std::invalid_argument(where + ": a range is [lo, hi] with lo <= hi, on a polynomial map only");
     if (kind == StaticKind::kPiecewiseLinear) {
       if (knots.size() < 2 || knots.size() != coefficients.size())
         throw std::invalid_argument(where + ": a piecewise_linear map needs at least two knots and one value per knot");
@@ -98,6 +110,15 @@ struct StaticMap {
       case StaticKind::kDeadZone: return v > upper ? T(v - upper) : (v < lower ? T(v - lower) : T(0));
       case StaticKind::kAbs: return v < T(0) ? T(-v) : v;
       case StaticKind::kPolynomial: {
+        if (range.size() == 2 && (v < range[0] || v > range[1])) {
+          const T& e = v < range[0] ? range[0] : range[1];  // the nearer end
+          T p = coefficients.back(), slope = T(0);          // p(e) and p'(e) by Horner
+          for (size_t i = coefficients.size() - 1; i-- > 0;) {
+            slope = T(slope * e + p);
+            p = T(p * e + coefficients[i]);
+          }
+          return T(p + slope * T(v - e));
+        }
         T acc = coefficients.back();
         for (size_t i = coefficients.size() - 1; i-- > 0;) acc = T(acc * v + coefficients[i]);
         return acc;

@@ -295,7 +295,7 @@ PlotSpec test_output_panel(const TestRecordPlot& t, const std::vector<double>& x
                                         : "output",
                        t.info.time_label(), axis_label("output", t.info, t.output_columns, t.y.cols()));
   for (Eigen::Index i = 0; i < t.y.cols(); ++i) {
-    const std::string yi = signal_name(t.output_columns, i, t.y.cols(), "y");
+    const std::string yi = signal_name(t.output_names.empty() ? t.output_columns : t.output_names, i, t.y.cols(), "y");
     if (t.yhat_after.cols() > 0 && t.dmax_after > 0) {
       PlotSeries band = series(yi + " band (after +- dmax)", x, column(t.yhat_after, i), "lines");
       band.y_high = band.y;
@@ -355,7 +355,8 @@ PlotSpec test_record_plot_spec(const TestRecordPlot& t) {
   if (t.yhat_after.cols() > 0) fig.title += ", " + short_number(scored_rms(t, t.yhat_after)) + " after";
   PlotSpec in = panel("input", t.info.time_label(), axis_label("input", t.info, t.input_columns, t.u.cols()));
   for (Eigen::Index i = 0; i < t.u.cols(); ++i)
-    add_line(in, signal_name(t.input_columns, i, t.u.cols(), "u"), x, t.u, i, t.u.cols() == 1 ? palette::kInput : "");
+    add_line(in, signal_name(t.input_names.empty() ? t.input_columns : t.input_names, i, t.u.cols(), "u"), x, t.u, i,
+             t.u.cols() == 1 ? palette::kInput : "");
   PlotSpec out = test_output_panel(t, x);
   if (t.warmup > 0)
     shade_in_panels({&in, &out}, x, 0, static_cast<long>(t.warmup), "warm-up (x0 fit, not scored)", palette::kWarmup);

@@ -45,6 +45,7 @@ struct TestRecordPlot {
   double dmax_after = 0;                      ///< certified d_max of the after model; 0: no band
   Eigen::Index warmup = 0;                    ///< first samples used for x0, not scored
   std::vector<std::string> input_columns, output_columns;  ///< the model's columns (their units apply)
+  std::vector<std::string> input_names, output_names;      ///< legends: the test record's columns (empty: the model's)
   SignalInfo info;
   std::string source;                         ///< the record's file and columns (title)
 };

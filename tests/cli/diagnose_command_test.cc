@@ -111,6 +111,14 @@ TEST_F(DiagnoseCommandTest, TestRoleIsScoredOnceAndNeverChooses) {
   const std::string t2((std::istreambuf_iterator<char>(m2)), std::istreambuf_iterator<char>());
   EXPECT_EQ(t1, t2);
   EXPECT_NE(r2["test"]["rms_after"].get<double>(), r1["test"]["rms_after"].get<double>());
+  // the estimation record itself as the test record: every signal inside its own range, the ranges equal
+  ASSERT_GE(r2["test"]["range"].size(), 3u);  // u1, y1 and the scheduling columns
+  for (const nlohmann::json& s : r2["test"]["range"]) {
+    EXPECT_EQ(s["samples_below"].get<long>() + s["samples_above"].get<long>(), 0) << s;
+    EXPECT_EQ(s["test_range"], s["estimation_range"]) << s;
+  }
+  EXPECT_EQ(r2["test"]["after_worse"].get<bool>(),
+            r2["test"]["rms_after"].get<double>() > r2["test"]["rms_before"].get<double>());
 
   ASSERT_EQ(run("diagnose", common + " --report " + file("t3.json")), 0) << output();
   EXPECT_TRUE(report("t3.json")["test"].is_null());
@@ -168,6 +176,14 @@ TEST_F(DiagnoseCommandTest, SeveralTestSetsAreScoredSeparately) {
   EXPECT_EQ(r["tests"][0]["rms_after"], r["tests"][2]["rms_after"]);
   EXPECT_GT(r["tests"][1]["rms_after"].get<double>(), 2 * r["tests"][0]["rms_after"].get<double>());
   EXPECT_NE(r["tests"][1]["source"].get<std::string>().find("scaled.csv"), std::string::npos);
+  // y times 10 leaves the estimation range of y (the inputs are the validation record's own)
+  const nlohmann::json& y1 = r["tests"][1]["range"][1];
+  EXPECT_EQ(y1["role"], "output");
+  EXPECT_GT(y1["samples_below"].get<long>() + y1["samples_above"].get<long>(), 0) << y1;
+  EXPECT_GT(y1["beyond_width"].get<double>(), 1.0) << y1;
+  EXPECT_NE(output().find("OUTSIDE the estimation range: y1"), std::string::npos) << output();
+  for (const nlohmann::json& t : r["tests"])
+    EXPECT_EQ(t["after_worse"].get<bool>(), t["rms_after"].get<double>() > t["rms_before"].get<double>());
   EXPECT_NE(output().find("test 3 of 3"), std::string::npos) << output();
   // one file, two column sets (here the same columns twice): two test sets
   ASSERT_EQ(run("diagnose", "--data " + est + " --model " + model + " --validation " + val + " --window 0:80 --max-taps 16" +

@@ -53,6 +53,46 @@ RC_GTEST_PROP(StaticMapProperty, AbsAndHornerPolynomialAreExact, ()) {
   RC_ASSERT(map_of(StaticKind::kPolynomial, 0, 0, c)(v) == naive);
 }
 
+// A polynomial with a range [lo, hi] is the polynomial inside it and, beyond
+// it, the tangent line at the nearer end. Known answers from mathematics: the
+// value by the power sum Σ c_k v^k and the slope by the derivative's
+// coefficients k·c_k (not by Horner); the map is continuous at both ends and
+// exactly affine beyond them (equal differences for equal steps).
+RC_GTEST_PROP(StaticMapProperty, PolynomialContinuesLinearlyBeyondItsRange, ()) {
+  const auto c = *rc::gen::container<std::vector<Rational>>(*rc::gen::inRange(1, 6), gen::small_rational());
+  Rational lo = *gen::small_rational(), hi = *gen::small_rational();
+  if (hi < lo) std::swap(lo, hi);
+  StaticMap<Rational> g = map_of(StaticKind::kPolynomial, 0, 0, c);
+  const StaticMap<Rational> free = g;
+  g.range = {lo, hi};
+  const auto power_sum = [&](const Rational& v) {
+    Rational s(0), p(1);
+    for (const Rational& ck : c) {
+      s += ck * p;
+      p *= v;
+    }
+    return s;
+  };
+  const auto derivative = [&](const Rational& v) {
+    Rational s(0), p(1);
+    for (size_t k = 1; k < c.size(); ++k) {
+      s += Rational(static_cast<long>(k)) * c[k] * p;
+      p *= v;
+    }
+    return s;
+  };
+  const Rational t = *gen::small_rational(), a = t < Rational(0) ? Rational(0) - t : t;
+  const Rational inside = lo + (hi - lo) * a / (Rational(1) + a);  // in [lo, hi)
+  RC_ASSERT(g(inside) == power_sum(inside));
+  RC_ASSERT(g(lo) == free(lo));
+  RC_ASSERT(g(hi) == free(hi));
+  const Rational h = Rational(1) + a;  // a step > 0
+  RC_ASSERT(g(hi + h) == power_sum(hi) + derivative(hi) * h);
+  RC_ASSERT(g(lo - h) == power_sum(lo) - derivative(lo) * h);
+  RC_ASSERT(g(hi + h + h) - g(hi + h) == g(hi + h) - g(hi));  // affine beyond hi
+  RC_ASSERT(g(lo - h - h) - g(lo - h) == g(lo - h) - g(lo));  // and below lo
+}
+
 StaticMap<Rational> pwl(std::vector<Rational> knots, std::vector<Rational> values) {
   StaticMap<Rational> g;
   g.kind = StaticKind::kPiecewiseLinear;
@@ -126,6 +166,25 @@ TEST(StaticBlocks, ModelFileRoundTripIsExact) {
   EXPECT_EQ(back.statics.input.upper, m.statics.input.upper);
   EXPECT_EQ(back.statics.output.coefficients, m.statics.output.coefficients);
   EXPECT_EQ(back.statics.input_delay, 1);
+}
+
+TEST(StaticBlocks, PolynomialRangeRoundTripsAndBadRangesAreNamed) {
+  const LpvModel<Rational> m = parse_model_json<Rational>(
+      model_with(R"({"output": {"kind": "polynomial", "coefficients": [0, 1, "-1/2"], "range": ["-1/3", "2.5"]}})"), "m.json");
+  ASSERT_EQ(m.statics.output.range.size(), 2u);
+  EXPECT_EQ(m.statics.output.range[0], Rational(-1) / Rational(3));
+  // beyond 2.5: p(2.5) + p'(2.5)(v − 2.5) = (2.5 − 3.125) + (1 − 2.5)(v − 2.5); at v = 3.5: −0.625 − 1.5 = −2.125
+  EXPECT_EQ(m.statics.output(Rational(7, 2)), Rational(-17, 8));
+  const LpvModel<Rational> back = parse_model_json<Rational>(write_model_json(m), "back.json");
+  EXPECT_EQ(back.statics.output.range, m.statics.output.range);
+  const LpvModel<double> d = parse_model_json<double>(write_model_json(m), "back.json");
+  EXPECT_EQ(d.statics.output.range.size(), 2u);
+  const auto error = [](const std::string& map) {
+    return error_of([&] { parse_model_json<Rational>(model_with(R"({"output": )" + map + "}"), "m.json"); });
+  };
+  EXPECT_TRUE(contains(error(R"({"kind": "polynomial", "coefficients": [1], "range": [2, 1]})"), "lo must not exceed hi"));
+  EXPECT_TRUE(contains(error(R"({"kind": "polynomial", "coefficients": [1], "range": [1, 2, 3]})"), "static.output.range"));
+  EXPECT_TRUE(contains(error(R"({"kind": "saturation", "lower": 0, "upper": 1, "range": [0, 1]})"), "range"));
 }
 
 TEST(StaticBlocks, PiecewiseLinearRoundTripIsExactAndBadKnotsAreNamed) {

@@ -360,7 +360,7 @@ def grid_sqrt(v):
 
 class StaticMap:
     def __init__(self, spec, what):
-        check_keys(spec, ('kind', 'lower', 'upper', 'coefficients', 'knots', 'values'), what)
+        check_keys(spec, ('kind', 'lower', 'upper', 'coefficients', 'range', 'knots', 'values'), what)
         self.kind = spec.get('kind')
         k = self.kind
         allowed = {'identity': (), 'abs': (), 'saturation': ('lower', 'upper'),
@@ -376,10 +376,20 @@ class StaticMap:
             self.hi = parse_number(spec['upper'], what)
             if self.lo > self.hi:
                 raise Refused(f"{what}: lower > upper")
+        if 'range' in spec and k != 'polynomial':
+            raise Refused(f"{what}: key 'range' does not go with kind {k}")
         if k == 'polynomial':
             self.c = [parse_number(x, what) for x in spec['coefficients']]
             if not self.c:
                 raise Refused(f"{what}: no coefficients")
+            self.range = None
+            if 'range' in spec:
+                r = spec['range']
+                if not isinstance(r, list) or len(r) != 2:
+                    raise Refused(f"{what}: a range is [lo, hi]")
+                self.range = (parse_number(r[0], what), parse_number(r[1], what))
+                if self.range[0] > self.range[1]:
+                    raise Refused(f"{what}: range lo > hi")
         if k == 'piecewise_linear':
             self.knots = [parse_number(x, what) for x in spec['knots']]
             self.vals = [parse_number(x, what) for x in spec['values']]
@@ -406,6 +416,13 @@ class StaticMap:
                 return v - self.lo
             return F0
         if k == 'polynomial':
+            if self.range is not None and not (self.range[0] <= v <= self.range[1]):
+                # beyond the fitted range: the tangent line at the nearer end,
+                # p(e) + p'(e)(v - e), with p' from the coefficients k c_k
+                e = self.range[0] if v < self.range[0] else self.range[1]
+                value = sum(c * e ** i for i, c in enumerate(self.c))
+                slope = sum(i * c * e ** (i - 1) for i, c in enumerate(self.c) if i > 0)
+                return value + slope * (v - e)
             out = F0
             for c in reversed(self.c):
                 out = out * v + c

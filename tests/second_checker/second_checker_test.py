@@ -236,6 +236,18 @@ run_lpvid(["invalidate", "--data", feat_d, "--model", feat_path, "--certificate"
 want(out("feat.cert.json"))
 want(out("feat.cert.lower.json"))
 
+# A polynomial output map with a range narrower than its argument on the data: beyond the range
+# the map continues linearly with the polynomial's value and slope at the nearer end; the second
+# checker computes that line from the coefficients' derivative, not by Horner.
+prange = copy.deepcopy(lti_model)
+prange.pop("offset")
+prange["static"] = {"output": {"kind": "polynomial", "coefficients": ["0.1", 1, "-0.2", "0.05"],
+                               "range": ["-0.3", "0.4"]}}
+with open(out("prange.json"), "w") as f:
+    json.dump(prange, f, indent=1)
+run_lpvid(["invalidate", "--data", lti_d, "--model", out("prange.json"), "--certificate", out("prange.cert.json")])
+want(out("prange.cert.json"))
+
 # x0 alone as the unknown of a multiplicative model (x0 moves z: a box, branch and bound); the
 # model's own x0 is not zero, so the class's x0 entries must be read as changes of it.
 mx0 = copy.deepcopy(lti_model)
