@@ -53,6 +53,17 @@ std::vector<double> cost_rows_range(const Mat<double>& m, const Window& w) {
   return lo <= hi ? std::vector<double>{lo, hi} : std::vector<double>{};
 }
 
+/// Clears the range of the input (output) map; whether there was one.
+bool clear_ranges(LpvModel<double>& m, bool input, bool output) {
+  bool cleared = false;
+  for (auto [map, moved] : {std::pair{&m.statics.input, input}, std::pair{&m.statics.output, output}})
+    if (moved && !map->range.empty()) {
+      map->range.clear();
+      cleared = true;
+    }
+  return cleared;
+}
+
 /// A polynomial map whose coefficients the fit moved gets the range of its
 /// argument on the rows whose error the fit minimised (model/static_blocks.h):
 /// the input map's argument is the delayed measured input, the output map's
@@ -284,12 +295,7 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
   // fitted; its range is set from the fitted model below
   const bool input_map = moves_map_coefficients(slots, ParameterSlot::Where::kInputCoef);
   const bool output_map = moves_map_coefficients(slots, ParameterSlot::Where::kOutputCoef);
-  if ((input_map && !model.statics.input.range.empty()) || (output_map && !model.statics.output.range.empty())) {
-    LpvModel<double> open = model;
-    if (input_map) open.statics.input.range.clear();
-    if (output_map) open.statics.output.range.clear();
-    return fit_slots(open, slots, exp, o);
-  }
+  if (LpvModel<double> open = model; clear_ranges(open, input_map, output_map)) return fit_slots(open, slots, exp, o);
   FitResult res;
   res.model = model;
   const Vec<double> p0 = slot_values(model, slots);

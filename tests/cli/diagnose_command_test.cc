@@ -6,13 +6,16 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "data/csv_writer.h"
 #include "examples/effect_cases.h"
+#include "core/number_text.h"
 #include "model/model_file.h"
+#include "model/simulate.h"
 #include "support/cli_runner.h"
 
 namespace lpvid {
@@ -122,6 +125,43 @@ TEST_F(DiagnoseCommandTest, TestRoleIsScoredOnceAndNeverChooses) {
 
   ASSERT_EQ(run("diagnose", common + " --report " + file("t3.json")), 0) << output();
   EXPECT_TRUE(report("t3.json")["test"].is_null());
+}
+
+// A sensor |·| the declared model lacks, and a test record whose input is 1.6
+// times the validation record's, so that it leaves the estimation range.
+// Known answers by construction: the true system, simulated here, makes the
+// test output (plus white noise of 0.02); diagnose must name |·|, score the
+// model after below the model before on the test record (near the noise), and
+// state that the input leaves the estimation range.
+TEST_F(DiagnoseCommandTest, SensorAbsIsFoundAndHoldsOnATestRecordBeyondTheEstimationRange) {
+  const EffectCase c = make_effect_case("abs_value", 400, 3, 0.02);
+  Experiment<Rational> t = c.validation;
+  for (Eigen::Index k = 0; k < t.u.rows(); ++k) t.u(k, 0) = t.u(k, 0) * Rational(8) / Rational(5);
+  Mat<double> y = nearest_double(simulate(c.truth, t).output);
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.02);
+  for (Eigen::Index k = 0; k < y.rows(); ++k) y(k, 0) += noise(rng);
+  const std::string e = file("abs_est.csv"), test = file("abs_test.csv"), m = file("abs_declared.json");
+  write_csv(e, {{"u1", column_text(c.estimation.u, 0)}, {"y1", column_text(c.estimation.y, 0)},
+                {"rho1", column_text(c.estimation.rho, 0)}});
+  write_csv(test, {{"u1", column_text(t.u, 0)}, {"y1", column_text(y, 0)}, {"rho1", column_text(t.rho, 0)}});
+  write_model_file(m, c.declared);
+  ASSERT_EQ(run("diagnose", "--data " + e + " --model " + m + " --test " + test +
+                                " --warmup 10 --max-effects 2 --max-windows 1 --report " + file("abs.json")),
+            0)
+      << output();
+  const nlohmann::json r = report("abs.json");
+  ASSERT_FALSE(r["effects"].empty());
+  EXPECT_EQ(r["effects"][0]["kind"], reported_effect_kind("abs_value"));
+  const double before = r["test"]["rms_before"].get<double>(), after = r["test"]["rms_after"].get<double>();
+  EXPECT_LT(after, before);
+  EXPECT_LT(after, 0.1) << "the noise is 0.02";
+  EXPECT_FALSE(r["test"]["after_worse"].get<bool>());
+  const nlohmann::json& u1 = r["test"]["range"][0];
+  EXPECT_EQ(u1["signal"], "u1");
+  EXPECT_GT(u1["samples_below"].get<long>(), 0) << u1;
+  EXPECT_GT(u1["samples_above"].get<long>(), 0) << u1;
+  EXPECT_NE(output().find("OUTSIDE the estimation range: u1"), std::string::npos) << output();
 }
 
 // Without --window the bounds cover the whole estimation

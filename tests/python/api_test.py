@@ -157,6 +157,15 @@ class Api(unittest.TestCase):
         self.assertFalse([ln for ln in lines if ln.startswith("[diagnose")], "quiet=True: no progress lines")
         self.assertIsInstance(r.model, lpvid.Model)
         self.assertLess(r.rms_after, 0.5 * r.rms_before)
+        self.assertIs(r.after_worse, False)
+        # one entry per signal of the test record (u1, y1 and the scheduling column rho1), each
+        # with its test range inside-or-not against the estimation range it states
+        self.assertGreaterEqual(len(r.test_range), 3)
+        for s in r.test_range:
+            lo, hi = s["estimation_range"]
+            tlo, thi = s["test_range"]
+            self.assertEqual(s["samples_below"] > 0, tlo < lo, s)
+            self.assertEqual(s["samples_above"] > 0, thi > hi, s)
         self.assertTrue(r.certificates)
         for c in r.certificates:
             self.assertTrue(lpvid.verify(c), c)
