@@ -137,6 +137,20 @@ ojson candidate_json(const ScoredCandidate& c) {
           {"parameters", c.parameters}};
 }
 
+/// The physics-first comparison of a round (null when none was made).
+ojson physical_alternative_json(const RankingRound& rr) {
+  if (!rr.physical) return nullptr;
+  const PhysicalAlternative& p = *rr.physical;
+  return {{"physical", rr.ranked[static_cast<size_t>(p.physical)].label},
+          {"black_box", rr.ranked[static_cast<size_t>(p.black_box)].label},
+          {"held_out_differences_per_fold", p.differences},
+          {"mean_difference", p.mean},
+          {"standard_error", p.standard_error},
+          {"physical_taken", p.taken},
+          {"rule", "indistinguishable when the mean per-fold difference of held-out RMS (physical minus black box) is at "
+                   "most its standard error; the physical form is taken when it passes the acceptance rule"}};
+}
+
 ojson rounds_json(const DiagnoseResult& res) {
   ojson rounds = ojson::array();
   for (size_t i = 0; i < res.rank.rounds.size(); ++i) {
@@ -144,13 +158,15 @@ ojson rounds_json(const DiagnoseResult& res) {
     ojson cands = ojson::array();
     for (size_t k = 0; k < rr.ranked.size(); ++k) {
       ojson cj = candidate_json(rr.ranked[k]);
-      cj["share_of_estimation_residual"] = res.estimation_shares[i][k];
+      cj["share_of_estimation_residual"] = rr.ranked[k].estimation_share;
+      cj["below_share_floor"] = rr.ranked[k].estimation_share < kMinEstimationShare;
       cands.push_back(cj);
     }
     rounds.push_back({{"reference_validation", rr.reference_validation},
                       {"reference_held_out_folds", folds_json(rr.reference_folds)},
                       {"chosen", rr.chosen >= 0 ? ojson(rr.ranked[static_cast<size_t>(rr.chosen)].kind) : ojson("none")},
                       {"tie", tie_json(rr)},
+                      {"physical_alternative", physical_alternative_json(rr)},
                       {"candidates", cands}});
   }
   return rounds;

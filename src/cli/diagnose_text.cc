@@ -111,6 +111,27 @@ void print_header(const DiagnoseReport& in) {
             << "\n";
 }
 
+/// "; est share below the 0.1 % floor: not accepted" for a candidate under
+/// kMinEstimationShare, empty otherwise.
+std::string floor_text(const ScoredCandidate& c) {
+  if (c.estimation_share >= kMinEstimationShare) return "";
+  return "; est share below the " + num(100 * kMinEstimationShare, 3) + " % floor: not accepted";
+}
+
+/// The physics-first line (diagnose/physical_alternative.h).
+void print_physical_alternative(const RankingRound& rr) {
+  const PhysicalAlternative& p = *rr.physical;
+  const std::string ph = std::to_string(p.physical + 1), bb = std::to_string(p.black_box + 1);
+  std::cout << "  physics first: rank " << ph << " (" << rr.ranked[static_cast<size_t>(p.physical)].kind << ") and rank " << bb
+            << " (" << rr.ranked[static_cast<size_t>(p.black_box)].kind
+            << ") are indistinguishable on these data: held-out RMS per fold, rank " << ph << " minus rank " << bb << ":";
+  for (double d : p.differences) std::cout << " " << num(d, 3);
+  std::cout << "; mean " << num(p.mean, 3) << " <= its standard error " << num(p.standard_error, 3) << "; "
+            << (p.taken ? "the physical form, rank " + ph + ", is taken"
+                        : "rank " + ph + " does not pass the acceptance rule, so rank " + bb + " stays")
+            << "\n";
+}
+
 void print_round(const DiagnoseReport& in, size_t i) {
   const RankingRound& rr = in.result->rank.rounds[i];
   const char* what = in.folds ? "held-out RMS (all folds)" : "validation RMS";
@@ -125,19 +146,20 @@ void print_round(const DiagnoseReport& in, size_t i) {
                "added output signal explains (least-squares projection)\n"
             << "  rank  kind               " << (in.folds ? "held-out" : "val RMS ")
             << "   explained  est RMS    est share  params  candidate\n";
-  const std::vector<double>& shares = in.result->estimation_shares[i];
   for (size_t k = 0; k < rr.ranked.size(); ++k) {
     const ScoredCandidate& c = rr.ranked[k];
     char line[320];
     std::snprintf(line, sizeof line, "  %-4zu  %-17s  %-9s  %-9s  %-9s  %-9s  %-6d  %s%s\n", k + 1, c.kind.c_str(),
                   num(c.rms_validation).c_str(), (num(100 * c.explained, 3) + "%").c_str(),
-                  num(c.rms_estimation).c_str(), (num(100 * shares[k], 3) + "%").c_str(), c.effect_parameters,
+                  num(c.rms_estimation).c_str(), (num(100 * c.estimation_share, 3) + "%").c_str(), c.effect_parameters,
                   c.label.c_str(), static_cast<int>(k) == rr.chosen ? "   <- chosen" : "");
     std::cout << line;
     if (!c.reading.empty()) std::cout << "        fitted: " << c.reading << "\n";
     if (in.folds)
       std::cout << "        folds " << folds_text(c.folds) << "  (wins " << c.folds_won << " of " << c.folds.sse.size()
-                << (c.joint ? "; A, B re-fitted" : "") << start_choice_text(c.start) << ")\n";
+                << (c.joint ? "; A, B re-fitted" : "") << start_choice_text(c.start) << floor_text(c) << ")\n";
+    else if (!floor_text(c).empty())
+      std::cout << "        (" << floor_text(c).substr(2) << ")\n";
   }
   if (rr.tie) {
     std::cout << "  tie: ranks";
@@ -146,8 +168,9 @@ void print_round(const DiagnoseReport& in, size_t i) {
               << num(100 * rr.tie->margin, 3) << "%): the data does not tell them apart; rank " << rr.chosen + 1
               << " is taken by the tie rule (" << rr.tie->rule << ")\n";
   }
+  if (rr.physical) print_physical_alternative(rr);
   if (rr.chosen < 0)
-    std::cout << "  -> none: no candidate " << (in.folds ? "passes the rule above against " : "lowers the validation RMS by the required share below ")
+    std::cout << "  -> none: no candidate " << (in.folds ? "passes the rule above against " : "lowers the validation RMS by the required share (and explains the share floor of the estimation residual) below ")
               << num(rr.reference_validation) << "\n";
 }
 
@@ -194,7 +217,9 @@ void print_windows(const DiagnoseResult& res) {
     std::cout << "  objective on scaled signals: y / " << sc.y_scale_text() << ", z / " << sc.z_scale_text()
               << " (window 1; lambda = " << num(sc.lambda_scaled) << " there is " << num(sc.lambda_original, 6)
               << " in the data's units; bounds above in the data's units)\n";
-  std::cout << "  Theorem 3.1 again on file rows " << res.before.front().file_begin << ":" << res.before.front().file_end
+  const DataReference& thm31_rows = res.before_id.rows;
+  std::cout << "  Theorem 3.1 again on " << (thm31_rows.file.empty() ? std::string("file") : thm31_rows.file) << " rows "
+            << res.before.front().file_begin << ":" << res.before.front().file_end
             << " (the first window only; the output map re-identified with x0 free, alternating method):\n"
             << "    before    " << identification_line(res.before_id) << "\n"
             << "    after     " << identification_line(res.after_id) << "\n";

@@ -117,26 +117,6 @@ void check_options(const Experiment<double>& est_d, const Experiment<Rational>& 
                        std::to_string(est_q.n()) + " estimation samples");
 }
 
-/// Share of the round's estimation residual that each candidate's added
-/// output signal explains (least-squares projection, residual_analysis.h).
-std::vector<double> estimation_shares(const RankingRound& rr, const Experiment<double>& est) {
-  const Mat<double> base = simulate_output(rr.current, est);
-  const Mat<double> r = est.y - base;
-  std::vector<CandidateSignal> sig;
-  std::vector<size_t> index;
-  for (size_t k = 0; k < rr.ranked.size(); ++k) {
-    const Mat<double> added = simulate_output(rr.ranked[k].model, est) - base;
-    if (!added.allFinite() || added.squaredNorm() == 0) continue;
-    sig.push_back({rr.ranked[k].label, added});
-    index.push_back(k);
-  }
-  std::vector<double> out(rr.ranked.size(), 0.0);
-  if (!r.allFinite()) return out;
-  const std::vector<CandidateShare> sh = candidate_shares(r, sig);
-  for (size_t i = 0; i < sh.size(); ++i) out[index[i]] = sh[i].share;
-  return out;
-}
-
 /// The residual the report shows, before and after (ShownRecord).
 ShownRecord shown_record(const DiagnoseResult& out, const Experiment<double>& est_d, const Experiment<double>& selection,
                          const DiagnoseOptions& options) {
@@ -305,13 +285,13 @@ DiagnoseResult diagnose(const LpvModel<double>& declared, const ExperimentViews&
   // optional: a failure here is this stage's (WindowIdentification::failed); every result above stands
   for (auto [model, id] : {std::pair{&out.before_model, &out.before_id}, std::pair{&out.after_model, &out.after_id}}) {
     *id = try_identify_on_window(*model, views, windows[0][0].first, windows[0][0].second, options.certify, solver);
+    judge_against_window(*id, model == &out.before_model ? out.before.front() : out.after.front());
     if (!id->failed.empty() && options.ranking.progress) options.ranking.progress(id->failed + " (the diagnosis stands)");
   }
   // 4. the test role
   score_tests(out, est_d, tests, options);
   // 5. what the report shows beside the numbers above
   out.shown = shown_record(out, est_d, selection, options);
-  for (const RankingRound& rr : out.rank.rounds) out.estimation_shares.push_back(estimation_shares(rr, est_d));
   validation_rms(out.after_model, est_d, out.shown.init_samples, &out.estimation_after);
   set_map_ranges(out, est_d);
   out.estimation_records = score_records(out.before_model, out.after_model, est.exp_d);  // the data as written

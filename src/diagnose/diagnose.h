@@ -138,10 +138,6 @@ struct DiagnoseResult {
   /// from their mean (pooled_test_score).
   FreeRunScore pooled_before, pooled_after;
   ShownRecord shown;
-  /// Per ranking round, per ranked candidate: the share of the round's
-  /// estimation residual energy that the candidate's added output signal
-  /// explains (least-squares projection, residual_analysis.h candidate_shares).
-  std::vector<std::vector<double>> estimation_shares;
   /// The free-run scores of the models before and after on each estimation
   /// record (Experiment::records; one record: that record) and pooled.
   RecordScores estimation_records;

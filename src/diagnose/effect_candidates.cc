@@ -194,9 +194,9 @@ void state_nonlinearity_candidates(const CandidateContext& cx, std::vector<Effec
     const char* after;
   };
   const Kind kinds[] = {
-      {StateFunction::kSqrt, "sqrt", "e*sqrt|", " - c| (square-root outflow, e.g. a tank draining through an orifice)"},
-      {StateFunction::kAbs, "abs", "e*|", " - c| (a V-shaped, level-dependent feedback)"},
-      {StateFunction::kHinge, "hinge", "e*max(", " - c, 0) (an overflow: with e = -1 the level is clipped at c)"},
+      {StateFunction::kSqrt, "sqrt", "e*sqrt|", " - c| (a square-root law in the distance of the state from c)"},
+      {StateFunction::kAbs, "abs", "e*|", " - c| (a V: a feedback that grows with the distance of the state from c on either side)"},
+      {StateFunction::kHinge, "hinge", "e*max(", " - c, 0) (a one-sided feedback, active only above c: with e = -1 the state is clipped at c)"},
   };
   std::vector<StateColumn> existing;
   for (const std::string& col : base.columns.rho) existing.push_back(parse_state_column(col));
@@ -258,12 +258,12 @@ void cascade_state_nonlinearity_candidates(const CandidateContext& cx, std::vect
         starts.push_back(std::move(s));
       }
       if (starts.empty()) continue;
-      const std::string level = i == 0 ? "the upstream level x1 (feeds x2)" : "the downstream level x2 (y = x2)";
+      const std::string level = i == 0 ? "the upstream store x1 (feeds x2)" : "the downstream store x2 (y = x2)";
       EffectCandidate cand = make(
           "state_nonlinearity",
           std::string("state_nonlinearity ") + (f == StateFunction::kSqrt ? "sqrt" : "hinge") + " of " + level +
               ", states in cascade form: " +
-              (f == StateFunction::kSqrt ? "e*sqrt|x - c| (square-root outflow)" : "e*max(x - c, 0) (overflow at level c)"),
+              (f == StateFunction::kSqrt ? "e*sqrt|x - c| (a square-root outflow law)" : "e*max(x - c, 0) (a one-sided feedback above c)"),
           base.nx + 1, starts);
       cand.slots.push_back(state_shift_slot(starts.front(), starts.front().n_rho() - 1));
       cand.slots = with_dynamics_slots(cand.slots, starts.front());

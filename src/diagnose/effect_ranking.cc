@@ -11,6 +11,8 @@
 #include "core/parallel_for.h"
 #include "data/experiment_builder.h"
 #include "diagnose/order_variants.h"
+#include "diagnose/physical_alternative.h"
+#include "diagnose/residual_analysis.h"
 #include "model/simulate.h"
 
 namespace lpvid {
@@ -402,10 +404,15 @@ ScoredCandidate scored_from_family(const EffectCandidate& c, const FoldedFamily&
 }
 
 void set_explained(RankingRound& r) {
-  for (ScoredCandidate& s : r.ranked)
+  for (ScoredCandidate& s : r.ranked) {
+    // a free run that left every scale of the data diverged: its RMS is
+    // stated as inf (as for one that overflowed), not as a number like 4e95
+    if (s.rms_validation > kDivergedFactor * r.reference_validation)
+      s.rms_validation = std::numeric_limits<double>::infinity();
     s.explained = std::isfinite(s.rms_validation)
                       ? 1.0 - (s.rms_validation * s.rms_validation) / (r.reference_validation * r.reference_validation)
                       : -std::numeric_limits<double>::infinity();
+  }
   std::stable_sort(r.ranked.begin(), r.ranked.end(),
                    [](const ScoredCandidate& a, const ScoredCandidate& b) { return a.score < b.score; });
 }
@@ -511,18 +518,28 @@ void set_fold_reference(RankingRound& r, const FoldFigures& refit_folds, int rou
 /// sets r.chosen.
 void rank_fold_round(RankingRound& r, const std::vector<EffectCandidate>& cands,
                      const std::vector<FoldedFamily>& fitted, const LpvModel<double>& current,
-                     const RankingOptions& o) {
+                     const Experiment<double>& est, const RankingOptions& o) {
   for (size_t i = 0; i < cands.size(); ++i) {
     r.ranked.push_back(scored_from_family(cands[i], fitted[i + 1], current, o.joint_dynamics));
     r.ranked.back().folds_won = folds_won(r.ranked.back().folds, r.reference_folds);
     r.ranked.back().family = i + 1;
   }
   set_explained(r);
-  // the best-scored candidate that passes the rule of fold_plan.h, unless tied
+  set_estimation_shares(r, est);
+  // the best-scored candidate that passes the rule of fold_plan.h and the
+  // share floor, unless tied
   std::vector<int> accepted;
   for (size_t i = 0; i < r.ranked.size(); ++i)
-    if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain)) accepted.push_back(static_cast<int>(i));
+    if (accepts(r.ranked[i].folds, r.reference_folds, o.min_gain) &&
+        r.ranked[i].estimation_share >= kMinEstimationShare)
+      accepted.push_back(static_cast<int>(i));
   r.chosen = effect_tie_rule(r.ranked, accepted, r.tie);
+  // physics first: a physical form within the folds' spread of a black-box choice
+  r.physical = physical_alternative(r.ranked, accepted, r.chosen);
+  if (r.physical && r.physical->taken) {
+    r.chosen = r.physical->physical;
+    r.tie.reset();
+  }
 }
 
 /// The round's chosen candidate becomes the chain's current model, on the
@@ -562,7 +579,7 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
     const std::vector<FoldedFamily> fitted =
         fit_families(fr.families, fr.labels, "round " + std::to_string(round + 1), est, res.fold_blocks, o);
     set_fold_reference(r, fitted[0].figures, round, chain.current_folds, res);
-    rank_fold_round(r, fr.cands, fitted, chain.current, o);
+    rank_fold_round(r, fr.cands, fitted, chain.current, est, o);
     if (r.chosen >= 0) carry_fold_choice(r, fitted, chain, res);
     const bool stop = r.chosen < 0;
     res.rounds.push_back(std::move(r));
@@ -577,6 +594,23 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
 }
 
 }  // namespace
+
+void set_estimation_shares(RankingRound& r, const Experiment<double>& est) {
+  const Mat<double> base = simulate_output(r.current, est);
+  const Mat<double> residual = est.y - base;
+  std::vector<CandidateSignal> sig;
+  std::vector<size_t> index;
+  for (size_t k = 0; k < r.ranked.size(); ++k) {
+    r.ranked[k].estimation_share = 0;
+    const Mat<double> added = simulate_output(r.ranked[k].model, est) - base;
+    if (!added.allFinite() || added.squaredNorm() == 0) continue;
+    sig.push_back({r.ranked[k].label, added});
+    index.push_back(k);
+  }
+  if (!residual.allFinite()) return;
+  const std::vector<CandidateShare> sh = candidate_shares(residual, sig);
+  for (size_t i = 0; i < sh.size(); ++i) r.ranked[index[i]].estimation_share = sh[i].share;
+}
 
 int physical_form_rank(const std::string& kind) {
   static const char* const order[] = {"input_delay",       "input_saturation", "output_saturation",
@@ -714,12 +748,14 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
                  std::to_string(cands.size()) + " (" + cands[i].label + ")");
     });
     set_explained(r);
-    // the best-scored candidate if it lowers the validation RMS by the required share, unless tied
+    set_estimation_shares(r, est);
+    // the best-scored candidate if it lowers the validation RMS by the
+    // required share and passes the share floor, unless tied
     std::vector<int> accepted;
     const auto passes = [&](size_t i) { return r.ranked[i].rms_validation <= (1.0 - o.min_gain) * r.reference_validation; };
     if (!r.ranked.empty() && passes(0))
       for (size_t i = 0; i < r.ranked.size(); ++i)
-        if (passes(i)) accepted.push_back(static_cast<int>(i));
+        if (passes(i) && r.ranked[i].estimation_share >= kMinEstimationShare) accepted.push_back(static_cast<int>(i));
     r.chosen = effect_tie_rule(r.ranked, accepted, r.tie);
     if (r.chosen >= 0) {
       const ScoredCandidate& c = r.ranked[static_cast<size_t>(r.chosen)];

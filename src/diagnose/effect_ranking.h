@@ -100,6 +100,10 @@ struct ScoredCandidate {
   std::string reading;
   int effect_parameters = 0;
   double rms_estimation = 0, rms_validation = 0, explained = 0, score = 0;
+  /// The share of the round's estimation residual (the current model's free
+  /// run on the estimation record) that the candidate's added output signal
+  /// explains: least-squares projection, residual_analysis.h candidate_share.
+  double estimation_share = 0;
   LpvModel<double> model;          ///< fitted on estimation data (x0 of the estimation record)
   /// The effect's own parameters: for a chosen effect in RankingResult::chosen
   /// their values in the FINAL model (the written, certified one; later
@@ -127,6 +131,21 @@ struct EffectTie {
   std::string rule;           ///< why the chosen one: "fewer parameters", "physical form", "label order"
 };
 
+/// A candidate whose held-out (or validation) RMS exceeds this multiple of
+/// the round's reference has diverged on those rows: its RMS is reported as
+/// inf and its explained share as -inf (the ranking keeps its score's order).
+inline constexpr double kDivergedFactor = 1e6;
+
+/// A physical candidate the folds do not tell apart from a black-box choice
+/// (diagnose/physical_alternative.h).
+struct PhysicalAlternative {
+  int black_box = -1;          ///< index into RankingRound::ranked: the chosen black-box map
+  int physical = -1;           ///< index into ranked: the best-ranked physical candidate
+  std::vector<double> differences;  ///< d_j per fold (physical minus black box)
+  double mean = 0, standard_error = 0;
+  bool taken = false;          ///< the physical form passed the rule and replaced the black box
+};
+
 struct RankingRound {
   LpvModel<double> current;         ///< the model the candidates were added to
   double reference_validation = 0;  ///< what an effect must beat
@@ -135,6 +154,9 @@ struct RankingRound {
   std::vector<ScoredCandidate> ranked;  ///< best score first
   int chosen = -1;                      ///< index into ranked, -1: none
   std::optional<EffectTie> tie;         ///< set when the chosen candidate was one of a tie
+  /// Set when a black-box choice has a physical candidate within the
+  /// fold-to-fold spread (taken: it became the choice).
+  std::optional<PhysicalAlternative> physical;
 };
 
 /// The kinds in the tie rule's order of physical form: a named mechanism
@@ -163,6 +185,10 @@ struct RankingResult {
   FoldFigures before_folds, after_folds;
   double min_gain = 0;              ///< the acceptance share used
 };
+
+/// Sets every ranked candidate's estimation_share against r.current on `est`
+/// (a candidate whose added output is not finite or zero gets 0).
+void set_estimation_shares(RankingRound& r, const Experiment<double>& est);
 
 /// The start of a grid family that both explains the record and predicts
 /// unseen rows: the lowest score = MSE of the whole-record fit from start s

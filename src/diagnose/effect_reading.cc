@@ -6,6 +6,7 @@
 
 #include "diagnose/effect_ranking.h"
 #include "model/simulate.h"
+#include "model/state_scheduling.h"
 
 namespace lpvid {
 
@@ -80,7 +81,70 @@ std::string map_reading(const StaticMap<double>& g, const ArgumentRange& a, cons
   }
 }
 
+/// "x2 - 6.18" for the argument of a state function.
+std::string argument_text(const StateScheduled<double>& f) {
+  const std::string x = "x" + std::to_string(f.i + 1);
+  if (f.shift == 0) return x;
+  return x + (f.shift > 0 ? " - " : " + ") + g4(std::abs(f.shift));
+}
+
+/// The reading of one state function f(x_i − c) from the range of its
+/// argument a = x_i − c on the record (`below`: samples with a < 0).
+std::string state_function_reading(const StateScheduled<double>& f, const ArgumentRange& a, Eigen::Index below,
+                                   Eigen::Index n) {
+  const std::string arg = argument_text(f);
+  const std::string seen = " (" + arg + " ranges " + a.text() + " on the estimation record)";
+  const bool never_below = a.lo >= 0, never_above = a.hi <= 0;
+  switch (f.function) {
+    case StateFunction::kAbs:
+      if (never_below) return "a linear term: |" + arg + "| = " + arg + " on every sample" + seen + "; no V is seen";
+      if (never_above)
+        return "a linear term: |" + arg + "| = -(" + arg + ") on every sample" + seen + "; no V is seen";
+      break;
+    case StateFunction::kHinge:
+      if (never_above) return "zero: max(" + arg + ", 0) = 0 on every sample" + seen + "; the gain comes from the re-fit beside it";
+      if (never_below) return "a linear term: max(" + arg + ", 0) = " + arg + " on every sample" + seen + "; no kink is seen";
+      break;
+    case StateFunction::kSqrtPos:
+      if (never_above) return "zero: sqrt(max(" + arg + ", 0)) = 0 on every sample" + seen;
+      if (never_below)
+        return "a square root on every sample: sqrt(max(" + arg + ", 0)) = sqrt(" + arg + ")" + seen +
+               "; its cut-off is never reached";
+      break;
+    case StateFunction::kSqrt:
+      if (never_below || never_above) return "a square root of one sign: " + arg + " ranges " + a.text() + ", never crossing 0";
+      break;
+    case StateFunction::kState: return "";
+  }
+  char share[32];
+  std::snprintf(share, sizeof share, "%.3g", 100.0 * static_cast<double>(below) / static_cast<double>(n));
+  return "the kink is used: " + arg + " is below 0 on " + share + " % of the samples" + seen;
+}
+
 }  // namespace
+
+std::string state_nonlinearity_reading(const LpvModel<double>& fitted, const Experiment<double>& est,
+                                       const std::vector<std::string>& columns) {
+  if (est.n() == 0 || columns.empty()) return "";
+  Simulation<double> sim;
+  std::vector<StateScheduled<double>> functions;
+  try {
+    functions = state_functions<double>(columns, fitted.nx);
+    sim = simulate(fitted, est);
+  } catch (const std::exception&) {
+    return "";  // a model that does not simulate on the record has no reading; its RMS already says so
+  }
+  std::string out;
+  for (const StateScheduled<double>& f : functions) {
+    if (f.function == StateFunction::kState) continue;
+    const Mat<double> a = sim.x.col(f.i).array() - f.shift;
+    const ArgumentRange r = range_of(a);
+    if (!r.any) continue;
+    const Eigen::Index below = (a.array() < 0).count();
+    out += (out.empty() ? "" : "; ") + state_function_reading(f, r, below, a.rows());
+  }
+  return out;
+}
 
 std::string effect_reading(const std::string& kind, const LpvModel<double>& fitted, const Experiment<double>& est) {
   const bool input_map = kind == "input_saturation" || kind == "dead_zone";
@@ -97,9 +161,17 @@ std::string effect_reading(const std::string& kind, const LpvModel<double>& fitt
 }
 
 void read_effects(RankingResult& res, const Experiment<double>& est) {
+  // a state nonlinearity is read from the columns it introduced (its parameters)
+  const auto read = [&](const ScoredCandidate& c, const LpvModel<double>& model) {
+    if (c.kind != "state_nonlinearity") return effect_reading(c.kind, model, est);
+    std::vector<std::string> columns;
+    if (c.parameters.contains("new_scheduling"))
+      for (const auto& [name, column] : c.parameters["new_scheduling"].items()) columns.push_back(column.get<std::string>());
+    return state_nonlinearity_reading(model, est, columns);
+  };
   for (RankingRound& r : res.rounds)
-    for (ScoredCandidate& c : r.ranked) c.reading = effect_reading(c.kind, c.model, est);
-  for (ScoredCandidate& c : res.chosen) c.reading = effect_reading(c.kind, res.after, est);
+    for (ScoredCandidate& c : r.ranked) c.reading = read(c, c.model);
+  for (ScoredCandidate& c : res.chosen) c.reading = read(c, res.after);
 }
 
 }  // namespace lpvid

@@ -140,10 +140,12 @@ bool accepts(const FoldFigures& candidate, const FoldFigures& reference, double 
 
 std::string acceptance_rule_text(size_t folds, double min_gain) {
   const size_t need = folds / 2 + 1;
-  char gain[32];
+  char gain[32], floor[32];
   std::snprintf(gain, sizeof gain, "%g", 100.0 * min_gain);
+  std::snprintf(floor, sizeof floor, "%g", 100.0 * kMinEstimationShare);
   return "an effect is accepted if it lowers the held-out free-run error on at least " + std::to_string(need) + " of " +
-         std::to_string(folds) + " folds and the held-out RMS over all folds by at least " + gain + " %";
+         std::to_string(folds) + " folds and the held-out RMS over all folds by at least " + gain +
+         " %, and its added output explains at least " + floor + " % of the estimation residual";
 }
 
 }  // namespace lpvid

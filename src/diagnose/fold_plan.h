@@ -73,13 +73,24 @@ struct FoldFigures {
   double total_rms() const;     ///< √(Σ SSE / Σ count)
 };
 
+/// An effect must explain at least this share of the round's estimation
+/// residual (ScoredCandidate::estimation_share) to be accepted, whatever its
+/// held-out figures: a candidate whose added output is numerically absent on
+/// the estimation record (a |.| of a state that never crosses its kink fitted
+/// with a vanishing gain, measured at 1e-13 of the residual) cannot be the
+/// effect the residual shows, and a held-out gain it brings comes from the
+/// re-fit beside it. 0.1 %: far below any effect a report should name, far
+/// above rounding.
+inline constexpr double kMinEstimationShare = 0.001;
+
 /// Folds on which `candidate` has a strictly lower SSE than `reference`.
 int folds_won(const FoldFigures& candidate, const FoldFigures& reference);
 
 /// The acceptance rule above (min_gain in [0, 1)).
 bool accepts(const FoldFigures& candidate, const FoldFigures& reference, double min_gain);
 
-/// "3 of 4 folds and at least 5 % on the total" — the rule in words.
+/// "3 of 4 folds and at least 5 % on the total" and the share floor — the
+/// rule in words.
 std::string acceptance_rule_text(size_t folds, double min_gain);
 
 }  // namespace lpvid

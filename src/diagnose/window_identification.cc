@@ -1,5 +1,7 @@
 #include "diagnose/window_identification.h"
 
+#include <cstdio>
+
 #include "core/deadline.h"
 #include "data/experiment_builder.h"
 #include "diagnose/record_windows.h"
@@ -9,6 +11,27 @@
 #include "model/simulate.h"
 
 namespace lpvid {
+
+namespace {
+
+/// The stage on rows [begin, end) (`rows` in their file), failed for `reason`:
+/// no bound, no certificate.
+WindowIdentification failed_stage(Eigen::Index begin, Eigen::Index end, const DataReference& rows,
+                                  const std::string& reason, const std::vector<std::string>& basis) {
+  WindowIdentification failed;
+  failed.applicable = true;
+  failed.failed = reason;
+  failed.basis = basis;
+  failed.rows = rows;
+  failed.bounds.begin = begin;
+  failed.bounds.end = end;
+  failed.bounds.file_begin = rows.row_begin;
+  failed.bounds.file_end = rows.row_end;
+  failed.bounds.bounds.reason = reason;
+  return failed;
+}
+
+}  // namespace
 
 WindowIdentification identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est, Eigen::Index begin,
                                         Eigen::Index end, const CertifyOptions& options,
@@ -47,6 +70,7 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
   const DataReference rows = piece_reference(options.records, est_q.record_lengths(), {begin, end});
   out.bounds.file_begin = rows.row_begin;
   out.bounds.file_end = rows.row_end;
+  out.rows = rows;
   CertifyOptions co = options;
   if (!co.records.empty()) co.records = {rows};  // the certificate names the window's file rows
   co.lower_end = false;  // the diagnose report states δ, d_max here, not the interval
@@ -71,16 +95,25 @@ WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, cons
   } catch (const RunStopped&) {
     throw;  // the user's --timeout or a requested stop ends the run, not a window or a stage
   } catch (const std::exception& e) {
-    WindowIdentification failed;
-    failed.applicable = true;
-    failed.failed = std::string("the optional Theorem 3.1 stage failed: ") + e.what();
-    failed.bounds.begin = begin;
-    failed.bounds.end = end;
-    failed.bounds.file_begin = rows.row_begin;
-    failed.bounds.file_end = rows.row_end;
-    failed.bounds.bounds.reason = failed.failed;
-    return failed;
+    return failed_stage(begin, end, rows, std::string("the optional Theorem 3.1 stage failed: ") + e.what(), {});
   }
+}
+
+void judge_against_window(WindowIdentification& id, const WindowBounds& own) {
+  const CertifiedBounds& b = id.bounds.bounds;
+  const CertifiedBounds& w = own.bounds;
+  if (!id.failed.empty() || !b.verified() || !w.verified()) return;
+  const bool same_rows = own.pieces.size() <= 1 && own.begin == id.bounds.begin && own.end == id.bounds.end;
+  if (!same_rows) return;  // a joint window's bound is over other rows too
+  const bool worse = b.delta > kReidentificationWorseFactor * w.delta || b.dmax > kReidentificationWorseFactor * w.dmax;
+  if (!worse) return;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "the optional Theorem 3.1 stage failed: its verified bounds (delta <= %.4g, dmax <= %.4g) are more "
+                "than %g times the window's own Theorem 2.1 bounds on the same rows (delta <= %.4g, dmax <= %.4g), "
+                "which its start already meets; the window's bounds stand",
+                b.delta, b.dmax, kReidentificationWorseFactor, w.delta, w.dmax);
+  id = failed_stage(id.bounds.begin, id.bounds.end, id.rows, text, id.basis);
 }
 
 }  // namespace lpvid

@@ -26,6 +26,8 @@ struct WindowIdentification {
   /// words. diagnose() keeps every finished result and reports this one.
   std::string failed;
   std::vector<std::string> basis;  ///< the correction basis (texts)
+  /// The window's rows in their file (file empty: data made in memory).
+  DataReference rows;
   IdentifyResult result;
   WindowBounds bounds;             ///< the identified model's certified bounds on the window
 };
@@ -40,5 +42,19 @@ WindowIdentification identify_on_window(const LpvModel<double>& fitted, const Ex
 WindowIdentification try_identify_on_window(const LpvModel<double>& fitted, const ExperimentViews& est,
                                             Eigen::Index begin, Eigen::Index end,
                                             const CertifyOptions& options, SdpSolver& solver);
+
+/// Theorem 3.1 starts from the fitted model (θ = 0, x0 its state at the
+/// window's first row), which meets the window's own Theorem 2.1 bounds; an
+/// identified δ or d_max above kReidentificationWorseFactor times the
+/// window's own ends far from that start (a poor alternating run, seen on a
+/// measured record at d_max 1e25 for a window bound of 0.07). Such a result
+/// is true (it was certified) but says less than the window's bound: the
+/// stage is reported as failed, the window's bound stands.
+inline constexpr double kReidentificationWorseFactor = 10;
+
+/// Sets `id.failed` (and drops its bounds and certificate) when a verified
+/// δ or d_max of `id` exceeds kReidentificationWorseFactor times the verified
+/// bound of `own`, the same model's Theorem 2.1 window on the same rows.
+void judge_against_window(WindowIdentification& id, const WindowBounds& own);
 
 }  // namespace lpvid

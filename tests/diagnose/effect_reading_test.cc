@@ -3,7 +3,15 @@
 // the record never enters is exactly an input offset, one of width 5e-9 is
 // within 2.5e-9 of one; |.| of a positive signal is exactly the identity; a
 // saturation no sample reaches is the identity. Maps the record does use
-// keep their label (empty reading).
+// keep their label (empty reading). A state |.| or hinge that never crosses
+// its kink is the linear term (or zero) it is. The estimation share that
+// the acceptance floor reads is checked against its formula.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "diagnose/effect_ranking.h"
@@ -91,6 +99,101 @@ TEST(EffectReading, AbsOfAOneSignedOutputIsTheIdentity) {
   // crossing zero: |.| is used
   m.offset.values = {Vec<double>::Constant(1, -100)};
   EXPECT_EQ(effect_reading("abs_value", m, e), "");
+}
+
+/// x+ = 0.5 x + u (one state, y = x), scheduled on "@<f>(x1-c)" with a
+/// state-offset gain e = 0: the state run is the linear one, the reading
+/// reads the function's argument along it.
+LpvModel<double> state_function_model(const std::string& column) {
+  LpvModel<double> m;
+  m.nx = m.nu = m.ny = 1;
+  m.scheduling = {"s"};
+  m.columns = {{"u"}, {"y"}, {column}};
+  const Monomial one = constant_monomial(1);
+  m.A = ParamMatrix<double>(1, 1);
+  m.A.add(one, Mat<double>::Constant(1, 1, 0.5));
+  m.B = ParamMatrix<double>(1, 1);
+  m.B.add(one, Mat<double>::Constant(1, 1, 1.0));
+  m.C = ParamMatrix<double>(1, 1);
+  m.C.add(one, Mat<double>::Constant(1, 1, 1.0));
+  m.D = ParamMatrix<double>(1, 1);
+  Monomial h = one;
+  h.powers[0] = 1;
+  m.state_offset.basis = {h};
+  m.state_offset.values = {Vec<double>::Zero(1)};
+  m.x0 = Vec<double>::Zero(1);
+  return m;
+}
+
+/// The state run x+ = 0.5 x + u from 0, computed here again.
+std::vector<double> state_run(const Experiment<double>& e) {
+  std::vector<double> x(static_cast<size_t>(e.n()));
+  double v = 0;
+  for (Eigen::Index k = 0; k < e.n(); ++k) {
+    x[static_cast<size_t>(k)] = v;
+    v = 0.5 * v + e.u(k, 0);
+  }
+  return x;
+}
+
+TEST(EffectReading, AStateAbsWhoseArgumentNeverCrossesItsKinkIsALinearTerm) {
+  // x starts at 0 and rises to at most 18 with u in [2, 9]: x1 + 1 > 0 throughout
+  const Experiment<double> e = sweep(2, 9);
+  const std::string col = "@abs(x1+1)";
+  const std::string r = state_nonlinearity_reading(state_function_model(col), e, {col});
+  EXPECT_NE(r.find("a linear term: |x1 + 1| = x1 + 1 on every sample"), std::string::npos) << r;
+  // a hinge far above every state value is zero on the record
+  const std::string h = "@hinge(x1-100)";
+  EXPECT_NE(state_nonlinearity_reading(state_function_model(h), e, {h}).find("zero: max(x1 - 100, 0) = 0"),
+            std::string::npos);
+  // an outflow law sqrt(max(x - c, 0)) whose cut-off is never reached is a plain square root
+  const std::string q = "@sqrtpos(x1+1)";
+  EXPECT_NE(state_nonlinearity_reading(state_function_model(q), e, {q}).find("a square root on every sample"),
+            std::string::npos);
+}
+
+TEST(EffectReading, AStateAbsThatCrossesItsKinkSaysOnWhichShare) {
+  const Experiment<double> e = sweep(2, 9);
+  const std::vector<double> x = state_run(e);
+  const double below = static_cast<double>(std::count_if(x.begin(), x.end(), [](double v) { return v < 10; }));
+  ASSERT_GT(below, 0);
+  ASSERT_LT(below, static_cast<double>(x.size()));
+  char share[32];
+  std::snprintf(share, sizeof share, "%.3g", 100.0 * below / static_cast<double>(x.size()));
+  const std::string col = "@abs(x1-10)";
+  const std::string r = state_nonlinearity_reading(state_function_model(col), e, {col});
+  EXPECT_NE(r.find("the kink is used: x1 - 10 is below 0 on " + std::string(share) + " % of the samples"),
+            std::string::npos)
+      << r;
+}
+
+// The share floor's figure (effect_ranking.h set_estimation_shares): for one
+// output and one added signal s it is (r·s)² / (‖r‖²‖s‖²), r the current
+// model's estimation residual; a candidate equal to the current model adds
+// nothing and explains nothing.
+TEST(EstimationShare, IsTheSquaredCosineOfTheResidualAndTheAddedSignal) {
+  Experiment<double> e = sweep(2, 9);
+  for (Eigen::Index k = 0; k < e.n(); ++k) e.y(k, 0) = e.u(k, 0) + 0.3 + std::sin(0.7 * static_cast<double>(k));
+  RankingRound r;
+  r.current = static_gain(1, 0);
+  r.ranked.resize(3);
+  r.ranked[0].model = static_gain(1, 0.5);  // adds the constant 0.5
+  r.ranked[1].model = static_gain(1, 0);    // adds nothing
+  r.ranked[2].model = static_gain(1.1, 0);  // adds 0.1 u
+  set_estimation_shares(r, e);
+  double rr = 0, rs0 = 0, ss0 = 0, rs2 = 0, ss2 = 0;
+  for (Eigen::Index k = 0; k < e.n(); ++k) {
+    const double res = e.y(k, 0) - e.u(k, 0);
+    rr += res * res;
+    rs0 += res * 0.5;
+    ss0 += 0.25;
+    rs2 += res * 0.1 * e.u(k, 0);
+    ss2 += 0.01 * e.u(k, 0) * e.u(k, 0);
+  }
+  EXPECT_NEAR(r.ranked[0].estimation_share, rs0 * rs0 / (rr * ss0), 1e-12);
+  EXPECT_EQ(r.ranked[1].estimation_share, 0.0);
+  EXPECT_NEAR(r.ranked[2].estimation_share, rs2 * rs2 / (rr * ss2), 1e-12);
+  EXPECT_GT(r.ranked[0].estimation_share, kMinEstimationShare);
 }
 
 TEST(EffectReading, OtherKindsHaveNoReading) {
