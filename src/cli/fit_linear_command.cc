@@ -20,13 +20,16 @@
 #include "fit/linear_fit.h"
 #include "fit/output_error_fit.h"
 #include "model/model_file.h"
+#include "model/simulate.h"
+#include "core/rms.h"
 #include "cli/help_text.h"
 
 namespace lpvid::cli {
 namespace {
 
 struct FitLinearArgs {
-  std::string data, rows, out, report, order = "auto";
+  std::vector<std::string> data, rows;  ///< --data (repeatable: several records), --rows (one per --data)
+  std::string out, report, order = "auto";
   std::vector<std::string> names, u{"u"}, y{"y"};
   std::string val_data, val_rows;
   std::vector<std::string> val_names, val_columns;  ///< --validation-columns: inputs then the output
@@ -69,7 +72,9 @@ std::optional<Experiment<double>> load_validation(const FitLinearArgs& a) {
     vcols.u.assign(a.val_columns.begin(), a.val_columns.begin() + static_cast<std::ptrdiff_t>(a.u.size()));
     vcols.y.assign(a.val_columns.begin() + static_cast<std::ptrdiff_t>(a.u.size()), a.val_columns.end());
   }
-  const std::string& path = a.val_data.empty() ? a.data : a.val_data;
+  if (a.val_data.empty() && a.data.size() > 1)
+    throw InputError("--validation-rows/--validation-columns with several --data: name the validation file with --validation");
+  const std::string& path = a.val_data.empty() ? a.data.front() : a.val_data;
   const auto& names = a.val_data.empty() ? a.names : a.val_names;
   return load(path, names, a.val_rows, vcols);
 }
@@ -82,13 +87,27 @@ std::optional<Experiment<double>> load_validation(const FitLinearArgs& a) {
 OrderChoice choose_order_printed(const FitLinearArgs& a, const Experiment<double>& est,
                                  const std::optional<Experiment<double>>& val, const ColumnMap& cols,
                                  nlohmann::ordered_json& report) {
-  const Eigen::Index cut = val ? est.n() : est.n() * 2 / 3;
-  const Experiment<double> fit_rows = val ? est : select_rows(est, 0, cut);
-  const Experiment<double> held_out = val ? *val : select_rows(est, cut, est.n());
+  // without validation data: the first two thirds of each record fit, the last third scores
+  std::vector<Experiment<double>> fit_parts, held_parts;
+  std::string cuts;
+  Eigen::Index first = 0;
+  for (const Eigen::Index len : est.record_lengths()) {
+    const Eigen::Index cut = len * 2 / 3;
+    fit_parts.push_back(select_rows(est, first, first + cut));
+    held_parts.push_back(select_rows(est, first + cut, first + len));
+    cuts += (cuts.empty() ? "" : ", ") + std::to_string(cut) + ":" + std::to_string(len);
+    first += len;
+  }
+  const Experiment<double> fit_rows = val ? est : stack_records(fit_parts);
+  const Experiment<double> held_out = val ? *val : stack_records(held_parts);
   const OrderChoice choice = choose_order(fit_rows, held_out, cols, a.max_order, a.offset, a.init_samples);
-  const std::string scored_on = val ? "the validation (selection) data" : "estimation rows " + std::to_string(cut) + ":" + std::to_string(est.n());
-  std::cout << "  order  rms_estimation  rms_held_out  (fit on " << (val ? "all estimation rows" : "estimation rows 0:" + std::to_string(cut))
-            << ", free run scored on " << scored_on << "; order n is also started from order n-1's fit)\n";
+  const bool several = est.record_count() > 1;
+  const std::string scored_on = val ? "the validation (selection) data"
+                                    : (several ? "the last third of each record, rows " : "estimation rows ") + cuts;
+  std::cout << "  order  rms_estimation  rms_held_out  (fit on "
+            << (val ? "all estimation rows" : several ? "the first two thirds of each record" : "estimation rows 0:" + std::to_string(est.n() * 2 / 3))
+            << ", free run scored on " << scored_on << (several ? ", each record from its own x0" : "")
+            << "; order n is also started from order n-1's fit)\n";
   double best = choice.scores.front().rms_validation;
   for (const OrderScore& s : choice.scores) best = std::min(best, s.rms_validation);
   for (const OrderScore& s : choice.scores) {
@@ -134,17 +153,57 @@ void report_fit(const FitLinearArgs& a, const LinearFit& fit, int order, const s
   }
 }
 
+/// Several records: each record's estimation RMS from its own fitted x0
+/// (the model file keeps the first record's).
+void report_records(const FitLinearArgs& a, const LinearFit& fit, const Experiment<double>& est,
+                    nlohmann::ordered_json& report) {
+  if (est.record_count() < 2) return;
+  Experiment<double> with_x0 = est;
+  with_x0.record_x0 = fit.record_x0;
+  const Mat<double> residual = est.y - simulate_output(fit.model, with_x0);
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  Eigen::Index first = 0;
+  const std::vector<Eigen::Index> lengths = est.record_lengths();
+  for (size_t r = 0; r < lengths.size(); ++r) {
+    const double rr = rms(Vec<double>(residual.middleRows(first, lengths[r]).col(0)));
+    std::cout << "  record " << r + 1 << " (" << a.data[r] << "): rms_estimation " << rr << " from its own x0\n";
+    nlohmann::ordered_json x0 = nlohmann::ordered_json::array();
+    for (Eigen::Index i = 0; i < fit.record_x0[r].size(); ++i) x0.push_back(fit.record_x0[r](i));
+    list.push_back({{"file", a.data[r]},
+                    {"rows", a.rows.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(a.rows[r])},
+                    {"samples", lengths[r]},
+                    {"rms_estimation", rr},
+                    {"x0", x0}});
+    first += lengths[r];
+  }
+  report["records"] = list;
+  report["model_x0"] = "the first record's (the model file holds one x0)";
+}
+
 int run_fit_linear(const FitLinearArgs& a) {
   check_output_file(a.out, "model");
   int order = parse_order(a.order);
   if (order < 0) throw InputError("--order: must be >= 1 (or 'auto'), got '" + a.order + "'");
   const ColumnMap cols{a.u, a.y, {}};
   const SignalInfo signal_info = signal_info_of(a.signal_info, cols);  // checked before any work
-  const Experiment<double> est = load(a.data, a.names, a.rows, cols);
+  if (!a.rows.empty() && a.rows.size() != a.data.size())
+    throw InputError("--rows: give one per --data (" + std::to_string(a.data.size()) + " here), got " +
+                     std::to_string(a.rows.size()));
+  std::vector<Experiment<double>> records;
+  std::cout << "lpvid fit-linear\n";
+  for (size_t r = 0; r < a.data.size(); ++r) {
+    const std::string rows = a.rows.empty() ? "" : a.rows[r];
+    records.push_back(load(a.data[r], a.names, rows, cols));
+    std::cout << "  data        " << a.data[r] << (rows.empty() ? "" : " rows " + rows) << "  (u: " << a.u.front()
+              << (a.u.size() > 1 ? ",…" : "") << ", y: " << a.y.front() << ", " << records.back().n() << " samples"
+              << (a.data.size() > 1 ? "; record " + std::to_string(r + 1) + " of " + std::to_string(a.data.size()) +
+                                          ", its own x0"
+                                    : "")
+              << ")\n";
+  }
+  const Experiment<double> est = stack_records(records);
   const std::optional<Experiment<double>> val = load_validation(a);
-  std::cout << "lpvid fit-linear\n  data        " << a.data << (a.rows.empty() ? "" : " rows " + a.rows)
-            << "  (u: " << a.u.front() << (a.u.size() > 1 ? ",…" : "") << ", y: " << a.y.front() << ", "
-            << est.n() << " samples)\n  order       " << a.order << "\n  offset      " << (a.offset ? "yes" : "no")
+  std::cout << "  order       " << a.order << "\n  offset      " << (a.offset ? "yes" : "no")
             << "\n  init        x0 of validation data from its first " << a.init_samples << " samples\n";
 
   nlohmann::ordered_json report;
@@ -161,6 +220,7 @@ int run_fit_linear(const FitLinearArgs& a) {
   if (chosen) fo.nested_denominator = chosen->form.a;
   const LinearFit fit = chosen && val ? *chosen : fit_linear(est, cols, fo);
   report_fit(a, fit, order, val, signal_info, report);
+  report_records(a, fit, est, report);
   write_json(a.report, report);
   return kExitOk;
 }
@@ -183,9 +243,12 @@ void refuse_ignored_fit_options(const CLI::App& cmd, const FitLinearArgs& a) {
 Runner add_fit_linear_command(CLI::App& app) {
   auto a = std::make_shared<FitLinearArgs>();
   CLI::App* cmd = app.add_subcommand("fit-linear", "Fit an LTI starting model (ARX + output error) to data");
-  cmd->add_option("--data", a->data, "estimation data file")->required();
+  cmd->add_option("--data", a->data,
+                  "estimation data file; repeat for several records of one system (one model, each record its own x0, "
+                  "the order chosen on all of them)")
+      ->required();
   cmd->add_option("--names", a->names, "column names for a headerless data file")->delimiter(',');
-  cmd->add_option("--rows", a->rows, "window of estimation rows B:E (0-based, E exclusive)");
+  cmd->add_option("--rows", a->rows, "window of estimation rows B:E (0-based, E exclusive); one per --data");
   cmd->add_option("--u", a->u, "input column(s) (default u)")->delimiter(',');
   cmd->add_option("--y", a->y, "output column (default y)")->delimiter(',');
   cmd->add_option("--order", a->order, "model order N >= 1, or auto (default)");

@@ -11,7 +11,6 @@
 #include "core/parallel_for.h"
 #include "data/experiment_builder.h"
 #include "diagnose/order_variants.h"
-#include "diagnose/physical_alternative.h"
 #include "diagnose/residual_analysis.h"
 #include "model/simulate.h"
 
@@ -535,7 +534,9 @@ void rank_fold_round(RankingRound& r, const std::vector<EffectCandidate>& cands,
       accepted.push_back(static_cast<int>(i));
   r.chosen = effect_tie_rule(r.ranked, accepted, r.tie);
   // physics first: a physical form within the folds' spread of a black-box choice
-  r.physical = physical_alternative(r.ranked, accepted, r.chosen);
+  std::vector<RankedFigures> figures;
+  for (const ScoredCandidate& c : r.ranked) figures.push_back({c.kind, c.folds});
+  r.physical = physical_alternative(figures, accepted, r.chosen);
   if (r.physical && r.physical->taken) {
     r.chosen = r.physical->physical;
     r.tie.reset();
@@ -593,6 +594,20 @@ RankingResult rank_effects_by_folds(const LpvModel<double>& declared, const Expe
   return res;
 }
 
+/// One-split mode: ranks the round's scored candidates and sets r.chosen:
+/// the best-scored candidate if it lowers the validation RMS by the required
+/// share and passes the share floor, unless tied.
+void choose_on_validation(RankingRound& r, const Experiment<double>& est, double min_gain) {
+  set_explained(r);
+  set_estimation_shares(r, est);
+  std::vector<int> accepted;
+  const auto passes = [&](size_t i) { return r.ranked[i].rms_validation <= (1.0 - min_gain) * r.reference_validation; };
+  if (!r.ranked.empty() && passes(0))
+    for (size_t i = 0; i < r.ranked.size(); ++i)
+      if (passes(i) && r.ranked[i].estimation_share >= kMinEstimationShare) accepted.push_back(static_cast<int>(i));
+  r.chosen = effect_tie_rule(r.ranked, accepted, r.tie);
+}
+
 }  // namespace
 
 void set_estimation_shares(RankingRound& r, const Experiment<double>& est) {
@@ -610,16 +625,6 @@ void set_estimation_shares(RankingRound& r, const Experiment<double>& est) {
   if (!residual.allFinite()) return;
   const std::vector<CandidateShare> sh = candidate_shares(residual, sig);
   for (size_t i = 0; i < sh.size(); ++i) r.ranked[index[i]].estimation_share = sh[i].share;
-}
-
-int physical_form_rank(const std::string& kind) {
-  static const char* const order[] = {"input_delay",       "input_saturation", "output_saturation",
-                                      "dead_zone",         "abs_value",        "state_nonlinearity",
-                                      "input_polynomial",  "output_polynomial", "output_piecewise_linear",
-                                      "basis_term"};
-  for (size_t i = 0; i < std::size(order); ++i)
-    if (kind == order[i]) return static_cast<int>(i);
-  return static_cast<int>(std::size(order));
 }
 
 int effect_tie_rule(const std::vector<ScoredCandidate>& ranked, const std::vector<int>& accepted,
@@ -747,16 +752,7 @@ RankingResult rank_effects(const LpvModel<double>& declared, const Experiment<do
       o.progress("effects, round " + std::to_string(round + 1) + ": candidate " + std::to_string(++done) + " of " +
                  std::to_string(cands.size()) + " (" + cands[i].label + ")");
     });
-    set_explained(r);
-    set_estimation_shares(r, est);
-    // the best-scored candidate if it lowers the validation RMS by the
-    // required share and passes the share floor, unless tied
-    std::vector<int> accepted;
-    const auto passes = [&](size_t i) { return r.ranked[i].rms_validation <= (1.0 - o.min_gain) * r.reference_validation; };
-    if (!r.ranked.empty() && passes(0))
-      for (size_t i = 0; i < r.ranked.size(); ++i)
-        if (passes(i) && r.ranked[i].estimation_share >= kMinEstimationShare) accepted.push_back(static_cast<int>(i));
-    r.chosen = effect_tie_rule(r.ranked, accepted, r.tie);
+    choose_on_validation(r, est, o.min_gain);
     if (r.chosen >= 0) {
       const ScoredCandidate& c = r.ranked[static_cast<size_t>(r.chosen)];
       current = c.model;

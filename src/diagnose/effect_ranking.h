@@ -49,6 +49,7 @@
 
 #include "diagnose/effect_candidates.h"
 #include "diagnose/fold_plan.h"
+#include "diagnose/physical_alternative.h"
 #include "fit/output_error_fit.h"
 
 namespace lpvid {
@@ -136,16 +137,6 @@ struct EffectTie {
 /// inf and its explained share as -inf (the ranking keeps its score's order).
 inline constexpr double kDivergedFactor = 1e6;
 
-/// A physical candidate the folds do not tell apart from a black-box choice
-/// (diagnose/physical_alternative.h).
-struct PhysicalAlternative {
-  int black_box = -1;          ///< index into RankingRound::ranked: the chosen black-box map
-  int physical = -1;           ///< index into ranked: the best-ranked physical candidate
-  std::vector<double> differences;  ///< d_j per fold (physical minus black box)
-  double mean = 0, standard_error = 0;
-  bool taken = false;          ///< the physical form passed the rule and replaced the black box
-};
-
 struct RankingRound {
   LpvModel<double> current;         ///< the model the candidates were added to
   double reference_validation = 0;  ///< what an effect must beat
@@ -158,12 +149,6 @@ struct RankingRound {
   /// fold-to-fold spread (taken: it became the choice).
   std::optional<PhysicalAlternative> physical;
 };
-
-/// The kinds in the tie rule's order of physical form: a named mechanism
-/// before a generic expansion (a delay, a saturation, a dead zone, a sensor's
-/// |.|, a state nonlinearity, a polynomial map, a piecewise-linear map, a
-/// basis term). Unknown kinds come last.
-int physical_form_rank(const std::string& kind);
 
 /// Among the accepted candidates (`accepted`: indices into `ranked`, best
 /// score first), the choice: the best-scored one unless others are within

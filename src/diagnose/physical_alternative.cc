@@ -2,23 +2,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace lpvid {
+
+int physical_form_rank(const std::string& kind) {
+  static const char* const order[] = {"input_delay",       "input_saturation", "output_saturation",
+                                      "dead_zone",         "abs_value",        "state_nonlinearity",
+                                      "input_polynomial",  "output_polynomial", "output_piecewise_linear",
+                                      "basis_term"};
+  for (size_t i = 0; i < std::size(order); ++i)
+    if (kind == order[i]) return static_cast<int>(i);
+  return static_cast<int>(std::size(order));
+}
 
 bool is_physical_kind(const std::string& kind) {
   return kind == "output_offset" || physical_form_rank(kind) < physical_form_rank("input_polynomial");
 }
 
-std::optional<PhysicalAlternative> physical_alternative(const std::vector<ScoredCandidate>& ranked,
+std::optional<PhysicalAlternative> physical_alternative(const std::vector<RankedFigures>& ranked,
                                                         const std::vector<int>& accepted, int chosen) {
   if (chosen < 0 || static_cast<size_t>(chosen) >= ranked.size()) return std::nullopt;
-  const ScoredCandidate& box = ranked[static_cast<size_t>(chosen)];
+  const RankedFigures& box = ranked[static_cast<size_t>(chosen)];
   if (is_physical_kind(box.kind) || physical_form_rank(box.kind) >= physical_form_rank("unknown kind"))
     return std::nullopt;
   const size_t k = box.folds.sse.size();
   if (k < 2) return std::nullopt;
   for (size_t i = 0; i < ranked.size(); ++i) {
-    const ScoredCandidate& c = ranked[i];
+    const RankedFigures& c = ranked[i];
     if (!is_physical_kind(c.kind) || c.folds.sse.size() != k) continue;
     PhysicalAlternative a;
     a.black_box = chosen;

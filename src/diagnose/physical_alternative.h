@@ -17,9 +17,15 @@
 #include <string>
 #include <vector>
 
-#include "diagnose/effect_ranking.h"
+#include "diagnose/fold_plan.h"
 
 namespace lpvid {
+
+/// The kinds in the tie rule's order of physical form: a named mechanism
+/// before a generic expansion (a delay, a saturation, a dead zone, a sensor's
+/// |.|, a state nonlinearity, a polynomial map, a piecewise-linear map, a
+/// basis term). Unknown kinds come last.
+int physical_form_rank(const std::string& kind);
 
 /// Kinds that describe a mechanism: everything before input_polynomial in
 /// physical_form_rank's order, and the output offset.
@@ -30,7 +36,22 @@ bool is_physical_kind(const std::string& kind);
 /// it is indistinguishable from the choice (see above); `taken` when it is
 /// among `accepted`. Empty otherwise (a physical choice, no physical
 /// candidate, fewer than 2 folds, or a clear difference).
-std::optional<PhysicalAlternative> physical_alternative(const std::vector<ScoredCandidate>& ranked,
+/// A physical candidate the folds do not tell apart from a black-box choice.
+struct PhysicalAlternative {
+  int black_box = -1;          ///< index into RankingRound::ranked: the chosen black-box map
+  int physical = -1;           ///< index into ranked: the best-ranked physical candidate
+  std::vector<double> differences;  ///< d_j per fold (physical minus black box)
+  double mean = 0, standard_error = 0;
+  bool taken = false;          ///< the physical form passed the rule and replaced the black box
+};
+
+/// What the comparison reads of a ranked candidate.
+struct RankedFigures {
+  std::string kind;
+  FoldFigures folds;  ///< its held-out figures per fold
+};
+
+std::optional<PhysicalAlternative> physical_alternative(const std::vector<RankedFigures>& ranked,
                                                         const std::vector<int>& accepted, int chosen);
 
 }  // namespace lpvid

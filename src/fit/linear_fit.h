@@ -15,6 +15,13 @@
 ///
 /// Single output (ny = 1), any number of inputs; the state-space form is the
 /// observer canonical form, ŷ = C x + D u with C = [1 0 … 0].
+///
+/// Several records (Experiment::records) of one system: one model (a, B, D,
+/// c) fitted to all of them, each record with its own x0 (an unknown of
+/// steps 2–3); the ARX rows of step 1 stay inside their record. The order
+/// is chosen on all records (choose_order pools the held-out error of every
+/// record, each from its own x0). One record gives the numbers of the
+/// one-record fit exactly.
 
 #include <vector>
 
@@ -42,7 +49,8 @@ struct LinearFitOptions {
 
 struct LinearFit {
   ObserverForm form;        ///< the fitted parameters
-  LpvModel<double> model;   ///< the same as an lpvid-model/1 model ("scheduling": [])
+  LpvModel<double> model;   ///< the same as an lpvid-model/1 model ("scheduling": []); x0 of the first record
+  std::vector<Vec<double>> record_x0;  ///< each record's fitted x0 (the first is form.x0)
   double rms_estimation = 0;  ///< free-run RMS of y − ŷ on the estimation data
   double rms_arx = 0;         ///< free-run RMS after steps 1–2 (before refinement)
   double spectral_radius = 0; ///< of A (< 1)
@@ -80,7 +88,8 @@ constexpr double kOrderFloor = 1e-9;
 
 /// Fits every order in [1, max_order] on `est` (order n also from order
 /// n − 1's fit: nested_denominator), scores it on `val` (x0 from
-/// the first init_samples samples of val) and chooses the smallest order with
+/// the first init_samples samples of each record of val, the squared errors
+/// pooled over the records) and chooses the smallest order with
 /// rms_validation <= (1 + kOrderSlack) · best + kOrderFloor · rms(y_val). Orders too large for the data
 /// are skipped (at least one must fit, else the InputError of fit_linear).
 OrderChoice choose_order(const Experiment<double>& est, const Experiment<double>& val, const ColumnMap& columns,

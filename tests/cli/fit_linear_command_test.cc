@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
 #include "fit/linear_fit.h"
 #include "model/model_file.h"
 #include "support/cli_runner.h"
@@ -68,6 +70,27 @@ TEST_F(FitLinearCommandTest, BadInputExitsWithTwoAndSaysWhy) {
   EXPECT_NE(output().find("too few"), std::string::npos) << output();
   EXPECT_EQ(run("--data " + write_data("nan") + " --u uEst --y yEst --order 1"), 2);
   EXPECT_NE(output().find("not a number"), std::string::npos) << output();
+}
+
+TEST_F(FitLinearCommandTest, SeveralRecordsGiveOneModelEachRecordItsOwnInitialState) {
+  // the same file twice, once as rows 0:150 and once as rows 150:300: two
+  // records of one noise-free system, each starting in its own state
+  const std::string data = write_data();
+  const std::string report = (dir / "r2.json").string();
+  ASSERT_EQ(run("--data " + data + " --rows 0:150 --data " + data + " --rows 150:300 --u uEst --y yEst --offset"
+                " --order auto --report " + report),
+            0)
+      << output();
+  EXPECT_NE(output().find("record 2 of 2, its own x0"), std::string::npos) << output();
+  EXPECT_NE(output().find("the last third of each record, rows 100:150, 100:150"), std::string::npos) << output();
+  EXPECT_NE(output().find("chosen: order 2"), std::string::npos) << output();
+  std::ifstream in(report);
+  const nlohmann::json r = nlohmann::json::parse(in);
+  ASSERT_EQ(r.at("records").size(), 2u);
+  for (const auto& rec : r.at("records")) EXPECT_LT(rec.at("rms_estimation").get<double>(), 1e-6) << rec;
+  // one --rows for two --data is refused, naming the option
+  EXPECT_EQ(run("--data " + data + " --data " + data + " --rows 0:150 --u uEst --y yEst --order 1"), 2);
+  EXPECT_NE(output().find("--rows: give one per --data"), std::string::npos) << output();
 }
 
 }  // namespace

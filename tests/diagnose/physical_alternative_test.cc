@@ -14,10 +14,9 @@
 namespace lpvid {
 namespace {
 
-ScoredCandidate candidate(const std::string& kind, const std::vector<double>& fold_rms) {
-  ScoredCandidate c;
+RankedFigures candidate(const std::string& kind, const std::vector<double>& fold_rms) {
+  RankedFigures c;
   c.kind = kind;
-  c.label = kind;
   for (double r : fold_rms) {
     c.folds.sse.push_back(r * r);
     c.folds.count.push_back(1);
@@ -35,7 +34,7 @@ TEST(PhysicalAlternative, KindsOfAMechanismArePhysical) {
 
 TEST(PhysicalAlternative, WithinTheSpreadAndAcceptedThePhysicalFormIsTaken) {
   // differences 0.02, -0.01, 0.03, -0.02: mean 0.005, s = 0.02380, s/2 = 0.01190
-  const std::vector<ScoredCandidate> ranked = {candidate("output_polynomial", {0.30, 0.40, 0.50, 0.60}),
+  const std::vector<RankedFigures> ranked = {candidate("output_polynomial", {0.30, 0.40, 0.50, 0.60}),
                                                candidate("abs_value", {0.32, 0.39, 0.53, 0.58})};
   const auto a = physical_alternative(ranked, {0, 1}, 0);
   ASSERT_TRUE(a.has_value());
@@ -55,22 +54,22 @@ TEST(PhysicalAlternative, WithinTheSpreadAndAcceptedThePhysicalFormIsTaken) {
 
 TEST(PhysicalAlternative, AClearDifferenceOrAPhysicalChoiceLeavesItAlone) {
   // worse on every fold by 0.05 +- 0.01: mean 0.05 > its standard error
-  const std::vector<ScoredCandidate> clear = {candidate("basis_term", {0.30, 0.40, 0.50, 0.60}),
+  const std::vector<RankedFigures> clear = {candidate("basis_term", {0.30, 0.40, 0.50, 0.60}),
                                               candidate("dead_zone", {0.34, 0.46, 0.55, 0.65})};
   EXPECT_FALSE(physical_alternative(clear, {0, 1}, 0).has_value());
   // the choice is physical already
-  const std::vector<ScoredCandidate> physical = {candidate("abs_value", {0.30, 0.40}),
+  const std::vector<RankedFigures> physical = {candidate("abs_value", {0.30, 0.40}),
                                                  candidate("output_polynomial", {0.30, 0.40})};
   EXPECT_FALSE(physical_alternative(physical, {0, 1}, 0).has_value());
   // no choice, or one fold (no spread)
   EXPECT_FALSE(physical_alternative(clear, {}, -1).has_value());
-  const std::vector<ScoredCandidate> one = {candidate("basis_term", {0.3}), candidate("abs_value", {0.3})};
+  const std::vector<RankedFigures> one = {candidate("basis_term", {0.3}), candidate("abs_value", {0.3})};
   EXPECT_FALSE(physical_alternative(one, {0, 1}, 0).has_value());
 }
 
 TEST(PhysicalAlternative, OnlyTheBestRankedPhysicalCandidateIsCompared) {
   // rank 2 (physical) is clearly worse; rank 3 (physical) would be within the spread but ranks below it
-  const std::vector<ScoredCandidate> ranked = {candidate("output_piecewise_linear", {0.30, 0.40, 0.50, 0.60}),
+  const std::vector<RankedFigures> ranked = {candidate("output_piecewise_linear", {0.30, 0.40, 0.50, 0.60}),
                                                candidate("input_saturation", {0.40, 0.50, 0.60, 0.70}),
                                                candidate("abs_value", {0.30, 0.40, 0.50, 0.60})};
   EXPECT_FALSE(physical_alternative(ranked, {0, 1, 2}, 0).has_value());

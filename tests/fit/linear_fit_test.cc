@@ -2,7 +2,9 @@
 // Properties on noise-free data from random stable systems
 // (tests/support/gen_lti.h): the true order reproduces the free-run output,
 // A is stable, the order rule picks the true order, the model file round
-// trip keeps the output; bad input throws a clear InputError.
+// trip keeps the output; bad input throws a clear InputError. Several
+// records: one model, each record's own x0 recovered, the same bits in any
+// order of the records, the order chosen on all of them.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -11,6 +13,7 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "data/experiment_builder.h"
 #include "fit/linear_fit.h"
 #include "model/model_file.h"
 #include "support/gen_lti.h"
@@ -120,6 +123,70 @@ TEST(LinearFitTest, ModelFileRoundTripKeepsTheOutput) {
   EXPECT_EQ(prediction_rms(back, est), prediction_rms(fit.model, est));  // shortest round-trip text: same doubles
   // rms_estimation comes from simulate_observer (other operation order).
   EXPECT_NEAR(prediction_rms(back, est), fit.rms_estimation, 1e-12 * fit.rms_estimation);
+}
+
+/// Two records of the third-order system above, each from its own x0, with
+/// the same offset.
+std::vector<Experiment<double>> two_records() {
+  ObserverForm truth = zero_observer_form(3, 1, true);
+  truth.a << -1.8, 1.21, -0.328;
+  truth.B << 0.5, -0.3, 0.2;
+  truth.D << 0.1;
+  truth.offset = 1.5;
+  truth.x0 << 2.0, -1.0, 0.5;
+  const Experiment<double> first = gen::lti_experiment(truth, seeded_input(250, 11));
+  truth.x0 << -3.0, 0.25, 1.0;
+  const Experiment<double> second = gen::lti_experiment(truth, seeded_input(180, 12));
+  return {first, second};
+}
+
+TEST(LinearFitTest, SeveralRecordsOneModelEachItsOwnInitialState) {
+  // noise-free records from the true system: the true order fits both to
+  // rounding, and each record's x0 is the one it was generated from
+  const std::vector<Experiment<double>> parts = two_records();
+  const Experiment<double> est = stack_records(parts);
+  const LinearFit fit = fit_linear(est, kColumns, LinearFitOptions{3, true, {}});
+  EXPECT_LT(fit.rms_estimation, 1e-8);
+  ASSERT_EQ(fit.record_x0.size(), 2u);
+  EXPECT_LT((fit.record_x0[0] - Vec<double>((Vec<double>(3) << 2.0, -1.0, 0.5).finished())).norm(), 1e-6);
+  EXPECT_LT((fit.record_x0[1] - Vec<double>((Vec<double>(3) << -3.0, 0.25, 1.0).finished())).norm(), 1e-6);
+  EXPECT_EQ(fit.model.x0, fit.record_x0[0]);  // the model file holds the first record's
+  EXPECT_NEAR(fit.form.offset, 1.5, 1e-8);
+  // one x0 for both records could not do this: the second record from the first's x0 is off
+  Experiment<double> same_x0 = est;
+  same_x0.record_x0 = {fit.record_x0[0], fit.record_x0[0]};
+  EXPECT_GT(prediction_rms(fit.model, same_x0), 1e-3);
+}
+
+TEST(LinearFitTest, TheOrderOfTheRecordsChangesNoBitOfTheModel) {
+  // noisy records, so that the least-squares answer is not exact
+  std::vector<Experiment<double>> parts = two_records();
+  parts[0].y += 0.05 * seeded_input(250, 21);
+  parts[1].y += 0.05 * seeded_input(180, 22);
+  const LinearFit ab = fit_linear(stack_records(parts), kColumns, LinearFitOptions{2, true, {}});
+  const LinearFit ba = fit_linear(stack_records(std::vector<Experiment<double>>{parts[1], parts[0]}), kColumns,
+                                  LinearFitOptions{2, true, {}});
+  EXPECT_EQ(ab.form.a, ba.form.a);
+  EXPECT_EQ(ab.form.B, ba.form.B);
+  EXPECT_EQ(ab.form.D, ba.form.D);
+  EXPECT_EQ(ab.form.offset, ba.form.offset);
+  ASSERT_EQ(ab.record_x0.size(), 2u);
+  EXPECT_EQ(ab.record_x0[0], ba.record_x0[1]);
+  EXPECT_EQ(ab.record_x0[1], ba.record_x0[0]);
+  EXPECT_EQ(ab.rms_estimation, ba.rms_estimation);
+}
+
+TEST(LinearFitTest, TheOrderIsChosenOnEveryRecord) {
+  const std::vector<Experiment<double>> parts = two_records();
+  std::vector<Experiment<double>> fit_parts, held_parts;
+  for (const Experiment<double>& p : parts) {
+    fit_parts.push_back(select_rows(p, 0, p.n() * 2 / 3));
+    held_parts.push_back(select_rows(p, p.n() * 2 / 3, p.n()));
+  }
+  const OrderChoice c = choose_order(stack_records(fit_parts), stack_records(held_parts), kColumns, 5, true, 5);
+  EXPECT_EQ(c.order, 3);
+  EXPECT_GT(c.scores[1].rms_validation, 1e-3);  // order 2 cannot fit
+  EXPECT_LT(c.scores[2].rms_validation, 1e-6);  // each held-out record from its own x0
 }
 
 Experiment<double> small_experiment(Eigen::Index N) {
