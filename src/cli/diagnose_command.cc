@@ -1,12 +1,15 @@
 // lpvid diagnose: residual → missing effect → better model, before/after
 // (docs/design.md §9, §11). See src/diagnose/effect_ranking.h for the method.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <tuple>
 
 #include "core/file_io.h"
 #include "cli/certificate_names.h"
@@ -17,6 +20,7 @@
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "core/parallel_for.h"
+#include "core/sha256.h"
 #include "data/csv_reader.h"
 #include "data/experiment_builder.h"
 #include "diagnose/bound_windows.h"
@@ -86,6 +90,16 @@ std::vector<std::pair<std::string, std::string>> estimation_records(const Diagno
       throw InputError("--x0 " + r.x0_text + ": diagnose identifies each record's initial state itself (no --x0)");
     out.emplace_back(r.path, r.rows_text);
   }
+  if (out.size() < 2) return out;
+  // several records in a canonical order (the sha256 of the file's bytes, then
+  // the rows, then the path), so that the order they are listed in changes no
+  // fit and no choice; the report lists them in this order
+  std::map<std::string, std::string> hashes;
+  for (const auto& [path, rows] : out)
+    if (!hashes.count(path)) hashes[path] = sha256_hex(read_text_file(path));
+  std::stable_sort(out.begin(), out.end(), [&](const auto& x, const auto& y) {
+    return std::tie(hashes[x.first], x.second, x.first) < std::tie(hashes[y.first], y.second, y.first);
+  });
   return out;
 }
 
@@ -200,7 +214,8 @@ DiagnoseReport diagnose_report(const DiagnoseArgs& a, const RoleRecords& roles, 
                                const std::vector<Experiment<double>>& tests, bool by_folds, int warmup) {
   DiagnoseReport ri;
   ri.result = &result;
-  ri.command_line_data = a.common.data_path;
+  // several records: the first in the canonical order (estimation_records)
+  ri.command_line_data = roles.records.size() > 1 ? roles.records.front().data.file : a.common.data_path;
   ri.validation = roles.selection.text;
   ri.estimation = roles.estimation_text;
   for (const RoleRecord& t : roles.tests) {

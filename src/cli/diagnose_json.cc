@@ -281,11 +281,21 @@ ojson selection_json(const DiagnoseReport& in) {
   if (!in.folds)
     return {{"source", in.validation}, {"samples", in.result->shown.data.n()}, {"init_samples", in.result->shown.init_samples},
             {"role", "selection: ranks the candidate effects"}};
-  ojson blocks = ojson::array();
-  for (const FoldBlock& b : r.fold_blocks) blocks.push_back({in.file_row_offset + b.first, in.file_row_offset + b.last});
-  return {{"method", "blocked folds of the estimation record"},
+  ojson blocks = ojson::array(), files = ojson::array();
+  const std::vector<DataReference> per_record = fold_files(in);
+  for (size_t j = 0; j < r.fold_blocks.size(); ++j) {
+    const FoldBlock& b = r.fold_blocks[j];
+    if (per_record.empty()) {
+      blocks.push_back({in.file_row_offset + b.first, in.file_row_offset + b.last});
+    } else {  // each block in its own file's rows
+      blocks.push_back({per_record[j].row_begin, per_record[j].row_end});
+      files.push_back(per_record[j].file);
+    }
+  }
+  return {{"method", per_record.empty() ? "blocked folds of the estimation record" : "blocked folds within the estimation records"},
           {"folds", r.fold_blocks.size()},
           {"file_rows", blocks},
+          {"files", per_record.empty() ? ojson(nullptr) : files},
           {"warmup_samples", in.fold_warmup},
           {"rule", acceptance_rule_text(r.fold_blocks.size(), r.min_gain)},
           {"before_held_out_folds", folds_json(r.before_folds)},
@@ -321,6 +331,11 @@ void write_diagnose_json(const DiagnoseReport& in, const DiagnoseFigures& figure
   j["status"] = res.verified() ? "ok" : "not verified";
   j["command"] = "diagnose";
   j["estimation"] = {{"file", in.command_line_data}, {"rows", in.estimation}, {"samples", in.est->n()}};
+  if (in.records.size() > 1) {  // every record's file, in the canonical order the fits used
+    ojson files = ojson::array();
+    for (const EstimationRecord& r : in.records) files.push_back(r.data.file);
+    j["estimation"]["files"] = files;
+  }
   j[in.folds ? "selection" : "validation"] = selection_json(in);
   const ojson tests = tests_json(in);
   j["test"] = tests.empty() ? ojson(nullptr) : tests.front();  // the first test set (the field of earlier reports)

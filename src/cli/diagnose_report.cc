@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "diagnose/record_windows.h"
+
 namespace lpvid::cli {
 
 std::string test_rule_text(const FreeRunScore& score) {
@@ -36,6 +38,16 @@ std::string excursion_text(const SignalExcursion& e, const ColumnMap& test_names
   if (e.below > 0) t += ", " + std::to_string(e.below) + " below";
   if (e.above > 0) t += ", " + std::to_string(e.above) + " above";
   return t + "), the farthest " + g(e.beyond()) + " of the estimation range's width beyond it";
+}
+
+std::vector<DataReference> fold_files(const DiagnoseReport& in) {
+  if (in.records.size() < 2 || !in.est) return {};
+  std::vector<DataReference> refs;
+  for (const EstimationRecord& r : in.records) refs.push_back(r.data);
+  std::vector<DataReference> out;
+  for (const FoldBlock& b : in.result->rank.fold_blocks)
+    out.push_back(piece_reference(refs, in.est->record_lengths(), {b.first, b.last}));
+  return out;
 }
 
 }  // namespace lpvid::cli

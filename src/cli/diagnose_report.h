@@ -54,6 +54,11 @@ const char* to_string(SignalRole role);
 /// width beyond it", or "…: inside".
 std::string excursion_text(const SignalExcursion& e, const ColumnMap& test_names, const ColumnMap& estimation_names);
 
+/// Several estimation records: where each fold's held-out block is in its
+/// file (one per RankingResult::fold_blocks; a block never crosses a seam).
+/// One record: empty (the blocks are file_row_offset + their rows).
+std::vector<DataReference> fold_files(const DiagnoseReport& in);
+
 /// One figure written (or not) and where the text lists it.
 struct DrawnFigure {
   std::string path;

@@ -75,11 +75,20 @@ void print_analysis(const std::string& title, const ResidualAnalysis& a, const C
 }
 
 /// "0:256, 256:512, …" in data-file rows.
-std::string fold_rows_text(const RankingResult& r, long offset) {
+/// "rows 0:256, 256:512, …" (one record) or "a.csv rows 0:200, …, b.csv
+/// rows 200:400" (several: each block in its own file's rows).
+std::string fold_rows_text(const DiagnoseReport& in) {
   std::string t;
-  for (const FoldBlock& b : r.fold_blocks)
-    t += (t.empty() ? "" : ", ") + std::to_string(offset + b.first) + ":" + std::to_string(offset + b.last);
-  return t;
+  const std::vector<DataReference> files = fold_files(in);
+  for (size_t j = 0; j < in.result->rank.fold_blocks.size(); ++j) {
+    const FoldBlock& b = in.result->rank.fold_blocks[j];
+    t += (t.empty() ? "" : ", ");
+    if (files.empty())
+      t += std::to_string(in.file_row_offset + b.first) + ":" + std::to_string(in.file_row_offset + b.last);
+    else
+      t += files[j].file + " rows " + std::to_string(files[j].row_begin) + ":" + std::to_string(files[j].row_end);
+  }
+  return (files.empty() ? "rows " : "") + t;
 }
 
 std::string bound_line(const WindowBounds& w) {
@@ -96,7 +105,8 @@ void print_header(const DiagnoseReport& in) {
             << "  estimation  " << (in.estimation.empty() ? in.command_line_data : in.estimation) << " ("
             << in.est->n() << " samples)\n"
             << (in.folds ? "  selection   " + std::to_string(r.fold_blocks.size()) +
-                               " blocked folds of the estimation record, rows " + fold_rows_text(r, in.file_row_offset) +
+                               (in.records.size() > 1 ? " blocked folds within the estimation records, " : " blocked folds of the estimation record, ") +
+                               fold_rows_text(in) +
                                ": each candidate is fitted " + std::to_string(r.fold_blocks.size()) +
                                " times, each on the longer contiguous stretch beside one block, and scored on that block (x0 from its first " +
                                std::to_string(in.fold_warmup) + " samples, RMS over the rest)\n  rule        " +

@@ -149,6 +149,25 @@ TEST_F(SeveralRecordsCli, SwappingTheRecordsSwapsTheirLinesAndKeepsThePooledFigu
   EXPECT_EQ(r1["delta"], r2["delta"]);
 }
 
+TEST_F(SeveralRecordsCli, DiagnoseGivesOneOutcomeInEitherOrderOfTheRecords) {
+  // diagnose puts the records in a canonical order (by their bytes' sha256)
+  // before any fit: listing them the other way round changes no figure
+  const std::string tail = " --model " + file("model.json") + " --max-effects 1 --window-length 40 --max-windows 1";
+  ASSERT_EQ(run("diagnose", "--quiet --data " + file("a.csv") + " --data " + file("b.csv") + tail + " --report " +
+                                file("d1.json")),
+            0)
+      << output();
+  ASSERT_EQ(run("diagnose", "--quiet --data " + file("b.csv") + " --data " + file("a.csv") + tail + " --report " +
+                                file("d2.json")),
+            0)
+      << output();
+  const nlohmann::json r1 = read_json(file("d1.json")), r2 = read_json(file("d2.json"));
+  for (const char* key : {"estimation", "selection", "effects", "rounds"}) EXPECT_EQ(r1[key], r2[key]) << key;
+  EXPECT_EQ(r1["before"]["rms_estimation"], r2["before"]["rms_estimation"]);
+  EXPECT_EQ(r1["after"]["rms_estimation"], r2["after"]["rms_estimation"]);
+  EXPECT_EQ(r1["after"]["delta"], r2["after"]["delta"]);
+}
+
 TEST_F(SeveralRecordsCli, AMalformedSecondFileIsNamedAndNothingIsWritten) {
   std::string bad = csv_of(b);
   bad.replace(bad.find('\n', 40) + 1, 1, "x");  // a cell of the second data row no longer a number
