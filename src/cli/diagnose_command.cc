@@ -4,10 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <tuple>
 
@@ -20,8 +20,8 @@
 #include "cli/report.h"
 #include "core/input_error.h"
 #include "core/parallel_for.h"
-#include "core/sha256.h"
 #include "data/csv_reader.h"
+#include "data/fitting_precision.h"
 #include "data/experiment_builder.h"
 #include "diagnose/bound_windows.h"
 #include "diagnose/diagnose.h"
@@ -83,6 +83,25 @@ int benchmark_warmup(const std::string& name) {
 /// The records' roles as the options give them (diagnose/record_roles.h).
 /// The estimation records of the command line: each --data with its --rows
 /// (path, rows text), one entry per --data in order.
+/// The samples of a record's window at the fits' precision, row by row (the
+/// number of rows first): the key of the canonical record order. A cell that
+/// is not a number counts as 0 here; reading the record names it later.
+std::vector<double> record_key(const std::string& path, const std::string& rows,
+                               const std::vector<std::string>& names) {
+  const TextTable t = names.empty() ? read_table(path) : read_table(path, names);
+  long b = 0, e = static_cast<long>(t.rows.size());
+  if (!rows.empty()) std::tie(b, e) = parse_row_range(rows, "--rows");
+  e = std::min<long>(e, static_cast<long>(t.rows.size()));
+  std::vector<double> key{static_cast<double>(std::max<long>(e - b, 0))};
+  for (long r = b; r < e; ++r)
+    for (const std::string& cell : t.rows[static_cast<size_t>(r)]) {
+      char* end = nullptr;
+      const double v = std::strtod(cell.c_str(), &end);
+      key.push_back(end != cell.c_str() && std::isfinite(v) ? at_fitting_precision(v) : 0.0);
+    }
+  return key;
+}
+
 std::vector<std::pair<std::string, std::string>> estimation_records(const DiagnoseArgs& a) {
   std::vector<std::pair<std::string, std::string>> out;
   for (const RecordOption& r : data_records(a.common)) {
@@ -91,16 +110,21 @@ std::vector<std::pair<std::string, std::string>> estimation_records(const Diagno
     out.emplace_back(r.path, r.rows_text);
   }
   if (out.size() < 2) return out;
-  // several records in a canonical order (the sha256 of the file's bytes, then
-  // the rows, then the path), so that the order they are listed in changes no
-  // fit and no choice; the report lists them in this order
-  std::map<std::string, std::string> hashes;
-  for (const auto& [path, rows] : out)
-    if (!hashes.count(path)) hashes[path] = sha256_hex(read_text_file(path));
-  std::stable_sort(out.begin(), out.end(), [&](const auto& x, const auto& y) {
-    return std::tie(hashes[x.first], x.second, x.first) < std::tie(hashes[y.first], y.second, y.first);
+  // several records in a canonical order: by their samples as the fits read
+  // them (10 significant digits, data/fitting_precision.h), then the rows,
+  // then the path. The order they are listed in then changes no fit and no
+  // choice, and neither does a one-ulp change of a file (a hash of the bytes
+  // would reorder the records on one ulp); the report lists them in this order
+  std::vector<std::vector<double>> keys;
+  for (const auto& [path, rows] : out) keys.push_back(record_key(path, rows, a.common.names));
+  std::vector<size_t> order(out.size());
+  for (size_t r = 0; r < order.size(); ++r) order[r] = r;
+  std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) {
+    return std::tie(keys[x], out[x].second, out[x].first) < std::tie(keys[y], out[y].second, out[y].first);
   });
-  return out;
+  std::vector<std::pair<std::string, std::string>> sorted;
+  for (size_t r : order) sorted.push_back(out[r]);
+  return sorted;
 }
 
 RolePlan role_plan(const DiagnoseArgs& a, int warmup) {

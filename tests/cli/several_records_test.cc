@@ -150,7 +150,8 @@ TEST_F(SeveralRecordsCli, SwappingTheRecordsSwapsTheirLinesAndKeepsThePooledFigu
 }
 
 TEST_F(SeveralRecordsCli, DiagnoseGivesOneOutcomeInEitherOrderOfTheRecords) {
-  // diagnose puts the records in a canonical order (by their bytes' sha256)
+  // diagnose puts the records in a canonical order (by their samples at the
+  // fits' precision)
   // before any fit: listing them the other way round changes no figure
   const std::string tail = " --model " + file("model.json") + " --max-effects 1 --window-length 40 --max-windows 1";
   ASSERT_EQ(run("diagnose", "--quiet --data " + file("a.csv") + " --data " + file("b.csv") + tail + " --report " +
