@@ -15,7 +15,7 @@ import numpy as np
 
 from ._errors import EXIT_CODES, LpvidError
 from ._files import number_text, read_json, read_table, write_data, write_model
-from ._inputs import as_names, data_files, generic_names, generic_table, is_names, write_table
+from ._inputs import _record_signals, as_names, data_files, generic_names, generic_table, is_names, width, write_table
 from ._invoke import FILES, raise_unless_answer, run
 from ._simulate import simulate_document
 from ._workspace import read_bytes, workspace
@@ -346,13 +346,16 @@ def _fill_diagnosis(result, report):
 
 
 # -- models on records ----------------------------------------------------------------
-def fit_linear(u=None, y=None, *, data=None, order=None, validation=None, out_dir=None, progress=None, quiet=False,
-               **options):
+def fit_linear(u=None, y=None, *, data=None, records=None, order=None, validation=None, out_dir=None, progress=None,
+               quiet=False, **options):
     """A linear (LTI) state-space model by least squares (`lpvid
     fit-linear`), as a Model (its fit report in Model.report).
 
     u, y: arrays (1-D or samples x channels); or data= a file, DataFrame
-    or dict of columns with u=/y= the column names. order: N >= 1 or
+    or dict of columns (or a list of files: several records) with u=/y=
+    the column names; or records=[(u1, y1), (u2, y2), ...] (or dicts with
+    u, y): several records of one plant, one model, each record its own
+    initial state (Model.report["records"] lists them). order: N >= 1 or
     "auto". validation: (u_val, y_val) arrays scored after the fit (or a
     file's path with validation_columns=["uVal", "yVal"] its columns, inputs
     then output).
@@ -360,9 +363,13 @@ def fit_linear(u=None, y=None, *, data=None, order=None, validation=None, out_di
     sample_time=4, unit=["uEst=V"], init_samples=5, ...)."""
     with workspace("fit-linear", out_dir) as ws:
         words = []
-        if data is not None:
-            paths = data_files(ws, {}, None, None, None, data)
-            words += ["--data", paths[0]]
+        if records is not None:
+            if u is not None or y is not None or data is not None:
+                raise LpvidError(2, "fit_linear(): give the signals one way: u, y arrays, data= or records=")
+            words += _record_words(ws, records)
+        elif data is not None:
+            for path in data_files(ws, {}, None, None, None, data):
+                words += ["--data", path]
             if u is not None:
                 words += ["--u"] + as_names(u)
             if y is not None:
@@ -385,6 +392,26 @@ def fit_linear(u=None, y=None, *, data=None, order=None, validation=None, out_di
         model = Model.from_file(out_model)
         model.report = _report(report_path)
         return model
+
+
+def _record_words(ws, records):
+    """--data per record of fit_linear(records=...), then --u/--y: each
+    record written with the generic column names u1.., y1.."""
+    if len(records) == 0:
+        raise LpvidError(2, "records=: no records")
+    words, widths = [], None
+    for k, record in enumerate(records):
+        ru, ry, rrho = _record_signals(record, k)
+        if ru is None or ry is None or rrho is not None:
+            raise LpvidError(2, f"records[{k}]: fit_linear() takes u and y (no rho) in every record")
+        if widths is None:
+            widths = (ru, ry)
+        elif (width(ru), width(ry)) != (width(widths[0]), width(widths[1])):
+            raise LpvidError(2, f"records[{k}]: {width(ru)} input(s) and {width(ry)} output(s), records[0] has "
+                                f"{width(widths[0])} and {width(widths[1])}")
+        path = os.path.join(ws, f"data{k + 1}.csv")
+        words += ["--data", write_table(path, generic_table(ru, None, None) | generic_table(None, ry, None))]
+    return words + ["--u"] + generic_names("u", widths[0]) + ["--y"] + generic_names("y", widths[1])
 
 
 def _validation_words(ws, validation, u, y, data):

@@ -22,6 +22,7 @@
 #include "core/parallel_for.h"
 #include "data/csv_reader.h"
 #include "data/fitting_precision.h"
+#include "data/record_order.h"
 #include "data/experiment_builder.h"
 #include "diagnose/bound_windows.h"
 #include "diagnose/diagnose.h"
@@ -115,15 +116,10 @@ std::vector<std::pair<std::string, std::string>> estimation_records(const Diagno
   // then the path. The order they are listed in then changes no fit and no
   // choice, and neither does a one-ulp change of a file (a hash of the bytes
   // would reorder the records on one ulp); the report lists them in this order
-  std::vector<std::vector<double>> keys;
-  for (const auto& [path, rows] : out) keys.push_back(record_key(path, rows, a.common.names));
-  std::vector<size_t> order(out.size());
-  for (size_t r = 0; r < order.size(); ++r) order[r] = r;
-  std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) {
-    return std::tie(keys[x], out[x].second, out[x].first) < std::tie(keys[y], out[y].second, out[y].first);
-  });
+  std::vector<std::tuple<std::vector<double>, std::string, std::string>> keys;
+  for (const auto& [path, rows] : out) keys.emplace_back(record_key(path, rows, a.common.names), rows, path);
   std::vector<std::pair<std::string, std::string>> sorted;
-  for (size_t r : order) sorted.push_back(out[r]);
+  for (size_t r : canonical_record_order(keys)) sorted.push_back(out[r]);
   return sorted;
 }
 

@@ -14,6 +14,11 @@ namespace {
 using ojson = nlohmann::ordered_json;
 
 ojson number_or_null(double x) { return std::isfinite(x) ? ojson(x) : ojson(nullptr); }
+ojson vector_or_nulls(const Vec<double>& v) {
+  ojson out = ojson::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(number_or_null(v(i)));
+  return out;
+}
 
 /// The scales of certify/bound_scaling.h and the bounds in scaled units.
 ojson scaling_json(const CertifiedBounds& b) {
@@ -270,7 +275,9 @@ ojson estimation_records_json(const DiagnoseReport& in) {
                    {"rms_before", number_or_null(s.before.rms_all)},
                    {"rms_after", number_or_null(s.after.rms_all)},
                    {"fit_percent_before", number_or_null(s.before.fit_percent_all)},
-                   {"fit_percent_after", number_or_null(s.after.fit_percent_all)}});
+                   {"fit_percent_after", number_or_null(s.after.fit_percent_all)},
+                   {"x0_before", vector_or_nulls(s.x0_before)},
+                   {"x0_after", vector_or_nulls(s.x0_after)}});
   }
   return out;
 }

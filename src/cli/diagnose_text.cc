@@ -334,7 +334,7 @@ void print_figures(const DiagnoseReport& in, const DiagnoseFigures& figures) {
 /// Several estimation records: each record's free-run figures, then the pooled line.
 void print_records(const DiagnoseReport& in) {
   if (in.records.size() < 2) return;
-  std::cout << "\nestimation records (free run of the fitted models, each record from its start)\n";
+  std::cout << "\nestimation records (free run of the fitted models, each record from its own fitted initial state)\n";
   const auto line = [](const EstimationRecordScore& s) {
     return "before: RMS " + num(s.before.rms_all) + ", fit " + num(s.before.fit_percent_all, 4) + " %   after: RMS " +
            num(s.after.rms_all) + ", fit " + num(s.after.fit_percent_all, 4) + " %\n";

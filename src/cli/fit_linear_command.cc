@@ -165,7 +165,7 @@ void report_records(const FitLinearArgs& a, const LinearFit& fit, const Experime
   Eigen::Index first = 0;
   const std::vector<Eigen::Index> lengths = est.record_lengths();
   for (size_t r = 0; r < lengths.size(); ++r) {
-    const double rr = rms(Vec<double>(residual.middleRows(first, lengths[r]).col(0)));
+    const double rr = rms(Vec<double>(residual.middleRows(first, lengths[r]).reshaped()));  // every output
     std::cout << "  record " << r + 1 << " (" << a.data[r] << "): rms_estimation " << rr << " from its own x0\n";
     nlohmann::ordered_json x0 = nlohmann::ordered_json::array();
     for (Eigen::Index i = 0; i < fit.record_x0[r].size(); ++i) x0.push_back(fit.record_x0[r](i));

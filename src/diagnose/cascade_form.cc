@@ -18,6 +18,8 @@ LpvModel<double> similarity_transform(const LpvModel<double>& m, const Mat<doubl
   for (auto& b : r.correction.B)
     if (b.size() != 0) b = T * b;
   if (r.x0.size() == m.nx) r.x0 = T * m.x0;
+  for (auto& x : r.later_x0)
+    if (x.size() == m.nx) x = T * x;
   return r;
 }
 

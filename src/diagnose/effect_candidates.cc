@@ -567,6 +567,7 @@ LpvModel<double> scale_state(const LpvModel<double>& m, double s) {
   for (auto& b : out.correction.B) b /= s;
   for (auto& e : out.state_offset.values) e /= s;
   out.x0 /= s;
+  for (auto& x : out.later_x0) x /= s;
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/finite_range.h"
 #include "diagnose/effect_ranking.h"
 #include "model/simulate.h"
 #include "model/state_scheduling.h"
@@ -27,15 +28,8 @@ struct ArgumentRange {
 };
 
 ArgumentRange range_of(const Mat<double>& m) {
-  ArgumentRange r;
-  for (Eigen::Index i = 0; i < m.size(); ++i) {
-    const double v = m.data()[i];
-    if (!std::isfinite(v)) continue;
-    r.lo = r.any ? std::min(r.lo, v) : v;
-    r.hi = r.any ? std::max(r.hi, v) : v;
-    r.any = true;
-  }
-  return r;
+  const FiniteRange f = finite_range(m);
+  return f.any() ? ArgumentRange{f.lo, f.hi, true} : ArgumentRange{};
 }
 
 /// "x' = x - c" for an offset c (as the map's output is the argument minus c).

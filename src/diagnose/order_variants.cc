@@ -59,9 +59,13 @@ std::optional<LpvModel<double>> raise_order(const LpvModel<double>& m) {
     padded.head(e.size()) = e;
     e = padded;
   }
-  Vec<double> x0 = Vec<double>::Zero(n + 1);
-  if (m.x0.size() == n) x0.head(n) = m.x0;
-  r.x0 = x0;
+  const auto padded_state = [n](const Vec<double>& x) {
+    Vec<double> out = Vec<double>::Zero(n + 1);
+    if (x.size() == n) out.head(n) = x;
+    return out;
+  };
+  r.x0 = padded_state(m.x0);
+  for (auto& x : r.later_x0) x = padded_state(x);
   return r;
 }
 

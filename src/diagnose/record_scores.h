@@ -1,8 +1,9 @@
 #pragma once
 /// Each estimation record's free-run figures of the models before and after,
 /// and the pooled figures of all records: the models are simulated record by
-/// record (each from its own x0, Experiment::record_x0) and scored on the
-/// record's rows (fit/output_score.h).
+/// record (each from its own x0: the fits of several records give each one
+/// its own, LpvModel::later_x0) and scored on the record's rows
+/// (fit/output_score.h).
 
 #include <vector>
 
@@ -16,7 +17,13 @@ namespace lpvid {
 struct EstimationRecordScore {
   Eigen::Index samples = 0;
   OutputScores before, after;
+  Vec<double> x0_before, x0_after;  ///< each model's initial state of the record (record_initial_state)
 };
+
+/// The initial state `model` starts record k from in simulate() without
+/// states in the data: x0 for k = 0, LpvModel::later_x0[k-1] when it has nx
+/// values, else x0.
+Vec<double> record_initial_state(const LpvModel<double>& model, size_t k);
 
 struct RecordScores {
   std::vector<EstimationRecordScore> records;  ///< one per record of the experiment, in order

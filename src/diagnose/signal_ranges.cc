@@ -5,23 +5,12 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <tuple>
-#include <utility>
+
+#include "core/finite_range.h"
 
 namespace lpvid {
 
 namespace {
-
-/// [lo, hi] of the finite entries of one column (lo > hi when there are none).
-std::pair<double, double> finite_range(const Mat<double>& m, Eigen::Index c) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    if (std::isfinite(m(i, c))) {
-      lo = std::min(lo, m(i, c));
-      hi = std::max(hi, m(i, c));
-    }
-  return {lo, hi};
-}
 
 void add_role(SignalRole role, const Mat<double>& est, const Mat<double>& test, std::vector<SignalExcursion>& out) {
   if (est.cols() != test.cols())
@@ -31,8 +20,11 @@ void add_role(SignalRole role, const Mat<double>& est, const Mat<double>& test, 
     SignalExcursion e;
     e.role = role;
     e.column = c;
-    std::tie(e.estimation_lo, e.estimation_hi) = finite_range(est, c);
-    std::tie(e.test_lo, e.test_hi) = finite_range(test, c);
+    const FiniteRange er = finite_range(est.col(c)), tr = finite_range(test.col(c));
+    e.estimation_lo = er.lo;
+    e.estimation_hi = er.hi;
+    e.test_lo = tr.lo;
+    e.test_hi = tr.hi;
     for (Eigen::Index i = 0; i < test.rows(); ++i) {
       const double v = test(i, c);
       if (!std::isfinite(v)) continue;

@@ -9,6 +9,7 @@
 #include "core/rms.h"
 #include "core/input_error.h"
 #include "data/experiment_builder.h"
+#include "data/record_order.h"
 #include "model/simulate.h"
 
 namespace lpvid {
@@ -151,25 +152,24 @@ double pooled_validation_rms(const LpvModel<double>& model, const Experiment<dou
 }
 
 
-/// The records of `est` in a canonical order (by length, then the input
-/// and output samples, lexicographically), so that the order the user lists
-/// them in changes no bit of the fit: order[i] is the record placed i-th.
-std::vector<size_t> canonical_record_order(const Experiment<double>& est) {
+/// The records of `est` in the canonical order (data/record_order.h: by
+/// length, then the input and output samples, lexicographically), so that
+/// the order the user lists them in changes no bit of the fit: order[i] is
+/// the record placed i-th.
+std::vector<size_t> record_order(const Experiment<double>& est) {
   const std::vector<Eigen::Index> lengths = est.record_lengths();
-  std::vector<Eigen::Index> first(lengths.size(), 0);
-  for (size_t r = 1; r < lengths.size(); ++r) first[r] = first[r - 1] + lengths[r - 1];
-  const auto key = [&](size_t r) {
+  std::vector<std::pair<Eigen::Index, std::vector<double>>> keys;
+  Eigen::Index first = 0;
+  for (const Eigen::Index n : lengths) {
     std::vector<double> k;
-    for (Eigen::Index i = first[r]; i < first[r] + lengths[r]; ++i) {
+    for (Eigen::Index i = first; i < first + n; ++i) {
       for (Eigen::Index j = 0; j < est.nu(); ++j) k.push_back(est.u(i, j));
       k.push_back(est.y(i, 0));
     }
-    return std::pair{lengths[r], k};
-  };
-  std::vector<size_t> order(lengths.size());
-  for (size_t r = 0; r < order.size(); ++r) order[r] = r;
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key(a) < key(b); });
-  return order;
+    keys.emplace_back(n, std::move(k));
+    first += n;
+  }
+  return canonical_record_order(keys);
 }
 
 LinearFit fit_in_given_order(const Experiment<double>& est, const ColumnMap& columns, const LinearFitOptions& options);
@@ -179,7 +179,7 @@ LinearFit fit_in_given_order(const Experiment<double>& est, const ColumnMap& col
 LinearFit fit_linear(const Experiment<double>& est, const ColumnMap& columns, const LinearFitOptions& options) {
   check_inputs(est, options.order);
   if (est.record_count() == 1) return fit_in_given_order(est, columns, options);
-  const std::vector<size_t> order = canonical_record_order(est);
+  const std::vector<size_t> order = record_order(est);
   const std::vector<Eigen::Index> lengths = est.record_lengths();
   std::vector<Experiment<double>> parts;
   for (size_t r : order) {

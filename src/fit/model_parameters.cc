@@ -77,9 +77,11 @@ double& slot_value(LpvModel<double>& m, const ParameterSlot& s) {
       if (s.row < 0 || s.row >= v.size()) throw std::out_of_range("offset slot outside its vector");
       return v(s.row);
     }
-    case Where::kX0:
-      if (s.row < 0 || s.row >= m.x0.size()) throw std::out_of_range("x0 slot outside x0");
-      return m.x0(s.row);
+    case Where::kX0: {  // term 0: x0 (record 1); term k >= 1: record k+1's (later_x0)
+      Vec<double>& v = s.term == 0 ? m.x0 : index_checked(m.later_x0, s.term - 1);
+      if (s.row < 0 || s.row >= v.size()) throw std::out_of_range("x0 slot outside x0");
+      return v(s.row);
+    }
     case Where::kInputLower: return m.statics.input.lower;
     case Where::kInputUpper: return m.statics.input.upper;
     case Where::kInputCoef: return index_checked(m.statics.input.coefficients, s.term);
@@ -227,9 +229,20 @@ std::vector<ParameterSlot> offset_slots(const LpvModel<double>& m) {
   return out;
 }
 
-std::vector<ParameterSlot> x0_slots(const LpvModel<double>& m) {
+std::vector<ParameterSlot> record_x0_slots(const LpvModel<double>& m, int record) {
   std::vector<ParameterSlot> out;
-  for (int i = 0; i < m.x0.size(); ++i) out.push_back({Where::kX0, 0, i, 0, "x0(" + std::to_string(i + 1) + ")"});
+  const Vec<double>& v = record == 0 ? m.x0 : m.later_x0.at(static_cast<size_t>(record - 1));
+  const std::string prefix = record == 0 ? "x0(" : "x0[record " + std::to_string(record + 1) + "](";
+  for (int i = 0; i < v.size(); ++i) out.push_back({Where::kX0, record, i, 0, prefix + std::to_string(i + 1) + ")"});
+  return out;
+}
+
+std::vector<ParameterSlot> x0_slots(const LpvModel<double>& m) {
+  std::vector<ParameterSlot> out = record_x0_slots(m, 0);
+  for (size_t k = 0; k < m.later_x0.size(); ++k) {
+    const std::vector<ParameterSlot> more = record_x0_slots(m, static_cast<int>(k + 1));
+    out.insert(out.end(), more.begin(), more.end());
+  }
   return out;
 }
 

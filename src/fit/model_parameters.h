@@ -77,8 +77,12 @@ double constant_a_radius(const LpvModel<double>& m);
 
 /// Slots of every offset value (the offset must have values).
 std::vector<ParameterSlot> offset_slots(const LpvModel<double>& m);
-/// Slots of x0 (x0 is sized to nx).
+/// Slots of x0 (x0 is sized to nx) and of every later record's initial
+/// state (LpvModel::later_x0): kX0 with term 0 for x0, term k for the
+/// initial state of record k+1.
 std::vector<ParameterSlot> x0_slots(const LpvModel<double>& m);
+/// Slots of one record's initial state (0: x0; k >= 1: later_x0[k-1]).
+std::vector<ParameterSlot> record_x0_slots(const LpvModel<double>& m, int record);
 /// Slots of the effect parameters of the static maps (saturation/dead-zone
 /// limits, polynomial coefficients except c_1, which the output map's scale
 /// already carries).

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <algorithm>
 #include <limits>
+#include <optional>
 
+#include "core/finite_range.h"
 #include "core/rms.h"
 #include "fit/levenberg_marquardt.h"
+#include "fit/record_states.h"
 #include "model/simulate.h"
 #include "model/state_scheduling.h"
 #include "toeplitz/signal_toeplitz.h"
@@ -41,16 +44,14 @@ bool moves_map_coefficients(const std::vector<ParameterSlot>& slots, ParameterSl
 /// [min, max] of the entries of m in the window's cost rows (model/static_blocks.h:
 /// a polynomial map's range); empty when none is finite.
 std::vector<double> cost_rows_range(const Mat<double>& m, const Window& w) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (Eigen::Index i = w.first; i < std::min(w.last, m.rows()); ++i) {
-    if (i >= w.skip_first && i < w.skip_last) continue;
-    for (Eigen::Index j = 0; j < m.cols(); ++j)
-      if (std::isfinite(m(i, j))) {
-        lo = std::min(lo, m(i, j));
-        hi = std::max(hi, m(i, j));
-      }
-  }
-  return lo <= hi ? std::vector<double>{lo, hi} : std::vector<double>{};
+  FiniteRange r;
+  for (Eigen::Index i = w.first; i < std::min(w.last, m.rows()); ++i)
+    if (i < w.skip_first || i >= w.skip_last) {
+      const FiniteRange row = finite_range(m.row(i));
+      r.add(row.lo);
+      r.add(row.hi);
+    }
+  return r.any() ? std::vector<double>{r.lo, r.hi} : std::vector<double>{};
 }
 
 /// Clears the range of the input (output) map; whether there was one.
@@ -71,10 +72,7 @@ bool clear_ranges(LpvModel<double>& m, bool input, bool output) {
 /// the fitted outputs are unchanged; beyond them it continues linearly.
 void set_fitted_ranges(LpvModel<double>& m, const Experiment<double>& exp, const Window& w, bool input, bool output) {
   if (input && m.statics.input.kind == StaticKind::kPolynomial) {
-    const Eigen::Index d = std::min<Eigen::Index>(m.statics.input_delay, exp.n());
-    Mat<double> delayed(exp.n(), exp.nu());
-    for (Eigen::Index k = 0; k < exp.n(); ++k) delayed.row(k) = exp.u.row(k >= d ? k - d : 0);
-    m.statics.input.range = cost_rows_range(delayed, w);
+    m.statics.input.range = cost_rows_range(m.statics.delayed_input(exp.u), w);
   }
   if (output && m.statics.output.kind == StaticKind::kPolynomial) {
     const Simulation<double> s = simulate(m, exp, SimulationParts::kOutput);
@@ -259,6 +257,19 @@ FreeRunScore warmup_score(const LpvModel<double>& model, const Experiment<double
 
 namespace {
 
+/// The model and slots of fit_slots with each record's own initial state
+/// (fit/record_states.h); nullopt when they are so already or the data give
+/// the records' states.
+std::optional<RecordStateFit> record_states(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,
+                                            const Experiment<double>& exp, const Window& w) {
+  if (!exp.record_x0.empty()) return std::nullopt;
+  const auto has_cost = [&w](Eigen::Index begin, Eigen::Index end) {
+    const Eigen::Index a = std::max(begin, w.first), b = std::min(end, w.last);
+    return a < b && !(w.skip_first <= a && b <= w.skip_last);
+  };
+  return with_record_states(model, slots, exp.record_lengths(), has_cost);
+}
+
 /// fit_slots' residual and its length.
 struct FittedResidual {
   const Residual& r;
@@ -296,6 +307,8 @@ FitResult fit_slots(const LpvModel<double>& model, const std::vector<ParameterSl
   const bool input_map = moves_map_coefficients(slots, ParameterSlot::Where::kInputCoef);
   const bool output_map = moves_map_coefficients(slots, ParameterSlot::Where::kOutputCoef);
   if (LpvModel<double> open = model; clear_ranges(open, input_map, output_map)) return fit_slots(open, slots, exp, o);
+  // several records: each its own initial state, fitted where the cost reaches it
+  if (const std::optional<RecordStateFit> r = record_states(model, slots, exp, w)) return fit_slots(r->model, r->slots, exp, o);
   FitResult res;
   res.model = model;
   const Vec<double> p0 = slot_values(model, slots);

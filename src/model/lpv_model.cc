@@ -136,6 +136,7 @@ LpvModel<To> convert_model(const LpvModel<From>& m) {
   out.state_offset.basis = m.state_offset.basis;
   for (const auto& v : m.state_offset.values) out.state_offset.values.push_back(conv<To>(v));
   out.x0 = conv<To>(m.x0);
+  for (const auto& x : m.later_x0) out.later_x0.push_back(conv<To>(x));
   return out;
 }
 

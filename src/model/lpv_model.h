@@ -90,6 +90,12 @@ struct LpvModel {
   Offset<T> offset;
   StateOffset<T> state_offset;  ///< E(ρ) in the state equation; none by default
   Vec<T> x0;  ///< length nx; zero unless given
+  /// Initial states of records 2, 3, … of the several-record data the model
+  /// was fitted on (each record its own x0; x0 is record 1's). Empty for one
+  /// record and in a model read from a file, which holds x0 alone. simulate()
+  /// starts record k ≥ 2 from later_x0[k-2] when the data give no initial
+  /// state of their own (Experiment::record_x0) and the entry has nx values.
+  std::vector<Vec<T>> later_x0;
   StaticBlocks<T> statics;  ///< input delay, static input/output maps (model/static_blocks.h); none by default
   SignalInfo signal_info;   ///< sample time and units (plots and reports only)
 

@@ -381,8 +381,9 @@ Experiment<T> record_of(const Experiment<T>& exp, Eigen::Index first, Eigen::Ind
 
 /// Simulates the model along the experiment: one record as
 /// simulate_one_record; several records (exp.records) one after another,
-/// each from its own initial state (exp.record_x0[k] when given, else
-/// model.x0), with the model's input delays starting afresh in each record;
+/// each from its own initial state (exp.record_x0[k] when given, else the
+/// model's own state of that record, LpvModel::later_x0, else model.x0),
+/// with the model's input delays starting afresh in each record;
 /// the trajectories are stacked like the records.
 template <typename T>
 Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp, SimulationParts parts = SimulationParts::kAll) {
@@ -400,7 +401,10 @@ Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp, Simul
   Eigen::Index first = 0;
   for (size_t k = 0; k < lengths.size(); ++k) {
     LpvModel<T> mk = model;
-    if (!exp.record_x0.empty() && exp.record_x0[k].size() != 0) mk.x0 = exp.record_x0[k];
+    if (!exp.record_x0.empty() && exp.record_x0[k].size() != 0)
+      mk.x0 = exp.record_x0[k];
+    else if (k >= 1 && k - 1 < model.later_x0.size() && model.later_x0[k - 1].size() == model.nx)
+      mk.x0 = model.later_x0[k - 1];
     const Simulation<T> s = simulate_one_record(mk, record_of(exp, first, lengths[k]), parts);
     if (k == 0) {
       sim.x = Mat<T>(exp.n(), s.x.cols());

@@ -170,12 +170,16 @@ struct StaticBlocks {
   /// u' of the header: the delayed input (first sample held) through g_in.
   /// `u` is n × nu.
   Mat<T> model_input(const Mat<T>& u) const {
-    if (input_delay < 0) throw std::invalid_argument("static.input_delay must be >= 0");
     if (!has_input()) return u;
+    return input.apply(delayed_input(u));
+  }
+  /// u_{k−d}, the first sample held for k < d: the argument of g_in.
+  Mat<T> delayed_input(const Mat<T>& u) const {
+    if (input_delay < 0) throw std::invalid_argument("static.input_delay must be >= 0");
     Mat<T> delayed(u.rows(), u.cols());
     for (Eigen::Index k = 0; k < u.rows(); ++k)
       delayed.row(k) = u.row(k >= input_delay ? k - input_delay : 0);
-    return input.apply(delayed);
+    return delayed;
   }
 };
 

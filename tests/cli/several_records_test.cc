@@ -343,5 +343,23 @@ TEST_F(RecordInitialState, ABadX0IsNamedAndNothingIsWritten) {
   EXPECT_FALSE(std::filesystem::exists(file("c.json")));
 }
 
+// diagnose fits each record's own initial state: the same two records (the
+// model's own free runs from x0 = 2 and x0 = -3), no effect tried; the
+// declared model is then exact on both records from their own states, and
+// the report lists those states. One state for both would leave the
+// transients 2·(1/2)^k and −3·(1/2)^k in at least one record.
+TEST_F(RecordInitialState, DiagnoseFitsEachRecordsOwnInitialState) {
+  ASSERT_EQ(run("diagnose", "--quiet --data " + file("a.csv") + " --data " + file("b.csv") + " --model " +
+                                file("model.json") + " --max-effects 0 --max-windows 1 --report " + file("d.json")),
+            0)
+      << output();
+  const nlohmann::json r = read_json(file("d.json"));
+  ASSERT_EQ(r["records"].size(), 2u) << r.dump(1);
+  // canonical order: the shorter record (a.csv, 50 rows, from x0 = 2) first
+  EXPECT_NEAR(r["records"][0]["x0_before"][0].get<double>(), 2.0, 1e-5) << r["records"].dump(1);
+  EXPECT_NEAR(r["records"][1]["x0_before"][0].get<double>(), -3.0, 1e-5) << r["records"].dump(1);
+  for (const auto& rec : r["records"]) EXPECT_LT(rec["rms_before"].get<double>(), 1e-5) << rec.dump(1);
+}
+
 }  // namespace
 }  // namespace lpvid

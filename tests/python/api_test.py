@@ -78,6 +78,23 @@ class Api(unittest.TestCase):
         np.testing.assert_allclose(sim.y[:, 0], self.y, atol=1e-8)
         self.assertIsNotNone(m.report)
 
+    def test_fit_linear_on_two_records_gives_each_its_own_initial_state(self):
+        # the second record starts from x0 = 3 (the first from rest): one
+        # first-order model reproduces both only from each one's own state
+        u2 = np.random.default_rng(8).standard_normal(120)
+        x, y2 = 3.0, []
+        for uk in u2:
+            y2.append(x)
+            x = 0.5 * x + uk
+        m = lpvid.fit_linear(records=[(self.u, self.y), (u2, np.array(y2))], order=1)
+        records = m.report["records"]
+        self.assertEqual([r["samples"] for r in records], [150, 120])
+        for r in records:
+            self.assertLess(r["rms_estimation"], 1e-8)
+        self.assertNotAlmostEqual(records[0]["x0"][0], records[1]["x0"][0], delta=0.1)
+        with self.assertRaises(lpvid.LpvidError):
+            lpvid.fit_linear(records=[(self.u, self.y), (u2, np.column_stack([y2, y2]))], order=1)
+
     def test_pandas_frame_in_series_in(self):
         try:
             import pandas as pd
