@@ -1,9 +1,12 @@
-// The extension module lpvid._lpvid: the two command lines, run in-process.
+// The extension module lpvid._lpvid: the two command lines, run in-process
+// (run_lpvid: output to the process's stdout and stderr; run_lpvid_captured:
+// output returned as text, progress lines through take_progress).
 // The Python package (python/lpvid/) writes the input files, builds the
 // arguments and reads the reports; this file only runs the programs' code.
 #include <cstdio>
 #include <iostream>
 #include <mutex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include "cli/command_line.h"
+#include "core/progress_sink.h"
 #include "core/stop_request.h"
 #include "verify/verify_command_line.h"
 
@@ -39,6 +43,72 @@ int run_exclusively(Run run) {
     std::fflush(nullptr);
   }
   return code;
+}
+
+/// The progress lines of the running call (core/progress_sink.h), waiting
+/// for the caller's thread to take them (take_progress): the lines reach
+/// Python's logging in that thread, in order, each once, and never through
+/// the process's file descriptors.
+struct ProgressQueue {
+  std::mutex mutex;
+  std::vector<std::string> lines;
+};
+
+ProgressQueue& progress_queue() {
+  static ProgressQueue q;
+  return q;
+}
+
+/// For one run: std::cout and std::cerr written into strings, and the
+/// progress lines into the queue; both restored when the run ends.
+class RunCapture {
+ public:
+  RunCapture() : out_before_(std::cout.rdbuf(out.rdbuf())), err_before_(std::cerr.rdbuf(err.rdbuf())) {
+    lpvid::set_progress_sink([](const std::string& line) {
+      ProgressQueue& q = progress_queue();
+      const std::lock_guard<std::mutex> lock(q.mutex);
+      q.lines.push_back(line);
+    });
+  }
+  ~RunCapture() {
+    lpvid::set_progress_sink({});
+    std::cout.rdbuf(out_before_);
+    std::cerr.rdbuf(err_before_);
+  }
+  RunCapture(const RunCapture&) = delete;
+  RunCapture& operator=(const RunCapture&) = delete;
+  std::ostringstream out, err;
+
+ private:
+  std::streambuf* out_before_;
+  std::streambuf* err_before_;
+};
+
+template <class Run>
+py::tuple run_captured(Run run) {
+  int code = 0;
+  std::string out, err;
+  {
+    py::gil_scoped_release released;
+    std::lock_guard<std::mutex> lock(run_mutex());
+    RunCapture capture;
+    code = run();
+    out = capture.out.str();
+    err = capture.err.str();
+  }
+  return py::make_tuple(code, out, err);
+}
+
+py::list take_progress() {
+  std::vector<std::string> lines;
+  {
+    ProgressQueue& q = progress_queue();
+    const std::lock_guard<std::mutex> lock(q.mutex);
+    lines.swap(q.lines);
+  }
+  py::list out;
+  for (const std::string& line : lines) out.append(py::str(line));
+  return out;
 }
 
 /// The options of both command lines as {command path: [option dict]}.
@@ -78,6 +148,18 @@ PYBIND11_MODULE(_lpvid, m) {
       "run_lpvid_verify",
       [](const std::vector<std::string>& args) { return run_exclusively([&] { return lpvid::run_lpvid_verify(args); }); },
       py::arg("args"), "Runs `lpvid-verify args...` in this process and returns its exit code.");
+  m.def(
+      "run_lpvid_captured",
+      [](const std::vector<std::string>& args) { return run_captured([&] { return lpvid::cli::run_lpvid(args); }); },
+      py::arg("args"),
+      "Runs `lpvid args...` in this process; returns (exit code, stdout text, stderr text). Progress lines wait "
+      "in a queue for take_progress(); nothing is written to the process's stdout or stderr.");
+  m.def(
+      "run_lpvid_verify_captured",
+      [](const std::vector<std::string>& args) { return run_captured([&] { return lpvid::run_lpvid_verify(args); }); },
+      py::arg("args"), "Runs `lpvid-verify args...` as run_lpvid_captured does.");
+  m.def("take_progress", &take_progress,
+        "The progress lines of the running captured call written since the last take_progress(), in order.");
   // The cooperative Ctrl-C: the running call releases the GIL, so another
   // Python thread (or a signal handler on the main thread) may ask it to stop.
   // None of these takes the GIL's place or run_mutex: they only touch one atomic flag.

@@ -11,6 +11,7 @@
 #include <memory>
 #include <tuple>
 
+#include "core/progress_sink.h"
 #include "core/file_io.h"
 #include "cli/certificate_names.h"
 #include "cli/commands.h"
@@ -161,13 +162,13 @@ RolePlan role_plan(const DiagnoseArgs& a, int warmup) {
   return plan;
 }
 
-/// Progress lines on stderr with the seconds since the start (none with --quiet).
+/// Progress lines (core/progress_sink.h: stderr) with the seconds since the start (none with --quiet).
 std::function<void(const std::string&)> progress_printer(bool quiet) {
   const auto started = std::chrono::steady_clock::now();
   return [started, quiet](const std::string& status) {
     if (quiet) return;  // --quiet: no progress lines (errors and the report are still printed)
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    std::fprintf(stderr, "[diagnose %6.1f s] %s\n", s, status.c_str());
+    progress_printf("[diagnose %6.1f s] %s", s, status.c_str());
   };
 }
 

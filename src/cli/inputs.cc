@@ -1,6 +1,7 @@
 #include "cli/inputs.h"
 
 #include "core/file_io.h"
+#include "core/progress_sink.h"
 
 #include <algorithm>
 #include <charconv>
@@ -258,7 +259,7 @@ CertifyOptions certify_options(const CommonOptions& c, const Inputs& in) {
     const auto started = std::chrono::steady_clock::now();
     co.progress = [started, name = c.command](const std::string& stage) {
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-      std::fprintf(stderr, "[%s %6.1f s] %s\n", name.c_str(), s, stage.c_str());
+      progress_printf("[%s %6.1f s] %s", name.c_str(), s, stage.c_str());
     };
   }
   co.delta_norm = delta_norm_of(c);

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 
+#include "core/progress_sink.h"
 #include "cli/commands.h"
 #include "cli/inputs.h"
 #include "cli/refused_alias.h"
@@ -319,7 +320,7 @@ int run_merge(const std::string& dir_text, std::string report_path, bool quiet) 
   const MergeResult res = merge_jobs(dir_text, [&](size_t done, size_t total) {
     const auto now = std::chrono::steady_clock::now();
     if (!quiet && (std::chrono::duration<double>(now - last).count() > 2.0 || done == total)) {
-      std::fprintf(stderr, "[jobs merge %6.1f s] checked %zu of %zu windows\n",
+      progress_printf("[jobs merge %6.1f s] checked %zu of %zu windows",
                    std::chrono::duration<double>(now - started).count(), done, total);
       last = now;
     }

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 
+#include "core/progress_sink.h"
 #include "cli/commands.h"
 #include "oracle/case_runner.h"
 #include "cli/random_cases.h"
@@ -92,7 +93,7 @@ int run_oracle(const OracleArgs& a) {
     reports.push_back(run_oracle_case(given ? copies[i] : random_case(a, options, i), a.run));
     const CaseReport& r = reports.back();
     if (!a.quiet)
-      std::fprintf(stderr, "[oracle %7.1f s] case %zu/%zu %s (%s, n=%ld, %dx%d): %s%s%s\n", elapsed(), i + 1, count,
+      progress_printf("[oracle %7.1f s] case %zu/%zu %s (%s, n=%ld, %dx%d): %s%s%s", elapsed(), i + 1, count,
                    r.name.c_str(), to_string(r.kind), r.n, r.ny, r.nu, to_string(r.judgement.verdict),
                    r.judgement.evidence.empty() || r.judgement.verdict != OracleVerdict::kRefuted ? "" : ", certificate ",
                    r.judgement.verdict == OracleVerdict::kRefuted ? r.judgement.evidence.c_str() : "");

@@ -230,7 +230,8 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
   EXPECT_LT(r.pooled_after.rms, r.pooled_before.rms);
 
   // the report lists each estimation record; its figures are the after model's free run on
-  // that record alone from the fitted x0 (recomputed here record by record)
+  // that record alone from the record's own fitted initial state, which the report states
+  // (recomputed here record by record)
   cli::DiagnoseReport ri;
   ri.result = &r;
   ri.est = &c.roles.est.exp_d;
@@ -252,7 +253,11 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
     EXPECT_EQ(e["sha256"].get<std::string>(), c.roles.records[k].data.sha256);
     EXPECT_EQ(e["samples"].get<Eigen::Index>(), c.n);
     const Experiment<double> alone = select_rows(c.roles.est.exp_d, static_cast<Eigen::Index>(k) * c.n, static_cast<Eigen::Index>(k + 1) * c.n);
-    const Mat<double> res = alone.y - simulate(r.after_model, alone).output;
+    LpvModel<double> from_own_state = r.after_model;
+    from_own_state.later_x0.clear();
+    ASSERT_EQ(e["x0_after"].size(), static_cast<size_t>(from_own_state.nx));
+    for (Eigen::Index i = 0; i < from_own_state.nx; ++i) from_own_state.x0(i) = e["x0_after"][static_cast<size_t>(i)].get<double>();
+    const Mat<double> res = alone.y - simulate(from_own_state, alone).output;
     EXPECT_NEAR(e["rms_after"].get<double>(), std::sqrt(res.squaredNorm() / static_cast<double>(res.size())), 1e-9);
   }
 }

@@ -11,18 +11,23 @@ folders, progress, Ctrl-C) against answers known by construction.
 - an in-memory certificate verifies, survives save/load, and a changed
   claim is refused; no call leaves a folder behind;
 - a misspelt option is refused with "did you mean";
+- with logging.basicConfig (a handler on sys.stderr) a run finishes and
+  stderr holds each progress line once, in order;
 - Ctrl-C (SIGINT) during a run raises KeyboardInterrupt, leaves nothing,
   and the next call answers as before.
 
 Usage: api_test.py SCRATCH_DIR (with the package on PYTHONPATH).
 """
 
+import json
 import logging
 import os
 import re
 import signal
+import subprocess
 import sys
 import tempfile
+import textwrap
 import threading
 import time
 import unittest
@@ -164,6 +169,26 @@ class Api(unittest.TestCase):
         self.assertTrue(lines)
         self.assertEqual([r.getMessage() for r in logs.records if r.levelno == logging.INFO],
                          [ln for ln in lines if ln in [r.getMessage() for r in logs.records]])
+
+    def test_logging_to_stderr_neither_blocks_nor_repeats_a_line(self):
+        # logging.basicConfig's handler writes to sys.stderr: the run finishes, and
+        # what reaches stderr is exactly the lines the progress callback got, in
+        # order and each once (the handler's own output is never read back)
+        code = textwrap.dedent("""
+            import json, logging, lpvid
+            logging.basicConfig(level=logging.INFO, format="%(message)s")
+            lines = []
+            g = lpvid.generate("effect-case", effect="output_offset", n=200)
+            d = g.data
+            lpvid.diagnose(d["u1"], d["y1"], d["rho1"], g.model, max_effects=1, progress=lines.append)
+            print(json.dumps(lines))
+        """)
+        p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600,
+                           env=os.environ, cwd=SCRATCH)
+        self.assertEqual(p.returncode, 0, p.stderr[-3000:])
+        lines = json.loads(p.stdout.strip().splitlines()[-1])
+        self.assertGreater(len([ln for ln in lines if ln.startswith("[diagnose")]), 5)
+        self.assertEqual(p.stderr.splitlines(), lines)
 
     def test_diagnose_with_test_arrays_finds_the_offset(self):
         g = lpvid.generate("effect-case", effect="output_offset", n=200)
