@@ -17,13 +17,9 @@ namespace lpvid {
 struct EstimationRecordScore {
   Eigen::Index samples = 0;
   OutputScores before, after;
-  Vec<double> x0_before, x0_after;  ///< each model's initial state of the record (record_initial_state)
+  Vec<double> x0_before, x0_after;  ///< each model's initial state of the record (model/simulate.h record_start_state)
 };
 
-/// The initial state `model` starts record k from in simulate() without
-/// states in the data: x0 for k = 0, LpvModel::later_x0[k-1] when it has nx
-/// values, else x0.
-Vec<double> record_initial_state(const LpvModel<double>& model, size_t k);
 
 struct RecordScores {
   std::vector<EstimationRecordScore> records;  ///< one per record of the experiment, in order

@@ -379,6 +379,14 @@ Experiment<T> record_of(const Experiment<T>& exp, Eigen::Index first, Eigen::Ind
   return e;
 }
 
+/// The state `model` starts record k from when the data give none of its
+/// own: x0 for k = 0, LpvModel::later_x0[k-1] when it has nx values, else x0.
+template <typename T>
+Vec<T> record_start_state(const LpvModel<T>& model, size_t k) {
+  if (k >= 1 && k - 1 < model.later_x0.size() && model.later_x0[k - 1].size() == model.nx) return model.later_x0[k - 1];
+  return model.x0;
+}
+
 /// Simulates the model along the experiment: one record as
 /// simulate_one_record; several records (exp.records) one after another,
 /// each from its own initial state (exp.record_x0[k] when given, else the
@@ -401,10 +409,7 @@ Simulation<T> simulate(const LpvModel<T>& model, const Experiment<T>& exp, Simul
   Eigen::Index first = 0;
   for (size_t k = 0; k < lengths.size(); ++k) {
     LpvModel<T> mk = model;
-    if (!exp.record_x0.empty() && exp.record_x0[k].size() != 0)
-      mk.x0 = exp.record_x0[k];
-    else if (k >= 1 && k - 1 < model.later_x0.size() && model.later_x0[k - 1].size() == model.nx)
-      mk.x0 = model.later_x0[k - 1];
+    mk.x0 = !exp.record_x0.empty() && exp.record_x0[k].size() != 0 ? exp.record_x0[k] : record_start_state(model, k);
     const Simulation<T> s = simulate_one_record(mk, record_of(exp, first, lengths[k]), parts);
     if (k == 0) {
       sim.x = Mat<T>(exp.n(), s.x.cols());
