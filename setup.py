@@ -91,6 +91,8 @@ setup(
     version=cmake_project_version(),
     package_dir={"": "python"},
     packages=find_namespace_packages(where="python", include=["lpvid", "lpvid.*"], exclude=["*.__pycache__"]),
+    # py.typed: the package's type hints are for type checkers too (PEP 561)
+    package_data={"lpvid": ["py.typed"]},
     ext_modules=[Extension("lpvid._lpvid", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     zip_safe=False,

@@ -85,6 +85,9 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/verify/ DESTINATION ${LPVID_INSTALL_INCL
   PATTERN "verify_command_line.h" EXCLUDE)  # the program's command line (in no installed library)
 install(FILES ${PROJECT_SOURCE_DIR}/docs/certificate.schema.json ${PROJECT_SOURCE_DIR}/docs/certificate_format.md
   DESTINATION ${CMAKE_INSTALL_DATADIR}/lpvid)
+# The commands' report schemas (docs/reports.md), for programs that read the reports.
+file(GLOB LPVID_REPORT_SCHEMAS ${PROJECT_SOURCE_DIR}/docs/*_report.schema.json)
+install(FILES ${LPVID_REPORT_SCHEMAS} ${PROJECT_SOURCE_DIR}/docs/reports.md DESTINATION ${CMAKE_INSTALL_DATADIR}/lpvid)
 
 install(EXPORT lpvidTargets NAMESPACE lpvid:: DESTINATION ${LPVID_INSTALL_CMAKEDIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/lpvidConfig.cmake.in

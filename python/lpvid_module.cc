@@ -16,6 +16,7 @@
 #include "cli/command_line.h"
 #include "core/progress_sink.h"
 #include "core/stop_request.h"
+#include "plot/gnuplot.h"
 #include "verify/verify_command_line.h"
 
 namespace py = pybind11;
@@ -158,6 +159,9 @@ PYBIND11_MODULE(_lpvid, m) {
       "run_lpvid_verify_captured",
       [](const std::vector<std::string>& args) { return run_captured([&] { return lpvid::run_lpvid_verify(args); }); },
       py::arg("args"), "Runs `lpvid-verify args...` as run_lpvid_captured does.");
+  m.def("set_png_drawing", &lpvid::set_png_drawing, py::arg("on"),
+        "Whether the commands' --plots draw PNG files with gnuplot (default) or write only the figure "
+        "descriptions (.plot.json) that lpvid.plots draws from.");
   m.def("take_progress", &take_progress,
         "The progress lines of the running captured call written since the last take_progress(), in order.");
   // The cooperative Ctrl-C: the running call releases the GIL, so another

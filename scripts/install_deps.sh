@@ -11,5 +11,5 @@ $SUDO apt-get install -y --no-install-recommends \
   libgtest-dev librapidcheck-dev nlohmann-json3-dev libcli11-dev \
   libsdp-dev coinor-csdp libsdpa-dev sdpa libmumps-seq-dev libopenblas-dev liblapack-dev gfortran \
   python3 python3-jsonschema python3-dev pybind11-dev python3-numpy \
-  python3-venv python3-pip python3-setuptools python3-wheel python3-matplotlib python3-pandas \
+  python3-venv python3-pip python3-setuptools python3-wheel python3-matplotlib python3-pandas python3-scipy \
   gnuplot-nox

@@ -237,15 +237,17 @@ model = {"format": "lpvid-model/1", "states": 1, "inputs": 1, "outputs": 1, "sch
          "columns": {"u": ["u"], "y": ["y"]},
          "initial": {"A": [{"basis": "1", "value": [[0.5]]}, {"basis": "rho", "value": [[0.2]]}],
                      "B": [{"basis": "1", "value": [[1]]}], "C": [{"basis": "1", "value": [[1]]}]}}
-r = lpvid.invalidate(u, y, rho, model, delta=0)
-print("dmax", r.dmax, r.dmax2, r.interval.lower)
-print("verified", lpvid.verify(r.certificate).ok)
+z = lpvid.invalidate(model, u=u, y=y, rho=rho, delta=0)
+print("dmax", z.dmax, z.interval.relative_gap)
+print("solver", z.report["solver"])
+print("verified", lpvid.verify(z.interval.lower_certificate).ok)
 """),
         "figures": [
-            F("dmax at delta = 0", rx(r"^dmax (\S+)"), 0.008999240858984391, 1e-15, "docs/python.md first example"),
-            F("dmax^2 (exact)", rx(r"^dmax \S+ (\S+)", cast=str), "809863360380141/10000000000000000000", None,
-              "docs/python.md first example"),
-            F("verify(...).ok", rx(r"^verified (\S+)", cast=str), "True", None, "docs/python.md first example"),
+            F("dmax at delta = 0", rx(r"^dmax (\S+)"), 0.008999240858984386, 1e-15, "docs/python.md delta = 0 example"),
+            F("relative gap at delta = 0", rx(r"^dmax \S+ (\S+)"), 0.0, 0.0, "docs/python.md delta = 0 example"),
+            F("solver", rx(r"^solver (.+)$", cast=str), "closed form (delta = 0)", None,
+              "docs/python.md delta = 0 example"),
+            F("verify(...).ok", rx(r"^verified (\S+)", cast=str), "True", None, "docs/python.md delta = 0 example"),
         ],
     },
     {

@@ -61,7 +61,7 @@ def ctrl_c_during_diagnose(u, y, model):
     previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     threading.Timer(2.0, interrupt).start()
     try:
-        lpvid.diagnose(u, y, None, model, quiet=True)
+        lpvid.diagnose(model=model, u=u, y=y, quiet=True)
     except KeyboardInterrupt:
         return time.monotonic() - sent["at"]
     finally:
@@ -79,13 +79,13 @@ def main(argv):
     before = lpvid.fit_linear(u=u, y=y, order=1)
     print(f"1. fit_linear: {before}")
 
-    d = lpvid.diagnose(u, y, None, before, test=(u_test, y_test), max_effects=1, quiet=True)
+    d = lpvid.diagnose(model=before, u=u, y=y, test=(u_test, y_test), max_effects=1, quiet=True)
     print(f"2. diagnose: effects {[e.get('kind') for e in d.effects]}; test RMS {d.rms_before:.4f} -> "
           f"{d.rms_after:.4f} (fit {d.fit_before:.1f} -> {d.fit_after:.1f} %); certified delta <= {d.delta:.3g}, "
           f"dmax <= {d.dmax:.3g}, {len(d.certificates)} certificates")
     assert d.rms_after < 0.5 * d.rms_before, "the offset was not found"
 
-    c = lpvid.compare(u=u_test, y=y_test, models={"before": before, "after": d.model})
+    c = lpvid.compare(models={"before": before, "after": d.model}, u=u_test, y=y_test, quiet=True)
     for s in c.scores:
         print(f"3. compare: {s.name:7s} RMS {s.rms:.4f}  fit {s.fit_percent:.1f} %")
     assert c.score("after").rms < c.score("before").rms

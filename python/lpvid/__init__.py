@@ -2,21 +2,25 @@
 with exactly verified certificates.
 
     import lpvid
-    before = lpvid.fit_linear(u=u, y=y, order=2)                     # a Model
-    d = lpvid.diagnose(u, y, None, before, test=(u_test, y_test))     # a Diagnosis
+    before = lpvid.fit_linear(u, y, order=2)                          # a Model
+    d = lpvid.diagnose(before, u=u, y=y, test=(u_test, y_test))       # a Diagnosis
     d.rms_before, d.rms_after, d.model, d.certificates
-    lpvid.compare(u=u_test, y=y_test, models={"before": before, "after": d.model}).scores
+    lpvid.compare({"before": before, "after": d.model}, u=u_test, y=y_test).scores
     all(lpvid.verify(c) for c in d.certificates)                     # rechecked exactly
 
 One function per command of the `lpvid` program (fit_linear, simulate,
 compare, generate, invalidate, certify, identify, select_basis, tradeoff,
-diagnose, oracle) and verify for `lpvid-verify`. They run the same C++ code
-as the programs, in this process, on arrays, DataFrames, Model objects or
-files; nothing is left on disk unless out_dir= is given. Progress lines go
-to the logger "lpvid" (INFO; lpvid.log_to_stderr() shows them) and to a
-progress= callback; Ctrl-C stops a running call. Exit codes 0 and 1 are
-answers; every other code raises LpvidError (with .code and .message).
-The API reference is docs/python.md.
+diagnose, oracle) and verify for `lpvid-verify`: the model first, the
+signals by keyword (the positional order of version 0.1 still works, with a
+DeprecationWarning). They run the same C++ code as the programs, in this
+process, on arrays, Series, DataFrames, Model objects or files; nothing is
+left on disk unless out_dir= is given. Progress lines go to the logger
+"lpvid" (INFO; lpvid.log_to_stderr() shows them) and to a progress=
+callback; Ctrl-C stops a running call. Exit codes 0 and 1 are answers; a
+bad argument raises LpvidValueError, LpvidTypeError or
+LpvidFileNotFoundError (also ValueError, TypeError, FileNotFoundError),
+any other failure LpvidError (with .code and .message). The API reference
+is docs/python.md; every function has a numpydoc docstring.
 """
 
 import logging
@@ -41,10 +45,10 @@ _pin_blas_kernel()
 from . import benchmarks  # noqa: F401  (lpvid.benchmarks.cascaded_tanks(...), ...)
 from ._commands import (certify, compare, diagnose, fit_linear, generate, identify, invalidate, oracle, read_table,
                         select_basis, simulate, tradeoff)
-from ._errors import EXIT_CODES, LpvidError
+from ._errors import EXIT_CODES, LpvidError, LpvidFileNotFoundError, LpvidTypeError, LpvidValueError
 from ._lpvid import run_lpvid, run_lpvid_verify, version
 from .certificate import Certificate, Verification, verify
-from .model import Model
+from .model import Matrices, Model
 from .results import (BasisSelection, Bounds, Comparison, Diagnosis, Generated, Identification, Interval, ModelScore,
                       OracleRun, Result, Simulation, Tradeoff, TradeoffPoint, exact)
 
@@ -62,8 +66,9 @@ def log_to_stderr(level=logging.INFO):
 
 
 __all__ = ["fit_linear", "simulate", "compare", "generate", "invalidate", "certify", "identify", "select_basis",
-           "tradeoff", "diagnose", "oracle", "verify", "Model", "Certificate", "Verification", "Result", "Bounds",
+           "tradeoff", "diagnose", "oracle", "verify", "Model", "Matrices", "Certificate", "Verification", "Result", "Bounds",
            "Identification", "BasisSelection", "Tradeoff", "TradeoffPoint", "Diagnosis", "Comparison", "ModelScore",
-           "Simulation", "Generated", "OracleRun", "Interval", "LpvidError", "EXIT_CODES", "exact", "read_table",
+           "Simulation", "Generated", "OracleRun", "Interval", "LpvidError", "LpvidValueError", "LpvidTypeError",
+           "LpvidFileNotFoundError", "EXIT_CODES", "exact", "read_table",
            "log_to_stderr", "benchmarks", "run_lpvid", "run_lpvid_verify", "version"]
 __version__ = version()

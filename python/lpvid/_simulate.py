@@ -7,7 +7,7 @@ import os
 
 import numpy as np
 
-from ._files import model_columns, number_text, read_table, write_model
+from ._files import as_signal, model_columns, number_text, read_table, write_model
 from ._inputs import data_files
 from ._invoke import raise_unless_answer, run
 from ._workspace import workspace
@@ -25,7 +25,7 @@ def simulate_document(document, u=None, rho=None, *, data=None, x0=None, out_dir
         write_model(document, model_path)
         u_names, y_names, rho_names = model_columns(document)
         if data is None:
-            zeros = None if u is None else np.zeros((len(u), len(y_names)))
+            zeros = None if u is None else np.zeros((len(as_signal("u", u)), len(y_names)))
             paths = data_files(ws, document, u, zeros, rho)
         else:
             paths = data_files(ws, document, None, None, None, data)

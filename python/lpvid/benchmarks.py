@@ -11,6 +11,8 @@ nonlinear_benchmarks on GitHub):
     train, test = benchmarks.cascaded_tanks("~/data/CascadedTanksFiles")
     train.u, train.y, train.sampling_time      # numpy arrays (samples x channels), seconds
     test.warmup                                # 50: the first 50 test samples are not scored
+    u, y = train                               # unpacks like nonlinear_benchmarks' records
+    part = train[100:200]                      # a Record of samples 100..199, same sampling time
 
     trains, tests = benchmarks.load("coupled electric drives", "~/data")
 
@@ -34,7 +36,7 @@ import dataclasses
 import difflib
 import math
 import os
-from typing import Dict, List, Sequence, Tuple
+from typing import Dict, Iterator, List, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -45,7 +47,7 @@ _SITE = "https://www.nonlinearbenchmark.org/benchmarks/"
 _SEARCH_DEPTH = 3  # folder levels searched below `path` for the official file names
 
 
-@dataclasses.dataclass
+@dataclasses.dataclass(repr=False)
 class Record:
     """One input/output record of a benchmark.
 
@@ -54,6 +56,11 @@ class Record:
     error is not scored (0 for training records); u_names/y_names: the
     columns or variables the data came from; u_units/y_units: units where the
     benchmark states them ("" otherwise); source: the file read.
+
+    Like the records of nonlinear_benchmarks (its Input_output_data):
+    `u, y = record` unpacks (iteration yields u, then y; record[0] is u,
+    record[1] is y), `record[100:200]` is a Record of those samples, and
+    len(record) is the number of samples.
     """
 
     u: np.ndarray
@@ -82,6 +89,46 @@ class Record:
     def __len__(self) -> int:
         """Number of samples."""
         return self.u.shape[0]
+
+    def __iter__(self) -> Iterator[np.ndarray]:
+        """u, then y: `u, y = record`."""
+        yield self.u
+        yield self.y
+
+    def __getitem__(self, key: Union[int, slice]) -> Union[np.ndarray, "Record"]:
+        """record[0] is u and record[1] is y (as in `u, y = record`);
+        record[a:b] or record[a:b:step] is a Record of those samples.
+
+        A slice keeps the names, units and source, notes the slice in the
+        name ("... train[100:200]"), multiplies the sampling time by the
+        step, and keeps as warm-up the selected samples that were warm-up
+        samples of this record. A negative step is refused (a record runs
+        forward in time).
+        """
+        if isinstance(key, slice):
+            return self._slice(key)
+        if isinstance(key, (int, np.integer)) and not isinstance(key, (bool, np.bool_)):
+            if -2 <= key < 2:
+                return (self.u, self.y)[key]
+            raise IndexError(f"Record index {key}: 0 is u and 1 is y (samples are selected with a slice, "
+                             f"record[a:b])")
+        raise TypeError(f"Record indices are 0 (u), 1 (y) or a slice of samples, not {type(key).__name__}")
+
+    def _slice(self, key: slice) -> "Record":
+        start, stop, step = key.indices(len(self))
+        if step < 0:
+            raise ValueError(f"Record {self.name!r}[{key.start}:{key.stop}:{key.step}]: a negative step would "
+                             f"run the record backwards in time")
+        note = f"{start}:{max(stop, start)}" + (f":{step}" if step != 1 else "")
+        warmup = len(range(start, min(stop, self.warmup), step))  # the selected samples below self.warmup
+        return Record(u=self.u[key], y=self.y[key], sampling_time=self.sampling_time * step,
+                      name=f"{self.name}[{note}]", warmup=warmup, u_names=self.u_names, y_names=self.y_names,
+                      u_units=self.u_units, y_units=self.y_units, source=self.source)
+
+    def __repr__(self) -> str:
+        warmup = f", warmup={self.warmup}" if self.warmup else ""
+        return (f"<lpvid.benchmarks.Record {self.name!r}: {len(self)} samples, u={list(self.u_names)}, "
+                f"y={list(self.y_names)}, sampling_time={self.sampling_time:.6g} s{warmup}>")
 
     def to_csv(self, path: str, u_names: Sequence[str] = None, y_names: Sequence[str] = None) -> str:
         """Write the record as CSV (header u_names + y_names, one row per sample,

@@ -12,11 +12,11 @@ import dataclasses
 import json
 import os
 import re
-from fractions import Fraction
 from typing import Optional
 
-from ._errors import EXIT_CODES, LpvidError
-from ._run import error_message, run_captured
+from ._errors import LpvidError
+from ._exact import exact
+from ._run import run_captured
 from ._workspace import read_bytes, workspace
 
 
@@ -38,8 +38,6 @@ def _rewrite_file_references(text, renamed):
     return re.sub(r'("file"\s*:\s*)("(?:[^"\\]|\\.)*")', replace, text)
 
 
-def _exact(text):
-    return None if text is None else Fraction(str(text))
 
 
 @dataclasses.dataclass
@@ -86,12 +84,12 @@ class Certificate(os.PathLike):
     @property
     def delta2(self):
         """The certified delta^2 as an exact Fraction (None if absent)."""
-        return _exact(self.document.get("delta2"))
+        return exact(self.document.get("delta2"))
 
     @property
     def dmax2(self):
         """The certified d_max^2 as an exact Fraction (None if absent)."""
-        return _exact(self.document.get("dmax2"))
+        return exact(self.document.get("dmax2"))
 
     @property
     def model(self):
@@ -199,6 +197,7 @@ def _verify_file(path, data, options, option_words, progress, shown):
     args += option_words(options)
     code, output, messages = run_captured("lpvid-verify", args, progress)
     if code not in (0, 1):
-        raise LpvidError(code, error_message(output, messages, EXIT_CODES.get(code, "")))
+        from ._invoke import raise_error  # late: _invoke imports the modules that import this one
+        raise_error(code, output, messages, {"args": args, "options": options, "sources": {}})
     return Verification(ok=code == 0, code=code, certificate=shown, data=None if data is None else os.fspath(data),
                         output=output, messages=messages)

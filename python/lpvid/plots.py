@@ -14,10 +14,21 @@ a line, points or a band, their colours, shaded blocks and horizontal lines.
 read_plots copies everything into memory (numpy arrays), so the folder may
 be deleted afterwards. matplotlib is imported only by figure(): this module
 and ``import lpvid`` work without it (Debian: python3-matplotlib).
+
+Every figure keeps the palette of docs/plots.md (one colour per role:
+measured black, the model before orange, the model after blue, ...). A
+compared model named "before" or "after" takes its role's colour too, and
+with the run's report beside it (compare.json, as the package writes it)
+each compared model's legend entry gives its RMS and fit (%). In the
+folders the package's functions work in, a title names what the caller
+gave, never the package's own data files: "Estimation record rows 0:300",
+"Test record 1", "lpvid compare on the given record".
 """
 
 import json
+import math
 import os
+import re
 import warnings
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Tuple
@@ -166,8 +177,14 @@ def read_plot(path):
         raise ValueError(f"{sidecar}: missing field {e}") from None
     csv_path = stem + ".csv"
     table = _csv_table(csv_path) if os.path.isfile(csv_path) else {}
-    return Plot(name=os.path.basename(stem), title=js.get("title", ""), panels=panels,
+    plot = Plot(name=os.path.basename(stem), title=js.get("title", ""), panels=panels,
                 width=int(js.get("width", 900)), height=int(js.get("height", 650)), table=table)
+    _role_colours(plot)
+    folder = os.path.dirname(os.path.abspath(stem))
+    if plot.name == "compare":
+        _compare_scores(plot, os.path.join(folder, "compare.json"))
+    _caller_titles(plot, folder)
+    return plot
 
 
 def read_plots(folder):
@@ -185,6 +202,134 @@ def read_plots(folder):
             warnings.warn(f"{os.path.join(folder, name)} has no figure description ({name[:-4]}{SIDECAR_SUFFIX}); "
                           "not read", stacklevel=2)
     return plots
+
+
+# --- the palette, the scores, the titles ---------------------------------------------------------
+
+# One colour per role (docs/plots.md, "one colour per role"): the model before orange, the model
+# after blue, as every figure of the command line draws them.
+MODEL_BEFORE = "#ee7733"
+MODEL_AFTER = "#0077bb"
+ROLE_COLOURS = {"before": MODEL_BEFORE, "after": MODEL_AFTER}
+# The colours of further compared models, in the command line's order.
+OTHER_MODELS = ("#0077bb", "#ee7733", "#009988", "#cc3311", "#33bbee", "#aa3377")
+
+
+def _role_colours(plot):
+    """A line series titled "before" or "after" (a compared model of that
+    name) in its role's colour; another model that had that colour takes the
+    first colour of OTHER_MODELS no series of its panel has."""
+    for panel in plot.panels:
+        roles = [s for s in panel.series if s.kind == "line" and s.title.strip().lower() in ROLE_COLOURS]
+        if not roles:
+            continue
+        for s in roles:
+            s.color = ROLE_COLOURS[s.title.strip().lower()]
+        taken = {s.color.lower() for s in roles}
+        for s in panel.series:
+            if s in roles or s.kind != "line" or s.color.lower() not in taken:
+                continue
+            used = {t.color.lower() for t in panel.series}
+            s.color = next((c for c in OTHER_MODELS if c not in used), s.color)
+
+
+def _score_text(name, rms, fit):
+    def number(x, spec):
+        return "n/a" if x is None else format(float(x), spec) if math.isfinite(float(x)) else str(float(x))
+    return f"{name}: RMS {number(rms, '#.3g')}, fit {number(fit, '.1f')} %"
+
+
+def _compare_scores(plot, report_path):
+    """Each compared model's legend entry with its RMS and fit (%) on that
+    panel's output, from the run's report beside the figure (the numbers of
+    Comparison.scores). Without the report the entries stay the names."""
+    try:
+        with open(report_path, encoding="utf-8") as f:
+            report = json.load(f)
+    except (OSError, ValueError):
+        return
+    entries = report.get("models") if isinstance(report.get("models"), list) else [report]
+    for i, panel in enumerate(plot.panels):
+        models = [s for s in panel.series if s.kind == "line" and not s.title.startswith("measured")]
+        if len(entries) == 1 and len(models) == 1 and "name" not in entries[0]:
+            pairs = [(models[0], entries[0])]  # one model: its report has no name
+        else:
+            by_name = {e.get("name"): e for e in entries if isinstance(e, dict)}
+            pairs = [(s, by_name[s.title]) for s in models if s.title in by_name]
+        for s, entry in pairs:
+            outputs = entry.get("outputs") or []
+            score = outputs[i] if i < len(outputs) and len(plot.panels) > 1 else entry
+            s.title = _score_text(s.title, score.get("rms"), score.get("fit_percent"))
+
+
+# The data files the package's functions write for arrays and DataFrames (lpvid._inputs,
+# lpvid._commands), and the report each function writes beside its figures.
+_PACKAGE_DATA = re.compile(r"(?<![\w.-])(data|test)(\d*)\.csv(?![\w.-])")
+_PACKAGE_REPORTS = {"compare": "compare.json", "tradeoff": "tradeoff.json"}
+
+
+def _package_folder(plot, folder):
+    """The folder a package function ran in when `folder` holds its figures
+    (compare, tradeoff: the folder itself; diagnose: its "plots" folder),
+    known by the function's report there; None for any other folder."""
+    report = _PACKAGE_REPORTS.get(plot.name)
+    if report and os.path.isfile(os.path.join(folder, report)):
+        return folder
+    parent = os.path.dirname(folder)
+    if os.path.basename(folder) == "plots" and os.path.isfile(os.path.join(parent, "diagnose.json")):
+        return parent
+    return None
+
+
+def _numbered(folder, stem, suffix=".csv"):
+    """The k of the files <stem>k<suffix> in `folder`, sorted."""
+    found = (re.fullmatch(re.escape(stem) + r"(\d+)" + re.escape(suffix), n) for n in os.listdir(folder))
+    return sorted(int(m.group(1)) for m in found if m)
+
+
+def _caller_titles(plot, folder):
+    """In a package function's folder: the titles name what the caller gave
+    instead of the data files the package wrote for it ("Estimation record
+    data.csv rows 0:300" -> "Estimation record rows 0:300", "Test record
+    test1.csv" -> "Test record 1", "on data.csv" -> "on the given record").
+    A file the caller named by its path keeps its name: the package did not
+    write it there."""
+    ws = _package_folder(plot, folder)
+    if ws is None:
+        return
+    records, tests = _numbered(ws, "data"), _numbered(folder, "test", SIDECAR_SUFFIX)  # test1, test2, ... figures
+
+    def record(k):
+        # the command line names the first of several records for all of them
+        return f"records 1 to {records[-1]}" if k == "1" and len(records) > 1 else f"record {k}"
+
+    def caption(m):
+        if not os.path.isfile(os.path.join(ws, m.group(0))):
+            return m.group(0)  # not the package's: the caller's own file
+        which, k = m.group(1), m.group(2)
+        if which == "test":
+            return f"test record {k}" if k else m.group(0)
+        return record(k) if k else "the given record"
+
+    def retitle(text):
+        m = re.match(r"(Estimation|Test) record ((data|test)(\d*)\.csv)(?![\w.-])", text)
+        if m and os.path.isfile(os.path.join(ws, m.group(2))):
+            kind, k = m.group(1), m.group(4)
+            if kind == "Test":
+                head = "Test record" + (f" {k}" if k and len(tests) > 1 else "")
+            else:
+                head = "Estimation " + record(k) if k else "Estimation record"
+            text = head + text[m.end():]
+        if "test records: test*.png" in text:  # the test figures, by their names in result.plot()
+            text = text.replace("test records: test*.png", "the test record: figure \"test\"" if len(tests) <= 1
+                                else f"the test records: figures \"test1\" to \"test{tests[-1]}\"")
+        return _PACKAGE_DATA.sub(caption, text)
+
+    plot.title = retitle(plot.title)
+    for panel in plot.panels:
+        panel.title = retitle(panel.title)
+        for s in panel.series:
+            s.title = retitle(s.title)
 
 
 # --- drawing ------------------------------------------------------------------------------------

@@ -12,12 +12,14 @@
 #include "lmi/delta_form_solve.h"
 #include "lmi/relaxed_bmi_lmi.h"
 #include "certify/bound_scaling.h"
+#include "certify/closed_form.h"
 #include "certify/dual_certify.h"
 #include "toeplitz/uncertainty_toeplitz.h"
 #include "model/simulate.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/tap_toeplitz.h"
 #include "verify/certificate/certificate_check.h"
+#include "verify/certificate/closed_form_check.h"
 
 namespace lpvid {
 
@@ -102,13 +104,6 @@ bool set_dmax2(Certificate& c, const Rational& dd, const Rational& N, const Cert
   return true;
 }
 
-Rational squared_norm(const Mat<Rational>& m) {
-  Rational s(0);
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    for (Eigen::Index j = 0; j < m.cols(); ++j) s += m(i, j) * m(i, j);
-  return s;
-}
-
 /// Steps 3–6 for floating taps (K × ny·nz) on the given horizon.
 void certify_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp, const Simulation<Rational>& sim, const Mat<Rational>& r,
                   const Mat<double>& taps, Eigen::Index horizon, const CertifyOptions& o,
@@ -141,7 +136,7 @@ void certify_taps(const LpvModel<Rational>& model, const Experiment<Rational>& e
 
   // 4. (C2) exactly.
   const Mat<Rational> w = apply_fir_records(c.taps, sim.z, ny, c.horizon, exp.records);
-  if (!set_dmax2(c, squared_norm(Mat<Rational>(r - w)), Rational(static_cast<long>(n * ny)), o, out)) return;
+  if (!set_dmax2(c, residual_energy(r - w), Rational(static_cast<long>(n * ny)), o, out)) return;
 
   finish_certificate(c, exp, [&] { return toeplitz_norm2(taps_d, c.horizon, ny, nz); }, o, solver_name, build, out);
 }
@@ -333,6 +328,20 @@ void bracket_optimum(const CertifyRun& run, const DeltaFormSolution& first, Cert
   certify_lower_end(run, full, out);
 }
 
+/// Steps 2–6 by solving: the first solve and its primal certificate (the
+/// upper end), then the lower end, or the verdict at fixed bounds.
+CertifiedBounds certify_by_solving(const CertifyRun& run) {
+  CertifiedBounds out;
+  const DeltaFormSolution first = run.solve(run.K, run.kyp, run.o.lower_end && !run.kyp && !run.feasibility);
+  certify_upper_end(run, first, out);
+  out.full_horizon = run.K == 0;
+  if (run.feasibility) decide_fixed_bounds(run, first, out);
+  else if (run.o.lower_end) bracket_optimum(run, first, out);
+  else out.lower.reason = "not requested";
+  if (run.kyp && run.feasibility && !out.verified()) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
+  return out;
+}
+
 }  // namespace
 
 CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
@@ -358,16 +367,9 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   const bool structured = run.o.structured && !run.kyp && barrier_applies(Mat<double>::Ones(1, 1), Mat<double>::Ones(1, 1), run.objective);
   run.K = !structured && run.o.max_taps > 0 && run.o.max_taps < es.horizon ? run.o.max_taps : 0;
 
-  // 2–6. The first solve and its primal certificate (the upper end).
-  CertifiedBounds out;
-  const DeltaFormSolution first = run.solve(run.K, run.kyp, run.o.lower_end && !run.kyp && !run.feasibility);
-  certify_upper_end(run, first, out);
-  out.full_horizon = run.K == 0;
-  // Then the lower end, or the verdict at fixed bounds.
-  if (run.feasibility) decide_fixed_bounds(run, first, out);
-  else if (run.o.lower_end) bracket_optimum(run, first, out);
-  else out.lower.reason = "not requested";
-  if (run.kyp && run.feasibility && !out.verified()) out.reason += " (KYP restriction: not a verdict; run without --delta-norm kyp)";
+  // δ = 0 and the other degenerate objectives: exact, at once, no solve (certify/closed_form.h); else 2–6.
+  std::optional<CertifiedBounds> closed = certify_closed_form({model, es.exp, es.r, es.horizon, ToeplitzMode::kSignal}, run.o);
+  CertifiedBounds out = closed ? std::move(*closed) : certify_by_solving(run);
   out.scales = scales;
   out.signals_seconds = signals_seconds;
   out.total_seconds = total.seconds();
@@ -413,6 +415,10 @@ CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment
   const Simulation<Rational>& sim = es.sim;
   const Mat<Rational>& r = es.r;
   const Eigen::Index n = es.n, ny = model.ny;
+  if (std::optional<CertifiedBounds> closed = certify_closed_form({model, exp, r, 0, ToeplitzMode::kPaper}, o)) {
+    closed->signals_seconds = out.signals_seconds;
+    return *closed;
+  }
   const Mat<Rational> Tz = T_z_paper(model, exp);
   AffineSignals sig;
   sig.zb = nearest_double(sim.z);
@@ -437,7 +443,7 @@ CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment
   const bool zero_w = o.objective.delta_fixed() && o.objective.delta.approx == 0.0;
   for (Eigen::Index k = zero_w ? n : sol.leading_zeros; k < n; ++k)
     for (Eigen::Index i = 0; i < ny; ++i) c.w(k, i) = round_to_digits(sol.w(k, i), o.digits);
-  if (!set_dmax2(c, squared_norm(Mat<Rational>(r - c.w)), Rational(static_cast<long>(n * ny)), o, out)) return out;
+  if (!set_dmax2(c, residual_energy(r - c.w), Rational(static_cast<long>(n * ny)), o, out)) return out;
   out.delta2_solver = sol.delta2;
   finish_certificate(c, exp, [&] { return sol.delta2; }, o, solver.name(), build, out);
   return out;

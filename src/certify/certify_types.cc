@@ -62,6 +62,7 @@ const char* to_string(CertifyOutcome outcome) {
 }
 
 std::string solve_status_text(const CertifiedBounds& b) {
+  if (!b.closed_form.empty()) return "no solve: " + b.closed_form;
   return b.solve_status ? to_string(*b.solve_status) : "given taps (no solve)";
 }
 

@@ -106,6 +106,10 @@ struct CertifiedBounds {
   /// The status of the solve whose answer was certified; none when no solve
   /// ran here (given taps: certify_with_taps).
   std::optional<SolveStatus> solve_status;
+  /// Not empty when the bounds were found in closed form, with no solve
+  /// (certify/closed_form.h), e.g. "closed form (delta = 0)": reports show
+  /// it where they name the solver.
+  std::string closed_form;
   /// Why a solve of this certification fell back from the structured
   /// barrier to the SDP backend (DeltaFormSolution::fallback, "; "-joined);
   /// empty when none did. Reports and progress lines show it.
@@ -157,7 +161,8 @@ BoundObjective solver_objective(BoundObjective objective);
 /// function stores it in CertifiedBounds::outcome).
 CertifyOutcome outcome_of(const CertifiedBounds& b, const BoundObjective& objective);
 /// The status text of reports and certificates: the solve's status
-/// (to_string(SolveStatus)), or "given taps (no solve)".
+/// (to_string(SolveStatus)), "given taps (no solve)", or for a closed form
+/// "no solve: <how>".
 std::string solve_status_text(const CertifiedBounds& b);
 
 /// `into` also counts the time of a certification `from` that it replaces

@@ -23,6 +23,7 @@
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/number_text.h"
+#include "core/text_printf.h"
 #include "data/csv_reader.h"
 #include "fit/compare_models.h"
 #include "model/model_file.h"
@@ -87,10 +88,10 @@ std::string prediction_text(const CompareArgs& a, const ModelComparison& m) {
 }
 
 void print_scores(const OutputScores& s, const std::vector<std::string>& names) {
-  std::printf("  %-16s %14s %10s\n", "output", "RMS(y - yhat)", "fit %");
+  std::cout << text_printf("  %-16s %14s %10s\n", "output", "RMS(y - yhat)", "fit %");
   for (size_t i = 0; i < s.rms.size(); ++i)
-    std::printf("  %-16s %14.6g %10s\n", names[i].c_str(), s.rms[i], percent_text(s.fit_percent[i]).c_str());
-  if (s.rms.size() > 1) std::printf("  %-16s %14.6g %10s\n", "all outputs", s.rms_all, percent_text(s.fit_percent_all).c_str());
+    std::cout << text_printf("  %-16s %14.6g %10s\n", names[i].c_str(), s.rms[i], percent_text(s.fit_percent[i]).c_str());
+  if (s.rms.size() > 1) std::cout << text_printf("  %-16s %14.6g %10s\n", "all outputs", s.rms_all, percent_text(s.fit_percent_all).c_str());
 }
 
 void print_record(const CompareArgs& a, const ModelComparison& m, const RecordComparison& c, bool fit_x0) {
@@ -165,17 +166,17 @@ void print_model(const CompareArgs& a, const ModelComparison& m, bool fit_x0) {
 /// The table of several models: one row per model, RMS and fit % per output.
 void print_table(const std::vector<ModelComparison>& ms, const std::vector<std::string>& names) {
   const std::vector<std::string>& outs = ms.front().model.columns.y;
-  std::printf("\n  %-24s", "model");
-  for (const std::string& o : outs) std::printf(" %14s %8s", ("RMS " + o).c_str(), "fit %");
-  if (outs.size() > 1) std::printf(" %14s %8s", "RMS all", "fit %");
-  std::printf("\n");
+  std::cout << text_printf("\n  %-24s", "model");
+  for (const std::string& o : outs) std::cout << text_printf(" %14s %8s", ("RMS " + o).c_str(), "fit %");
+  if (outs.size() > 1) std::cout << text_printf(" %14s %8s", "RMS all", "fit %");
+  std::cout << "\n";
   for (size_t k = 0; k < ms.size(); ++k) {
     const ModelComparison& m = ms[k];
-    std::printf("  %-24s", names[k].c_str());
+    std::cout << text_printf("  %-24s", names[k].c_str());
     for (size_t i = 0; i < outs.size(); ++i)
-      std::printf(" %14.6g %8s", m.pooled.rms[i], percent_text(m.pooled.fit_percent[i]).c_str());
-    if (outs.size() > 1) std::printf(" %14.6g %8s", m.pooled.rms_all, percent_text(m.pooled.fit_percent_all).c_str());
-    std::printf("\n");
+      std::cout << text_printf(" %14.6g %8s", m.pooled.rms[i], percent_text(m.pooled.fit_percent[i]).c_str());
+    if (outs.size() > 1) std::cout << text_printf(" %14.6g %8s", m.pooled.rms_all, percent_text(m.pooled.fit_percent_all).c_str());
+    std::cout << "\n";
   }
 }
 

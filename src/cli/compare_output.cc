@@ -6,6 +6,7 @@
 #include "core/number_text.h"
 #include "data/csv_writer.h"
 #include "plot/gnuplot.h"
+#include "plot/model_colours.h"
 #include "plot/palette.h"
 #include "plot/plot_labels.h"
 
@@ -68,6 +69,9 @@ std::string plot_compare(const std::string& path, const ComparedRows& r, const s
   PlotSpec fig;
   fig.title = title;
   fig.height = 300 + 300 * static_cast<int>(r.y.cols());
+  std::vector<std::string> names;
+  for (const ComparedSeries& m : models) names.push_back(m.name);
+  const std::vector<std::string> colours = model_colours(names);
   for (Eigen::Index i = 0; i < r.y.cols(); ++i) {
     PlotSpec p;
     p.xlabel = r.info.time_label();
@@ -84,8 +88,7 @@ std::string plot_compare(const std::string& path, const ComparedRows& r, const s
     m.y = column_of(r.y, i, r.warmup, n);
     p.series.push_back(m);
     for (size_t j = 0; j < models.size(); ++j) {
-      PlotSeries s{models[j].name, t, column_of(models[j].yhat, i, 0, n), {}, "lines", {},
-                   palette::kOtherModels[std::min<size_t>(j, std::size(palette::kOtherModels) - 1)]};
+      PlotSeries s{models[j].name, t, column_of(models[j].yhat, i, 0, n), {}, "lines", {}, colours[j]};
       p.series.push_back(s);
     }
     fig.panels.push_back(p);

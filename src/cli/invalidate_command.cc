@@ -27,8 +27,10 @@ void render_feasibility(nlohmann::ordered_json& report, const CertifiedBounds& b
     std::cout << "  -> INVALIDATED at delta = " << c.delta_text << ", dmax = " << c.dmax_text
               << ": no causal LTI Delta with ||Delta||_inf <= delta and no noise with RMS <= dmax explain the data.\n"
               << "     certificate " << (files.certificate.empty() ? "in memory" : files.certificate)
-              << " (claim \"invalidated\", a dual point of the full-horizon "
-              << "problem), checked exactly: " << b.lower.verifier_details << "\n";
+              << (b.closed_form.empty() ? " (claim \"invalidated\", a dual point of the full-horizon problem)"
+                                        : " (claim \"invalidated\", form zero_delta: " + b.closed_form +
+                                              ", Delta = 0 leaves d = r)")
+              << ", checked exactly: " << b.lower.verifier_details << "\n";
     if (files.certificate.empty()) std::cout << "     " << kNoCertificateFile << "\n";
   }
   if (outcome == CertifyOutcome::kUndecided) {

@@ -17,6 +17,7 @@
 #include "core/input_error.h"
 #include "core/number_text.h"
 #include "core/sha256.h"
+#include "core/text_printf.h"
 #include "diagnose/bound_windows.h"
 #include "jobs/merge.h"
 #include "jobs/plan.h"
@@ -250,7 +251,7 @@ void print_merge_table(const MergeResult& res) {
   const std::vector<MergedWindow>& rows = res.windows;
   std::cout << "lpvid jobs merge: " << res.plan.windows.size() << " window(s) of " << res.plan.data_path << ", objective "
             << res.plan.objective << "; every certificate re-checked exactly\n";
-  std::printf("%6s %15s  %-11s %12s %12s  %s\n", "window", "rows", "status", "delta <=", "dmax <=", "note");
+  std::cout << text_printf("%6s %15s  %-11s %12s %12s  %s\n", "window", "rows", "status", "delta <=", "dmax <=", "note");
   size_t shown = 0, shown_ok = 0, shown_other = 0;
   for (const MergedWindow& m : rows) {
     const bool good = m.r.status == WindowStatus::kVerified;
@@ -259,13 +260,13 @@ void print_merge_table(const MergeResult& res) {
     ++shown;
     ++(good ? shown_ok : shown_other);
     const std::string span = std::to_string(m.w.file_begin) + ":" + std::to_string(m.w.file_end);
-    std::printf("%6d %15s  %-11s %12s %12s  %s\n", m.w.index, span.c_str(), to_string(m.r.status),
+    std::cout << text_printf("%6d %15s  %-11s %12s %12s  %s\n", m.w.index, span.c_str(), to_string(m.r.status),
                 good ? upper_sqrt_text(m.r.delta2).c_str() : "-", good ? upper_sqrt_text(m.r.dmax2).c_str() : "-",
                 m.r.reason.c_str());
   }
-  if (shown < rows.size()) std::printf("   ... %zu more window(s) in the report\n", rows.size() - shown);
+  if (shown < rows.size()) std::cout << text_printf("   ... %zu more window(s) in the report\n", rows.size() - shown);
   const StatusCounts& c = res.counts;
-  std::printf("verified %zu, invalidated %zu, missing %zu, refused %zu (of %zu)\n", c.verified, c.invalidated, c.missing,
+  std::cout << text_printf("verified %zu, invalidated %zu, missing %zu, refused %zu (of %zu)\n", c.verified, c.invalidated, c.missing,
               c.refused, rows.size());
 }
 

@@ -39,7 +39,7 @@ nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& 
   }
   j["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
   j["toeplitz_mode"] = toeplitz_mode;
-  j["solver"] = solver;
+  j["solver"] = b.closed_form.empty() ? solver : b.closed_form;  // no solver ran for a closed form
   j["certificate"] = b.verified() && !files.certificate.empty() ? nlohmann::ordered_json(files.certificate)
                                                                : nlohmann::ordered_json(nullptr);
   j["verified"] = b.verified();
@@ -155,9 +155,10 @@ nlohmann::ordered_json interval_json(const CertifiedBounds& b, const BoundObject
       b.lower.verified() && !files.lower.empty() ? nlohmann::ordered_json(files.lower) : nlohmann::ordered_json(nullptr);
   if (!b.lower.verified()) j["lower_reason"] = b.lower.reason;
   j["full_horizon"] = b.full_horizon;
-  j["note"] = b.full_horizon ? "both ends from the full-horizon program"
-                             : "upper end from a K-tap restriction (it can only raise the upper end); lower end from its "
-                               "dual lifted to the full horizon";
+  j["note"] = !b.closed_form.empty() ? b.closed_form + ": both ends exact with no solve (docs/dual_certificates.md, the delta = 0 lower end)"
+              : b.full_horizon      ? "both ends from the full-horizon program"
+                                    : "upper end from a K-tap restriction (it can only raise the upper end); lower end from its "
+                                      "dual lifted to the full horizon";
   j["lower_seconds"] = b.lower.seconds;
   j["lower_check_seconds"] = b.lower.check_seconds;
   return j;
@@ -167,12 +168,29 @@ CertificateFiles write_named_certificates(const CertifiedBounds& b, const std::s
   return path.empty() ? CertificateFiles{} : write_certificates(b, path);
 }
 
+namespace {
+/// An exact certified value for reading: its exact text, or for a number of
+/// thousands of digits (an exact ||r||^2/(n*ny)) 17 digits rounded up and its length.
+std::string exact_or_long_text(const Rational& q) {
+  const std::string text = exact_decimal_or_fraction(q);
+  if (text.size() <= 80) return text;
+  return upper_text(q, 17) + " rounded up; exact: " + std::to_string(text.size()) + " characters, in the certificate and the report";
+}
+
+/// What proved the lower end, for the text.
+std::string lower_end_kind(const CertifiedBounds& b) {
+  if (b.lower.certificate && is_closed_form(b.lower.certificate->form))
+    return std::string("closed-form certificate, form ") + to_string(b.lower.certificate->form);
+  return "dual certificate";
+}
+}  // namespace
+
 std::string bounds_text(const CertifiedBounds& b, const CertificateFiles& files, const std::string& scope) {
   std::ostringstream o;
   if (b.verified()) {
     // printed = certified: upper ends rounded up, lower ends down (core/decimal_rounding.h)
-    o << "  delta       <= " << upper_sqrt_text(b.delta2) << "   (delta^2 = " << exact_decimal_or_fraction(b.delta2) << ")\n"
-      << "  dmax        <= " << upper_sqrt_text(b.dmax2) << "   (dmax^2 = " << exact_decimal_or_fraction(b.dmax2) << ", RMS)\n"
+    o << "  delta       <= " << upper_sqrt_text(b.delta2) << "   (delta^2 = " << exact_or_long_text(b.delta2) << ")\n"
+      << "  dmax        <= " << upper_sqrt_text(b.dmax2) << "   (dmax^2 = " << exact_or_long_text(b.dmax2) << ", RMS)\n"
       << "  verified    true: "
       << (files.certificate.empty() ? std::string("checked exactly by the verifier; ") + kNoCertificateFile
                                     : files.certificate + " checked exactly by the verifier")
@@ -181,10 +199,13 @@ std::string bounds_text(const CertifiedBounds& b, const CertificateFiles& files,
     if (b.lower.verified()) {
       o << "  interval    [" << lower_text(b.lower.value) << ", " << upper_text(b.upper)
         << "]  relative gap " << relative_gap(b) << "  (objective; both ends verified"
-        << (b.full_horizon ? ", full horizon" : ", upper end from " + std::to_string(b.taps) + " taps") << ")"
+        << (!b.closed_form.empty() ? ", " + b.closed_form + ", no solve"
+            : b.full_horizon       ? ", full horizon"
+                                   : ", upper end from " + std::to_string(b.taps) + " taps")
+        << ")"
         << (scope.empty() ? "" : "\n              " + scope) << "\n"
         << "  lower end   " << (files.lower.empty() ? std::string("not written") : files.lower)
-        << " (dual certificate, checked exactly)\n";
+        << " (" << lower_end_kind(b) << ", checked exactly)\n";
     } else if (!b.lower.reason.empty()) {
       o << "  lower end   not certified: " << b.lower.reason << "\n";
     }

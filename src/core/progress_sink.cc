@@ -1,9 +1,10 @@
 #include "core/progress_sink.h"
 
+#include "core/text_printf.h"
+
 #include <cstdarg>
 #include <cstdio>
 #include <mutex>
-#include <vector>
 
 namespace lpvid {
 
@@ -34,14 +35,9 @@ void progress_line(const std::string& line) {
 void progress_printf(const char* format, ...) {
   std::va_list args;
   va_start(args, format);
-  std::va_list again;
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, format, args);
+  std::string line = text_vprintf(format, args);
   va_end(args);
-  std::vector<char> buf(static_cast<size_t>(n > 0 ? n : 0) + 1);
-  std::vsnprintf(buf.data(), buf.size(), format, again);
-  va_end(again);
-  progress_line(std::string(buf.data()));
+  progress_line(line);
 }
 
 void set_progress_sink(std::function<void(const std::string&)> to) {

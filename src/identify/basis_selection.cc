@@ -175,6 +175,12 @@ class Selector {
     if (b.verified()) {
       s.verdict = BasisVerdict::kConsistent;
       s.detail = what + " is consistent at the given bounds: certificate verified exactly";
+    } else if (b.invalidated()) {
+      // This one model is refuted exactly (e.g. at delta = 0 in closed form); for the
+      // algorithm that is "not decided", as a box invalidation: the class may still help.
+      s.verdict = BasisVerdict::kNotDecided;
+      s.detail = what + " is invalidated at the given bounds: an invalidation certificate checked exactly (" +
+                 b.reason + ")";
     } else if (b.solve_status == SolveStatus::kPrimalInfeasible) {
       s.verdict = BasisVerdict::kNotDecided;
       s.detail = what + ": the solver found the Theorem 2.1 LMI infeasible at the given bounds (a solver verdict)";

@@ -70,7 +70,7 @@ Judgement judge_bound(const OracleTask& task, const OracleAnswer& a, const Refer
   };
   if (ref.lower_verified && J < ref.lower)
     return with_claim(verdict(OracleVerdict::kRefuted,
-                              claim + " is below lpvid's certified lower end " + approx(ref.lower) + " (dual certificate)",
+                              claim + " is below lpvid's certified lower end " + approx(ref.lower) + " (its lower-end certificate)",
                               ref.lower_certificate));
   if (wit.status == WitnessResult::kFails) return with_claim(bad_witness(wit, claim));
   const Rational slack = Rational(1) + rational_from_text(double_to_text(tol.relative));

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -60,6 +61,19 @@ std::string number(double x) {
 }
 
 }  // namespace
+
+namespace {
+
+std::atomic<bool>& drawing() {
+  static std::atomic<bool> on{true};
+  return on;
+}
+
+}  // namespace
+
+void set_png_drawing(bool on) { drawing() = on; }
+
+bool png_drawing() { return drawing(); }
 
 std::string gnuplot_program() {
   const char* env = std::getenv("LPVID_GNUPLOT");
@@ -208,6 +222,11 @@ PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path) {
   const std::string sidecar_error = write_plot_sidecar(spec, png_path);
   if (sidecar_error.empty()) out.sidecar = plot_sidecar_path(png_path);
   const std::string sidecar_note = sidecar_error.empty() ? "" : "; figure description not written: " + sidecar_error;
+  if (!png_drawing()) {
+    out.message = sidecar_error.empty() ? "figure description " + out.sidecar + " only (PNG drawing is off)"
+                                        : "PNG drawing is off" + sidecar_note;
+    return out;
+  }
   out.terminal = gnuplot_png_terminal();
   if (out.terminal.empty()) {
     out.message = "gnuplot ('" + gnuplot_program() +

@@ -33,13 +33,21 @@ std::string gnuplot_program();
 /// when gnuplot cannot be run or has neither.
 std::string gnuplot_png_terminal();
 
+/// Whether plot_png runs gnuplot (the default) or writes only the figure
+/// description: the Python module turns drawing off for a call whose files
+/// are not kept, since it draws its figures from the descriptions, and only
+/// when asked. Process-wide; the module runs one call at a time.
+void set_png_drawing(bool on);
+bool png_drawing();
+
 /// Writes the plot as a PNG file and, from the same script, as an SVG file
 /// beside it (png_path with extension .svg; vector graphics for papers).
 /// First, whether or not gnuplot can be run, the figure's description
 /// (every number and label drawn) as png_path with extension .plot.json
 /// (plot/plot_sidecar.h), from which other front ends draw the same figure.
 /// Never throws for a missing or failing gnuplot (ok = false and the
-/// message; gnuplot's own error text included).
+/// message; gnuplot's own error text included). With png_drawing() off,
+/// only the description is written (ok = false, the message says so).
 PlotOutcome plot_png(const PlotSpec& spec, const std::string& png_path);
 
 /// The gnuplot script plot_png runs (exposed for tests): `data_path` holds

@@ -87,8 +87,9 @@ RC_GTEST_PROP(IdentifyBadInput, ZeroInputIsIllPosed, ()) {
 
 // δ = 0 and d_max far below the noise: the model is invalidated at those
 // bounds. certify_fixed_model must return verified = false with a reason,
-// no bound (δ², d_max² left at 0) and no certificate file; identify() with
-// the same fixed bounds must not report a solution either.
+// no bound (δ², d_max² left at 0) and, as its only file, an exactly checked
+// "invalidated" certificate; a model identify() may report at the same fixed
+// bounds is never certified, and is invalidated exactly too.
 RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
   IdentCaseOptions o;
   o.model.allow_general = true;
@@ -151,7 +152,12 @@ RC_GTEST_PROP(IdentifyBadInput, InfeasibleFixedBoundsGiveNoBound, ()) {
     RC_LOG() << "certify the identified model: " << bf.verified() << " " << bf.reason << "\n";
     RC_ASSERT(!bf.verified());
     RC_ASSERT(!bf.reason.empty());
-    RC_ASSERT(!std::filesystem::exists(dir.file("f.json")));
+    // At δ = 0 the decision is exact (certify/closed_form.h: d = r(θ), whose RMS is above the
+    // least-squares floor > 10·tiny): the only file is an "invalidated" certificate that holds.
+    RC_ASSERT(bf.invalidated());
+    const CertificateVerdict vf = check_certificate_file(dir.file("f.json"));
+    RC_ASSERT(vf.holds);
+    RC_ASSERT(vf.claim_text == "invalidated");
   }
 }
 

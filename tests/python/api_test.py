@@ -126,7 +126,7 @@ class Api(unittest.TestCase):
         # a gain twice the true one: at delta = 0 the smallest d_max is the RMS of y (the error is y itself)
         rms = float(np.sqrt(np.mean(self.y ** 2)))
         self.assertTrue(0.2 < rms < 2.5, rms)
-        r = lpvid.invalidate(self.u, self.y, None, lti_model("1/2", 2), delta=0, dmax="5/2")
+        r = lpvid.invalidate(lti_model("1/2", 2), u=self.u, y=self.y, delta=0, dmax="5/2")
         self.assertTrue(r.consistent)
         cert = r.certificate
         self.assertIsInstance(cert, lpvid.Certificate)
@@ -155,17 +155,17 @@ class Api(unittest.TestCase):
 
     def test_misspelt_and_managed_options_are_refused(self):
         with self.assertRaises(lpvid.LpvidError) as e:
-            lpvid.diagnose(self.u, self.y, None, lti_model("1/2", 1), holdot=0.3)
+            lpvid.diagnose(lti_model("1/2", 1), u=self.u, y=self.y, holdot=0.3)
         self.assertEqual(e.exception.code, 2)
         self.assertIn("did you mean holdout=", e.exception.message)
         with self.assertRaises(lpvid.LpvidError) as e:
-            lpvid.invalidate(self.u, self.y, None, lti_model("1/2", 1), report="r.json")
+            lpvid.invalidate(lti_model("1/2", 1), u=self.u, y=self.y, report="r.json")
         self.assertIn("out_dir=", e.exception.message)
 
     def test_progress_goes_to_logging_and_the_callback(self):
         lines = []
         with self.assertLogs("lpvid", level="INFO") as logs:
-            lpvid.invalidate(self.u, self.y, None, lti_model("1/2", 1), delta=0, progress=lines.append)
+            lpvid.invalidate(lti_model("1/2", 1), u=self.u, y=self.y, delta=0, progress=lines.append)
         self.assertTrue(lines)
         self.assertEqual([r.getMessage() for r in logs.records if r.levelno == logging.INFO],
                          [ln for ln in lines if ln in [r.getMessage() for r in logs.records]])
@@ -180,7 +180,7 @@ class Api(unittest.TestCase):
             lines = []
             g = lpvid.generate("effect-case", effect="output_offset", n=200)
             d = g.data
-            lpvid.diagnose(d["u1"], d["y1"], d["rho1"], g.model, max_effects=1, progress=lines.append)
+            lpvid.diagnose(g.model, u=d["u1"], y=d["y1"], rho=d["rho1"], max_effects=1, progress=lines.append)
             print(json.dumps(lines))
         """)
         p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600,
@@ -194,7 +194,7 @@ class Api(unittest.TestCase):
         g = lpvid.generate("effect-case", effect="output_offset", n=200)
         d, v = g.data, g.validation
         lines = []
-        r = lpvid.diagnose(d["u1"], d["y1"], d["rho1"], g.model, test=(v["u1"], v["y1"], v["rho1"]),
+        r = lpvid.diagnose(g.model, u=d["u1"], y=d["y1"], rho=d["rho1"], test=(v["u1"], v["y1"], v["rho1"]),
                            max_effects=1, quiet=True, progress=lines.append)
         self.assertFalse([ln for ln in lines if ln.startswith("[diagnose")], "quiet=True: no progress lines")
         self.assertIsInstance(r.model, lpvid.Model)
@@ -229,14 +229,14 @@ class Api(unittest.TestCase):
         timer.start()
         with self.assertRaises(KeyboardInterrupt):
             # Theorem 3.1 with iterations on 1200 samples: far longer than a second
-            lpvid.identify(u, y, None, dict(model, correction={"basis": ["1"]}), delta="1/100", iterate=True,
+            lpvid.identify(dict(model, correction={"basis": ["1"]}), u=u, y=y, delta="1/100", iterate=True,
                            progress=lines.append)
         stopped = time.monotonic() - sent["at"]
         print(f"\n  Ctrl-C after {sent['at'] - start:.2f} s; KeyboardInterrupt {stopped:.3f} s later",
               file=sys.stderr)
         self.assertTrue(any("interrupted" in ln for ln in lines), lines[-3:])  # the run itself was stopped
         # the run after the interrupt answers as a run never interrupted
-        a = lpvid.invalidate(self.u, self.y, None, model, delta=0, dmax="1/100")
+        a = lpvid.invalidate(model, u=self.u, y=self.y, delta=0, dmax="1/100")
         self.assertTrue(a.consistent)
 
 

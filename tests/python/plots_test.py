@@ -9,6 +9,13 @@ written beside each PNG, parsed here independently: every series' numbers
 equal the CSV column named by its title, every PNG has a Plot, the folder
 can be deleted afterwards, and figure() draws one matplotlib line per line
 series, one filled area per band, one per horizontal line, and the title.
+Then, through the package's functions (lpvid.compare, diagnose, tradeoff on
+arrays): the palette's roles (docs/plots.md: the model before orange, the
+model after blue) in every figure, also a compared model named "before" or
+"after" and in the drawn matplotlib lines; each compared model's legend entry
+with its RMS and fit (%) equal to Comparison.scores; and titles that name
+what the caller gave (the estimation record, test record 1, the caller's
+file), never the data files the package wrote for the arrays.
 Without matplotlib the drawing checks are skipped (exit 0, with a message).
 Exits non-zero on the first failed check.
 """
@@ -19,6 +26,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tempfile
 
 import numpy as np
 
@@ -60,13 +68,28 @@ def floats(texts):
     return np.array([float(t) for t in texts])
 
 
+BEFORE, AFTER = "#ee7733", "#0077bb"  # docs/plots.md: the model before orange, the model after blue
+
+
+def roles(p, where):
+    """Every line series of a model before (after) in its role's colour, and each role present."""
+    seen = set()
+    for s in p.series:
+        for role, colour in (("before", BEFORE), ("after", AFTER)):
+            if s.kind == "line" and re.search(rf"\b{role}\b", s.title):
+                seen.add(role)
+                check(s.color == colour, f"{where}: {s.title!r} in {s.color}, want {colour}")
+    check(seen == {"before", "after"} or where.endswith("record"), f"{where}: the lines of both models {seen}")
+
+
 # --- the runs --------------------------------------------------------------------------------------
 shutil.rmtree(SCRATCH, ignore_errors=True)
 os.makedirs(os.path.join(SCRATCH, "curve"))
 run("generate", "effect-case", "--effect", "output_offset", "--n", "200", "--out", "est.csv",
     "--validation-out", "val.csv", "--model-out", "m.json")
 run("diagnose", "--data", "est.csv", "--model", "m.json", "--folds", "2", "--test", "val.csv", "--window", "0:80",
-    "--max-taps", "16", "--max-windows", "1", "--max-effects", "1", "--plots", "plots", "--report", "r.json")
+    "--max-taps", "16", "--max-windows", "1", "--max-effects", "1", "--plots", "plots", "--report", "r.json",
+    "--model-out", "after.json")
 run("tradeoff", "--data", "est.csv", "--model", "m.json", "--lambdas", "0.1,0.5,0.9", "--max-taps", "16",
     "--plots", "curve", "--certificate", "curve/t.cert.json", "--quiet")
 
@@ -143,16 +166,32 @@ check(r.returncode == 0 and "python3-matplotlib" in r.stdout, f"no matplotlib: {
 
 # --- the figures ------------------------------------------------------------------------------------
 try:
-    import matplotlib  # noqa: F401
+    from matplotlib.colors import to_hex
+    from matplotlib.figure import Figure
+    have_matplotlib = True
 except ImportError:
-    print(f"plots_test: {checks} checks passed; matplotlib is not installed (Debian: python3-matplotlib): "
-          "the figures are not drawn")
-    sys.exit(0)
-from matplotlib.figure import Figure  # noqa: E402
+    print("plots_test: matplotlib is not installed (Debian: python3-matplotlib): the figures are not drawn")
+    have_matplotlib = False
+
+
+def drawn_roles(fig, where):
+    """Every drawn line whose legend names a model before (after) in its role's colour."""
+    for ax in fig.axes:
+        for ln in ax.lines:
+            label = ln.get_label()
+            for role, colour in (("before", BEFORE), ("after", AFTER)):
+                if re.search(rf"\b{role}\b", label):
+                    check(to_hex(ln.get_color()) == colour,
+                          f"{where}: line {label!r} drawn in {to_hex(ln.get_color())}, want {colour}")
+
+
+# the diagnose figures: every line of a model before orange, after blue
+for name in ("residual", "autocorrelation", "output", "test"):
+    roles(plots[name], name)
 
 out = os.path.join(SCRATCH, "figures")
 os.makedirs(out)
-for name, p in plots.items():
+for name, p in (plots.items() if have_matplotlib else []):
     fig = p.figure()
     check(isinstance(fig, Figure), f"{name}: a matplotlib Figure")
     check(len(fig.axes) == len(p.panels), f"{name}: {len(fig.axes)} axes for {len(p.panels)} panels")
@@ -165,4 +204,74 @@ for name, p in plots.items():
     shown = fig._suptitle.get_text() if len(p.panels) > 1 else fig.axes[0].get_title()
     check(shown == p.title, f"{name}: title {shown!r}")
     fig.savefig(os.path.join(out, name + ".png"))
+    if name in ("residual", "autocorrelation", "output", "test"):
+        drawn_roles(fig, name)
+
+# --- the package's figures: the palette's roles, the scores, the caller's names ----------------------
+import lpvid  # noqa: E402
+
+est = {k: floats(v) for k, v in csv_columns(os.path.join(SCRATCH, "est.csv")).items()}
+val = {k: floats(v) for k, v in csv_columns(os.path.join(SCRATCH, "val.csv")).items()}
+m_path, after_path = os.path.join(SCRATCH, "m.json"), os.path.join(SCRATCH, "after.json")
+before_model, after_model = lpvid.Model.from_file(m_path), lpvid.Model.from_file(after_path)
+temp_names = ("data.csv", "data1.csv", "test1.csv", "test2.csv", "lpvid-", tempfile.gettempdir())
+
+
+def no_temp_names(p, where):
+    texts = [p.title] + [pn.title for pn in p.panels] + [s.title for s in p.series]
+    for text in texts:
+        check(not any(t in text for t in temp_names), f"{where}: a temporary name in the title {text!r}")
+
+
+# compare: models named before and after (given in that order: the command line colours them by
+# position, blue then orange), each legend entry with the model's scores
+c = lpvid.compare(models={"before": before_model, "after": after_model}, data=val, quiet=True)
+p = c.plots["compare"]
+lines = {s.title.split(":")[0]: s for s in p.series if s.kind == "line"}
+check(lines["before"].color == BEFORE and lines["after"].color == AFTER,
+      f"compare: before {lines['before'].color}, after {lines['after'].color} (want {BEFORE}, {AFTER})")
+for s in c.scores:
+    want = f"{s.name}: RMS {s.rms:#.3g}, fit {s.fit_percent:.1f} %"
+    check(lines[s.name].title == want, f"compare: legend {lines[s.name].title!r}, want {want!r}")
+check(c.score("after").rms < c.score("before").rms, "compare: the after model scores better")
+check(p.title.startswith("lpvid compare on the given record"), f"compare: title {p.title!r}")
+no_temp_names(p, "compare")
+if have_matplotlib:
+    fig = c.plot("compare")
+    drawn = {ln.get_label().split(":")[0]: to_hex(ln.get_color()) for ln in fig.axes[0].lines}
+    check(drawn.get("before") == BEFORE and drawn.get("after") == AFTER, f"compare: drawn colours {drawn}")
+    labels = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    check(all(f"{s.name}: RMS {s.rms:#.3g}, fit {s.fit_percent:.1f} %" in labels for s in c.scores),
+          f"compare: the legend {labels}")
+    fig.savefig(os.path.join(out, "compare.png"))
+
+# a third model that had the after model's colour takes another one; a file the caller named keeps its name
+c3 = lpvid.compare(models={"first": before_model, "before": before_model, "after": after_model},
+                   data=os.path.join(SCRATCH, "val.csv"), quiet=True)
+colours = {s.title.split(":")[0]: s.color for s in c3.plots["compare"].series if s.kind == "line"}
+check(colours["before"] == BEFORE and colours["after"] == AFTER and len(set(colours.values())) == len(colours),
+      f"compare, three models: one colour each, before and after by role: {colours}")
+check("val.csv" in c3.plots["compare"].title, f"compare on the caller's file: {c3.plots['compare'].title!r}")
+
+# diagnose on arrays with two test records: the roles' colours, titles without the package's files
+d = lpvid.diagnose(model=m_path, u=est["u1"], y=est["y1"], rho=est["rho1"],
+                   test=[(val["u1"], val["y1"], val["rho1"]), (val["u1"][:150], val["y1"][:150], val["rho1"][:150])],
+                   folds=2, window="0:80", max_taps=16, max_windows=1, max_effects=1, quiet=True)
+check({"record", "residual", "autocorrelation", "output", "test1", "test2"} <= set(d.plots),
+      f"diagnose: {sorted(d.plots)}")
+for name, p in d.plots.items():
+    roles(p, "diagnose " + name)
+    no_temp_names(p, "diagnose " + name)
+record_title = d.plots["record"].title
+check(record_title.startswith("Estimation record rows 0:"), f"diagnose record: title {record_title!r}")
+check('figures "test1" to "test2"' in record_title, f"diagnose record: the test figures by name: {record_title!r}")
+for k in (1, 2):
+    check(d.plots[f"test{k}"].title.startswith(f"Test record {k}: "), f"test{k}: title {d.plots[f'test{k}'].title!r}")
+if have_matplotlib:
+    for name, fig in d.plot().items():
+        if name in ("residual", "autocorrelation", "output", "test1", "test2"):
+            drawn_roles(fig, "diagnose " + name)
+
+t = lpvid.tradeoff(model=m_path, u=est["u1"], y=est["y1"], rho=est["rho1"], lambdas=[0.5], max_taps=16, quiet=True)
+check(t.plots["tradeoff"].title == "delta-dmax trade-off: the given record", f"tradeoff: {t.plots['tradeoff'].title!r}")
 print(f"plots_test: {checks} checks passed; figures in {out}")

@@ -241,9 +241,8 @@ class Bindings(unittest.TestCase):
         with self.assertRaises(lpvid.LpvidError) as e:
             lpvid.invalidate(self.u, y, self.rho, true_model(), delta=0, out_dir=out)
         self.assertEqual(e.exception.code, 2)
-        self.assertIn("'nan' is not a number", e.exception.message)
-        self.assertIn("column 'y'", e.exception.message)
-        self.assertIn("data.csv", e.exception.message)
+        self.assertIsInstance(e.exception, ValueError)
+        self.assertEqual(e.exception.message, "y[7] is NaN")  # the argument and index, no file of the package
         self.assertEqual(glob.glob(os.path.join(out, "*cert*")), [])
 
     def test_mismatched_lengths_are_refused_without_certificate(self):

@@ -3,7 +3,8 @@
 
 Writes certificates with the built `lpvid` on fixtures/example1 (a primal
 "consistent" one in form delta, its dual "lower_bound" and "class_lower_bound" companions, form w of
---toeplitz paper, a dual "invalidated" one) and validates each against the
+--toeplitz paper, a dual "invalidated" one, the closed forms "zero_delta" and "nonnegative" of
+delta = 0 and of a lower end 0) and validates each against the
 schema; then checks that broken copies (a required field removed, another
 format version, a key of the other form) FAIL. Also checks that the schema's
 version is the one verify/certificate/certificate.h names (the reader in certificate_file.h accepts it), so neither can drift.
@@ -64,8 +65,15 @@ certificates = [
               exit_codes=(1,)),  # 1: invalidated, certified
     lpvid_run("invalidated_dense", "initial_model.json", "invalidate", "--delta", "0.001", "--dmax", "0.001",
               "--dense-dual", exit_codes=(1,)),
+    # delta = 0 in closed form: Delta = 0 (no taps) and its zero_delta lower end; an invalidation;
+    # the lower end 0 (form nonnegative) of min delta at a d_max the noise alone reaches
+    lpvid_run("zero_delta", "initial_model.json", "invalidate", "--delta", "0"),
+    lpvid_run("zero_delta_invalidated", "initial_model.json", "invalidate", "--delta", "0", "--dmax", "0.01",
+              exit_codes=(1,)),
+    lpvid_run("nonnegative", "initial_model.json", "invalidate", "--dmax", "10"),
 ]
-for companion in ("identify.cert.lower.json", "identify.cert.class.json"):
+for companion in ("identify.cert.lower.json", "identify.cert.class.json", "zero_delta.cert.lower.json",
+                  "nonnegative.cert.lower.json"):
     if os.path.exists(os.path.join(work, companion)):
         certificates.append(os.path.join(work, companion))
 
@@ -91,7 +99,18 @@ for path in certificates:
     broken("format lpvid-certificate/2", lambda d: d.update(format="lpvid-certificate/2"))
     broken("an unknown key", lambda d: d.update(comment="x"))
     broken("a number as text 'abc'", lambda d: d.update(delta2="abc") if "delta2" in d else d.update(lower_bound="abc"))
-    required = {"delta": "delta_taps", "w": "w", "dual_delta": "dual", "dual_delta_path": "dual"}[cert["form"]]
+    required = {"delta": "delta_taps", "w": "w", "dual_delta": "dual", "dual_delta_path": "dual",
+                "zero_delta": "delta2", "nonnegative": "lower_bound"}[cert["form"]]
+    if cert["form"] in ("zero_delta", "nonnegative"):
+        broken("a 'dual' beside a closed form", lambda d: d.update(dual={"horizon": 1, "sigma": 1, "g": [[0]]}))
+        broken("claim 'consistent'", lambda d: d.update(claim="consistent"))
+    if cert["form"] == "zero_delta" and cert["claim"] == "lower_bound":
+        broken("objective 'min_delta' (with dmax2)", lambda d: d.update(objective="min_delta", dmax2=d.pop("delta2")))
+    if cert["form"] == "nonnegative":
+        def invalidation(d):
+            d.update(claim="invalidated", objective="feasibility", delta2=0, dmax2=1)
+            d.pop("lower_bound")
+        broken("claim 'invalidated'", invalidation)
     if cert["claim"].startswith("class_"):
         required = "class"
         broken("a 'dual' beside 'class'", lambda d: d.update(dual=d["class"]["nodes"][-1]["leaf"]))
@@ -106,7 +125,8 @@ for path in certificates:
 
 for kind in [("consistent", "delta"), ("consistent", "w"), ("lower_bound", "dual_delta_path"),
              ("invalidated", "dual_delta_path"), ("invalidated", "dual_delta"),
-             ("class_lower_bound", "dual_delta_path")]:
+             ("class_lower_bound", "dual_delta_path"), ("lower_bound", "zero_delta"), ("invalidated", "zero_delta"),
+             ("lower_bound", "nonnegative")]:
     check(kind in seen, f"a certificate with claim {kind[0]}, form {kind[1]} was validated")
 print(f"{len(failures)} failed" if failures else "all schema checks passed")
 sys.exit(1 if failures else 0)

@@ -23,7 +23,9 @@ The mathematics (paper: "Robust identification and invalidation of LPV systems")
                                Delta form (taps of a causal FIR Delta) or the w form;
   invalidated / lower_bound    a dual point of the full-horizon Delta form (Lagrangian of the
                                two LMIs), dense (dual_delta) or as a central-path recipe
-                               (dual_delta_path) that is expanded here;
+                               (dual_delta_path) that is expanded here; or in closed form:
+                               zero_delta (delta^2 = 0 forces w = 0, so d = r) and
+                               nonnegative (a lower end <= 0);
   class_*                      Theorem 3.1 (eq. 11-12) over a box of corrections: one dual point
                                per leaf of a region tree, with the bilinear term bounded.
 """
@@ -40,6 +42,12 @@ from fractions import Fraction
 
 F0 = Fraction(0)
 F1 = Fraction(1)
+
+# Exact numbers of thousands of digits are ordinary here (an exact ||r||^2/(n*ny) of a record of a
+# few hundred samples has some 13 000): lift Python's limit on int <-> text (4300 digits) to the
+# 50 000 digits that lpvid's readers accept by default (--max-digits).
+if hasattr(sys, 'set_int_max_str_digits'):
+    sys.set_int_max_str_digits(50000)
 
 
 class Refused(Exception):
@@ -1150,7 +1158,39 @@ def bound_holds(obj, delta2, dmax2, lam, lb, trU, beta, Nsig):
     return lb <= b, f"bound {float(b):.10g} vs claimed {float(lb):.10g}"
 
 
+def closed_form_check(cert, model, sims, ns):
+    """Forms 'zero_delta' and 'nonnegative' (docs/dual_certificates.md, "The delta = 0 lower end"):
+    no dual point. At delta^2 = 0 the block delta^2 I of (C1) is zero, so T_w = 0 (a PSD matrix
+    with a zero diagonal entry has a zero row there), w = 0 and d = r: n*ny*dmax^2 >= ||r||^2 at
+    every feasible point, with equality at Delta = 0. Every objective is >= 0."""
+    form = cert.get('form')
+    forbid(cert, ('delta_taps', 'delta_horizon', 'w', 'class', 'dual'), f"form {form}")
+    mode = cert.get('toeplitz_mode')
+    if mode == 'paper':
+        if len(sims) != 1:
+            raise Refused("toeplitz mode paper is one record only")
+        if model.state_rho or model.so_basis:
+            raise Unsupported("toeplitz mode paper with state scheduling or a state offset")
+    obj, delta2, dmax2, lam, lb = objective_of(cert)
+    if form == 'nonnegative':
+        if cert['claim'] != 'lower_bound':
+            return False, "form nonnegative proves no invalidation"
+        return lb <= 0, f"claimed lower end {float(lb):.10g} against 0 (every objective is >= 0)"
+    if obj not in ('min_dmax', 'feasibility'):
+        return False, f"form zero_delta decides dmax^2 at delta^2 = 0 only, not objective {obj}"
+    if delta2 != 0:
+        return False, f"form zero_delta needs delta2 = 0, not {float(delta2):.6g}"
+    rr = sum(v * v for sim in sims for row in sim['r'] for v in row)
+    N = sum(ns) * model.ny
+    if obj == 'feasibility':
+        return N * dmax2 < rr, f"n*ny*dmax2 = {float(N * dmax2):.10g} against ||r||^2 = {float(rr):.10g}"
+    BOUNDS.append(rr / N)
+    return N * lb <= rr, f"n*ny*lower_bound = {float(N * lb):.10g} against ||r||^2 = {float(rr):.10g}"
+
+
 def fixed_dual_check(cert, model, sims, ns):
+    if cert.get('form') in ('zero_delta', 'nonnegative'):
+        return closed_form_check(cert, model, sims, ns)
     ny, nz = model.ny, model.nz
     forbid(cert, ('delta_taps', 'delta_horizon', 'w', 'class'), 'a dual claim')
     if cert.get('toeplitz_mode') != 'signal':

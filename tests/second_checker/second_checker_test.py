@@ -136,7 +136,8 @@ for seed in (3, 5, 8):
     if not (os.path.exists(d) and os.path.exists(m)):
         note(False, f"generate random wrote {case}/data.csv and model.json")
         continue
-    opts = {3: ["--delta", "0.2"], 5: ["--dmax", "0.3", "--dense-dual"], 8: ["--lambda", "0.3"]}[seed]
+    # seed 5: d_max below the least one at delta = 0 (0.0317), so that delta > 0 and a dual point is needed
+    opts = {3: ["--delta", "0.2"], 5: ["--dmax", "0.02", "--dense-dual"], 8: ["--lambda", "0.3"]}[seed]
     c = out(f"rnd{seed}.cert.json")
     run_lpvid(["invalidate", "--data", d, "--model", m, "--certificate", c, *opts])
     want(c)
@@ -330,6 +331,30 @@ run_lpvid(["identify", "--data", os.path.join(x0dir, "data.csv"), "--model", os.
            "--free-x0", "--delta", "0.01", "--certificate", x0cert])
 x0class = os.path.join(x0dir, "x0.cert.class.json")
 
+# delta = 0 in closed form (docs/dual_certificates.md, "The delta = 0 lower end"): the exact interval
+# of min d_max (a primal Delta = 0 with no taps and a zero_delta lower end), an invalidation at a fixed
+# d_max, two records (MIMO, each its own x0), paper mode (w = 0), and the lower end 0 (nonnegative)
+# of min delta at a d_max the noise alone reaches.
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:12", "--model", init_m, "--delta", "0",
+           "--certificate", out("z0.cert.json")])
+want(out("z0.cert.json"))
+want(out("z0.cert.lower.json"))
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:12", "--model", init_m, "--delta", "0", "--dmax", "0.5",
+           "--certificate", out("z0inv.cert.json")])
+want(out("z0inv.cert.json"))
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:10", "--data", data40, "--rows", "20:32", "--x0", "1/10,-1/5",
+           "--model", init_m, "--delta", "0", "--certificate", out("z0two.cert.json")])
+want(out("z0two.cert.json"))
+want(out("z0two.cert.lower.json"))
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:12", "--model", init_m, "--toeplitz", "paper", "--delta", "0",
+           "--certificate", out("z0paper.cert.json")])
+want(out("z0paper.cert.json"))
+want(out("z0paper.cert.lower.json"))
+run_lpvid(["invalidate", "--data", data40, "--rows", "0:12", "--model", init_m, "--dmax", "10",
+           "--certificate", out("z0nn.cert.json")])
+want(out("z0nn.cert.json"))
+want(out("z0nn.cert.lower.json"))
+
 print(f"-- {len(certs)} certificates written in {time.time() - start:.1f} s", flush=True)
 
 # ---------------------------------------------------------------------------------------
@@ -353,6 +378,38 @@ def dual_points(cert):
     return []
 
 
+def least_dmax2(cert_path):
+    """||r||^2/(n*ny) of a certificate's model on its data, by the second checker's own simulation:
+    the exact least d_max^2 at delta = 0, and the model's (ny, nz)."""
+    with open(cert_path) as f:
+        c = exact_checker.load_json_exact(f.read())
+    model = exact_checker.Model(c["model"])
+    recs = exact_checker.load_records(c, model, os.path.dirname(os.path.abspath(cert_path)), None)
+    sims = [exact_checker.simulate(model, rec, x0) for rec, x0 in recs]
+    rr = sum(v * v for sim in sims for row in sim["r"] for v in row)
+    return rr / (sum(rec["n"] for rec, _ in recs) * model.ny), model.ny, model.nz
+
+
+def closed_form_mutations(cert, cert_path, add):
+    """Closed forms (zero_delta) and the primal Delta = 0 beside them: claims a part in 10^40 on
+    either side of the exact ||r||^2/(n*ny), delta2 a part in 10^40 above 0, a tap added to no taps."""
+    tiny = Fraction(1, 10 ** 40)
+    if cert["claim"] == "consistent" and cert["form"] == "delta" and not cert["delta_taps"]:
+        _, ny, nz = least_dmax2(cert_path)
+        add("a tap 1/1000 at delta2 = 0" if exact_checker.parse_number(cert["delta2"], "d") == 0 else "a tap 1/1000",
+            lambda c: c.__setitem__("delta_taps", [["1/1000"] * (ny * nz)]))
+    if cert.get("form") != "zero_delta":
+        return
+    m, _, _ = least_dmax2(cert_path)
+    add("delta2 = 1e-40", lambda c: c.__setitem__("delta2", exact_text_any(tiny)))
+    if cert["claim"] == "lower_bound":
+        add("lower_bound = exact", lambda c: c.__setitem__("lower_bound", exact_text_any(m)))
+        add("lower_bound = exact + 1e-40", lambda c: c.__setitem__("lower_bound", exact_text_any(m + tiny)))
+    else:
+        add("dmax2 = exact (equality is consistent)", lambda c: c.__setitem__("dmax2", exact_text_any(m)))
+        add("dmax2 = exact - 1e-40", lambda c: c.__setitem__("dmax2", exact_text_any(m - tiny)))
+
+
 def mutations(cert, rng, cert_path):
     """(name, mutated certificate) pairs; each changes one thing."""
     out_ = []
@@ -371,13 +428,13 @@ def mutations(cert, rng, cert_path):
     if claim in ("consistent", "not_a_witness"):
         for key, f in (("delta2", Fraction(1, 2)), ("dmax2", Fraction(1, 2)), ("delta2", Fraction(999, 1000))):
             add(f"{key}*{f}", lambda c, key=key, f=f: c.__setitem__(key, scaled_text(c[key], f)))
-        if cert["form"] == "delta":
+        if cert["form"] == "delta" and cert["delta_taps"]:
             def tap(c):
                 i, j = pick(c["delta_taps"])
                 c["delta_taps"][i][j] = scaled_text(c["delta_taps"][i][j], Fraction(3, 2)) \
                     if exact_checker.parse_number(c["delta_taps"][i][j], "t") != 0 else "1/1000"
             add("tap*1.5", tap)
-        else:
+        elif cert["form"] == "w":
             def wentry(c):
                 i, j = pick(c["w"])
                 c["w"][i][j] = exact_text_any(exact_checker.parse_number(c["w"][i][j], "w") + Fraction(1, 100))
@@ -390,6 +447,7 @@ def mutations(cert, rng, cert_path):
             c["claim"] = "not_a_witness"
         if claim == "consistent":
             add("delta2/2+not_a_witness", lower_and_flip)
+    closed_form_mutations(cert, cert_path, add)
     if claim == "class_lower_bound":
         # Claims at the exact lowest leaf bound the second checker computes: one a part in 10^9
         # below it holds, one a part in 10^9 above it does not, for any correct checker (the
@@ -519,7 +577,8 @@ for path in certs:
 needed = ["consistent/delta", "consistent/w", "not_a_witness/delta", "lower_bound/dual_delta_path",
           "lower_bound/dual_delta", "invalidated/dual_delta_path", "invalidated/dual_delta",
           "class_lower_bound/dual_delta_path", "class_invalidated/dual_delta_path",
-          "class_lower_bound/dual_delta_path/records", "consistent/delta/records", "lower_bound/dual_delta_path/records"]
+          "class_lower_bound/dual_delta_path/records", "consistent/delta/records", "lower_bound/dual_delta_path/records",
+          "lower_bound/zero_delta", "invalidated/zero_delta", "lower_bound/zero_delta/records", "lower_bound/nonnegative"]
 for kind in needed:
     note(decided.get(kind, 0) > 0, f"the second checker decided {kind} at least once ({decided.get(kind, 0)})")
 note(verdicts.get("holds", 0) >= 20 and verdicts.get("refused", 0) >= 20,

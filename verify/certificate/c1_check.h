@@ -11,6 +11,7 @@
 ///    decided on the L·min(ny, nz) Schur complement δ²I − T_ΔT_Δᵀ (or
 ///    δ²I − T_ΔᵀT_Δ) after balancing.
 
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -32,6 +33,9 @@ struct C1Outcome {
 /// Form "w": `gram_z` = T_zᵀT_z (n × n, exact; taken by value to reuse its
 /// storage), `w` the n × ny signal (T_w = signal_toeplitz(w)), δ² ≥ 0.
 C1Outcome check_c1_w_form(Mat<Rational> gram_z, const Mat<Rational>& w, const Rational& delta2);
+/// The same with T_zᵀT_z made by `make_gram` only when it is needed (w ≠ 0
+/// and δ² > 0): the exact Gram of a long record is most of the check's work.
+C1Outcome check_c1_w_form(const std::function<Mat<Rational>()>& make_gram, const Mat<Rational>& w, const Rational& delta2);
 
 /// Form "delta": `taps` K × (ny·nz), row t = vec of the tap Δ_t (row-major
 /// ny × nz, entry (i, j) at column i·nz + j), T_Δ the block lower-triangular

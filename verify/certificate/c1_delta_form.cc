@@ -1,6 +1,8 @@
 /// (C1) of Theorem 2.1 for form "delta" (verify/certificate/c1_check.h):
 ///   M = [δ²I, T_Δ; T_Δᵀ, I] ⪰ 0  (size L·(ny + nz)),  i.e. ‖T_Δ‖ ≤ δ.
 ///
+///  0. T_Δ = 0 (every tap it contains is zero, e.g. Δ = 0 of a closed-form
+///     answer at δ² = 0): M = diag(δ²I, I) ⪰ 0 for δ² ≥ 0, decided at once.
 ///  1. Every entry h of T_Δ sits in a 2×2 principal submatrix [δ², h; h, 1]
 ///     of M (its row in the δ² block, its column in the I block), whose
 ///     determinant is δ² − h². A principal submatrix of a PSD matrix is PSD,
@@ -67,6 +69,8 @@ C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, E
         arg_t = t;
         arg_c = c;
       }
+  if (arg_t < 0 && delta2 >= 0)  // 0. every tap entry is zero
+    return C1Outcome::holding("(C1) holds: T_Delta = 0, so " + full + " = diag(delta2*I, I) is PSD (delta2 >= 0)");
   if (arg_t >= 0 && largest > delta2) {
     const Eigen::Index i = arg_c / nz, j = arg_c % nz;
     return C1Outcome::failing("(C1) fails: " + full + " is not PSD: tap " + std::to_string(arg_t) + " entry (" + std::to_string(i) +

@@ -20,6 +20,7 @@
 /// (1e4000, 1e−5000) leaves the floating filter a matrix it can read.
 
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -46,12 +47,24 @@ constexpr long kBalanceBits = 256;
 
 }  // namespace
 
-C1Outcome check_c1_w_form(Mat<Rational> gram_z, const Mat<Rational>& w, const Rational& delta2) {
-  const std::string full = "[T_z'T_z, T_w'; T_w, delta2*I]";
-  const Eigen::Index n = gram_z.rows(), ny = w.cols();
+namespace {
+/// Throws unless `gram_z` is n × n for the n samples of w.
+void require_gram_size(const Mat<Rational>& gram_z, const Mat<Rational>& w) {
+  const Eigen::Index n = gram_z.rows();
   if (gram_z.cols() != n || w.rows() != n)
     throw std::invalid_argument("check_c1_w_form: T_z'T_z is " + std::to_string(n) + "x" + std::to_string(gram_z.cols()) +
                                 " but w has " + std::to_string(w.rows()) + " samples");
+}
+}  // namespace
+
+C1Outcome check_c1_w_form(Mat<Rational> gram_z, const Mat<Rational>& w, const Rational& delta2) {
+  require_gram_size(gram_z, w);
+  return check_c1_w_form([&gram_z] { return std::move(gram_z); }, w, delta2);
+}
+
+C1Outcome check_c1_w_form(const std::function<Mat<Rational>()>& make_gram, const Mat<Rational>& w, const Rational& delta2) {
+  const std::string full = "[T_z'T_z, T_w'; T_w, delta2*I]";
+  const Eigen::Index n = w.rows(), ny = w.cols();
   // (a) T_w = 0.
   Eigen::Index first_k = -1, first_i = -1;
   for (Eigen::Index k = 0; k < w.rows() && first_k < 0; ++k)
@@ -71,6 +84,8 @@ C1Outcome check_c1_w_form(Mat<Rational> gram_z, const Mat<Rational>& w, const Ra
                        " on rows 0 and " + std::to_string(row) + " is [T_z'T_z(0,0), w; w, 0], determinant -w^2 < 0");
   }
   // (c) δ² > 0: the Schur complement of δ²I, times δ².
+  Mat<Rational> gram_z = make_gram();
+  require_gram_size(gram_z, w);
   gram_z *= delta2;
   gram_z -= toeplitz_gram(w, w);
   std::string which = "delta2*T_z'T_z - T_w'T_w (the Schur complement of delta2*I in " + full + ", times delta2)";

@@ -20,4 +20,22 @@ const char* to_string(CertificateClaim c) {
   return "?";
 }
 
+const char* to_string(CertificateForm f) {
+  switch (f) {
+    case CertificateForm::kDelta:
+      return "delta";
+    case CertificateForm::kW:
+      return "w";
+    case CertificateForm::kDualDelta:
+      return "dual_delta";
+    case CertificateForm::kDualDeltaPath:
+      return "dual_delta_path";
+    case CertificateForm::kZeroDelta:
+      return "zero_delta";
+    case CertificateForm::kNonnegative:
+      return "nonnegative";
+  }
+  return "?";
+}
+
 }  // namespace lpvid

@@ -21,11 +21,25 @@ namespace lpvid {
 
 inline constexpr const char* kCertificateFormat = "lpvid-certificate/1";
 
-enum class CertificateForm { kDelta, kW, kDualDelta, kDualDeltaPath };
+/// How a claim is witnessed: a primal point (kDelta: Δ taps; kW: the signal
+/// w), a dual point (kDualDelta: Y1 itself; kDualDeltaPath: its recipe), or
+/// nothing beyond the data (closed form, verify/certificate/closed_form_check.h):
+/// kZeroDelta, the exact answer at δ² = 0 (Δ = 0, so d = r), and
+/// kNonnegative, a lower end ≤ 0 of an objective that is ≥ 0.
+enum class CertificateForm { kDelta, kW, kDualDelta, kDualDeltaPath, kZeroDelta, kNonnegative };
+
+/// "delta", "w", "dual_delta", "dual_delta_path", "zero_delta", "nonnegative".
+const char* to_string(CertificateForm f);
+
+/// Forms whose claim ("lower_bound", "invalidated") is decided without a dual point.
+inline bool is_closed_form(CertificateForm f) {
+  return f == CertificateForm::kZeroDelta || f == CertificateForm::kNonnegative;
+}
 
 /// What the certificate claims. kConsistent: the model is not invalidated at
 /// (δ², d_max²) (a primal point). kInvalidated / kLowerBound: a dual point of
-/// the full-horizon Δ form (toeplitz/delta_form_dual.h). kNotAWitness: the
+/// the full-horizon Δ form (toeplitz/delta_form_dual.h), or in closed form
+/// (is_closed_form: no dual point). kNotAWitness: the
 /// primal point the file carries (Δ taps or w, written by someone else and
 /// judged by `lpvid oracle`) does NOT satisfy Theorem 2.1 at (δ², d_max²):
 /// the same checks as kConsistent, and the claim holds iff one of the
@@ -39,7 +53,8 @@ enum class CertificateClaim { kConsistent, kInvalidated, kLowerBound, kNotAWitne
 /// "consistent", "invalidated", "lower_bound", "not_a_witness".
 const char* to_string(CertificateClaim c);
 
-/// Claims carried by a dual point (form "dual_delta" / "dual_delta_path").
+/// Claims carried by a dual point (form "dual_delta" / "dual_delta_path") or
+/// decided in closed form (form "zero_delta" / "nonnegative").
 inline bool is_dual_claim(CertificateClaim c) {
   return c == CertificateClaim::kInvalidated || c == CertificateClaim::kLowerBound;
 }

@@ -25,6 +25,7 @@
 #include "toeplitz/toeplitz_gram.h"
 #include "verify/certificate/c1_check.h"
 #include "verify/certificate/class_check.h"
+#include "verify/certificate/closed_form_check.h"
 #include "verify/certificate/column_gram.h"
 #include "verify/certificate/data_file_cache.h"
 #include "verify/certificate/dual_check.h"
@@ -247,6 +248,7 @@ CertificateVerdict check_claim(const Certificate& c, Experiment<Rational> exp, s
   const Eigen::Index n = exp.n(), ny = c.model.ny, nz = c.model.nz();
   details << "n = " << n << ", ny = " << ny << ", nz = " << nz << ", toeplitz mode " << to_string(c.mode);
 
+  if (is_dual_claim(c.claim) && is_closed_form(c.form)) return check_closed_form_claim(c, exp, sim, details.str());
   if (is_dual_claim(c.claim)) return check_dual_claim(c, exp, sim, details.str());
   const PrimalCheck p = check_primal_point(c, exp, sim, details);
   if (c.claim == CertificateClaim::kNotAWitness) {
@@ -353,10 +355,7 @@ PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>&
   }
 
   // 5. (C2), exactly.
-  const Mat<Rational> d = exp.y - sim.output - w;
-  Rational dd(0);
-  for (Eigen::Index k = 0; k < n; ++k)
-    for (Eigen::Index i = 0; i < ny; ++i) dd += d(k, i) * d(k, i);
+  const Rational dd = residual_energy(exp.y - sim.output - w);
   const Rational bound = Rational(static_cast<long>(n * ny)) * c.dmax2;
   if (dd > bound)
     return fails("(C2) fails: ||d||^2 = " + approx_text(dd) + " > n*ny*dmax2 = " + approx_text(bound) +
@@ -366,9 +365,11 @@ PrimalCheck check_primal_point(const Certificate& c, const Experiment<Rational>&
   // 6. (C1), exactly (verify/certificate/c1_check.h). A failure is an exact NOT_PSD decision.
   const C1Outcome c1 = c.form == CertificateForm::kDelta
                            ? check_c1_delta_form(c.taps, c.horizon, ny, nz, c.delta2)
-                           : check_c1_w_form(c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z)
-                                                                              : paper_gram(c.model, exp),
-                                             w, c.delta2);
+                           : check_c1_w_form(
+                                 [&]() -> Mat<Rational> {
+                                   return c.mode == ToeplitzMode::kSignal ? toeplitz_gram(sim.z, sim.z) : paper_gram(c.model, exp);
+                                 },
+                                 w, c.delta2);
   if (!c1.holds()) return fails(c1.text);
   details << "; " << c1.text;
   return {PrimalCheck::kHolds, "", details.str()};
@@ -392,7 +393,11 @@ CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
   v.claim_text = o.str();
   std::ostringstream e;
   e << "claim: toeplitz mode " << (c.mode == ToeplitzMode::kSignal ? "signal" : "paper") << "; ";
-  const auto exact = [](const Rational& q) { return exact_decimal_or_fraction(q); };
+  // exact; a number of thousands of digits (an exact ||r||^2/(n*ny) of a long record) is shown by its value
+  const auto exact = [](const Rational& q) {
+    std::string text = exact_decimal_or_fraction(q);
+    return text.size() <= 80 ? text : "~" + approx_text(q, 17) + " (exact in the file: " + std::to_string(text.size()) + " characters)";
+  };
   switch (c.claim) {
     case CertificateClaim::kConsistent:
       e << "consistent at delta^2 = " << exact(c.delta2) << ", dmax^2 = " << exact(c.dmax2)

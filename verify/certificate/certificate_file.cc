@@ -24,10 +24,15 @@ void parse_dual_form(const JsonNode& root, const std::string& file, Certificate&
   for (const char* key : {"delta_taps", "delta_horizon", "w"})
     if (const JsonNode* n = root.find(key)) throw_input_error(file, n->line, key, "dual claims do not carry this key");
   const std::string form = string_member(root, "form", file, "");
-  if (form != "dual_delta" && form != "dual_delta_path")
+  const bool class_claim = is_class_claim(c.claim);
+  if (form == "dual_delta") c.form = CertificateForm::kDualDelta;
+  else if (form == "dual_delta_path") c.form = CertificateForm::kDualDeltaPath;
+  else if (form == "zero_delta" && !class_claim) c.form = CertificateForm::kZeroDelta;
+  else if (form == "nonnegative" && !class_claim) c.form = CertificateForm::kNonnegative;
+  else
     throw_input_error(file, member(root, "form", file, "").line, "form",
-                      "a dual claim has form \"dual_delta\" or \"dual_delta_path\"");
-  c.form = form == "dual_delta" ? CertificateForm::kDualDelta : CertificateForm::kDualDeltaPath;
+                      class_claim ? "a class claim has form \"dual_delta\" or \"dual_delta_path\""
+                                  : "a dual claim has form \"dual_delta\", \"dual_delta_path\", \"zero_delta\" or \"nonnegative\"");
   const JsonNode& objective_node = member(root, "objective", file, "");
   const std::string objective = string_member(root, "objective", file, "");
   const bool invalidated = c.claim == CertificateClaim::kInvalidated || c.claim == CertificateClaim::kClassInvalidated;
@@ -65,8 +70,14 @@ void parse_dual_values(const JsonNode& root, const std::string& file, Certificat
   }
 }
 
-/// The dual point: horizon, σ, g, then the form's own fields.
+/// The dual point: horizon, σ, g, then the form's own fields. A closed form
+/// (verify/certificate/closed_form_check.h) carries none.
 void parse_dual_point(const JsonNode& root, const std::string& file, Certificate& c) {
+  if (is_closed_form(c.form)) {
+    if (const JsonNode* n = root.find("dual"))
+      throw_input_error(file, n->line, "dual", std::string("form \"") + to_string(c.form) + "\" carries no dual point");
+    return;
+  }
   c.dual = parse_dual_point_object(member(root, "dual", file, ""), file, "dual", c.model.ny, c.model.nz(), c.form);
 }
 
@@ -249,7 +260,7 @@ void objective_json(const Certificate& c, nlohmann::ordered_json& j) {
   if (c.objective == DualClaim::kWeighted) j["lambda"] = rational_to_json(c.lambda);
   if (c.claim == CertificateClaim::kLowerBound || c.claim == CertificateClaim::kClassLowerBound)
     j["lower_bound"] = rational_to_json(c.lower_bound);
-  j["form"] = c.form == CertificateForm::kDualDeltaPath ? "dual_delta_path" : "dual_delta";
+  j["form"] = to_string(c.form);
 }
 
 }  // namespace
@@ -277,8 +288,8 @@ std::string certificate_json(const Certificate& c) {
   j["noise_normalisation"] = "rms";
   if (is_dual_claim(c.claim) || is_class_claim(c.claim)) {
     objective_json(c, j);
-    if (is_dual_claim(c.claim)) j["dual"] = dual_point_json(c.dual, c.form);
-    else j["class"] = class_region_json(c.region, c.form);
+    if (is_class_claim(c.claim)) j["class"] = class_region_json(c.region, c.form);
+    else if (!is_closed_form(c.form)) j["dual"] = dual_point_json(c.dual, c.form);
     j["info"] = c.info;
     return pretty_json(j);
   }

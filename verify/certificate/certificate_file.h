@@ -45,7 +45,11 @@
 ///            "taps": [[h_0 row-major (ny·nz)], …, [h_{L−1}]],   // dyadic rationals
 ///            "t": t > 0, "mu": μ > 0, "u_exponent": e, "x": x > 0, "u_floor": γ ≥ 0}
 /// (Y1 rebuilt by the verifier from U = round(μ(t·I − T Tᵀ)⁻¹·2^−e)·2^e:
-/// verify/certificate/path_dual.h).
+/// verify/certificate/path_dual.h),
+/// or, decided in closed form with no "dual" (verify/certificate/closed_form_check.h),
+///   "form": "zero_delta"   (toeplitz_mode "signal" or "paper"; "delta2": 0): "lower_bound"
+///                          with objective "min_dmax", or "invalidated" with "feasibility";
+///   "form": "nonnegative"  "lower_bound" ≤ 0 with any of the three objectives.
 ///
 /// Class claims (docs/class_lower_bound.md): a lower end of Theorem 3.1's
 /// objective over every correction θ of a region (or "the data cannot be

@@ -45,7 +45,7 @@ std::vector<long> dual_horizons(const Certificate& c) {
   if (is_class_claim(c.claim)) {
     for (const ClassNode& node : c.region.nodes)
       if (node.split < 0) horizons.push_back(node.dual.horizon);
-  } else if (is_dual_claim(c.claim)) {
+  } else if (is_dual_claim(c.claim) && !is_closed_form(c.form)) {
     horizons.push_back(c.dual.horizon);
   }
   return horizons;
