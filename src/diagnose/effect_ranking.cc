@@ -12,6 +12,7 @@
 #include "data/experiment_builder.h"
 #include "diagnose/order_variants.h"
 #include "diagnose/residual_analysis.h"
+#include "fit/record_states.h"
 #include "model/simulate.h"
 
 namespace lpvid {
@@ -351,12 +352,16 @@ FamilyFit candidate_family(const EffectCandidate& whole, const std::vector<const
 
 /// What identifies "the same effect" across models that differ only in
 /// their parameter values: the kind, the label without its numbers (starting
-/// values are printed in it), and the number of slots.
+/// values are printed in it), and the number of slots, without the initial
+/// states of later records (a fold's training rows can hold fewer records
+/// than the whole estimation data; each fit adds the states its data have).
 std::string candidate_key(const EffectCandidate& c) {
   std::string stem;
   for (char ch : c.label)
     if (!std::isdigit(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-' && ch != '+' && ch != 'e') stem += ch;
-  return c.kind + "|" + stem + "|" + std::to_string(c.slots.size());
+  const auto slots =
+      std::count_if(c.slots.begin(), c.slots.end(), [](const ParameterSlot& s) { return !later_record_state(s); });
+  return c.kind + "|" + stem + "|" + std::to_string(slots);
 }
 
 /// For each candidate of `whole`, the candidate of `fold` with the same key

@@ -8,8 +8,6 @@ namespace {
 
 using Where = ParameterSlot::Where;
 
-bool later_state_slot(const ParameterSlot& s) { return s.where == Where::kX0 && s.term >= 1; }
-
 bool same_slots(const std::vector<ParameterSlot>& a, const std::vector<ParameterSlot>& b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const ParameterSlot& s, const ParameterSlot& t) {
     return s.where == t.where && s.term == t.term && s.row == t.row && s.col == t.col;
@@ -17,6 +15,8 @@ bool same_slots(const std::vector<ParameterSlot>& a, const std::vector<Parameter
 }
 
 }  // namespace
+
+bool later_record_state(const ParameterSlot& s) { return s.where == Where::kX0 && s.term >= 1; }
 
 std::optional<RecordStateFit> with_record_states(const LpvModel<double>& model, const std::vector<ParameterSlot>& slots,
                                                  const std::vector<Eigen::Index>& record_lengths,
@@ -31,7 +31,7 @@ std::optional<RecordStateFit> with_record_states(const LpvModel<double>& model, 
       x = start;
       changed = true;
     }
-  std::copy_if(slots.begin(), slots.end(), std::back_inserter(out.slots), [](const ParameterSlot& s) { return !later_state_slot(s); });
+  std::copy_if(slots.begin(), slots.end(), std::back_inserter(out.slots), [](const ParameterSlot& s) { return !later_record_state(s); });
   const bool fits_x0 = std::any_of(slots.begin(), slots.end(), [](const ParameterSlot& s) { return s.where == Where::kX0; });
   if (fits_x0) {
     Eigen::Index begin = record_lengths.empty() ? 0 : record_lengths[0];

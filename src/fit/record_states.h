@@ -13,6 +13,11 @@
 
 namespace lpvid {
 
+/// A slot of a later record's initial state (kX0 with term k >= 1): fits
+/// derive these from the data's records (with_record_states), so they are no
+/// part of what a candidate is.
+bool later_record_state(const ParameterSlot& s);
+
 /// A fit's model and slots with the records' initial states in place.
 struct RecordStateFit {
   LpvModel<double> model;

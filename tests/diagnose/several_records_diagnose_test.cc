@@ -262,6 +262,24 @@ TEST(SeveralRecordsDiagnose, TwoAmplitudesOfTheCoupledDrivesAnalogueDiagnosedJoi
   }
 }
 
+// Folds = records: each fold's training rows are the other record alone, so a
+// candidate of a fold is built on a model with one initial state fewer than
+// the whole estimation data's. It is still the same effect (regression: every
+// candidate was unmatched on such folds, scored +inf, and none was chosen).
+TEST(SeveralRecordsDiagnose, FoldsAsManyAsRecordsStillScoreEveryCandidate) {
+  TwoRecords c;
+  RankingOptions o = c.options.ranking;
+  o.folds = 2;
+  const RankingResult r = rank_effects(c.declared, c.roles.est.exp_d, Experiment<double>{}, o);
+  ASSERT_EQ(r.fold_blocks.size(), 2u);
+  ASSERT_FALSE(r.rounds.empty());
+  size_t finite = 0;
+  for (const ScoredCandidate& s : r.rounds.front().ranked) finite += std::isfinite(s.rms_validation) ? 1 : 0;
+  EXPECT_GT(finite, r.rounds.front().ranked.size() / 2);
+  ASSERT_FALSE(r.chosen.empty());
+  EXPECT_EQ(r.chosen.front().kind, "abs_value");
+}
+
 // The joint bound window of two records: one certificate naming both
 // records' rows, checked from the files.
 TEST(SeveralRecordsDiagnose, JointBoundCertificateListsBothRecordsAndVerifies) {
