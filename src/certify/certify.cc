@@ -240,7 +240,8 @@ void certify_upper_end(const CertifyRun& run, const DeltaFormSolution& sol, Cert
   b.delta2_solver = sol.delta2;
   if (run.o.progress) run.o.progress("solved in " + tenths_text(sol.solve.seconds) + " s; checking the upper end exactly");
   const double built = b.upper_build_seconds, checked = b.verify_seconds;
-  certify_taps(run.model, run.exact.exp, run.exact.sim, run.exact.r, sol.taps, sol.horizon, run.o, run.solver.name(), b);
+  b.solver_used = sol.solver_used.empty() ? run.solver.name() : sol.solver_used;
+  certify_taps(run.model, run.exact.exp, run.exact.sim, run.exact.r, sol.taps, sol.horizon, run.o, b.solver_used, b);
   if (b.verified()) b.upper = objective_at(run.o.objective, b.delta2, b.dmax2);
   if (run.o.progress)
     run.o.progress(stage_done("upper end", b.verified(), b.upper_build_seconds - built, b.verify_seconds - checked));

@@ -110,6 +110,10 @@ struct CertifiedBounds {
   /// (certify/closed_form.h), e.g. "closed form (delta = 0)": reports show
   /// it where they name the solver.
   std::string closed_form;
+  /// What solved the program whose answer was certified (upper end): the
+  /// structured barrier or the SDP backend (DeltaFormSolution::solver_used);
+  /// empty when no solve ran here. Reports name it as the solver.
+  std::string solver_used;
   /// Why a solve of this certification fell back from the structured
   /// barrier to the SDP backend (DeltaFormSolution::fallback, "; "-joined);
   /// empty when none did. Reports and progress lines show it.

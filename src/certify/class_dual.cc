@@ -46,8 +46,9 @@ ClassLeafBuild build_class_leaf(const ClassSignals& s, const Vec<Rational>& cent
   const ClassPenalty pen = class_penalty(s, radius, b.g_effective);
   if (!pen.problem.empty()) return out.problem = pen.problem, out;
   const Rational exact = dual_bound(leaf_terms(b.value.terms, pen, epsilon), claim, fixed.delta2, fixed.dmax2, fixed.lambda);
-  const Rational portable = dual_bound(leaf_terms(rebuilt_terms(b.value.terms, b.margin, s.horizon * s.a.ny), pen, epsilon),
-                                       claim, fixed.delta2, fixed.dmax2, fixed.lambda);
+  const Rational portable = portable_bound(b, s.horizon * s.a.ny, [&](const DualTerms<Rational>& terms) {
+    return dual_bound(leaf_terms(terms, pen, epsilon), claim, fixed.delta2, fixed.dmax2, fixed.lambda);
+  });
   const Rational slack = exact > 0 ? exact * power_of_ten(-9) : Rational(0);
   out.bound = std::min(portable, exact - slack);
   out.node.dual = std::move(b.point);

@@ -188,8 +188,9 @@ DualOutcome certify_dual_path(const LpvModel<Rational>& model, const Experiment<
   if (!b.problem.empty()) return done(b.problem);
   const Rational bound = dual_bound(b.value.terms, claim, fixed.delta2, fixed.dmax2, fixed.lambda);
   // What a verifier built elsewhere, with U in other last bits, still reaches.
-  const Rational portable =
-      dual_bound(rebuilt_terms(b.value.terms, b.margin, L * ny), claim, fixed.delta2, fixed.dmax2, fixed.lambda);
+  const Rational portable = portable_bound(b, L * ny, [&](const DualTerms<Rational>& terms) {
+    return dual_bound(terms, claim, fixed.delta2, fixed.dmax2, fixed.lambda);
+  });
   if (claim == DualClaim::kInvalidated && !(portable > 0))
     return done("the compact dual point does not prove infeasibility (margin " + double_to_text(nearest_double(bound)) +
                 ", " + double_to_text(nearest_double(portable)) + " for a rebuild of U within the stated tolerance)");

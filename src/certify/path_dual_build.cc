@@ -1,5 +1,6 @@
 #include "certify/path_dual_build.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/decimal_rounding.h"
@@ -66,20 +67,30 @@ PathDualRecipe path_recipe(const DeltaFormSolution& s, double scale) {
 }
 
 /// What a verifier's rebuild of U may change (docs/dual_certificates.md,
-/// "Portable acceptance"): any U' with ‖U' − U‖₂ ≤ η = kPathDualRebuildTolerance·‖U‖_∞
-/// (‖U‖_∞ ≥ ‖U‖₂) moves ‖E‖_F by at most η·‖T‖_F (E is the orthogonal
-/// projection of the residual, R' − R = Ω(DT)), tr U by P·η and β by
-/// 3η·‖T‖_F² (tr TᵀDT and 2⟨T, DT⟩). Doubles, rounded up by a relative 10⁻⁹.
+/// "Portable acceptance"): any U' with ‖U' − U‖_F ≤ η = kPathDualRebuildTolerance·‖U‖_F
+/// moves ‖E‖_F by at most η·‖T‖₂ (E is the orthogonal projection of the
+/// residual, R' − R = Ω(DT), ‖DT‖_F ≤ ‖D‖_F‖T‖₂), tr U by √P·η and β by
+/// 3η·‖T‖₂‖T‖_F (tr TᵀDT and 2⟨T, DT⟩, each ⟨D, TTᵀ⟩). ‖T‖₂ is bounded by
+/// ‖T‖_F, by Σ_l ‖h_l‖_F (T = Σ_l S_l ⊗ h_l, S_l the l-th shift), and by √t
+/// plus the rounding of the floating Cholesky factor of t·I − TTᵀ that built
+/// U (it exists, so TTᵀ ⪯ t·I + 4(P+1)u(t + ‖T‖_F²)·I). Doubles, rounded up
+/// by a relative 10⁻⁹.
 RebuildMargin rebuild_margin(const PathDualRecipe& recipe, const PathDualGrid& grid) {
   RebuildMargin m;
   const double up = 1 + 1e-9;
-  const double row_max = grid.U.size() ? grid.U.cwiseAbs().rowwise().sum().maxCoeff() : 0.0;
-  m.eta = kPathDualRebuildTolerance * std::ldexp(row_max, static_cast<int>(recipe.u_exponent)) * up;
+  const double u_frob = std::ldexp(grid.U.norm(), static_cast<int>(recipe.u_exponent));
+  m.eta = kPathDualRebuildTolerance * u_frob * up * up;
   const Eigen::Index L = recipe.taps.rows();
-  double frob2 = 0;
-  for (Eigen::Index l = 0; l < L; ++l)
-    frob2 += static_cast<double>(L - l) * nearest_double(recipe.taps.row(l)).squaredNorm();
+  double frob2 = 0, tap_sum = 0;
+  for (Eigen::Index l = 0; l < L; ++l) {
+    const double h2 = nearest_double(recipe.taps.row(l)).squaredNorm();
+    frob2 += static_cast<double>(L - l) * h2;
+    tap_sum += std::sqrt(h2);
+  }
   m.t_frob = std::sqrt(frob2) * up;
+  const double P = static_cast<double>(grid.U.rows()), t = nearest_double(recipe.t);
+  const double from_cholesky = std::sqrt(t + 4 * (P + 1) * 0x1.0p-53 * (t + frob2));
+  m.t_norm = std::min({m.t_frob, tap_sum, from_cholesky}) * up * up;
   return m;
 }
 
@@ -175,13 +186,47 @@ Rational chosen_sigma(double trU, double trV, const std::pair<double, double>& g
   return round_to_digits(sigma_d, 15);
 }
 
+Rational portable_bound(const PathDualBuild& b, Eigen::Index P,
+                        const std::function<Rational(const DualTerms<Rational>&)>& bound_of) {
+  Rational least = bound_of(rebuilt_terms(b.value.terms, b.margin, P));
+  for (const DualTerms<Rational>& moved : b.moved_terms) least = std::min(least, bound_of(rebuilt_terms(moved, b.margin, P)));
+  return least;
+}
+
 DualTerms<Rational> rebuilt_terms(DualTerms<Rational> terms, const RebuildMargin& m, Eigen::Index P) {
   terms.beta -= exact_rational_of_double(m.beta_shift());
-  terms.trace_U += exact_rational_of_double(static_cast<double>(P) * m.eta);
+  terms.trace_U += exact_rational_of_double(std::sqrt(static_cast<double>(P)) * m.eta * (1 + 1e-9));
   return terms;
 }
 
 namespace {
+
+/// The recipe with t moved by `ulps` units in the last place of its double.
+PathDualRecipe with_t_moved(PathDualRecipe recipe, int ulps) {
+  double t = nearest_double(recipe.t);
+  for (int i = 0; i < std::abs(ulps); ++i) t = std::nextafter(t, ulps > 0 ? INFINITY : 0.0);
+  recipe.t = exact_rational_of_double(t);
+  return recipe;
+}
+
+/// U rebuilt from t moved by ±kPathDualTMoveUlps, on the recipe's grid, and
+/// its exact sums (what the verifier computes from such a U). A move that
+/// gives no U (t·I − TTᵀ not definite) is left out: it is not a rebuild.
+std::vector<std::pair<PathDualRecipe, PathDualSums>> moved_rebuilds(const PathDualRecipe& recipe, Eigen::Index ny,
+                                                                    Eigen::Index nz) {
+  std::vector<std::pair<PathDualRecipe, PathDualSums>> out;
+  for (int ulps : {-kPathDualTMoveUlps, kPathDualTMoveUlps}) {
+    PathDualRecipe moved = with_t_moved(recipe, ulps);
+    std::string problem;
+    const Mat<double> U_d = path_dual_floating_u(moved, ny, nz, problem);
+    if (!problem.empty()) continue;
+    const PathDualGrid grid = path_dual_round(U_d, moved.u_exponent);
+    if (!grid.problem.empty()) continue;
+    PathDualSums sums = path_dual_sums(moved, grid.U, ny, nz);
+    if (sums.problem.empty()) out.emplace_back(std::move(moved), std::move(sums));
+  }
+  return out;
+}
 
 /// The recipe with its taps padded by zero rows up to the horizon L (a centre
 /// whose z has more leading zeros than the class's horizon).
@@ -243,11 +288,21 @@ PathDualBuild build_path_dual(const Mat<Rational>& z, const Mat<Rational>& r, Ei
   const Mat<Rational> C = fir_adjoint_records(b.g_effective, z, L, records);
   b.value = path_dual_value(recipe, sums, C, b.g_effective, Rational(1), r, ny, nz);
   b.margin = rebuild_margin(recipe, grid);
-  if (std::string why = prove_floor(recipe, grid, b.value.E_norm2, b.margin); !why.empty()) return b.problem = why, b;
+  // x covers the largest E among the recipe's U and the moved rebuilds (E depends on neither x nor σ).
+  auto moved = moved_rebuilds(recipe, ny, nz);
+  Rational E_norm2 = b.value.E_norm2;
+  for (const auto& [m, m_sums] : moved)
+    E_norm2 = std::max(E_norm2, path_dual_value(m, m_sums, C, b.g_effective, Rational(1), r, ny, nz).E_norm2);
+  if (std::string why = prove_floor(recipe, grid, E_norm2, b.margin); !why.empty()) return b.problem = why, b;
   b.value = path_dual_value(recipe, sums, C, b.g_effective, Rational(1), r, ny, nz);
   const Rational sigma = sigma_for(b, r, s, claim, fixed, sigma_shift);
   if (!(sigma > 0)) return b.problem = "no positive sigma", b;
   b.value = path_dual_value(recipe, sums, C, b.g_effective, sigma, r, ny, nz);
+  for (auto& [m, m_sums] : moved) {
+    m.x = recipe.x;
+    m.floor = recipe.floor;
+    b.moved_terms.push_back(path_dual_value(m, m_sums, C, b.g_effective, sigma, r, ny, nz).terms);
+  }
   b.point.horizon = L;
   b.point.g = std::move(gs.g);
   b.point.sigma = sigma;

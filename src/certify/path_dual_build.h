@@ -8,6 +8,7 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/scalar.h"
 #include "certify/certify_types.h"
@@ -18,11 +19,19 @@
 
 namespace lpvid {
 
-/// The relative change of the compact dual's U (‖U' − U‖₂ ≤ this·‖U‖₂) that
+/// The relative change of the compact dual's U (‖U' − U‖_F ≤ this·‖U‖_F) that
 /// a compact certificate is built to survive: a verifier compiled elsewhere
 /// (another compiler, SIMD width or BLAS) rebuilds U in floating point with
 /// other last bits (docs/dual_certificates.md, "Portable acceptance").
 inline constexpr double kPathDualRebuildTolerance = 0x1.0p-30;
+
+/// The builder also rebuilds U from t moved by ± this many units in the last
+/// place of its double and keeps x and the claimed bound good for those U too:
+/// another machine's rounding of t·I − TTᵀ (its block sums in another order)
+/// moves U mostly along its top eigenvector, as a change of t does, by more
+/// than the Frobenius class covers when t·I − TTᵀ is nearly singular
+/// (docs/dual_certificates.md, "Portable acceptance").
+inline constexpr int kPathDualTMoveUlps = 4;
 
 /// x on the decimal grid of `unit` (an exact power of ten), as a rational.
 Rational on_grid(double x, double unit_d, const Rational& unit);
@@ -52,11 +61,14 @@ Rational chosen_sigma(double trU, double trV, const std::pair<double, double>& g
                       const FixedValues& f, double sigma0);
 
 /// What a verifier's rebuild of U may change ("Portable acceptance").
+/// For D = U' − U with ‖D‖_F ≤ η: E moves by ‖Proj Ω(DT)‖_F ≤ ‖DT‖_F ≤ η‖T‖₂,
+/// tr U by |tr D| ≤ √P·η, and β by tr(TᵀDT) + 2⟨T, DT⟩ = 3⟨D, TTᵀ⟩ ≤ 3η‖T‖₂‖T‖_F.
 struct RebuildMargin {
-  double eta = 0;     ///< bound on ‖U' − U‖₂
+  double eta = 0;     ///< bound on ‖U' − U‖_F
+  double t_norm = 0;  ///< an upper bound of ‖T‖₂
   double t_frob = 0;  ///< ‖T‖_F
-  double E_shift() const { return eta * t_frob; }
-  double beta_shift() const { return 3 * eta * t_frob * t_frob; }
+  double E_shift() const { return eta * t_norm; }
+  double beta_shift() const { return 3 * eta * t_norm * t_frob; }
 };
 
 /// The terms any rebuild within the margin still reaches: β lowered and tr U
@@ -76,8 +88,16 @@ struct PathDualBuild {
   Mat<Rational> g_effective;
   PathDualValue value;           ///< at σ, with the effective g
   RebuildMargin margin;
+  /// The terms of the rebuilds from t moved by ±kPathDualTMoveUlps (at σ, the final x and floor).
+  std::vector<DualTerms<Rational>> moved_terms;
   double scale = 1;
 };
+
+/// The least bound that every rebuild the builder covers still reaches: the
+/// recipe's U and the moved ones, each with the Frobenius class's margins
+/// (rebuilt_terms). `bound_of` maps terms to the claim's bound.
+Rational portable_bound(const PathDualBuild& b, Eigen::Index P,
+                        const std::function<Rational(const DualTerms<Rational>&)>& bound_of);
 using GTransform = std::function<Mat<Rational>(const Mat<Rational>&)>;
 using SigmaShift = std::function<std::pair<double, double>(const Mat<Rational>&)>;
 PathDualBuild build_path_dual(const Mat<Rational>& z, const Mat<Rational>& r, Eigen::Index L, const DeltaFormSolution& s,

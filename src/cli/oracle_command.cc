@@ -27,7 +27,7 @@ struct OracleArgs {
   uint64_t seed = 1;
   std::string cases_dir, report, junit;
   double run_timeout = 0;
-  bool strict = false, quiet = false;
+  bool strict = false, quiet = false, no_class_bound = false;
   OracleCaseOptions run;
   RandomCaseFlags random;
 };
@@ -142,6 +142,10 @@ Runner add_oracle_command(CLI::App& app) {
   cmd->add_option("--abs-tolerance", a->run.tolerance.absolute,
                   "absolute slack on the objective before an answer is 'suboptimal', beside --tolerance (1e-9)");
   cmd->add_flag("--strict", a->strict, "suboptimal answers fail the run too (exit 3, JUnit failures)");
+  cmd->add_flag("--no-class-bound", a->no_class_bound,
+                "identify cases: skip lpvid's class interval (the costly part at MIMO scale); a claim is then judged "
+                "only as the fixed model with its own theta, so a claim below every model of the class is not refuted "
+                "by a class certificate");
   cmd->add_flag("--quiet", a->quiet, "no progress lines on stderr");
   add_random_case_flags(*cmd, a->random);
   cmd->callback([cmd, a] {
@@ -154,6 +158,7 @@ Runner add_oracle_command(CLI::App& app) {
   return [cmd, a] {
     if (!cmd->parsed()) return -1;
     a->run.tolerance.relative = a->random.tolerance;  // --tolerance judges; it is also written to the tasks
+    a->run.class_bound = !a->no_class_bound;
     return run_oracle(*a);
   };
 }

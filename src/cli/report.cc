@@ -39,7 +39,8 @@ nlohmann::ordered_json bounds_json(const CertifiedBounds& b, const std::string& 
   }
   j["noise_normalisation"] = "rms: ||d||_2 <= dmax*sqrt(n*ny)";
   j["toeplitz_mode"] = toeplitz_mode;
-  j["solver"] = b.closed_form.empty() ? solver : b.closed_form;  // no solver ran for a closed form
+  // what produced the answer: a closed form (no solve), the structured barrier, or the SDP backend
+  j["solver"] = !b.closed_form.empty() ? b.closed_form : !b.solver_used.empty() ? b.solver_used : solver;
   j["certificate"] = b.verified() && !files.certificate.empty() ? nlohmann::ordered_json(files.certificate)
                                                                : nlohmann::ordered_json(nullptr);
   j["verified"] = b.verified();

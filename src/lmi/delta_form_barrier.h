@@ -90,6 +90,9 @@
 
 namespace lpvid {
 
+/// How reports and certificates name this solver (DeltaFormSolution::solver_used).
+inline constexpr const char* kStructuredBarrierName = "structured barrier";
+
 struct BarrierOptions {
   /// Stop when ν·μ ≤ rel_gap·|objective| (ν = 2L + N + 1). Not smaller: near
   /// the boundary C⁻¹ (the dual) loses accuracy, and the residual of the dual

@@ -67,6 +67,9 @@ struct DeltaFormSolution {
   /// the barrier's failure ("structured barrier: …"), after which the SDP
   /// backend solved the same program (lmi/delta_form_solve.h). Empty otherwise.
   std::string fallback;
+  /// What produced this answer: "structured barrier", or the SDP backend's
+  /// name (SdpSolver::name()) when it solved the program. Reports name it.
+  std::string solver_used;
   /// With free regressors G (lmi/free_regressors.h; length P, empty without):
   /// q = argmin ‖r − Δ∗z − G q‖ for the returned taps, minimum-norm in G's
   /// coordinates when G is rank deficient.

@@ -40,18 +40,22 @@ DeltaFormSolution solve_delta_form(const DeltaFormSignals& s, const BoundObjecti
   if (q.method == DeltaFormMethod::kStructured && q.taps == 0 && barrier_applies(s.z, s.r, objective)) {
     tell("solving Theorem 2.1 on the full horizon (" + std::to_string(L) + " taps) with the structured barrier");
     DeltaFormSolution fast = solve_delta_form_barrier(s.z, s.r, objective, {}, q.free_regressors, s.records);
+    fast.solver_used = kStructuredBarrierName;
     if (fast.solve.status != SolveStatus::kBackendError) return fast;
     tell(fast.solve.message + "; solving again with " + solver.name());
     DeltaFormSolution slow = solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors, s.records);
     slow.solve.message += (slow.solve.message.empty() ? "" : "; ") + fast.solve.message + " (fell back to " + solver.name() + ")";
     slow.solve.seconds += fast.solve.seconds;
     slow.fallback = fast.solve.message;
+    slow.solver_used = solver.name();
     return slow;
   }
   tell("solving Theorem 2.1 with " + solver.name() + " (" + (q.taps == 0 ? std::to_string(L) : std::to_string(q.taps)) +
        " taps" + (kyp ? ", KYP" : "") + ")");
-  return kyp ? solve_kyp(s, objective, q, solver)
-             : solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors, s.records);
+  DeltaFormSolution out = kyp ? solve_kyp(s, objective, q, solver)
+                              : solve_delta_form(s.z, s.r, objective, solver, q.solver, q.taps, q.free_regressors, s.records);
+  out.solver_used = solver.name();
+  return out;
 }
 
 }  // namespace lpvid

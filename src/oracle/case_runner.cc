@@ -263,7 +263,7 @@ CaseReport run_oracle_case(const CaseCopy& copy, const OracleCaseOptions& o) {
   IdentifiedReference identified;
   CertifiedBounds b;
   if (identify)
-    identified = identify_reference(in, co, *solver, mine.string(), s.held);
+    identified = identify_reference(in, co, *solver, mine.string(), s.held, o.class_bound);
   else
     b = certify_fixed(in.model_q, in.exp_q, ToeplitzMode::kSignal, co, *solver);
   rep.lpvid_seconds = case_seconds_since(started);

@@ -51,6 +51,9 @@ struct OracleCaseOptions {
   double case_timeout = 120;    ///< seconds for the outside command
   std::string solver = "csdp";  ///< lpvid's own solver
   JudgeTolerance tolerance;     ///< from the command line only
+  /// identify cases: compute lpvid's class interval (--no-class-bound: no;
+  /// claims are then judged as the fixed model with their θ only).
+  bool class_bound = true;
 };
 
 /// Runs and judges one case (copies written as above).

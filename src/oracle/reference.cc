@@ -31,7 +31,7 @@ ClassReference class_reference(const ClassInterval& ci, const std::filesystem::p
 }  // namespace
 
 IdentifiedReference identify_reference(const Problem& problem, const CertifyOptions& certify, SdpSolver& solver,
-                                       const std::string& folder, WrittenFiles& written) {
+                                       const std::string& folder, WrittenFiles& written, bool class_bound) {
   IdentifiedReference ref;
   IdentifyOptions opt;
   opt.objective = certify.objective;
@@ -43,12 +43,16 @@ IdentifiedReference identify_reference(const Problem& problem, const CertifyOpti
     ref.klass.reason = "lpvid's own identification was not certified";
     return ref;
   }
-  ClassBoundOptions cbo;
-  cbo.unknowns = opt.unknowns;
   const std::filesystem::path dir(folder);
-  ClassInterval ci = class_interval(id, problem, co, cbo, solver);
-  adopt_class_optimum(id, ci);
-  ref.klass = class_reference(ci, dir, written);
+  if (class_bound) {
+    ClassBoundOptions cbo;
+    cbo.unknowns = opt.unknowns;
+    ClassInterval ci = class_interval(id, problem, co, cbo, solver);
+    adopt_class_optimum(id, ci);
+    ref.klass = class_reference(ci, dir, written);
+  } else {
+    ref.klass.reason = "not computed (--no-class-bound)";
+  }
   ref.verified = true;
   ref.dmax2 = id.bounds.dmax2;
   ref.certificate = write_certificates(id.bounds, (dir / "lpvid.identify.cert.json").string(), &written).certificate;

@@ -32,7 +32,9 @@ struct IdentifiedReference {
 /// class lower end, the certificates written to `folder` as
 /// lpvid.identify.cert.json and lpvid.class.json, their bytes added to
 /// `written`.
+/// With `class_bound` false no class interval is computed (no
+/// lpvid.class.json; the class reference says why).
 IdentifiedReference identify_reference(const Problem& problem, const CertifyOptions& certify, SdpSolver& solver,
-                                       const std::string& folder, WrittenFiles& written);
+                                       const std::string& folder, WrittenFiles& written, bool class_bound = true);
 
 }  // namespace lpvid

@@ -1,14 +1,17 @@
 // Portable acceptance of compact dual certificates (docs/dual_certificates.md,
 // "Portable acceptance"): a verifier compiled elsewhere rebuilds the floating
 // U = μ(t·I − TTᵀ)⁻¹ with other last bits. The builder promises acceptance
-// for every rebuild U' with ‖U' − U‖₂ ≤ ε·‖U‖₂, ε = kPathDualRebuildTolerance.
+// for every rebuild U' with ‖U' − U‖_F ≤ ε·‖U‖_F, ε = kPathDualRebuildTolerance.
 // Known answers by construction:
-//  - U' = U ± k·I and U' = U + (k/P)·S (S a symmetric sign matrix, so
-//    ‖(k/P)·S‖₂ ≤ k), k the largest whole number of grid units within ε‖U‖₂,
-//    lie in that class: the certificate must still hold on them (k·I moves
-//    the correction E by exactly k·‖T‖_F, the worst case of the margin);
-//  - t and μ moved by a few ulps give a U' that lies in the class whenever
-//    ‖U' − U‖₂ ≤ ε‖U‖₂ (measured here): then it must hold too;
+//  - U' = U ± (k/√P)·I, U' = U + (k/P)·S (S a symmetric sign matrix),
+//    U' = U + (k/P)·ssᵀ (s a sign vector) and U' = U + c·vvᵀ (v the top
+//    eigenvector of U, the direction in which a floating inverse of the
+//    nearly singular t·I − TTᵀ errs most), each of Frobenius norm at most k,
+//    k the largest whole number of grid units within ε‖U‖_F, lie in that
+//    class: the certificate must still hold on them;
+//  - t moved by up to ±kPathDualTMoveUlps ulps (the builder rebuilt U from
+//    those and covers them) and μ by ±1, ±3 ulps (U scaled by 1 ± k·u, inside
+//    the class): the certificate must hold on each rebuild too;
 //  - a claim that is false stays rejected on every such U': a lower end
 //    above the certified upper end (the truth of the primal certificate), and
 //    "invalidated" moved to the data's true (δ, d_max), where the model is
@@ -37,22 +40,34 @@ namespace {
 
 using namespace gen;
 
-/// ‖U‖₂ of the exact grid matrix Ũ·2^e (symmetric), from below (the class is then only smaller).
-double spectral_norm_below(const Mat<double>& U_grid, long e) {
-  Eigen::SelfAdjointEigenSolver<Mat<double>> es(U_grid, Eigen::EigenvaluesOnly);
-  return std::ldexp(es.eigenvalues().cwiseAbs().maxCoeff(), static_cast<int>(e)) * (1 - 1e-6);
+/// ‖U‖_F of the exact grid matrix Ũ·2^e, from below (the class is then only smaller).
+double frobenius_norm_below(const Mat<double>& U_grid, long e) {
+  return std::ldexp(U_grid.norm(), static_cast<int>(e)) * (1 - 1e-6);
 }
 
-/// The rebuilds of the class: U ± k·I and U + (k/P)·S, in whole grid units.
+/// The rebuilds of the class, in whole grid units, each of Frobenius norm at most k.
 std::vector<Mat<double>> rebuilds_within_tolerance(const Mat<double>& U_grid, long e) {
   const Eigen::Index P = U_grid.rows();
-  const double k = std::floor(std::ldexp(kPathDualRebuildTolerance * spectral_norm_below(U_grid, e), static_cast<int>(-e)));
+  const double k = std::floor(std::ldexp(kPathDualRebuildTolerance * frobenius_norm_below(U_grid, e), static_cast<int>(-e)));
+  const double Pd = static_cast<double>(P);
   const Mat<double> I = Mat<double>::Identity(P, P);
+  const double diagonal = std::floor(k / std::sqrt(Pd));  // ‖diagonal·I‖_F = diagonal·√P ≤ k
+  const double per_entry = std::floor(k / Pd);            // ‖per_entry·S‖_F = P·per_entry ≤ k
   Mat<double> S(P, P);
-  const double per_entry = std::floor(k / static_cast<double>(P));  // ‖per_entry·S‖₂ ≤ P·per_entry ≤ k
-  for (Eigen::Index i = 0; i < P; ++i)
+  Vec<double> sign(P);
+  for (Eigen::Index i = 0; i < P; ++i) {
+    sign(i) = *rc::gen::arbitrary<bool>() ? 1 : -1;
     for (Eigen::Index j = i; j < P; ++j) S(i, j) = S(j, i) = per_entry * (*rc::gen::arbitrary<bool>() ? 1 : -1);
-  return {U_grid + k * I, U_grid - k * I, U_grid + S};
+  }
+  std::vector<Mat<double>> out{U_grid + diagonal * I, U_grid - diagonal * I, U_grid + S,
+                               U_grid + per_entry * sign * sign.transpose()};
+  // c·vvᵀ rounded to whole units: the rounding adds at most P/2 in Frobenius norm.
+  if (const double c = k - Pd; c > 0) {
+    Eigen::SelfAdjointEigenSolver<Mat<double>> es(U_grid);
+    const Vec<double> v = es.eigenvectors().col(P - 1);
+    for (double side : {1.0, -1.0}) out.push_back(U_grid + (side * c * v * v.transpose()).array().round().matrix());
+  }
+  return out;
 }
 
 struct Checked {
@@ -89,17 +104,19 @@ void check_portable(const Checked& genuine, const Checked& forged) {
     RC_ASSERT(holds_on(genuine, U));
     RC_ASSERT(!holds_on(forged, U));
   }
-  const double norm = spectral_norm_below(grid.U, p.u_exponent);
-  for (int ulps : {-3, -1, 1, 3})
+  // t moved by up to kPathDualTMoveUlps ulps: the builder rebuilt U from ±4 and covers
+  // them (and, E being nearly linear in t, the moves between); μ moved by a few
+  // ulps scales U by 1 ± k·u, inside the Frobenius class. Each rebuild is U' on the
+  // certificate's own grid, as a verifier computes it from the moved recipe.
+  for (int ulps : {-kPathDualTMoveUlps, -3, -1, 1, 3, kPathDualTMoveUlps})
     for (bool move_t : {true, false}) {
+      if (!move_t && std::abs(ulps) == kPathDualTMoveUlps) continue;
       Checked m = genuine;
       (move_t ? m.c.dual.path.t : m.c.dual.path.mu) = moved(move_t ? p.t : p.mu, ulps);
       const PathDualGrid moved_grid = path_dual_grid(m.c.dual.path, m.c.model.ny, m.c.model.nz());
-      RC_ASSERT(moved_grid.problem.empty());
-      const Mat<double> D = moved_grid.U - grid.U;
-      const double change = std::ldexp(Eigen::SelfAdjointEigenSolver<Mat<double>>(D, Eigen::EigenvaluesOnly)
-                                           .eigenvalues().cwiseAbs().maxCoeff(), static_cast<int>(p.u_exponent));
-      if (change <= kPathDualRebuildTolerance * norm) RC_ASSERT(holds_on(genuine, moved_grid.U));
+      if (!moved_grid.problem.empty()) continue;  // t·I − TTᵀ not definite after the move: no rebuild to check
+      RC_ASSERT(holds_on(genuine, moved_grid.U));
+      RC_ASSERT(!holds_on(forged, moved_grid.U));
     }
 }
 

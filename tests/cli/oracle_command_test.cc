@@ -6,6 +6,7 @@
 // with small records so that the run stays short.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <map>
 #include <string>
 
@@ -174,6 +175,25 @@ TEST_F(Oracle, IdentifyClaimsBelowTheClassLowerEndAreRefutedByTheClassCertificat
     }
     expect_refutations_verified(report);
   }
+}
+
+TEST_F(Oracle, WithoutTheClassBoundAClaimIsJudgedOnItsOwnThetaOnly) {
+  // --no-class-bound: no class interval, no lpvid.class.json; a claim too good
+  // by 5 % in d_max with lpvid's own θ is still refuted, by that fixed model's
+  // lower end (a dual certificate, not a class one)
+  write_identify_cases(file("additive_no_class"), true, 2);
+  const std::string cases = " --cases-dir " + file("additive_no_class") + " --no-class-bound";
+  nlohmann::json report;
+  EXPECT_EQ(oracle("scaled", cases, report), 1) << output();
+  EXPECT_EQ(verdicts(report)["refuted"], 2) << report.dump(1);
+  for (const auto& c : report["cases"]) {
+    EXPECT_FALSE(c["class_lower_end"]["verified"].get<bool>()) << c.dump();
+    EXPECT_NE(c["class_lower_end"]["reason"].get<std::string>().find("--no-class-bound"), std::string::npos) << c.dump();
+    EXPECT_EQ(c["certificate_check"].get<std::string>().find("class_lower_bound"), std::string::npos) << c.dump();
+  }
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(file("scaled")))
+    EXPECT_NE(entry.path().filename(), "lpvid.class.json") << entry.path();
+  expect_refutations_verified(report);
 }
 
 TEST_F(Oracle, ABoxClassCertificateDoesNotRefuteAThetaOutsideItsBox) {
