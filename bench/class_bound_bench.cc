@@ -14,6 +14,7 @@
 // exact verifier (check_certificate_file, as `lpvid-verify certificate`).
 // Times are wall and CPU (std::clock) seconds. Prints a table; not a test.
 // Usage: class_bound_bench [max_n=400] [structures=additive,multiplicative] [leaves=31] [box=0.01]
+//                          [systems=SISO,2x2] [sizes=100,200,400]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -241,6 +242,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> structures = split(argc > 2 ? argv[2] : "additive,multiplicative");
   const int leaves = argc > 3 ? std::atoi(argv[3]) : 31;
   const double box = argc > 4 ? std::atof(argv[4]) : 0.01;
+  const std::vector<std::string> systems = split(argc > 5 ? argv[5] : "SISO,2x2");
+  const std::vector<std::string> sizes = split(argc > 6 ? argv[6] : "100,200,400");
   const auto dir = std::filesystem::temp_directory_path() / "lpvid_class_bound_bench";
   std::filesystem::create_directories(dir);
   std::printf("Class interval [L_class, U] of Theorem 3.1 (alternating identify, objective 0.5 delta^2 + 0.5 dmax^2); data "
@@ -248,8 +251,9 @@ int main(int argc, char** argv) {
               kDelta, kDmax, 0.5 * kDelta * kDelta + 0.5 * kDmax * kDmax, leaves, box);
   print_header();
   for (const std::string& s : structures)
-    for (int m : {1, 2})
-      for (int n : {100, 200, 400}) {
+    for (const std::string& sys : systems)
+      for (const std::string& size : sizes) {
+        const int m = sys == "2x2" ? 2 : 1, n = std::stoi(size);
         if (n > max_n) continue;
         const UncertaintyStructure st = s == "additive" ? UncertaintyStructure::kAdditive : UncertaintyStructure::kMultiplicative;
         std::fprintf(stderr, "row %s %s n=%d\n", s.c_str(), m == 1 ? "SISO" : "2x2", n);

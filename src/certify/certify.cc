@@ -204,6 +204,7 @@ struct CertifyRun {
   SdpSolver& solver;
   bool kyp = false, feasibility = false;
   long K = 0;  ///< taps of the first solve; 0: the full horizon
+  const DeltaFormSolution* given = nullptr;  ///< the first solve, done by the caller (certify_fixed_model_from)
 
   /// One solve: K taps (0: full horizon), KYP or not, with dual matrices when wanted.
   DeltaFormSolution solve(long taps, bool kyp_form, bool want_dual) const {
@@ -333,7 +334,8 @@ void bracket_optimum(const CertifyRun& run, const DeltaFormSolution& first, Cert
 /// upper end), then the lower end, or the verdict at fixed bounds.
 CertifiedBounds certify_by_solving(const CertifyRun& run) {
   CertifiedBounds out;
-  const DeltaFormSolution first = run.solve(run.K, run.kyp, run.o.lower_end && !run.kyp && !run.feasibility);
+  const DeltaFormSolution first =
+      run.given ? *run.given : run.solve(run.K, run.kyp, run.o.lower_end && !run.kyp && !run.feasibility);
   certify_upper_end(run, first, out);
   out.full_horizon = run.K == 0;
   if (run.feasibility) decide_fixed_bounds(run, first, out);
@@ -345,8 +347,11 @@ CertifiedBounds certify_by_solving(const CertifyRun& run) {
 
 }  // namespace
 
-CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
-                                    const CertifyOptions& options, SdpSolver& solver) {
+namespace {
+
+/// certify_fixed_model, with the first solve `given` when it fits the run (else solved).
+CertifiedBounds certify_fixed_model_run(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
+                                        const CertifyOptions& options, SdpSolver& solver, const DeltaFormSolution* given) {
   const Stopwatch total;
   // 1. Exact signals, and their doubles once.
   const ExactSignals es = exact_signals(model, exp_in);
@@ -367,6 +372,9 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   // The structured full-horizon solve is cheaper than a K-tap SDP and exact for the horizon.
   const bool structured = run.o.structured && !run.kyp && barrier_applies(Mat<double>::Ones(1, 1), Mat<double>::Ones(1, 1), run.objective);
   run.K = !structured && run.o.max_taps > 0 && run.o.max_taps < es.horizon ? run.o.max_taps : 0;
+  if (given && !options.scale_signals && structured && run.K == 0 && !run.feasibility && run.o.lower_end && given->horizon == es.horizon &&
+      given->taps.cols() == model.ny * model.nz())
+    run.given = given;
 
   // δ = 0 and the other degenerate objectives: exact, at once, no solve (certify/closed_form.h); else 2–6.
   std::optional<CertifiedBounds> closed = certify_closed_form({model, es.exp, es.r, es.horizon, ToeplitzMode::kSignal}, run.o);
@@ -376,6 +384,23 @@ CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Exper
   out.total_seconds = total.seconds();
   out.outcome = outcome_of(out, options.objective);
   return out;
+}
+
+}  // namespace
+
+CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,
+                                    const CertifyOptions& options, SdpSolver& solver) {
+  return certify_fixed_model_run(model, exp_in, options, solver, nullptr);
+}
+
+CertifiedBounds certify_fixed_model_from(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                         const CertifyOptions& options, SdpSolver& solver,
+                                         const DeltaFormSolution& solution) {
+  CertifiedBounds b = certify_fixed_model_run(model, exp, options, solver, &solution);
+  if (b.verified() && b.lower.verified()) return b;
+  CertifiedBounds solved = certify_fixed_model(model, exp, options, solver);
+  add_stage_seconds(solved, b);  // the first attempt's checks took time too
+  return solved;
 }
 
 CertifiedBounds certify_with_taps(const LpvModel<Rational>& model, const Experiment<Rational>& exp_in,

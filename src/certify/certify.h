@@ -35,6 +35,7 @@
 #include "certify/bound_scaling.h"
 #include "certify/certify_types.h"
 #include "lmi/bound_objective.h"
+#include "lmi/delta_form_lmi.h"
 #include "model/lpv_model.h"
 #include "model/simulate.h"
 #include "solvers/sdp_solver.h"
@@ -56,6 +57,17 @@ CertifyOptions in_original_units(const CertifyOptions& options, const LpvModel<R
 /// is verified = false with the reason); throws InputError for bad input.
 CertifiedBounds certify_fixed_model(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
                                     const CertifyOptions& options, SdpSolver& solver);
+
+/// certify_fixed_model with its solve already done: `solution` is a
+/// full-horizon structured solve of this model's program for this objective
+/// (e.g. the class optimum's, class_lower_bound, whose free parameters are this
+/// model's: its central point is this model's too). Its primal gives the upper
+/// end and its dual point the lower end, both checked exactly as always; when
+/// either does not certify, or the solution does not fit (another horizon, a
+/// fixed δ or d_max, KYP or the SDP), this is certify_fixed_model.
+CertifiedBounds certify_fixed_model_from(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                         const CertifyOptions& options, SdpSolver& solver,
+                                         const DeltaFormSolution& solution);
 
 /// Steps 3–6 for GIVEN floating taps (K × ny·nz, row l = h_l row-major),
 /// e.g. the Δ of an alternating-identification iterate: no solve. The

@@ -228,6 +228,14 @@ std::vector<std::pair<PathDualRecipe, PathDualSums>> moved_rebuilds(const PathDu
   return out;
 }
 
+/// Each moved rebuild's residual sums (step 2 of the compact form) for the same C.
+std::vector<PathDualResidual> residuals_of(const std::vector<std::pair<PathDualRecipe, PathDualSums>>& moved,
+                                           const Mat<Rational>& C) {
+  std::vector<PathDualResidual> out;
+  for (const auto& [m, m_sums] : moved) out.push_back(path_dual_residual(m, m_sums, C));
+  return out;
+}
+
 /// The recipe with its taps padded by zero rows up to the horizon L (a centre
 /// whose z has more leading zeros than the class's horizon).
 PathDualRecipe padded_recipe(const DeltaFormSolution& s, double scale, Eigen::Index L) {
@@ -285,23 +293,30 @@ PathDualBuild build_path_dual(const Mat<Rational>& z, const Mat<Rational>& r, Ei
   if (!grid.problem.empty()) return b.problem = grid.problem, b;
   const PathDualSums sums = path_dual_sums(recipe, grid.U, ny, nz);
   if (!sums.problem.empty()) return b.problem = sums.problem, b;
+  // The exact sums are formed once per U (main and moved) and once for g; x and σ only enter the terms.
   const Mat<Rational> C = fir_adjoint_records(b.g_effective, z, L, records);
-  b.value = path_dual_value(recipe, sums, C, b.g_effective, Rational(1), r, ny, nz);
+  const GProducts gp = g_products(b.g_effective, r);
+  const PathDualResidual res = path_dual_residual(recipe, sums, C);
+  const auto value_at = [&](const PathDualRecipe& at, const PathDualSums& at_sums, const PathDualResidual& at_res,
+                            const Rational& sigma) {
+    return PathDualValue{at_res.E_norm2, path_dual_terms(at, at_sums, at_res, gp, sigma, N, nz)};
+  };
   b.margin = rebuild_margin(recipe, grid);
   // x covers the largest E among the recipe's U and the moved rebuilds (E depends on neither x nor σ).
   auto moved = moved_rebuilds(recipe, ny, nz);
-  Rational E_norm2 = b.value.E_norm2;
-  for (const auto& [m, m_sums] : moved)
-    E_norm2 = std::max(E_norm2, path_dual_value(m, m_sums, C, b.g_effective, Rational(1), r, ny, nz).E_norm2);
+  const std::vector<PathDualResidual> moved_res = residuals_of(moved, C);
+  Rational E_norm2 = res.E_norm2;
+  for (const PathDualResidual& m : moved_res) E_norm2 = std::max(E_norm2, m.E_norm2);
   if (std::string why = prove_floor(recipe, grid, E_norm2, b.margin); !why.empty()) return b.problem = why, b;
-  b.value = path_dual_value(recipe, sums, C, b.g_effective, Rational(1), r, ny, nz);
+  b.value = value_at(recipe, sums, res, Rational(1));
   const Rational sigma = sigma_for(b, r, s, claim, fixed, sigma_shift);
   if (!(sigma > 0)) return b.problem = "no positive sigma", b;
-  b.value = path_dual_value(recipe, sums, C, b.g_effective, sigma, r, ny, nz);
-  for (auto& [m, m_sums] : moved) {
+  b.value = value_at(recipe, sums, res, sigma);
+  for (size_t k = 0; k < moved.size(); ++k) {
+    auto& [m, m_sums] = moved[k];
     m.x = recipe.x;
     m.floor = recipe.floor;
-    b.moved_terms.push_back(path_dual_value(m, m_sums, C, b.g_effective, sigma, r, ny, nz).terms);
+    b.moved_terms.push_back(value_at(m, m_sums, moved_res[k], sigma).terms);
   }
   b.point.horizon = L;
   b.point.g = std::move(gs.g);

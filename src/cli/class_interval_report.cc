@@ -21,6 +21,11 @@ void add_class_interval_options(CLI::App* cmd, ClassIntervalArgs& a) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--class-leaves", a.leaves, with_default("leaves of the class bound's branch and bound", a.leaves))
       ->check(CLI::Range(1, 4095));
+  cmd->add_option("--class-stall", a.stall,
+                  with_default("stop branching after this many successive splits that did not raise the lowest leaf's "
+                               "bound (0: split to --class-leaves)",
+                               a.stall))
+      ->check(CLI::Range(0, 4095));
 }
 
 std::string class_certificate_path(const std::string& certificate_path) {

@@ -16,6 +16,7 @@ struct ClassIntervalArgs {
   bool skip = false;                                  ///< --no-class-bound
   double box = ClassBoundOptions{}.box_fraction;      ///< --class-box
   int leaves = ClassBoundOptions{}.max_leaves;        ///< --class-leaves
+  int stall = ClassBoundOptions{}.stall_splits;       ///< --class-stall
 };
 void add_class_interval_options(CLI::App* cmd, ClassIntervalArgs& a);
 

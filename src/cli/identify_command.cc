@@ -162,6 +162,7 @@ int run_identify(IdentifyArgs& a) {
     cbo.unknowns = opt.unknowns;
     cbo.box_fraction = a.class_interval.box;
     cbo.max_leaves = a.class_interval.leaves;
+    cbo.stall_splits = a.class_interval.stall;
     klass = class_interval(id, in, co, cbo, *solver);
     adopt_class_optimum(id, *klass);  // the class optimum, when certified lower, replaces the found theta
   }

@@ -7,6 +7,7 @@
 #include "core/deadline.h"
 #include "core/decimal_rounding.h"
 #include "core/number_text.h"
+#include "core/stopwatch.h"
 #include "lmi/delta_form_barrier.h"
 #include "model/simulate.h"
 #include "toeplitz/signal_toeplitz.h"
@@ -24,6 +25,7 @@ struct TreeNode {
   Vec<Rational> cost_radius;  ///< the radii leaf.cost was computed for (an inherited leaf: its parent's)
   int source = -1;            ///< the node whose dual point this leaf carries (−1: its own)
   Vec<double> p;          ///< the solve's parameters (free ones from the solver)
+  std::shared_ptr<const DeltaFormSolution> solution;  ///< kept when every parameter is free (one leaf)
   double objective = 0;   ///< the solver's objective there
 };
 
@@ -35,7 +37,13 @@ struct Search {
   BoundObjective objective;
   DualClaim claim;
   FixedValues fixed;
+  std::function<void(const std::string&)> progress;  ///< stage lines with their times (may be empty)
 };
+
+/// "what in X s" on the progress line, when there is one.
+void tell(const Search& q, const std::string& what, const Stopwatch& since) {
+  if (q.progress) q.progress("class bound: " + what + " in " + double_to_text(std::round(since.seconds() * 10) / 10) + " s");
+}
 
 Vec<double> to_double(const Vec<Rational>& v) {
   Vec<double> d(v.size());
@@ -46,9 +54,10 @@ Vec<double> to_double(const Vec<Rational>& v) {
 /// Solves the leaf's centre with the free parameters as free regressors and
 /// builds its dual point. `problem` set when either fails.
 std::string evaluate(const Search& q, TreeNode& node) {
+  const Stopwatch solve_time;
   const Vec<double> c = to_double(node.center);
   const Mat<double> z = unstack_rows(q.a.z(c), q.a.nz), r = unstack_rows(q.a.r(c), q.a.ny);
-  const DeltaFormSolution sol = solve_delta_form_barrier(z, r, q.objective, BarrierOptions{}, q.free_columns, q.a.records);
+  DeltaFormSolution sol = solve_delta_form_barrier(z, r, q.objective, BarrierOptions{}, q.free_columns, q.a.records);
   const bool answered = has_solution(sol.solve.status) ||
                         (q.claim == DualClaim::kInvalidated && sol.solve.status == SolveStatus::kPrimalInfeasible);
   if (!answered) return "the structured solver gave no answer at a leaf's centre: " + sol.solve.message;
@@ -57,8 +66,12 @@ std::string evaluate(const Search& q, TreeNode& node) {
   node.p = c;
   for (size_t k = 0; k < q.s.free.size(); ++k) node.p(q.s.free[k]) = sol.free_coefficients(static_cast<Eigen::Index>(k));
   node.objective = q.objective.value(sol.delta2, sol.dmax2);
+  tell(q, "a leaf's centre solved", solve_time);
+  const Stopwatch build_time;
   node.leaf = build_class_leaf(q.s, node.center, node.radius, sol, q.claim, q.fixed);
   node.cost_radius = node.radius;
+  if (q.s.boxed.empty()) node.solution = std::make_shared<const DeltaFormSolution>(std::move(sol));
+  tell(q, "its dual point built and bounded exactly", build_time);
   return node.leaf.problem;
 }
 
@@ -170,8 +183,10 @@ std::vector<long> free_parameters(const AffineResidual<Rational>& a) {
 /// leaf budget is spent or nothing can be split. Empty string, or why a leaf failed.
 std::string branch_and_bound(const Search& q, const ClassBoundOptions& o, std::vector<TreeNode>& tree,
                              const std::function<void(const std::string&)>& progress) {
-  int leaves = 1;
-  while (leaves < o.max_leaves) {
+  // a lower end stops after stall_splits splits without progress; an invalidation uses its whole budget
+  const int stall_limit = q.claim == DualClaim::kInvalidated ? 0 : o.stall_splits;
+  int leaves = 1, stalled = 0;
+  while (leaves < o.max_leaves && (stall_limit <= 0 || stalled < stall_limit)) {
     check_deadline("the class bound was branching");  // the user's --timeout or a requested stop, between leaves
     const int at = lowest_leaf(tree);
     const double low = nearest_double(tree[at].leaf.bound);
@@ -179,6 +194,7 @@ std::string branch_and_bound(const Search& q, const ClassBoundOptions& o, std::v
     if (q.s.boxed.empty() || (q.claim == DualClaim::kInvalidated && low > 0)) break;
     if (std::string why = split(q, tree, at); !why.empty()) return why == "no coordinate left to split" ? "" : why;
     ++leaves;
+    stalled = tree[lowest_leaf(tree)].leaf.bound > tree[at].leaf.bound ? 0 : stalled + 1;
     if (progress)
       progress("class bound: " + std::to_string(leaves) + " leaves, lowest " + double_to_text(nearest_double(tree[lowest_leaf(tree)].leaf.bound)));
   }
@@ -216,7 +232,9 @@ std::string certify_tree(const LpvModel<Rational>& model_q, const Experiment<Rat
   c.info["tool"] = "lpvid";
   c.info["objective"] = certify.objective.describe();
   c.info["box_fraction"] = o.box_fraction;
+  const Stopwatch check_time;
   const CertificateVerdict v = check_round_trip(c, exp_q, "the class certificate (in memory)");
+  tell(q, "the class certificate checked exactly", check_time);
   if (!v.holds) return "the class certificate failed the exact check: " + v.reason;
   out.lower = c.lower_bound;
   out.certificate = std::move(c);
@@ -229,6 +247,7 @@ ClassBoundResult class_lower_bound(const Problem& problem, const Vec<double>& fo
                                    const ClassBoundOptions& o) {
   const auto& [model_q, model_d, exp_q, exp_d] = problem;
   const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch signals_time;
   ClassBoundResult out;
   const auto done = [&](std::string reason) {
     out.reason = std::move(reason);
@@ -242,10 +261,11 @@ ClassBoundResult class_lower_bound(const Problem& problem, const Vec<double>& fo
   const std::vector<long> free = free_parameters(aq);
   ClassSignals s;
   if (std::string why = class_signals(std::move(aq), free, s); !why.empty()) return done(why);
+  if (certify.progress) certify.progress("class bound: affine signals (double and exact) in " + double_to_text(std::round(signals_time.seconds() * 10) / 10) + " s");
   if (found_p.size() != a.num_params()) return done("the identified parameters do not fit the class's layout");
   const DualClaim claim = claim_of(certify.objective);
   Search q{s, a, Mat<double>(a.Jr.rows(), static_cast<Eigen::Index>(free.size())), certify.objective, claim,
-           fixed_values(certify, claim)};
+           fixed_values(certify, claim), certify.progress};
   for (size_t k = 0; k < free.size(); ++k) q.free_columns.col(static_cast<Eigen::Index>(k)) = a.Jr.col(free[k]);
   out.free = free;
   out.names = a.names;
@@ -259,6 +279,7 @@ ClassBoundResult class_lower_bound(const Problem& problem, const Vec<double>& fo
   const TreeNode& low = tree[lowest_leaf(tree)];
   out.best_p = low.p;
   out.best_objective = low.objective;
+  out.best_solution = low.solution;
   std::string why = certify_tree(model_q, exp_q, q, certify, o, tree, out);
   if (out.certificate) {
     out.leaves = 0;

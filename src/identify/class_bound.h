@@ -16,6 +16,7 @@
 /// coordinate whose half-width costs most) until the lowest leaf reaches the
 /// stopping gap or the leaf budget, counted in leaves, never in time.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,14 @@ struct ClassBoundOptions {
   /// fraction of ‖z(θ̂)‖ on its own, ρ_i = fraction·‖z(θ̂)‖/‖Jz_i‖.
   double box_fraction = 0.01;
   int max_leaves = 31;          ///< leaves of the branch-and-bound tree
+  /// A lower end (not an invalidation, which always splits to its budget)
+  /// stops splitting after this many successive splits that did not raise the
+  /// lowest leaf's bound (0: split to max_leaves). Many boxed coordinates
+  /// need many splits before a child beats its parent's inherited point: on
+  /// the generated 2-state systems (bench/README.md, class_bound_bench) the
+  /// lowest leaf rose after at most 2 such splits and never after 3, while
+  /// every further leaf cost one structured solve.
+  int stall_splits = 4;
   double stop_rel_gap = 0.01;   ///< stop splitting when the lowest leaf is within this of `upper`
   double upper = 0;             ///< the certified upper end it is compared with (0: split to the budget)
 };
@@ -66,6 +75,10 @@ struct ClassBoundResult {
   /// (whole_class) this is the class optimum.
   Vec<double> best_p;
   double best_objective = 0;         ///< the solver's objective there (not certified)
+  /// whole_class: the solve at best_p (its central point is the fixed
+  /// model's at best_p too: certify_fixed_model_from), so that the optimum
+  /// is certified without a second solve.
+  std::shared_ptr<const DeltaFormSolution> best_solution;
 };
 
 /// `found_p` is the identified θ (layout of the affine residual for

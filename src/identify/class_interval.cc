@@ -25,8 +25,10 @@ ClassInterval class_interval(const IdentifiedModel& id, const Problem& problem, 
   if (out.bound.whole_class && out.bound.best_p.size() == id.fixed.value.size() &&
       out.bound.best_objective < options.upper) {
     FixedParameters optimum = fix_parameters(model_q, id.fit.layout, out.bound.best_p, certify.digits, exp_q.record_x0);
-    CertifiedBounds b =
-        certify_identified(optimum.model, with_fixed_initial_states(exp_q, optimum), Mat<double>(), certify, solver);
+    const Experiment<Rational> exp = with_fixed_initial_states(exp_q, optimum);
+    CertifiedBounds b = out.bound.best_solution
+                            ? certify_fixed_model_from(optimum.model, exp, certify, solver, *out.bound.best_solution)
+                            : certify_identified(optimum.model, exp, Mat<double>(), certify, solver);
     if (b.verified() && b.upper < id.bounds.upper) out.better = ClassOptimum{std::move(optimum), std::move(b)};
   }
   const double U = nearest_double(out.better ? out.better->bounds.upper : id.bounds.upper);

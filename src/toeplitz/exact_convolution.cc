@@ -4,53 +4,11 @@
 #include <memory>
 
 #include "core/gmp_raii.h"
+#include "core/integer_form.h"
 #include "core/stop_request.h"
 #include "toeplitz/record_lengths.h"
 
 namespace lpvid {
-namespace {
-
-/// A rational matrix as integer numerators over one common denominator.
-struct IntegerForm {
-  Eigen::Index rows = 0, cols = 0;
-  MpzArray num;
-  Mpz den;
-  explicit IntegerForm(const Mat<Rational>& m) : rows(m.rows()), cols(m.cols()), num(static_cast<std::size_t>(m.size())) {}
-  mpz_srcptr at(Eigen::Index i, Eigen::Index j) const { return num[static_cast<std::size_t>(i * cols + j)]; }
-};
-
-/// The integer form of `m`, or null when the common denominator has more
-/// than 4× the bits of the largest single denominator (+ 256 bits).
-std::unique_ptr<IntegerForm> integer_form(const Mat<Rational>& m) {
-  auto f = std::make_unique<IntegerForm>(m);
-  mpz_set_ui(f->den.z, 1);
-  std::size_t largest_bits = 1;
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    for (Eigen::Index j = 0; j < m.cols(); ++j) {
-      mpz_srcptr d = mpq_denref(m(i, j).mpq());
-      largest_bits = std::max(largest_bits, mpz_sizeinbase(d, 2));
-      if (!mpz_divisible_p(f->den.z, d)) mpz_lcm(f->den.z, f->den.z, d);
-    }
-  if (mpz_sizeinbase(f->den.z, 2) > 4 * largest_bits + 256) return nullptr;
-  Mpz scale;
-  for (Eigen::Index i = 0; i < m.rows(); ++i)
-    for (Eigen::Index j = 0; j < m.cols(); ++j) {
-      mpq_srcptr q = m(i, j).mpq();
-      mpz_divexact(scale.z, f->den.z, mpq_denref(q));
-      mpz_mul(f->num[static_cast<std::size_t>(i * m.cols() + j)], scale.z, mpq_numref(q));
-    }
-  return f;
-}
-
-/// sum / (a.den · b.den) as a reduced Rational.
-Rational over_product(mpz_srcptr sum, const IntegerForm& a, const IntegerForm& b, Mpq& q) {
-  mpz_set(mpq_numref(q.q), sum);
-  mpz_mul(mpq_denref(q.q), a.den.z, b.den.z);
-  mpq_canonicalize(q.q);
-  return Rational(q.q);
-}
-
-}  // namespace
 
 bool apply_fir_records_exact(const Mat<Rational>& taps, const Mat<Rational>& z, Eigen::Index ny, Eigen::Index horizon,
                              const std::vector<Eigen::Index>& lengths_in, Mat<Rational>& w) {

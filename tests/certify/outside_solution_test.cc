@@ -10,10 +10,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "certify/certify.h"
 #include "core/input_error.h"
 #include "data/csv_reader.h"
 #include "data/data_reference.h"
 #include "data/experiment_builder.h"
+#include "certify/certify.h"
 #include "certify/outside_solution.h"
 #include "model/model_file.h"
 #include "model/simulate.h"

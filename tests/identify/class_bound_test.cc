@@ -52,7 +52,7 @@ struct ClassRun {
 };
 
 ClassRun run_class(const IdentCase& c, const BoundObjective& objective, const Vec<double>& centre, ScratchDir& dir,
-                   int leaves = 7, double box = 0.01) {
+                   int leaves = 7, double box = 0.01, int stall = ClassBoundOptions{}.stall_splits) {
   const std::string data = dir.file("data.csv");
   write_experiment_csv(data, c.model, c.exp);
   const Experiment<double> exp_d = read_experiment(data, convert_model<double>(c.model));
@@ -62,6 +62,7 @@ ClassRun run_class(const IdentCase& c, const BoundObjective& objective, const Ve
   o.unknowns.offset = false;
   o.max_leaves = leaves;
   o.box_fraction = box;
+  o.stall_splits = stall;
   ClassRun run{class_lower_bound(Problem{c.model, convert_model<double>(c.model), c.exp, exp_d}, centre, co, o),
                dir.file("class.json")};
   if (run.result.certified()) write_certificate_at(*run.result.certificate, run.certificate_file);
@@ -178,6 +179,29 @@ TEST(ClassBound, AdditiveClassIntervalIsTightAndCertified) {
     write_certificate_at(*ci.bound.certificate, file);
     EXPECT_TRUE(check_certificate_file(file).holds);
   }
+}
+
+// The stall rule (ClassBoundOptions::stall_splits) only stops the same tree
+// earlier: the lowest leaf never falls when a leaf is split, so a run that
+// stops after one split without progress certifies at most what the run to
+// the full budget certifies, and both are certified together.
+TEST(ClassBound, StoppingAtAStallNeverCertifiesMoreThanTheFullBudget) {
+  int compared = 0, stopped = 0;
+  for (const IdentCase& c : cases_with(false, 6)) {
+    const Vec<double> truth = truth_parameters(c, Unknowns{true, false, false}, c.exp);
+    if (truth.size() == 0) continue;
+    ScratchDir dir("class-stall");
+    const ClassRun early = run_class(c, weighted_objective(0.5), truth, dir, 25, 0.01, 1);
+    const ClassRun full = run_class(c, weighted_objective(0.5), truth, dir, 25, 0.01, 0);
+    ASSERT_EQ(early.result.certified(), full.result.certified()) << early.result.reason << " / " << full.result.reason;
+    if (!full.result.certified()) continue;
+    EXPECT_LE(early.result.lower, full.result.lower);
+    EXPECT_LE(early.result.leaves, full.result.leaves);
+    stopped += early.result.leaves < full.result.leaves ? 1 : 0;
+    ++compared;
+  }
+  EXPECT_GT(compared, 0) << "no multiplicative case was certified";
+  EXPECT_GT(stopped, 0) << "the stall rule stopped no case early: the comparison says nothing";
 }
 
 /// A multiplicative case's class certificate with a split tree.

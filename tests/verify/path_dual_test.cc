@@ -88,8 +88,10 @@ RC_GTEST_PROP(PathDual, CompactSumsEqualTheDenseFormulasOfTheExpandedPoint, ()) 
   const Rational E_at = path_dual_value(c.recipe, sums, C, c.g, c.sigma, c.r, c.ny, c.nz).E_norm2;
   if (which >= 2 && E_at > 0) c.recipe.x = E_at / c.recipe.floor * (which == 2 ? Rational(1) : Rational(3, 2));
   const PathDualValue v = path_dual_value(c.recipe, sums, C, c.g, c.sigma, c.r, c.ny, c.nz);
+  Mat<Rational> R;
+  RC_ASSERT(path_dual_residual(c.recipe, sums, C, &R).E_norm2 == v.E_norm2);
 
-  const Mat<Rational> Y1 = path_dual_expand(c.recipe, grid.U, v.R, c.ny, c.nz);
+  const Mat<Rational> Y1 = path_dual_expand(c.recipe, grid.U, R, c.ny, c.nz);
   // Dual equality, exactly, by the dense formula.
   RC_ASSERT(block_diagonal_sums(Y1, c.L, c.ny, c.nz) == C);
   // tr U, N·σ, β by the dense formula.

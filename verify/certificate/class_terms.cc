@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/decimal_rounding.h"
+#include "core/integer_form.h"
 #include "core/number_text.h"
 #include "toeplitz/record_segments.h"
 #include "toeplitz/signal_toeplitz.h"
@@ -90,9 +91,9 @@ std::string class_signals(AffineResidual<Rational> a, const std::vector<long>& f
 Mat<Rational> project_out_free(const Mat<Rational>& g, const Mat<Rational>& F) {
   if (F.cols() == 0) return g;
   const Vec<Rational> gv = stack_rows(g);
-  const Mat<Rational> G = F.transpose() * F;
-  const Vec<Rational> x = solve_consistent(G, F.transpose() * gv);
-  return unstack_rows(Vec<Rational>(gv - F * x), g.cols());
+  const Mat<Rational> G = exact_transpose_product(F, F);
+  const Vec<Rational> x = solve_consistent(G, exact_transpose_product(F, Mat<Rational>(gv)).col(0));
+  return unstack_rows(exact_minus_product(gv, F, x), g.cols());
 }
 
 Mat<Rational> class_z(const ClassSignals& s, const Vec<Rational>& center) { return unstack_rows(s.a.z(center), s.a.nz); }

@@ -3,12 +3,14 @@
 #include <gmp.h>
 
 #include <cmath>
+#include <memory>
 
 #include <Eigen/Cholesky>
 
 #include "core/number_text.h"
 #include "toeplitz/tap_toeplitz.h"
 #include "core/gmp_raii.h"
+#include "core/integer_form.h"
 #include "verify/psd/power_of_two.h"
 #include "verify/psd/psd_filter.h"
 #include "verify/certificate/verdict_text.h"
@@ -164,36 +166,91 @@ PathDualSums path_dual_sums(const PathDualRecipe& recipe, const Mat<double>& U_g
   return out;
 }
 
-PathDualValue path_dual_value(const PathDualRecipe& recipe, const PathDualSums& sums, const Mat<Rational>& C,
-                              const Mat<Rational>& g, const Rational& sigma, const Mat<Rational>& r, Eigen::Index ny,
-                              Eigen::Index nz) {
-  PathDualValue out;
-  const Eigen::Index L = recipe.taps.rows(), q = ny * nz, n = g.rows();
-  out.R = Mat<Rational>(L, q);
-  out.E_norm2 = Rational(0);
-  Rational h_dot_R(0);
+namespace {
+
+/// path_dual_residual rational by rational (when an integer form is refused).
+PathDualResidual rational_residual(const PathDualRecipe& recipe, const PathDualSums& sums, const Mat<Rational>& C,
+                                   Mat<Rational>* R_out) {
+  const Eigen::Index L = recipe.taps.rows(), q = C.cols();
+  PathDualResidual out{Rational(0), Rational(0)};
   for (Eigen::Index l = 0; l < L; ++l) {
-    const Rational len(static_cast<long>(L - l));
     Rational row(0);
     for (Eigen::Index c = 0; c < q; ++c) {
       const Rational R = C(l, c) + sums.omega_UT(l, c);
       row += R * R;
-      h_dot_R += recipe.taps(l, c) * R;
-      out.R(l, c) = R;
+      out.h_dot_R += recipe.taps(l, c) * R;
+      if (R_out) (*R_out)(l, c) = R;
     }
-    out.E_norm2 += row / len;
+    out.E_norm2 += row / Rational(static_cast<long>(L - l));
   }
-  const Rational Q(static_cast<long>(L * nz));
-  out.terms.trace_U = sums.tr_U;
-  const Rational trV = sums.tr_TUT - Rational(2) * h_dot_R + recipe.x * Q;
-  Rational gg(0), gr(0);
-  for (Eigen::Index k = 0; k < n; ++k)
-    for (Eigen::Index i = 0; i < ny; ++i) {
-      gg += g(k, i) * g(k, i);
-      gr += g(k, i) * r(k, i);
+  return out;
+}
+
+}  // namespace
+
+PathDualResidual path_dual_residual(const PathDualRecipe& recipe, const PathDualSums& sums, const Mat<Rational>& C,
+                                    Mat<Rational>* R_out) {
+  const Eigen::Index L = recipe.taps.rows(), q = C.cols();
+  if (R_out) *R_out = Mat<Rational>(L, q);
+  const std::unique_ptr<IntegerForm> ci = integer_form(C), wi = integer_form(sums.omega_UT), hi = integer_form(recipe.taps);
+  if (!ci || !wi || !hi) return rational_residual(recipe, sums, C, R_out);
+  // R = (C̃·ω.den + ω̃·C.den)/den, den = C.den·ω.den; Σ_l row_l/(L − l) over M = lcm(1, …, L).
+  Mpz den, M, Rn, t, row, e_num, hr, share;
+  mpz_mul(den.z, ci->den.z, wi->den.z);
+  mpz_set_ui(M.z, 1);
+  for (Eigen::Index l = 1; l <= L; ++l) mpz_lcm_ui(M.z, M.z, static_cast<unsigned long>(l));
+  Mpq value;
+  for (Eigen::Index l = 0; l < L; ++l) {
+    mpz_set_ui(row.z, 0);
+    for (Eigen::Index c = 0; c < q; ++c) {
+      mpz_mul(Rn.z, ci->at(l, c), wi->den.z);
+      mpz_mul(t.z, wi->at(l, c), ci->den.z);
+      mpz_add(Rn.z, Rn.z, t.z);
+      mpz_addmul(row.z, Rn.z, Rn.z);
+      mpz_addmul(hr.z, hi->at(l, c), Rn.z);
+      if (R_out) {
+        mpz_set(mpq_numref(value.q), Rn.z);
+        mpz_set(mpq_denref(value.q), den.z);
+        mpq_canonicalize(value.q);
+        (*R_out)(l, c) = Rational(value.q);
+      }
     }
-  out.terms.N_sigma = Rational(static_cast<long>(n * ny)) * sigma;
-  out.terms.beta = -(trV + gg / sigma + Rational(2) * gr);
+    mpz_divexact_ui(share.z, M.z, static_cast<unsigned long>(L - l));
+    mpz_addmul(e_num.z, row.z, share.z);
+  }
+  PathDualResidual out;
+  mpz_set(mpq_numref(value.q), e_num.z);
+  mpz_mul(mpq_denref(value.q), den.z, den.z);
+  mpz_mul(mpq_denref(value.q), mpq_denref(value.q), M.z);
+  mpq_canonicalize(value.q);
+  out.E_norm2 = Rational(value.q);
+  mpz_set(mpq_numref(value.q), hr.z);
+  mpz_mul(mpq_denref(value.q), den.z, hi->den.z);
+  mpq_canonicalize(value.q);
+  out.h_dot_R = Rational(value.q);
+  return out;
+}
+
+GProducts g_products(const Mat<Rational>& g, const Mat<Rational>& r) { return {exact_dot(g, g), exact_dot(g, r)}; }
+
+DualTerms<Rational> path_dual_terms(const PathDualRecipe& recipe, const PathDualSums& sums, const PathDualResidual& res,
+                                    const GProducts& gp, const Rational& sigma, Eigen::Index N, Eigen::Index nz) {
+  DualTerms<Rational> terms;
+  const Rational Q(static_cast<long>(recipe.taps.rows() * nz));
+  terms.trace_U = sums.tr_U;
+  const Rational trV = sums.tr_TUT - Rational(2) * res.h_dot_R + recipe.x * Q;
+  terms.N_sigma = Rational(static_cast<long>(N)) * sigma;
+  terms.beta = -(trV + gp.gg / sigma + Rational(2) * gp.gr);
+  return terms;
+}
+
+PathDualValue path_dual_value(const PathDualRecipe& recipe, const PathDualSums& sums, const Mat<Rational>& C,
+                              const Mat<Rational>& g, const Rational& sigma, const Mat<Rational>& r, Eigen::Index ny,
+                              Eigen::Index nz) {
+  PathDualValue out;
+  const PathDualResidual res = path_dual_residual(recipe, sums, C);
+  out.E_norm2 = res.E_norm2;
+  out.terms = path_dual_terms(recipe, sums, res, g_products(g, r), sigma, g.rows() * ny, nz);
   return out;
 }
 

@@ -76,9 +76,27 @@ struct PathDualSums {
 };
 PathDualSums path_dual_sums(const PathDualRecipe& recipe, const Mat<double>& U_grid, Eigen::Index ny, Eigen::Index nz);
 
+/// Step 2's sums for one U (they depend neither on g's σ nor on x):
+/// ‖E‖_F² = Σ_l ‖R_l‖²/(L − l) and Σ_l ⟨h_l, R_l⟩, with R_l = C_l(g) + Ω_l(UT)
+/// (written to `R`, L × ny·nz, when given).
+struct PathDualResidual {
+  Rational E_norm2, h_dot_R;
+};
+PathDualResidual path_dual_residual(const PathDualRecipe& recipe, const PathDualSums& sums, const Mat<Rational>& C,
+                                    Mat<Rational>* R = nullptr);
+
+/// gᵀg and gᵀr (g and r n × ny).
+struct GProducts {
+  Rational gg, gr;
+};
+GProducts g_products(const Mat<Rational>& g, const Mat<Rational>& r);
+
+/// Step 4: tr U, N·σ and β = −(tr V + gᵀg/σ + 2gᵀr), tr V = tr(TᵀUT) − 2 Σ⟨h_l, R_l⟩ + x·L·nz.
+DualTerms<Rational> path_dual_terms(const PathDualRecipe& recipe, const PathDualSums& sums, const PathDualResidual& res,
+                                    const GProducts& gp, const Rational& sigma, Eigen::Index N, Eigen::Index nz);
+
 /// Steps 2 and 4 for g (n × ny), σ > 0, the residual r and C = fir_adjoint(g, z, L).
 struct PathDualValue {
-  Mat<Rational> R;         ///< L × (ny·nz): R_l = C_l(g) + Ω_l(UT)
   Rational E_norm2;        ///< ‖E‖_F² = Σ_l ‖R_l‖²/(L − l)
   DualTerms<Rational> terms;
 };
