@@ -472,6 +472,7 @@ CertifiedBounds certify_w_form(const LpvModel<Rational>& model, const Experiment
   if (!set_dmax2(c, residual_energy(r - c.w), Rational(static_cast<long>(n * ny)), o, out)) return out;
   out.delta2_solver = sol.delta2;
   finish_certificate(c, exp, [&] { return sol.delta2; }, o, solver.name(), build, out);
+  if (out.verified()) out.upper = objective_at(o.objective, out.delta2, out.dmax2);  // as the Δ form's upper end
   return out;
 }
 

@@ -90,7 +90,8 @@ ojson identification_json(const WindowIdentification& id) {
   j["verified"] = b.verified();
   if (!b.verified()) j["reason"] = b.reason;
   j["informative"] = id.bounds.informative;
-  j["note"] = id.bounds.note + "; Theorem 3.1 is run on the first bound window only";
+  const std::string only_first = "Theorem 3.1 is run on the first bound window only";
+  j["note"] = id.bounds.note.empty() ? only_first : id.bounds.note + "; " + only_first;
   j["certificate"] = id.bounds.certificate.empty() ? ojson(nullptr) : ojson(id.bounds.certificate);
   return j;
 }

@@ -247,6 +247,9 @@ RC_GTEST_PROP(CertificateProperty, WFormPerturbationsAreRejected, ()) {
   RC_ASSERT(cert.form == CertificateForm::kW);
   RC_ASSERT(cert.mode == ToeplitzMode::kPaper);
   RC_ASSERT(cert.delta2 > 0);
+  // the upper end of min δ² is the certified δ² (paper mode once reported 0 here)
+  RC_ASSERT(b.upper == b.delta2);
+  RC_ASSERT(b.upper == cert.delta2);
   RC_ASSERT(check_variant(dir, "same", cert, ic.model, ic.exp).holds);
   {  // (e) one w entry changed by a lot (where w may be non-zero: before the trailing zero columns)
     Certificate c2 = cert;
@@ -336,6 +339,7 @@ RC_GTEST_PROP(CertificateProperty, PaperModeZeroDeltaIsCertified, ()) {
   RC_LOG() << "paper, delta = 0: " << b.verified() << " " << b.reason << "\n";
   RC_ASSERT(b.verified());
   RC_ASSERT(b.delta2 == Rational(0));
+  RC_ASSERT(b.upper == b.dmax2);  // min d_max²'s upper end is the certified d_max²
   RC_ASSERT(b.dmax <= 0.9 * ic.dmax * (1 + 1e-3));
 }
 
