@@ -13,9 +13,9 @@
 // Levels of input saturation and dead-zone are chosen on a 1-D grid by the
 // estimation RMS. Validation x0 comes from the first --init-samples samples.
 //
-//   build/bench/effect_explore --data /work/shared/data/cascaded-tanks/dataBenchmark.csv
+//   build/bench/effect_explore --data "$LPVID_DATA"/cascaded-tanks/dataBenchmark.csv
 //       --u uEst --y yEst --val-u uVal --val-y yVal --order 2
-//   build/bench/effect_explore --data /work/shared/data/dryer/dryer.dat --names u,y
+//   build/bench/effect_explore --data "$LPVID_DATA"/dryer/dryer.dat --names u,y
 //       --rows 0:500 --val-rows 500:1000 --order 3
 #include <algorithm>
 #include <cstdio>

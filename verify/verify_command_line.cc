@@ -22,6 +22,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/argv_words.h"
+#include "core/eigen_blocking.h"
 #include "core/limit_options.h"
 #include "core/option_suggestion.h"
 #include "verify/certificate/certificate_check.h"
@@ -135,6 +136,7 @@ OptionTable lpvid_verify_option_table() {
 }
 
 int run_lpvid_verify(const std::vector<std::string>& args, const std::string& program) {
+  pin_eigen_blocking();  // its floating-point screens as lpvid's (core/eigen_blocking.h)
   // A previous call in the same process may have changed the limits.
   input_limits() = InputLimits{};
   const WorkLimitsRestorer work_limits;  // lpvid-verify's defaults for this run

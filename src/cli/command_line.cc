@@ -8,6 +8,7 @@
 #include "cli/report.h"
 #include "core/argv_words.h"
 #include "core/deadline.h"
+#include "core/eigen_blocking.h"
 #include "core/file_io.h"
 #include "core/input_error.h"
 #include "core/limit_options.h"
@@ -58,6 +59,7 @@ OptionTable lpvid_option_table() {
 }
 
 int run_lpvid(const std::vector<std::string>& args, const std::string& program) {
+  pin_eigen_blocking();  // before any job thread (core/eigen_blocking.h)
   // A previous call in the same process may have changed the limits or left
   // its outputs recorded; this call must neither inherit the one nor delete
   // the other when it fails.

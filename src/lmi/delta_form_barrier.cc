@@ -12,6 +12,7 @@
 #include "core/parallel_for.h"
 #include "core/rms.h"
 #include "lmi/free_regressors.h"
+#include "lmi/newton_factor.h"
 #include "lmi/noise_block.h"
 #include "lmi/split_factorisations.h"
 #include "lmi/split_llt.h"
@@ -362,8 +363,8 @@ void derivatives(const Problem& p, const Point& pt, double mu, DerivativeWorkspa
 /// with F_μ = f₀/μ + φ (f₀ = c_t t + c_s‖d‖²/N when s is eliminated, c_t t
 /// when it is fixed), ∇f₀/μ + ∇φ = 0 differentiated in μ gives H ẋ = ∇f₀/μ²,
 /// so Δx = (μ/factor − μ)·ẋ = −(1 − 1/factor)·H⁻¹(∇f₀/μ). Empty when H
-/// could not be factored (`ldlt`: H's factorisation).
-Vecd predictor_step(const Problem& p, const Point& pt, const Eigen::LDLT<Dense>& ldlt, double mu, double factor) {
+/// could not be factored (`factored`: H's factorisation).
+Vecd predictor_step(const Problem& p, const Point& pt, const NewtonFactor& factored, double mu, double factor) {
   Vecd v = Vecd::Zero(p.dim());
   if (p.t_var) v(p.taps()) = p.ct / mu;
   if (p.s_var) {
@@ -372,8 +373,8 @@ Vecd predictor_step(const Problem& p, const Point& pt, const Eigen::LDLT<Dense>&
       for (Index j = 0; j < p.nz; ++j)
         v.segment((i * p.nz + j) * p.L, p.L) = -2.0 * w * (p.Z[static_cast<size_t>(j)].transpose() * pt.d_tail.col(i));
   }
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return {};
-  Vecd step = -(1.0 - 1.0 / factor) * ldlt.solve(v);
+  if (!factored.positive()) return {};
+  Vecd step = -(1.0 - 1.0 / factor) * factored.solve(v);
   return step.allFinite() ? step : Vecd();
 }
 
@@ -626,8 +627,8 @@ class BarrierRun {
     }
     // no further Newton step: the FFT buffers, the factorisation and the trial point go before write() allocates the duals
     ws_.release();
-    ldlt_.compute(Dense(0, 0));
-    ldlt_of_H_ = false;
+    newton_factor_.release();
+    factor_of_H_ = false;
     trial_ = Point();
     F1_ = Dense();
     Hs_ = Dense();
@@ -664,7 +665,7 @@ class BarrierRun {
   /// gets a Levenberg shift τ·I (still a descent direction; the line search
   /// decides the step).
   std::string newton_direction(Vecd& dx, double& dec2) {
-    ldlt_.compute(Dense(0, 0));  // two L × L matrices fewer at the derivatives' memory peak
+    newton_factor_.release();  // two L × L matrices fewer at the derivatives' memory peak
     trial_ = Point();
     derivatives(p_, pt_, mu_, ws_, g_, H_, P_, Q_, R_);
     derivatives_current_ = true;
@@ -673,15 +674,16 @@ class BarrierRun {
     const double scale_h = std::max(H_.diagonal().cwiseAbs().maxCoeff(), 1e-300);
     for (int shift = 0; shift < 8 && !solved; ++shift) {
       if (shift == 0) {
-        ldlt_.compute_split(H_, helper_.get());
+        newton_factor_.compute(H_, helper_.get());
       } else {
         Hs_ = H_;
         Hs_.diagonal().array() += scale_h * double_power_of_ten(-16 + 2 * shift);
-        ldlt_.compute_split(Hs_, helper_.get());
+        newton_factor_.compute(Hs_, helper_.get());
       }
-      ldlt_of_H_ = shift == 0;
-      dx = ldlt_.solve(-g_);
-      solved = ldlt_.info() == Eigen::Success && dx.allFinite() && ldlt_.isPositive();
+      factor_of_H_ = shift == 0;
+      solved = newton_factor_.positive();
+      if (solved) dx = newton_factor_.solve(-g_);
+      solved = solved && dx.allFinite();
     }
     if (!solved) return "the Newton system is singular";
     dec2 = -g_.dot(dx);
@@ -718,9 +720,9 @@ class BarrierRun {
   /// depend on μ).
   void reduce_mu() {
     const double factor = adapt_mu_factor();
-    if (options_.predictor && !ldlt_of_H_) ldlt_.compute_split(H_, helper_.get());  // else the last Newton step's factorisation of H is at hand
-    ldlt_of_H_ = true;
-    const Vecd step = options_.predictor ? predictor_step(p_, pt_, ldlt_, mu_, factor) : Vecd();
+    if (options_.predictor && !factor_of_H_) newton_factor_.compute(H_, helper_.get());  // else the last Newton step's factorisation of H is at hand
+    factor_of_H_ = true;
+    const Vecd step = options_.predictor ? predictor_step(p_, pt_, newton_factor_, mu_, factor) : Vecd();
     mu_ /= factor;
     derivatives_current_ = false;
     evaluate(p_, x_, mu_, pt_, F1_, helper_.get());
@@ -798,8 +800,8 @@ class BarrierRun {
   // storage reused from step to step: the trial point, T Tᵀ's buffer, the Newton system's factorisation
   Point trial_;
   Dense F1_, Hs_;
-  SplitLdlt ldlt_;
-  bool ldlt_of_H_ = false;  ///< ldlt_ factors H_ itself (no Levenberg shift)
+  NewtonFactor newton_factor_;
+  bool factor_of_H_ = false;  ///< newton_factor_ factors H_ itself (no Levenberg shift)
 };
 
 /// q (minimum-norm least squares for the final taps) and d = r − Z h − G q, original units.

@@ -132,7 +132,7 @@ struct BarrierOptions {
   double damping = 2.0;
   /// Threads of a Newton step: 0 = the machine's cores (one on the workers of
   /// a parallel_for, e.g. diagnose's bound windows), ≥ 2 = a helper thread
-  /// takes half of P = F⁻¹, of the Newton LDLᵀ's column updates and of the
+  /// takes half of P = F⁻¹, of the Newton system's Cholesky rank updates and of the
   /// spectra and correlations (lmi/split_factorisations.h). Every number is
   /// computed by the same operations whatever the count: the same iterates,
   /// bounds and certificates, bit for bit (tests/lmi/barrier_threads_test.cc).

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/helper_thread.h"
+#include "lmi/rank_update_kernels.h"
 #include "lmi/split_factorisations.h"
 
 namespace lpvid {
@@ -47,6 +48,13 @@ void solve_right(const Block& A11, Block& A21, HelperThread* helper) {
   fork_join(helper, [&] { part(cut, rows); }, [&] { part(0, cut); });
 }
 
+/// The leading rows of a gebp call that rank_update_kernel takes (its groups
+/// of 4; none where the processor lacks AVX2).
+Index vector_rows(Index rows) {
+  static const bool available = rank_update_kernel::available();
+  return available ? rows / 4 * 4 : 0;
+}
+
 /// Column panels [j0, j1) (multiples of 4) of tribb_kernel<Lower> on the
 /// m × m diagonal block at `res`: each panel's 4 × 4 diagonal block through
 /// a zeroed buffer, then the rows below it.
@@ -65,7 +73,11 @@ void triangle_panels(double* res, Index stride, const double* blockA, const doub
       for (Index i1 = j1c; i1 < width; ++i1) r(i1) += buffer(i1, j1c);
     }
     const Index below = j + width;
-    gebp(out.getSubMapper(below, j), blockA + depth * below, b, m - below, depth, width, -1.0, -1, -1, 0, 0);
+    const Index quick = width == kTribbPanel ? vector_rows(m - below) : 0;
+    if (quick > 0) rank_update_kernel::minus_products(blockA + depth * below, b, depth, quick, 1, &out(below, j), stride);
+    if (below + quick < m)
+      gebp(out.getSubMapper(below + quick, j), blockA + depth * (below + quick), b, m - below - quick, depth, width, -1.0,
+           -1, -1, 0, 0);
   }
 }
 
@@ -93,7 +105,12 @@ void rank_update(Block& A22, const Block& A21, HelperThread* helper) {
     for (Index i2 = 0; i2 < size; i2 += mc) {
       const Index m = std::min(i2 + mc, size) - i2;
       pack_lhs(blockA.data(), lhs.getSubMapper(i2, k2), actual_kc, m);
-      gebp(res.getSubMapper(i2, 0), blockA.data(), blockB.data(), m, actual_kc, std::min(size, i2), -1.0, -1, -1, 0, 0);
+      const Index left = std::min(size, i2);  // the columns left of the diagonal block: i2 is a multiple of mc, of nr = 4
+      const Index quick = left % 4 == 0 ? vector_rows(m) : 0;
+      if (quick > 0) rank_update_kernel::minus_products(blockA.data(), blockB.data(), actual_kc, quick, left / 4, &res(i2, 0), stride);
+      if (quick < m)
+        gebp(res.getSubMapper(i2 + quick, 0), blockA.data() + actual_kc * quick, blockB.data(), m - quick, actual_kc, left,
+             -1.0, -1, -1, 0, 0);
       double* diagonal = A22.data() + stride * i2 + i2;
       const double* b = blockB.data() + actual_kc * i2;
       const Index cut = std::min(m, static_cast<Index>(std::ceil(0.2929 * static_cast<double>(m) / kTribbPanel)) * kTribbPanel);
@@ -118,7 +135,7 @@ Index llt_blocked(Dense& m, HelperThread* helper) {
     const Index ret = ei::llt_inplace<double, Eigen::Lower>::unblocked(A11);
     if (ret >= 0) return k + ret;
     if (rs <= 0) continue;
-    if (helper == nullptr || rs < kMinSharedRows) {
+    if (rs < kMinSharedRows) {
       A11.adjoint().template triangularView<Eigen::Upper>().template solveInPlace<Eigen::OnTheRight>(A21);
       A22.template selfadjointView<Eigen::Lower>().rankUpdate(A21, -1.0);
     } else {

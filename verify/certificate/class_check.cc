@@ -152,7 +152,7 @@ CertificateVerdict check_class_claim(const Certificate& c, const Experiment<Rati
   if (walk(w, 0, c.region.center, c.region.radius) < 0) return invalid_verdict(w.why, details);
   std::ostringstream d;
   d << details << ", class of " << s.a.num_params() << " parameters (" << s.free.size() << " free, " << s.boxed.size()
-    << " boxed), " << w.leaves << " leaves of horizon " << s.horizon << ", every leaf's dual point checked exactly; lowest leaf "
+    << " boxed), " << w.leaves << (w.leaves == 1 ? " leaf" : " leaves") << " of horizon " << s.horizon << ", every leaf's dual point checked exactly; lowest leaf "
     << approx_text(w.lowest, 8);
   if (std::string why = claim_problem(c, w.lowest); !why.empty()) return invalid_verdict(why, d.str());
   return CertificateVerdict::holding(d.str());

@@ -1,0 +1,44 @@
+#pragma once
+/// The factorisation of the structured barrier's Newton system H·dx = −g
+/// (lmi/delta_form_barrier.cc): H is the Hessian of the barrier function
+/// F_μ of "Robust identification and invalidation of LPV systems", Theorem
+/// 2.1's LMI (8) in the Δ form, a dense symmetric matrix of order
+/// L·ny·nz (+1 with δ² free).
+///
+/// H is positive definite wherever F_μ is strictly convex, so the Cholesky
+/// factorisation H = L·Lᵀ is tried first: Eigen's blocked algorithm
+/// (SplitLlt, its bits on one thread or two), about twice as fast as the
+/// pivoted LDLᵀ at the 3×3 case's order 1 800. When rounding makes a pivot
+/// non-positive (MIMO noise terms are flat along taps that do not change d,
+/// lmi/delta_form_barrier.cc), the pivoted LDLᵀ (SplitLdlt) decides as
+/// before: positive, or the caller shifts H.
+
+#include <Eigen/Dense>
+
+#include "lmi/split_factorisations.h"
+#include "lmi/split_llt.h"
+
+namespace lpvid {
+
+class HelperThread;
+
+class NewtonFactor {
+ public:
+  /// Factors h (its lower triangle); `helper` (may be null) takes a share of the work.
+  void compute(const Eigen::MatrixXd& h, HelperThread* helper);
+  /// Frees the factors' memory.
+  void release();
+  /// The factorisation succeeded and h is numerically positive definite.
+  bool positive() const;
+  /// h⁻¹·b (only when positive()).
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// The pivoted LDLᵀ was needed (the Cholesky factorisation met a non-positive pivot).
+  bool pivoted() const { return pivoted_; }
+
+ private:
+  SplitLlt llt_;
+  SplitLdlt ldlt_;
+  bool pivoted_ = false;
+};
+
+}  // namespace lpvid
