@@ -620,6 +620,7 @@ class BarrierRun {
   /// (the residual is what certify/dual_certify.h must project away and
   /// cover with a PSD margin), then the final derivatives. "" on success.
   std::string finish() {
+    pivoted_newton_ = true;
     if (!found_feasible_)
       if (const std::string err = center(1e-14, 30); !err.empty() && err.rfind("not centred", 0) != 0) return err;
     if (!derivatives_current_) {  // else the last Newton step's, at this point and μ
@@ -674,11 +675,11 @@ class BarrierRun {
     const double scale_h = std::max(H_.diagonal().cwiseAbs().maxCoeff(), 1e-300);
     for (int shift = 0; shift < 8 && !solved; ++shift) {
       if (shift == 0) {
-        newton_factor_.compute(H_, helper_.get());
+        newton_factor_.compute(H_, helper_.get(), pivoted_newton_);
       } else {
         Hs_ = H_;
         Hs_.diagonal().array() += scale_h * double_power_of_ten(-16 + 2 * shift);
-        newton_factor_.compute(Hs_, helper_.get());
+        newton_factor_.compute(Hs_, helper_.get(), pivoted_newton_);
       }
       factor_of_H_ = shift == 0;
       solved = newton_factor_.positive();
@@ -801,6 +802,7 @@ class BarrierRun {
   Point trial_;
   Dense F1_, Hs_;
   NewtonFactor newton_factor_;
+  bool pivoted_newton_ = false;  ///< the final tight centering factors H by the pivoted LDLᵀ
   bool factor_of_H_ = false;  ///< newton_factor_ factors H_ itself (no Levenberg shift)
 };
 

@@ -2,9 +2,9 @@
 
 namespace lpvid {
 
-void NewtonFactor::compute(const Eigen::MatrixXd& h, HelperThread* helper) {
-  llt_.compute_split(h, helper);
-  pivoted_ = llt_.info() != Eigen::Success;
+void NewtonFactor::compute(const Eigen::MatrixXd& h, HelperThread* helper, bool pivoted) {
+  if (!pivoted) llt_.compute_split(h, helper);
+  pivoted_ = pivoted || llt_.info() != Eigen::Success;
   if (pivoted_) {
     llt_.compute(Eigen::MatrixXd(0, 0));  // one factor in memory at a time
     ldlt_.compute_split(h, helper);
