@@ -18,6 +18,7 @@ import sys
 # Lowest first. What each floor is for, in one line:
 LEVELS = [
     ("src/core", "numbers, text, files, limits, threads: no mathematics of the paper"),
+    ("src/dense", "dense floating factorisations and inverses whose bits depend on neither threads nor vector width"),
     ("src/json", "exact JSON: the tree with number text and lines, exact numbers, members with located errors"),
     ("src/data", "CSV tables, column maps, experiments, signal descriptions"),
     ("src/model", "the LPV model, its file format and simulation"),

@@ -5,7 +5,7 @@
 /// returns when both are done. The users split work so that every number is
 /// computed by the same operations in the same order as by one thread (each
 /// job writes its own entries), so no answer depends on whether a helper
-/// exists: lmi/split_factorisations.h and the Newton step of
+/// exists: dense/split_factorisations.h and the Newton step of
 /// lmi/delta_form_barrier.cc. Hand-over by spinning on atomics (a
 /// condition variable's wake-up, ~50 µs here, cost more than an LDLᵀ column
 /// update saves); the helper sleeps after ~50 µs without work.

@@ -12,10 +12,11 @@
 #include "core/parallel_for.h"
 #include "core/rms.h"
 #include "lmi/free_regressors.h"
+#include "dense/llt_inverse.h"
 #include "lmi/newton_factor.h"
 #include "lmi/noise_block.h"
-#include "lmi/split_factorisations.h"
-#include "lmi/split_llt.h"
+#include "dense/split_factorisations.h"
+#include "dense/split_llt.h"
 #include "toeplitz/correlation_2d.h"
 #include "toeplitz/fir.h"
 #include "toeplitz/signal_toeplitz.h"
@@ -190,6 +191,17 @@ void add_diagonal_sums(const Eigen::MatrixBase<X>& M, Dense& out) {
   }
 }
 
+/// M ← M + Mᵀ in place (entries (i, j) and (j, i) both get M(i, j) + M(j, i)),
+/// in tiles of 64 × 64 so that the transposed reads stay in cache.
+void add_transpose_in_place(Dense& M) {
+  constexpr Index kTile = 64;
+  const Index n = M.rows();
+  for (Index j0 = 0; j0 < n; j0 += kTile)
+    for (Index i0 = j0; i0 < n; i0 += kTile)
+      for (Index j = j0; j < std::min(n, j0 + kTile); ++j)
+        for (Index i = std::max(i0, j); i < std::min(n, i0 + kTile); ++i) M(i, j) = M(j, i) = M(i, j) + M(j, i);
+}
+
 /// What the derivatives of a Newton step reuse from step to step, allocated
 /// once per solve: the FFT grid, its plans and buffers, the spectra and the
 /// Toeplitz product of the current taps (no temporaries per Newton step:
@@ -309,6 +321,12 @@ void logdet_hessian(const Problem& p, const Dense& P, DerivativeWorkspace& ws, D
       ++uses[static_cast<size_t>((a / nz) * ny + b / nz)];
       pairs.emplace_back(a, b);
     }
+  if (p.q() == 1 && H.rows() == L) {  // SISO with t fixed: the pair block is H itself (one L × L buffer less)
+    ws.fft.correlate_reflected(ws.Q_hat[0], ws.Qt_hat[0], ws.R_hat[0], H);
+    add_diagonal_sums(P, H);
+    add_transpose_in_place(H);  // 2·(symmetric part)
+    return;
+  }
   const bool shared = ws.shares();
   // pair (a, b) writes the blocks (a, b) and (b, a) only: any thread, any order, the same H
   ws.share(pairs.size(), [&](size_t k, CorrelationWorkspace& fft, Dense& Hh) {
@@ -337,8 +355,7 @@ void logdet_hessian(const Problem& p, const Dense& P, DerivativeWorkspace& ws, D
 void derivatives(const Problem& p, const Point& pt, double mu, DerivativeWorkspace& ws, Vecd& g, Dense& H, Dense& P,
                  Dense& Q, Dense& R) {
   const Index L = p.L, ny = p.ny, nz = p.nz, nt = p.taps();
-  llt_inverse_split(pt.llt, P, ws.helper);  // P = F⁻¹, bit for bit llt.solve(I)
-  P = 0.5 * (P + P.transpose());
+  llt_inverse(pt.llt, P, Q, ws.helper);  // P = F⁻¹ = L⁻ᵀL⁻¹ (Q: scratch until Q = P·T)
   ws.times_T.set_taps(pt.taps);  // Q = P·T and R = Tᵀ·Q by FFT
   ws.times_T.right_into(P, Q);
   ws.times_T.left_into(Q, R);
@@ -666,8 +683,9 @@ class BarrierRun {
   /// gets a Levenberg shift τ·I (still a descent direction; the line search
   /// decides the step).
   std::string newton_direction(Vecd& dx, double& dec2) {
-    newton_factor_.release();  // two L × L matrices fewer at the derivatives' memory peak
+    newton_factor_.release();  // L × L matrices fewer at the derivatives' memory peak
     trial_ = Point();
+    F1_ = Dense();
     derivatives(p_, pt_, mu_, ws_, g_, H_, P_, Q_, R_);
     derivatives_current_ = true;
     check_deadline("the structured barrier was solving");  // the derivatives take seconds on long records
@@ -699,6 +717,7 @@ class BarrierRun {
   /// out at λ² ≈ 3 for ~100 steps (3×3, n = 200). From λ·α ≤ damping the step
   /// stays within a few Dikin radii. False when no interior point was found.
   bool line_search(const Vecd& dx, double dec2) {
+    release_step_matrices();
     const double lambda = std::sqrt(dec2);
     double alpha = p_.nz > 1 ? std::min(1.0, options_.damping / (1.0 + lambda)) : 1.0;
     Point& trial = trial_;
@@ -725,7 +744,7 @@ class BarrierRun {
     factor_of_H_ = true;
     const Vecd step = options_.predictor ? predictor_step(p_, pt_, newton_factor_, mu_, factor) : Vecd();
     mu_ /= factor;
-    derivatives_current_ = false;
+    release_step_matrices();
     evaluate(p_, x_, mu_, pt_, F1_, helper_.get());
     double beta = 1.0;
     for (int k = 0; k < 12 && step.size() == p_.dim(); ++k, beta *= 0.5) {
@@ -737,6 +756,17 @@ class BarrierRun {
         return;
       }
     }
+  }
+
+  /// P, Q and R go before trial points are factored (each an L × L matrix;
+  /// with the trial point's factor and T Tᵀ's buffer they would make the
+  /// solve's memory peak): derivatives() forms them again, and finish() when
+  /// the point it certifies is not the one they were formed at.
+  void release_step_matrices() {
+    P_ = Dense();
+    Q_ = Dense();
+    R_ = Dense();
+    derivatives_current_ = false;
   }
 
   /// The factor of the next μ reduction, from the last centering's Newton

@@ -133,7 +133,7 @@ struct BarrierOptions {
   /// Threads of a Newton step: 0 = the machine's cores (one on the workers of
   /// a parallel_for, e.g. diagnose's bound windows), ≥ 2 = a helper thread
   /// takes half of P = F⁻¹, of the Newton system's Cholesky rank updates and of the
-  /// spectra and correlations (lmi/split_factorisations.h). Every number is
+  /// spectra and correlations (dense/split_factorisations.h). Every number is
   /// computed by the same operations whatever the count: the same iterates,
   /// bounds and certificates, bit for bit (tests/lmi/barrier_threads_test.cc).
   unsigned threads = 0;

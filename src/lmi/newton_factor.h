@@ -19,8 +19,8 @@
 
 #include <Eigen/Dense>
 
-#include "lmi/split_factorisations.h"
-#include "lmi/split_llt.h"
+#include "dense/split_factorisations.h"
+#include "dense/split_llt.h"
 
 namespace lpvid {
 

@@ -1,6 +1,6 @@
 #pragma once
 /// The two inner loops of the LDLᵀ factorisation in panels
-/// (lmi/split_factorisations.cc), written with 4-wide vector instructions
+/// (dense/split_factorisations.cc), written with 4-wide vector instructions
 /// (AVX2) but with the operations of Eigen's 2-wide column-major
 /// matrix-vector kernel: each sum starts at 0.0, adds its products a·b one
 /// by one in column order (a product rounded, then the sum rounded: no fused

@@ -1,4 +1,4 @@
-#include "lmi/ldlt_panel_kernels.h"
+#include "dense/ldlt_panel_kernels.h"
 
 #if defined(__x86_64__) && !defined(__FMA__)
 #include <immintrin.h>

@@ -1,4 +1,4 @@
-// The rank update's vector micro-kernel (lmi/rank_update_kernels.h) against
+// The rank update's vector micro-kernel (dense/rank_update_kernels.h) against
 // Eigen's own general block-panel kernel on the same packed panels: every
 // entry bit for bit, in 4-wide and (where the processor has it) 8-wide
 // vectors; and the data are such that another summation order or a fused
@@ -10,7 +10,7 @@
 
 #include <Eigen/Dense>
 
-#include "lmi/rank_update_kernels.h"
+#include "dense/rank_update_kernels.h"
 #include "support/same_bits.h"
 
 namespace lpvid {

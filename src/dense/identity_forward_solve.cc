@@ -1,8 +1,10 @@
-#include "lmi/identity_forward_solve.h"
+#include "dense/identity_forward_solve.h"
 
 #include <algorithm>
 
 #include <Eigen/Dense>
+
+#include "dense/rank_update_kernels.h"
 
 namespace lpvid {
 
@@ -69,15 +71,30 @@ void diagonal_block(const SolveParts& s, Index k2, Index actual_kc, Index live) 
   }
 }
 
-/// R2 −= A21·B below the row block, columns [0, live) (Eigen's "GEPP").
+/// R2 −= A21·B below the row block, columns [0, live) (Eigen's "GEPP"). The
+/// rows in groups of 4 times the full column panels of 4 by
+/// rank_update_kernel (Eigen's kernel's operations lane for lane, where the
+/// processor has AVX2), the rest by Eigen's kernel: the same bits either way.
 void below_block(const SolveParts& s, Index k2, Index actual_kc, Index live) {
+  static const bool vectors = rank_update_kernel::available();
   ei::gebp_kernel<double, double, Index, OtherMapper, Traits::mr, Traits::nr, false, false> gebp;
   ei::gemm_pack_lhs<double, Index, TriMapper, Traits::mr, Traits::LhsProgress, Traits::LhsPacket4Packing, Eigen::ColMajor>
       pack_lhs;
+  const Index full = vectors ? live / 4 * 4 : 0;  // columns in full panels of 4
   for (Index i2 = k2 + s.kc; i2 < s.size; i2 += s.mc) {
     const Index actual_mc = std::min(s.mc, s.size - i2);
     pack_lhs(s.blockA, s.tri.getSubMapper(i2, k2), actual_kc, actual_mc);
-    gebp(s.other.getSubMapper(i2, 0), s.blockA, s.blockB, actual_mc, actual_kc, live, -1.0, -1, -1, 0, 0);
+    const Index quick = full > 0 ? actual_mc / 4 * 4 : 0;
+    if (quick > 0) {
+      rank_update_kernel::minus_products(s.blockA, s.blockB, actual_kc, quick, full / 4, &s.other(i2, 0),
+                                         s.other.stride());
+      if (full < live)
+        gebp(s.other.getSubMapper(i2, full), s.blockA, s.blockB + actual_kc * full, quick, actual_kc, live - full, -1.0, -1,
+             -1, 0, 0);
+    }
+    if (quick < actual_mc)
+      gebp(s.other.getSubMapper(i2 + quick, 0), s.blockA + actual_kc * quick, s.blockB, actual_mc - quick, actual_kc, live,
+           -1.0, -1, -1, 0, 0);
   }
 }
 

@@ -11,7 +11,7 @@
 /// the same operations: the split keeps at least two rows per part, since a
 /// one-row product is evaluated as a dot product), so the factors, the
 /// pivots and every solve are bit for bit those of Eigen::LDLT::compute —
-/// tests/lmi/split_factorisations_test.cc checks it. From 256 rows on, on
+/// tests/dense/split_factorisations_test.cc checks it. From 256 rows on, on
 /// processors with AVX2, the loop runs in panels of 16 columns with the pivot
 /// order found first (split_factorisations.cc says why the bits stay Eigen's).
 /// The Newton system of the structured barrier (lmi/delta_form_barrier.cc)
@@ -30,15 +30,6 @@ class SplitLdlt : public Eigen::LDLT<Eigen::MatrixXd> {
   /// share of the long column updates.
   SplitLdlt& compute_split(const Eigen::MatrixXd& a, HelperThread* helper);
 };
-
-/// P ← F⁻¹ = llt.solve(I), bit for bit, the columns in two parts (the
-/// helper's from a multiple of 4 on: Eigen's triangular solves treat each
-/// right-hand column alike whatever their number, in panels of 4 columns
-/// counted from the first; each part has at least 4 columns). The forward
-/// solve L·X = I skips the identity's zeros (lmi/identity_forward_solve.h),
-/// so the parts are cut where their work is even, not at half the columns.
-/// ~1/3 of a SISO Newton step at n = 1600 before the zeros were skipped.
-void llt_inverse_split(const Eigen::LLT<Eigen::MatrixXd>& llt, Eigen::MatrixXd& P, HelperThread* helper);
 
 /// The largest absolute column sum of the symmetric matrix held in a's lower
 /// triangle, as Eigen's LLT::compute and LDLT::compute record it (their

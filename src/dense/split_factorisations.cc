@@ -1,4 +1,4 @@
-#include "lmi/split_factorisations.h"
+#include "dense/split_factorisations.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,7 @@
 #include <utility>
 
 #include "core/helper_thread.h"
-#include "lmi/identity_forward_solve.h"
-#include "lmi/ldlt_panel_kernels.h"
+#include "dense/ldlt_panel_kernels.h"
 
 namespace lpvid {
 
@@ -134,7 +133,7 @@ bool factor(Dense& mat, Transpositions& transpositions, Eigen::VectorXd& temp, S
 // The blocks that end before a panel's first column are the same for all of
 // its columns: they are applied to the whole panel at once, reading each L
 // entry once per panel instead of once per column, by 4-wide vector kernels
-// (lmi/ldlt_panel_kernels.h) that keep Eigen's operations. Measured at
+// (dense/ldlt_panel_kernels.h) that keep Eigen's operations. Measured at
 // n = 1 800 (random SPD): Eigen 0.21–0.32 s, panels 0.10 s on one thread;
 // n = 3 600: 2.9–3.6 s against 1.7 s (one thread) and 1.0 s (two).
 
@@ -251,46 +250,6 @@ SplitLdlt& SplitLdlt::compute_split(const Dense& a, HelperThread* helper) {
   m_info = ok ? Eigen::Success : Eigen::NumericalIssue;
   m_isInitialized = true;
   return *this;
-}
-
-namespace {
-
-/// The first column of the helper's part of P = F⁻¹: a multiple of 4 (see
-/// the header) that shares the work evenly, column c costing about
-/// (n − c)² in the forward solve (its zeros above row c are skipped) and n²
-/// in the backward one.
-Index balanced_split(Index n) {
-  const auto cost = [n](Index c) { return static_cast<double>((n - c) * (n - c) + n * n); };
-  double total = 0;
-  for (Index c = 0; c < n; ++c) total += cost(c);
-  double left = 0;
-  Index split = 0;
-  while (split < n && left + cost(split) <= total / 2) left += cost(split++);
-  return std::clamp<Index>(split / 4 * 4, 4, n / 4 * 4 - 4);
-}
-
-/// Columns [c0, c1) of P = L⁻ᵀ·L⁻¹·I: the forward solve skipping zeros, then Eigen's backward solve.
-void inverse_columns(const Eigen::LLT<Dense>& llt, Dense& P, Index c0, Index c1) {
-  auto X = P.middleCols(c0, c1 - c0);
-  identity_forward_solve(llt.matrixLLT(), c0, X);
-  llt.matrixU().solveInPlace(X);
-}
-
-}  // namespace
-
-void llt_inverse_split(const Eigen::LLT<Dense>& llt, Dense& P, HelperThread* helper) {
-  const Index n = llt.rows();
-  if (!identity_forward_solve_available()) {
-    P = llt.solve(Dense::Identity(n, n));
-    return;
-  }
-  P.resize(n, n);
-  if (helper == nullptr || n < 64) {
-    inverse_columns(llt, P, 0, n);
-    return;
-  }
-  const Index split = balanced_split(n);
-  fork_join(helper, [&] { inverse_columns(llt, P, split, n); }, [&] { inverse_columns(llt, P, 0, split); });
 }
 
 }  // namespace lpvid

@@ -1,4 +1,4 @@
-#include "lmi/rank_update_kernels.h"
+#include "dense/rank_update_kernels.h"
 
 #include <cstring>
 

@@ -1,6 +1,6 @@
 #pragma once
 /// The micro-kernel of the Cholesky factorisation's rank update
-/// A22 −= A21·A21ᵀ (lmi/split_llt.cc), written with 4-wide vector
+/// A22 −= A21·A21ᵀ (dense/split_llt.cc), written with 4-wide vector
 /// instructions (AVX2) but with the operations of Eigen's 2-wide
 /// general block-panel kernel (gebp, its 2pX4 micro block): each entry's sum
 /// starts at 0.0 and adds its products a·b one by one in the order of the
@@ -13,7 +13,7 @@
 /// and the column panels of 4; the remaining rows and columns stay with
 /// Eigen's own kernel (its 1- and 2-row paths order their sums otherwise).
 /// Only used where the processor has AVX2 and the build did not enable fused
-/// multiply-adds (as lmi/ldlt_panel_kernels.h): `available()`; with
+/// multiply-adds (as dense/ldlt_panel_kernels.h): `available()`; with
 /// AVX-512F two row groups share an 8-wide vector (the code is compiled with
 /// contraction off, since AVX-512F has fused multiply-adds). Measured on the
 /// 3×3 n = 200 case (the Newton system of order 1 801 factored ~110 times):

@@ -1,12 +1,15 @@
 // SplitLdlt (the LDLᵀ of the structured barrier's Newton system, its column
 // updates shared with a helper thread) against Eigen::LDLT::compute itself:
-// every factor entry, pivot and solve bit for bit, with and without a helper.
+// every factor entry, pivot and solve bit for bit, with and without a helper;
+// the forward solve L⁻¹·I that skips the identity's zeros against Eigen's.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "core/helper_thread.h"
-#include "lmi/split_factorisations.h"
+#include "dense/identity_forward_solve.h"
+#include "dense/split_factorisations.h"
+#include "support/random_dense.h"
 #include "support/same_bits.h"
 
 namespace lpvid {
@@ -17,9 +20,7 @@ using Dense = Eigen::MatrixXd;
 /// kind 0: SPD (BᵀB/n + I); 1: symmetric indefinite; 2: SPD with a zero row and column (singular);
 /// 3: symmetric indefinite with tied diagonal entries (±1, 2, the pivot order decided by position).
 Dense random_symmetric(Eigen::Index n, int kind, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Dense B(n, n);
-  for (Eigen::Index i = 0; i < B.size(); ++i) B.data()[i] = u(rng);
+  const Dense B = test::random_uniform(n, n, rng);
   Dense A = kind == 1 ? Dense(B + B.transpose()) : Dense(B.transpose() * B / static_cast<double>(n) + Dense::Identity(n, n));
   if (kind == 3)
     for (Eigen::Index k = 0; k < n; ++k) A(k, k) = k % 3 == 0 ? 2.0 : k % 3 == 1 ? -1.0 : 1.0;
@@ -79,18 +80,19 @@ TEST(SplitLdlt, PanelEdgesAndAZeroPivotInsideAPanel) {
   expect_identical(S, nullptr);
 }
 
-TEST(LltInverseSplit, BitForBitTheWholeSolve) {
+TEST(IdentityForwardSolve, BitForBitEigensSolveOnEveryColumnRange) {
+  if (!identity_forward_solve_available()) GTEST_SKIP() << "a build with fused multiply-adds uses Eigen's solve itself";
   std::mt19937_64 rng(11);
-  HelperThread helper;
   for (const Eigen::Index n : {1, 2, 3, 4, 5, 63, 64, 65, 66, 67, 130, 257, 400, 601, 1000, 1283}) {
     SCOPED_TRACE(::testing::Message() << "n = " << n);
     const Eigen::LLT<Dense> llt(random_symmetric(n, 0, rng));
-    const Dense whole = llt.solve(Dense::Identity(n, n));
-    Dense P = Dense::Constant(3, 3, 7.0);  // resized
-    llt_inverse_split(llt, P, &helper);
-    EXPECT_TRUE(test::same_bits(P, whole));
-    llt_inverse_split(llt, P, nullptr);
-    EXPECT_TRUE(test::same_bits(P, whole));
+    Dense whole = Dense::Identity(n, n);
+    llt.matrixL().solveInPlace(whole);
+    for (const Eigen::Index c0 : {Eigen::Index{0}, n / 4 * 2, n - 1}) {
+      Dense X = Dense::Constant(n, n, 7.0);
+      identity_forward_solve(llt.matrixLLT(), c0, X.middleCols(c0, n - c0));
+      EXPECT_TRUE(test::same_bits(X.rightCols(n - c0), whole.rightCols(n - c0))) << "from column " << c0;
+    }
   }
 }
 

@@ -6,7 +6,8 @@
 #include <random>
 
 #include "core/helper_thread.h"
-#include "lmi/split_llt.h"
+#include "dense/split_llt.h"
+#include "support/random_dense.h"
 #include "support/same_bits.h"
 
 namespace lpvid {
@@ -16,10 +17,7 @@ using Dense = Eigen::MatrixXd;
 
 /// SPD (BᵀB/n + I), or with `shift` subtracted from the diagonal (not positive definite for a large shift).
 Dense random_spd(Eigen::Index n, double shift, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Dense B(n, n);
-  for (Eigen::Index i = 0; i < B.size(); ++i) B.data()[i] = u(rng);
-  Dense A = B.transpose() * B / static_cast<double>(n) + Dense::Identity(n, n);
+  Dense A = test::random_spd(n, rng);
   A.diagonal().array() -= shift;
   return A;
 }
@@ -62,6 +60,32 @@ TEST(SplitLlt, AFailureStopsWhereEigensDoes) {
     expect_llt_identical(A, &helper);
     expect_llt_identical(random_spd(n, 1.5, rng), &helper);
   }
+}
+
+// lower_rank_update against Eigen's selfadjointView<Lower>().rankUpdate on
+// blocks of a larger matrix (its outer stride), every remainder of the size
+// modulo 4, depths around the kernels' steps, one thread or two; the upper
+// triangle is left as it was.
+TEST(SplitLlt, LowerRankUpdateIsEigensRankUpdateBitForBit) {
+  std::mt19937_64 rng(31);
+  HelperThread helper;
+  for (const Eigen::Index size : {1, 4, 7, 130, 257, 1030})
+    for (const Eigen::Index depth : {1, 3, 64, 256, 801}) {
+      SCOPED_TRACE(::testing::Message() << "size = " << size << ", depth = " << depth);
+      const Dense base = test::random_uniform(size + 3, size + depth + 2, rng);
+      Dense eigen = base, one = base, two = base;
+      const auto update = [&](Dense& m, HelperThread* h) {
+        Eigen::Block<Dense> A22(m, 1, 2, size, size);
+        const Eigen::Block<Dense> A21(m, 2, size + 2, size, depth);
+        lower_rank_update(A22, A21, h);
+      };
+      Eigen::Block<Dense>(eigen, 1, 2, size, size).selfadjointView<Eigen::Lower>().rankUpdate(
+          Eigen::Block<Dense>(eigen, 2, size + 2, size, depth), -1.0);
+      update(one, nullptr);
+      update(two, &helper);
+      EXPECT_TRUE(test::same_bits(one, eigen));
+      EXPECT_TRUE(test::same_bits(two, eigen));
+    }
 }
 
 }  // namespace

@@ -13,7 +13,7 @@
 /// Eigen's kernels, so every other column is computed by the same
 /// operations. The result is bit for bit that of
 /// `llt.matrixL().solveInPlace(X)` on the same columns of the identity —
-/// tests/lmi/split_factorisations_test.cc checks it — in a third of the
+/// tests/dense/split_factorisations_test.cc checks it — in a third of the
 /// work on a whole identity.
 ///
 /// Used only where no fused multiply-add is compiled in (the scalar updates

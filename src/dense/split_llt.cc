@@ -1,12 +1,12 @@
-#include "lmi/split_llt.h"
+#include "dense/split_llt.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "core/helper_thread.h"
-#include "lmi/rank_update_kernels.h"
-#include "lmi/split_factorisations.h"
+#include "dense/rank_update_kernels.h"
+#include "dense/split_factorisations.h"
 
 namespace lpvid {
 
@@ -81,11 +81,31 @@ void triangle_panels(double* res, Index stride, const double* blockA, const doub
   }
 }
 
-/// A22 −= A21·A21ᵀ on the lower triangle: Eigen's general_matrix_matrix_
-/// triangular_product<Lower> loop, the diagonal blocks' column panels
-/// shared (cut where the two shares of the triangle are equal).
-void rank_update(Block& A22, const Block& A21, HelperThread* helper) {
+/// Columns [c0, c1) (multiples of 4) of the rows [i2, i2 + m) left of their
+/// diagonal block: the vector kernel on the leading rows in groups of 4
+/// (`quick`), Eigen's kernel on the rest; each entry by the same operations
+/// whatever the column range.
+void rectangle_columns(const ResMapper& res, Index stride, const double* blockA, const double* blockB, Index i2, Index m,
+                       Index depth, Index quick, Index c0, Index c1) {
+  if (c1 <= c0) return;
+  if (quick > 0)
+    rank_update_kernel::minus_products(blockA, blockB + depth * c0, depth, quick, (c1 - c0) / 4, &res(i2, c0), stride);
+  if (quick < m) {
+    ei::gebp_kernel<double, double, Index, ResMapper, Traits::mr, Traits::nr, false, false> gebp;
+    gebp(res.getSubMapper(i2 + quick, c0), blockA + depth * quick, blockB + depth * c0, m - quick, depth, c1 - c0, -1.0, -1,
+         -1, 0, 0);
+  }
+}
+
+}  // namespace
+
+/// Eigen's general_matrix_matrix_triangular_product<Lower> loop; per row
+/// block, the columns left of the diagonal block are cut in two halves and
+/// the diagonal block's column panels where the two shares of its triangle
+/// are equal, one of each for each thread.
+void lower_rank_update(Eigen::Block<Eigen::MatrixXd>& A22, const Eigen::Block<Eigen::MatrixXd>& A21, HelperThread* helper) {
   const Index size = A22.cols(), depth = A21.cols(), stride = A22.outerStride();
+  if (size == 0 || depth == 0) return;
   RankBlocking blocking(size, size, depth, 1, false);
   const Index kc = blocking.kc();
   Index mc = std::min(size, blocking.mc());
@@ -97,7 +117,6 @@ void rank_update(Block& A22, const Block& A21, HelperThread* helper) {
   ei::gemm_pack_lhs<double, Index, decltype(lhs), Traits::mr, Traits::LhsProgress, Traits::LhsPacket4Packing, Eigen::ColMajor>
       pack_lhs;
   ei::gemm_pack_rhs<double, Index, decltype(rhs), Traits::nr, Eigen::RowMajor> pack_rhs;
-  ei::gebp_kernel<double, double, Index, ResMapper, Traits::mr, Traits::nr, false, false> gebp;
   const ResMapper res(A22.data(), stride, 1);
   for (Index k2 = 0; k2 < depth; k2 += kc) {
     const Index actual_kc = std::min(k2 + kc, depth) - k2;
@@ -107,19 +126,25 @@ void rank_update(Block& A22, const Block& A21, HelperThread* helper) {
       pack_lhs(blockA.data(), lhs.getSubMapper(i2, k2), actual_kc, m);
       const Index left = std::min(size, i2);  // the columns left of the diagonal block: i2 is a multiple of mc, of nr = 4
       const Index quick = left % 4 == 0 ? vector_rows(m) : 0;
-      if (quick > 0) rank_update_kernel::minus_products(blockA.data(), blockB.data(), actual_kc, quick, left / 4, &res(i2, 0), stride);
-      if (quick < m)
-        gebp(res.getSubMapper(i2 + quick, 0), blockA.data() + actual_kc * quick, blockB.data(), m - quick, actual_kc, left,
-             -1.0, -1, -1, 0, 0);
+      const Index half = helper == nullptr ? left : left / 8 * 4;
       double* diagonal = A22.data() + stride * i2 + i2;
       const double* b = blockB.data() + actual_kc * i2;
       const Index cut = std::min(m, static_cast<Index>(std::ceil(0.2929 * static_cast<double>(m) / kTribbPanel)) * kTribbPanel);
       fork_join(
-          helper, [&] { triangle_panels(diagonal, stride, blockA.data(), b, m, actual_kc, cut, m); },
-          [&] { triangle_panels(diagonal, stride, blockA.data(), b, m, actual_kc, 0, cut); });
+          helper,
+          [&] {
+            rectangle_columns(res, stride, blockA.data(), blockB.data(), i2, m, actual_kc, quick, half, left);
+            triangle_panels(diagonal, stride, blockA.data(), b, m, actual_kc, cut, m);
+          },
+          [&] {
+            rectangle_columns(res, stride, blockA.data(), blockB.data(), i2, m, actual_kc, quick, 0, half);
+            triangle_panels(diagonal, stride, blockA.data(), b, m, actual_kc, 0, cut);
+          });
     }
   }
 }
+
+namespace {
 
 /// Eigen 3.4's llt_inplace<double, Lower>::blocked with the two statements
 /// shared out where the rows below the block are many enough.
@@ -140,7 +165,7 @@ Index llt_blocked(Dense& m, HelperThread* helper) {
       A22.template selfadjointView<Eigen::Lower>().rankUpdate(A21, -1.0);
     } else {
       solve_right(A11, A21, helper);
-      rank_update(A22, A21, helper);
+      lower_rank_update(A22, A21, helper);
     }
   }
   return -1;

@@ -12,11 +12,11 @@
 ///    rows, cut at a multiple of 4 (its kernels treat rows in groups of 4
 ///    counted from the first, and the last rows(mod 4) alike) with the
 ///    blocking of the whole call;
-///  - A22 −= A21·A21ᵀ (the lower triangle's rank update): Eigen's kernel
-///    walks the triangle in column panels of 4, each panel's entries its own
-///    (a 4 × 4 diagonal block through a buffer, then the rows below); the
-///    panels are shared between the threads, packed once.
-/// So the factor is bit for bit Eigen's — tests/lmi/split_llt_test.cc
+///  - A22 −= A21·A21ᵀ (the lower triangle's rank update, `lower_rank_update`):
+///    Eigen's kernel walks the triangle in column panels of 4, each panel's
+///    entries its own (a 4 × 4 diagonal block through a buffer, then the rows
+///    below); the panels are shared between the threads, packed once.
+/// So the factor is bit for bit Eigen's — tests/dense/split_llt_test.cc
 /// checks it — on one thread or two. Shared only from 1 024 rows on (below,
 /// one thread measured faster here).
 
@@ -34,5 +34,12 @@ class SplitLlt : public Eigen::LLT<Eigen::MatrixXd> {
   /// As Eigen::LLT::compute(a); `helper` (may be null: one thread) takes a share of the work.
   SplitLlt& compute_split(const Eigen::MatrixXd& a, HelperThread* helper);
 };
+
+/// A22 −= A21·A21ᵀ on the lower triangle (the upper one is not touched), bit
+/// for bit `A22.selfadjointView<Eigen::Lower>().rankUpdate(A21, -1.0)` on one
+/// thread or two (`helper` may be null): Eigen's blocking and packing, its
+/// kernel or rank_update_kernel's lane-for-lane copy of it, and every entry's
+/// products summed by the same operations whichever thread computes it.
+void lower_rank_update(Eigen::Block<Eigen::MatrixXd>& A22, const Eigen::Block<Eigen::MatrixXd>& A21, HelperThread* helper);
 
 }  // namespace lpvid
