@@ -1,5 +1,5 @@
 #pragma once
-/// The two dense factorisation steps of the structured barrier's Newton step
+/// The pivoted LDLᵀ of the structured barrier's Newton system
 /// (lmi/delta_form_barrier.cc), shared with a helper thread so that every
 /// number is still computed by the same operations as by Eigen alone.
 ///
@@ -14,8 +14,9 @@
 /// tests/dense/split_factorisations_test.cc checks it. From 256 rows on, on
 /// processors with AVX2, the loop runs in panels of 16 columns with the pivot
 /// order found first (split_factorisations.cc says why the bits stay Eigen's).
-/// The Newton system of the structured barrier (lmi/delta_form_barrier.cc)
-/// was ~60 % of a 3×3 solve.
+/// The structured barrier (lmi/delta_form_barrier.cc, lmi/newton_factor.h)
+/// uses it where the Newton system's Cholesky meets a pivot that is not
+/// positive, and for the final tight centering.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>

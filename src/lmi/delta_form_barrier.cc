@@ -740,7 +740,7 @@ class BarrierRun {
   /// depend on μ).
   void reduce_mu() {
     const double factor = adapt_mu_factor();
-    if (options_.predictor && !factor_of_H_) newton_factor_.compute(H_, helper_.get());  // else the last Newton step's factorisation of H is at hand
+    if (options_.predictor && !factor_of_H_) newton_factor_.compute(H_, helper_.get(), pivoted_newton_);  // else the last Newton step's factorisation of H is at hand
     factor_of_H_ = true;
     const Vecd step = options_.predictor ? predictor_step(p_, pt_, newton_factor_, mu_, factor) : Vecd();
     mu_ /= factor;
