@@ -5,9 +5,7 @@
 // the time to certify "invalidated" at d_max = 0.9·√lower (invalid by the
 // certified lower end). Prints a table; not a test.
 //
-// SISO data: the LTI model of fixtures/models/lti_siso.json, u ~ N(0, 1),
-// y = ŷ + 0.48·z(k − d) + noise U(−0.002, 0.002), d = min(70, n/2): the true Δ
-// is a delay of 0.48, which no 64-tap FIR can represent when d ≥ 64.
+// SISO data: siso_delay_case.h (a delay of 0.48 that no 64-tap FIR can represent).
 // 2×2 data: the paper's Example 1 (noise variance 0.01) with its initial model.
 // 3×3 data: mimo3_case below (until the paper's Example 2 exists at its own scale), δ = 0.2.
 // Usage: interval_bench [sizes=100,200,400] [example1_sizes=60,100] [delta_siso=0.45] [delta_2x2=1] [3x3_sizes=none]
@@ -35,12 +33,14 @@
 #include "solvers/solver_factory.h"
 #include "verify/certificate/certificate_check.h"
 #include "bench_measure.h"
+#include "siso_delay_case.h"
 
 using namespace lpvid;
 using bench::int_list;
 using bench::kilobytes;
 using bench::peak_mb;
 using bench::StageClock;
+using bench::siso_delay_case;
 
 namespace {
 
@@ -87,22 +87,6 @@ void mimo3_case(int n, int seed, const std::filesystem::path& dir, LpvModel<Rati
         for (int j = 0; j < 3; ++j) w += (i == j ? 0.3 : 0.05) * nearest_double(s.z(k - d, j));
       exp->y(k, i) = round_to_digits(nearest_double(s.output(k, i)) + w + 0.002 * (2 * rng.uniform() - 1), 10);
     }
-}
-
-/// The SISO delayed-Δ case.
-void siso_case(int n, LpvModel<Rational>* model, Experiment<Rational>* exp) {
-  *model = read_model_file<Rational>(std::string(LPVID_SOURCE_DIR) + "/fixtures/models/lti_siso.json");
-  RandomStream rng(1000 + static_cast<uint64_t>(n));
-  exp->u = Mat<Rational>(n, 1);
-  exp->rho = Mat<Rational>(n, 0);
-  exp->y = Mat<Rational>::Zero(n, 1);
-  for (int k = 0; k < n; ++k) exp->u(k, 0) = round_to_digits(rng.normal(), 6);
-  const Simulation<Rational> s = simulate(*model, *exp);
-  const int d = std::min(70, n / 2);
-  for (int k = 0; k < n; ++k) {
-    const double w = k >= d ? 0.48 * nearest_double(s.z(k - d, 0)) : 0.0;
-    exp->y(k, 0) = round_to_digits(nearest_double(s.output(k, 0)) + w + 0.002 * (2 * rng.uniform() - 1), 10);
-  }
 }
 
 struct Row {
@@ -201,7 +185,7 @@ int main(int argc, char** argv) {
   for (int n : siso) {
     LpvModel<Rational> m;
     Experiment<Rational> e;
-    siso_case(n, &m, &e);
+    siso_delay_case(n, &m, &e);
     const std::string data = (dir / ("siso_" + std::to_string(n) + ".csv")).string();
     write_data(data, m, e);
     print("SISO", n, run(m, e, data, delta_siso, dir, "siso_" + std::to_string(n)));

@@ -8,17 +8,33 @@
 // and the gradient; toeplitz/tap_norm_barrier.h), one Hessian–vector
 // product, and their relative errors against central differences (step 1e-6)
 // of the log det and of the gradient. Peak memory is the process's (three
-// barrier objects are alive for the differences: 3·L²/2 doubles). Not a test.
-// Usage: long_horizon_bench [sizes=3200,6400,10000] [delta=0.45]
+// barrier objects are alive for the differences: 3·L²/2 doubles).
+// Table 2: the exploratory Newton–CG path (explore/long_horizon_newton_cg.h)
+// on the SISO delayed-Δ case (siso_delay_case.h) at the sizes of the third
+// argument: wall time, the process's peak memory, the work counts, the d_max²
+// of its taps and its floating lower estimate; at the sizes of the fourth
+// also the dense path's certified interval (certify_fixed_model, both ends
+// checked exactly); at the sizes of the fifth the upper end of the
+// structured taps certified (certify_with_taps: taps rounded to 12 digits,
+// shrunk onto δ(1 − 10⁻⁸) if needed, (C1) and (C2) checked exactly in
+// memory) with its time. Not a test.
+// Usage: long_horizon_bench [sizes=3200,6400,10000] [delta=0.45] [newton_cg_sizes=none] [dense_sizes=none]
+//                           [certify_sizes=none]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "certify/certify.h"
+#include "explore/long_horizon_newton_cg.h"
+#include "solvers/solver_factory.h"
 #include "toeplitz/displacement_cholesky.h"
 #include "toeplitz/tap_norm_barrier.h"
 #include "bench_measure.h"
+#include "siso_delay_case.h"
 
 using namespace lpvid;
 
@@ -70,6 +86,62 @@ void piece_row(int n, double delta) {
   std::fflush(stdout);
 }
 
+struct DenseInterval {
+  double lower = NAN, upper = NAN, seconds = 0;
+};
+
+DenseInterval dense_interval(const LpvModel<Rational>& model, const Experiment<Rational>& exp, double delta) {
+  DenseInterval d;
+  auto solver = make_solver("csdp");
+  CertifyOptions co;
+  co.objective.kind = BoundObjective::Kind::kMinDmax;
+  co.objective.delta = delta;
+  bench::StageClock clock;
+  const CertifiedBounds b = certify_fixed_model(model, exp, co, *solver);
+  d.seconds = clock.wall();
+  if (b.verified()) d.upper = nearest_double(b.upper);
+  if (b.lower.verified()) d.lower = nearest_double(b.lower.value);
+  return d;
+}
+
+/// The upper end of the structured taps, certified exactly: (d_max², seconds), NaN when not certified.
+std::pair<double, double> certified_upper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                                          const Eigen::VectorXd& taps, double delta) {
+  CertifyOptions co;
+  co.objective.kind = BoundObjective::Kind::kMinDmax;
+  co.objective.delta = delta;
+  co.lower_end = false;
+  bench::StageClock clock;
+  const CertifiedBounds b = certify_with_taps(model, exp, Mat<double>(taps), co, "structured Newton-CG (exploration)");
+  if (!b.verified()) std::fprintf(stderr, "  upper end not certified: %s\n", b.reason.c_str());
+  return {b.verified() ? nearest_double(b.upper) : NAN, clock.wall()};
+}
+
+void newton_cg_row(int n, double delta, const std::vector<int>& dense, const std::vector<int>& certify) {
+  LpvModel<Rational> model;
+  Experiment<Rational> exp;
+  bench::siso_delay_case(n, &model, &exp);
+  const Simulation<Rational> s = simulate(model, exp);
+  const Eigen::VectorXd z = nearest_double(s.z).col(0);
+  const Eigen::VectorXd r = nearest_double(Mat<Rational>(exp.y - s.output)).col(0);
+  LongHorizonOptions o;
+  o.max_newton = 800;
+  o.progress = [n](const std::string& line) { std::fprintf(stderr, "  [n = %d] %s\n", n, line.c_str()); };
+  bench::StageClock clock;
+  const LongHorizonAnswer a = solve_long_horizon(z, r, delta, o);
+  const double wall = clock.wall(), peak = bench::peak_mb();
+  if (!a.converged) std::fprintf(stderr, "  [n = %d] not converged: %s\n", n, a.message.c_str());
+  DenseInterval d;
+  if (std::find(dense.begin(), dense.end(), n) != dense.end()) d = dense_interval(model, exp, delta);
+  std::pair<double, double> upper{NAN, 0.0};
+  if (std::find(certify.begin(), certify.end(), n) != certify.end()) upper = certified_upper(model, exp, a.taps, delta);
+  std::printf("%5d %5ld | %8.1f %7.0f %-4s | %6d %7ld %6ld | %.6e %.6e %8.1e %-6s | %.6e %.6e %7.1f | %.9e %7.1f\n", n,
+              static_cast<long>(a.horizon), wall, peak, a.converged ? "yes" : "no", a.newton_steps,
+              a.cg_iterations, a.factorisations, a.dmax2, a.lower_estimate, (a.dmax2 - a.lower_estimate) / a.dmax2,
+              a.inside ? "yes" : "NO", d.lower, d.upper, d.seconds, upper.first, upper.second);
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -78,5 +150,13 @@ int main(int argc, char** argv) {
   std::printf("The structured pieces of -log det(delta^2 I - T_h T_h^T), delta = %g, taps at 0.999 of the ball's edge\n", delta);
   std::printf("    n     L | inside  sweep.s  setup.s  Hv.s     | grad.err  Hv.err    | peak.MB\n");
   for (int n : sizes) piece_row(n, delta);
+  const std::vector<int> newton_cg = bench::int_list(argc > 3 ? argv[3] : "");
+  const std::vector<int> dense = bench::int_list(argc > 4 ? argv[4] : "");
+  const std::vector<int> certify = bench::int_list(argc > 5 ? argv[5] : "");
+  if (newton_cg.empty()) return 0;
+  std::printf("\nExploratory Newton-CG path, min dmax^2 at delta = %g (SISO delayed-Delta case)\n", delta);
+  std::printf("    n     L |   wall.s peak.MB conv | newton      CG sweeps | dmax2(h)     lower.est    gap.est  inside | "
+              "dense lower  dense upper  dense.s | certified upper  cert.s\n");
+  for (int n : newton_cg) newton_cg_row(n, delta, dense, certify);
   return 0;
 }

@@ -84,4 +84,15 @@ bool displacement_log_det(const Eigen::VectorXd& h, double t, double* log_det) {
   return schur_sweep(h, t, log_det, [](Eigen::Index, const double*, Eigen::Index) {});
 }
 
+double lower_toeplitz_norm2(const Eigen::VectorXd& h) {
+  const double l1 = h.cwiseAbs().sum();
+  double lo = 0, hi = l1 * l1 * (1 + 1e-12), log_det = 0;
+  if (!(hi > 0)) return 0;
+  for (int k = 0; k < 64; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (displacement_log_det(h, mid, &log_det) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
 }  // namespace lpvid

@@ -44,4 +44,9 @@ class DisplacementCholesky {
 /// log det(t·I − T_h T_hᵀ), or false when that matrix is not positive definite (O(L) memory).
 bool displacement_log_det(const Eigen::VectorXd& h, double t, double* log_det);
 
+/// ‖T_h‖² from above, by bisection on the interior test: the smallest t of
+/// 64 halvings of [0, (Σ|h_l|)²] at which t·I − T_h T_hᵀ passed the Schur
+/// test (floating point, O(L²) per test, O(L) memory).
+double lower_toeplitz_norm2(const Eigen::VectorXd& h);
+
 }  // namespace lpvid

@@ -62,5 +62,14 @@ RC_GTEST_PROP(DisplacementCholesky, OutsideTheNormBallIsNotInterior, ()) {
   RC_ASSERT(!chol.factor(h, t, true));
 }
 
+RC_GTEST_PROP(DisplacementCholesky, NormByBisectionIsTheLargestEigenvalueFromAbove, ()) {
+  const Eigen::Index L = *rc::gen::inRange(1, 40);
+  const Eigen::VectorXd h = random_taps(L);
+  const double norm2 = -Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense_gram(h, 0.0)).eigenvalues()(0);
+  const double bisected = lower_toeplitz_norm2(h);
+  RC_ASSERT(bisected >= norm2 * (1 - 1e-13));
+  RC_ASSERT(bisected <= norm2 * (1 + 1e-9) + 1e-300);
+}
+
 }  // namespace
 }  // namespace lpvid
