@@ -17,8 +17,7 @@
 /// gradient is a difference of terms 10⁷ times larger, and its rounding
 /// keeps the residual from falling further), else
 /// at max_cg. A point is centred when the decrement is below `centred` with
-/// CG converged (a CG stopped at max_cg underestimates it: measured, a
-/// nearly rank-deficient Z then ended the path 40 % above the optimum).
+/// CG converged (a CG stopped at max_cg gives a decrement from below).
 ///
 /// What it answers is a floating estimate, not a certified bound: the taps
 /// (inside the norm ball by the floating Schur test), their d_max², and the
