@@ -33,6 +33,7 @@
 #include "solvers/solver_factory.h"
 #include "verify/certificate/certificate_check.h"
 #include "bench_measure.h"
+#include "case_data_file.h"
 #include "siso_delay_case.h"
 
 using namespace lpvid;
@@ -43,14 +44,6 @@ using bench::StageClock;
 using bench::siso_delay_case;
 
 namespace {
-
-void write_data(const std::string& path, const LpvModel<Rational>& m, const Experiment<Rational>& e) {
-  std::vector<TextColumn> cols;
-  for (Eigen::Index i = 0; i < e.nu(); ++i) cols.push_back({m.columns.u[static_cast<size_t>(i)], column_text(e.u, i)});
-  for (Eigen::Index i = 0; i < e.ny(); ++i) cols.push_back({m.columns.y[static_cast<size_t>(i)], column_text(e.y, i)});
-  for (Eigen::Index i = 0; i < e.n_rho(); ++i) cols.push_back({m.columns.rho[static_cast<size_t>(i)], column_text(e.rho, i)});
-  write_csv(path, cols);
-}
 
 /// A 3×3 case (ny = nz = 3, for the targets' 3×3 rows until Example 2 exists):
 /// a stable LTI model with additive uncertainty, u ~ N(0, I), y = ŷ + a
@@ -187,7 +180,7 @@ int main(int argc, char** argv) {
     Experiment<Rational> e;
     siso_delay_case(n, &m, &e);
     const std::string data = (dir / ("siso_" + std::to_string(n) + ".csv")).string();
-    write_data(data, m, e);
+    bench::write_case_data(data, m, e);
     print("SISO", n, run(m, e, data, delta_siso, dir, "siso_" + std::to_string(n)));
   }
   for (int n : mimo) {
@@ -197,7 +190,7 @@ int main(int argc, char** argv) {
     const LpvModel<Rational> m = example1_initial_model();
     const Experiment<Rational> e = example1_experiment(eo);
     const std::string data = (dir / ("ex1_" + std::to_string(n) + ".csv")).string();
-    write_data(data, m, e);
+    bench::write_case_data(data, m, e);
     print("2x2", n, run(m, e, data, delta_2x2, dir, "ex1_" + std::to_string(n)));
   }
   for (int n : mimo3)
@@ -207,7 +200,7 @@ int main(int argc, char** argv) {
       mimo3_case(n, seed, dir, &m, &e);
       const std::string name = "mimo3_" + std::to_string(n) + (seed == 0 ? "" : "_seed" + std::to_string(seed));
       const std::string data = (dir / (name + ".csv")).string();
-      write_data(data, m, e);
+      bench::write_case_data(data, m, e);
       print(seed == 0 ? "3x3" : ("3x3/" + std::to_string(seed)).c_str(), n, run(m, e, data, 0.2, dir, name));
     }
   std::printf("(seconds, wall clock: interval = certify_fixed_model with both ends; ver.up / ver.lo = lpvid-verify on the\n"

@@ -14,12 +14,16 @@
 // argument: wall time, the process's peak memory, the work counts, the d_max²
 // of its taps and its floating lower estimate; at the sizes of the fourth
 // also the dense path's certified interval (certify_fixed_model, both ends
-// checked exactly); at the sizes of the fifth the upper end of the
-// structured taps certified (certify_with_taps: taps rounded to 12 digits,
-// shrunk onto δ(1 − 10⁻⁸) if needed, (C1) and (C2) checked exactly in
-// memory) with its time. Not a test.
+// checked exactly); at the sizes of the fifth both ends certified: the path
+// ends with the final centering (exact Newton steps preconditioned by the
+// Hessian's factor, explore/long_horizon_newton_cg.h), the upper end is its
+// taps (certify_with_taps: rounded to 12 digits, shrunk into the ball if
+// needed, (C1) and (C2) checked exactly in memory), the lower end its
+// central point as a compact dual certificate (certify_dual with g from
+// explore/long_horizon_dual.h), each with its time; with out_dir, the data
+// and both certificates are written there for `lpvid-verify`. Not a test.
 // Usage: long_horizon_bench [sizes=3200,6400,10000] [delta=0.45] [newton_cg_sizes=none] [dense_sizes=none]
-//                           [certify_sizes=none]
+//                           [certify_sizes=none] [out_dir=none]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -28,12 +32,17 @@
 #include <utility>
 #include <vector>
 
+#include "certify/certificate_files.h"
 #include "certify/certify.h"
+#include "certify/dual_certify.h"
+#include "data/data_reference.h"
+#include "explore/long_horizon_dual.h"
 #include "explore/long_horizon_newton_cg.h"
 #include "solvers/solver_factory.h"
 #include "toeplitz/displacement_cholesky.h"
 #include "toeplitz/tap_norm_barrier.h"
 #include "bench_measure.h"
+#include "case_data_file.h"
 #include "siso_delay_case.h"
 
 using namespace lpvid;
@@ -105,19 +114,75 @@ DenseInterval dense_interval(const LpvModel<Rational>& model, const Experiment<R
 }
 
 /// The upper end of the structured taps, certified exactly: (d_max², seconds), NaN when not certified.
+/// With `out_dir`, the data and the certificate are written there
+/// (siso_<n>.csv, siso_<n>.upper.json) for `lpvid-verify`.
 std::pair<double, double> certified_upper(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
-                                          const Eigen::VectorXd& taps, double delta) {
+                                          const Eigen::VectorXd& taps, double delta, const std::string& out_dir) {
   CertifyOptions co;
+  const std::string stem = out_dir.empty() ? "" : out_dir + "/siso_" + std::to_string(exp.n());
+  if (!stem.empty()) {
+    bench::write_case_data(stem + ".csv", model, exp);
+    co.records = {read_data_table(stem + ".csv").reference};
+  }
   co.objective.kind = BoundObjective::Kind::kMinDmax;
   co.objective.delta = delta;
   co.lower_end = false;
   bench::StageClock clock;
   const CertifiedBounds b = certify_with_taps(model, exp, Mat<double>(taps), co, "structured Newton-CG (exploration)");
   if (!b.verified()) std::fprintf(stderr, "  upper end not certified: %s\n", b.reason.c_str());
+  if (b.verified() && !stem.empty()) write_certificates(b, stem + ".upper.json");
   return {b.verified() ? nearest_double(b.upper) : NAN, clock.wall()};
 }
 
-void newton_cg_row(int n, double delta, const std::vector<int>& dense, const std::vector<int>& certify) {
+/// The lower end from the path's last point, certified exactly: the compact
+/// dual certificate (certify_dual, form "dual_delta_path") of the central
+/// point (taps, δ², μ) with g = −(r − Z h)/N, the dual of the epigraph form's
+/// (C2) on the same path: the claimed lower end of d_max² and the seconds (NaN when not certified).
+struct CertifiedLower {
+  double value = NAN, seconds = 0;
+  std::string reason;
+};
+
+CertifiedLower certified_lower(const LpvModel<Rational>& model, const Experiment<Rational>& exp,
+                               const Simulation<Rational>& sim, const LongHorizonAnswer& a, double delta,
+                               const std::string& out_dir) {
+  const Eigen::Index n = exp.n(), L = a.horizon;
+  DeltaFormSolution s;
+  s.taps = Mat<double>(a.taps);
+  s.horizon = L;
+  s.leading_zeros = n - L;
+  s.delta2 = delta * delta;
+  s.dmax2 = a.dmax2;
+  s.path_mu = a.mu;
+  // Only Y2's first column is read by the compact builder: (1/N, g).
+  const Eigen::VectorXd z = nearest_double(sim.z).col(0), r = nearest_double(Mat<Rational>(exp.y - sim.output)).col(0);
+  const LongHorizonDualSignal g = long_horizon_dual_signal(z, r, a.taps, delta * delta, a.mu);
+  std::fprintf(stderr, "  [n = %ld] dual signal: relative residual of the dual equality %.2e\n", static_cast<long>(n),
+               g.relative_residual);
+  CertifiedLower out;
+  if (!g.ok) return out.reason = "no dual signal", out;
+  s.dual_c2 = Mat<double>(n + 1, 1);
+  s.dual_c2(0, 0) = 1.0 / static_cast<double>(n);
+  s.dual_c2.col(0).tail(n) = g.g;
+  CertifyOptions co;
+  co.objective.kind = BoundObjective::Kind::kMinDmax;
+  co.objective.delta = delta;
+  if (!out_dir.empty()) co.records = {read_data_table(out_dir + "/siso_" + std::to_string(n) + ".csv").reference};
+  bench::StageClock clock;
+  const DualOutcome d = certify_dual(model, exp, sim, s, co);
+  out.seconds = clock.wall();
+  if (d.verified()) {
+    out.value = nearest_double(d.bound);
+    if (!out_dir.empty() && d.certificate) write_certificate_at(*d.certificate, out_dir + "/siso_" + std::to_string(n) + ".lower.json");
+  } else {
+    out.reason = d.reason;
+    std::fprintf(stderr, "  lower end not certified: %s\n", d.reason.c_str());
+  }
+  return out;
+}
+
+void newton_cg_row(int n, double delta, const std::vector<int>& dense, const std::vector<int>& certify,
+                   const std::string& out_dir) {
   LpvModel<Rational> model;
   Experiment<Rational> exp;
   bench::siso_delay_case(n, &model, &exp);
@@ -126,6 +191,10 @@ void newton_cg_row(int n, double delta, const std::vector<int>& dense, const std
   const Eigen::VectorXd r = nearest_double(Mat<Rational>(exp.y - s.output)).col(0);
   LongHorizonOptions o;
   o.max_newton = 800;
+  // A certified lower end needs a well centred last point: exact Newton steps at the end.
+  const bool certified = std::find(certify.begin(), certify.end(), n) != certify.end();
+  o.final_centering = certified ? 40 : 0;
+  o.final_dense = certified;
   o.progress = [n](const std::string& line) { std::fprintf(stderr, "  [n = %d] %s\n", n, line.c_str()); };
   bench::StageClock clock;
   const LongHorizonAnswer a = solve_long_horizon(z, r, delta, o);
@@ -134,11 +203,19 @@ void newton_cg_row(int n, double delta, const std::vector<int>& dense, const std
   DenseInterval d;
   if (std::find(dense.begin(), dense.end(), n) != dense.end()) d = dense_interval(model, exp, delta);
   std::pair<double, double> upper{NAN, 0.0};
-  if (std::find(certify.begin(), certify.end(), n) != certify.end()) upper = certified_upper(model, exp, a.taps, delta);
-  std::printf("%5d %5ld | %8.1f %7.0f %-4s | %6d %7ld %6ld | %.6e %.6e %8.1e %-6s | %.6e %.6e %7.1f | %.9e %7.1f\n", n,
-              static_cast<long>(a.horizon), wall, peak, a.converged ? "yes" : "no", a.newton_steps,
-              a.cg_iterations, a.factorisations, a.dmax2, a.lower_estimate, (a.dmax2 - a.lower_estimate) / a.dmax2,
-              a.inside ? "yes" : "NO", d.lower, d.upper, d.seconds, upper.first, upper.second);
+  CertifiedLower lower;
+  double peak_certified = NAN;
+  if (certified) {
+    upper = certified_upper(model, exp, a.taps, delta, out_dir);
+    lower = certified_lower(model, exp, s, a, delta, out_dir);
+    peak_certified = bench::peak_mb();
+  }
+  std::printf("%5d %5ld | %8.1f %7.0f %-4s | %6d %7ld %6ld | %.6e %.6e %8.1e %-6s | %.6e %.6e %7.1f | %.9e %7.1f | "
+              "%.9e %7.1f %8.1e %7.0f\n",
+              n, static_cast<long>(a.horizon), wall, peak, a.converged ? "yes" : "no", a.newton_steps, a.cg_iterations,
+              a.factorisations, a.dmax2, a.lower_estimate, (a.dmax2 - a.lower_estimate) / a.dmax2, a.inside ? "yes" : "NO",
+              d.lower, d.upper, d.seconds, upper.first, upper.second, lower.value, lower.seconds,
+              (upper.first - lower.value) / upper.first, peak_certified);
   std::fflush(stdout);
 }
 
@@ -153,10 +230,11 @@ int main(int argc, char** argv) {
   const std::vector<int> newton_cg = bench::int_list(argc > 3 ? argv[3] : "");
   const std::vector<int> dense = bench::int_list(argc > 4 ? argv[4] : "");
   const std::vector<int> certify = bench::int_list(argc > 5 ? argv[5] : "");
+  const std::string out_dir = argc > 6 ? argv[6] : "";
   if (newton_cg.empty()) return 0;
   std::printf("\nExploratory Newton-CG path, min dmax^2 at delta = %g (SISO delayed-Delta case)\n", delta);
   std::printf("    n     L |   wall.s peak.MB conv | newton      CG sweeps | dmax2(h)     lower.est    gap.est  inside | "
-              "dense lower  dense upper  dense.s | certified upper  cert.s\n");
-  for (int n : newton_cg) newton_cg_row(n, delta, dense, certify);
+              "dense lower  dense upper  dense.s | certified upper  cert.s | certified lower  cert.s  rel.gap peak.MB\n");
+  for (int n : newton_cg) newton_cg_row(n, delta, dense, certify, out_dir);
   return 0;
 }

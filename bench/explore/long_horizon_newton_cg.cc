@@ -1,5 +1,7 @@
 #include "explore/long_horizon_newton_cg.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -115,6 +117,48 @@ std::unique_ptr<DataTerm> set_up(const Vecd& z, const Vecd& r, double delta, dou
   return data;
 }
 
+/// The Hessian formed column by column from its products (L products and
+/// L² doubles, symmetrised) and factored by Cholesky in place: the
+/// preconditioner of the final centering, where plain CG stagnates.
+template <typename Apply>
+std::unique_ptr<Eigen::MatrixXd> dense_factor(const Apply& H, Eigen::Index L) {
+  auto M = std::make_unique<Eigen::MatrixXd>(L, L);
+  Vecd e = Vecd::Zero(L);
+  for (Eigen::Index j = 0; j < L; ++j) {
+    e(j) = 1;
+    M->col(j) = H(e);
+    e(j) = 0;
+  }
+  for (Eigen::Index j = 0; j < L; ++j)
+    for (Eigen::Index i = j + 1; i < L; ++i) (*M)(i, j) = (*M)(j, i) = 0.5 * ((*M)(i, j) + (*M)(j, i));
+  Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(*M);  // in place: one L × L buffer
+  if (llt.info() != Eigen::Success) return nullptr;
+  return M;
+}
+
+/// Preconditioned CG on H x = b with the Cholesky factor of an earlier
+/// Hessian (lower triangle of `factor`); stops at the relative residual
+/// `tolerance` or after max_its.
+template <typename Apply>
+Vecd preconditioned_cg(const Apply& H, const Eigen::MatrixXd& factor, const Vecd& b, double tolerance, int max_its, int* its) {
+  const auto Lf = factor.triangularView<Eigen::Lower>();
+  const auto precondition = [&](const Vecd& v) -> Vecd { return Lf.transpose().solve(Lf.solve(v)); };
+  Vecd x = Vecd::Zero(b.size()), r = b, zr = precondition(r), p = zr;
+  double rz = r.dot(zr);
+  const double stop = tolerance * tolerance * b.squaredNorm();
+  for (*its = 0; *its < max_its && r.squaredNorm() > stop; ++*its) {
+    const Vecd Hp = H(p);
+    const double a = rz / p.dot(Hp);
+    x += a * p;
+    r -= a * Hp;
+    zr = precondition(r);
+    const double rz_new = r.dot(zr);
+    p = zr + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  return x;
+}
+
 class PathFollower {
  public:
   PathFollower(const DataTerm& data, double sigma_r, const LongHorizonOptions& o, LongHorizonAnswer& out)
@@ -156,6 +200,7 @@ class PathFollower {
       if (converged && decrement2 <= o_.centred) {
         if (nu * path_.mu <= o_.rel_gap * path_.q) {
           out_.converged = true;
+          tighten();
           return;
         }
         reduce_mu();
@@ -173,6 +218,50 @@ class PathFollower {
       report(t0);
     }
     out_.message = "Newton step limit reached (" + std::to_string(o_.max_newton) + ")";
+  }
+
+  /// LongHorizonOptions::final_centering: full Newton steps at the last μ,
+  /// CG to the final tolerance (no line search: the decrement is already
+  /// below the centred level, where full steps converge quadratically).
+  void tighten() {
+    LongHorizonOptions tight = o_;
+    tight.cg_tolerance = o_.final_cg_tolerance;
+    tight.max_cg = std::max(o_.max_cg, 20000);
+    for (int k = 0; k < o_.final_centering; ++k) {
+      const Vecd g = data_.gradient(path_.h) / path_.mu + barrier_.gradient();
+      int its = 0;
+      bool converged = false;
+      const double mu = path_.mu;
+      const auto H = [&](const Vecd& v) -> Vecd { return data_.hessian_times(v) / mu + barrier_.hessian_times(v); };
+      Vecd step;
+      if (o_.final_dense) {
+        if (!factor_) factor_ = dense_factor(H, g.size());
+        if (!factor_) return;
+        step = preconditioned_cg(H, *factor_, -g, o_.final_cg_tolerance, 200, &its);
+      } else {
+        step = conjugate_gradients(H, -g, tight, &its, &converged);
+      }
+      out_.cg_iterations += its;
+      out_.final_decrement2 = -g.dot(step);
+      if (o_.progress) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "long horizon: final centering %d, decrement^2 %.3g, CG %d", k, out_.final_decrement2, its);
+        o_.progress(buf);
+      }
+      if (!(out_.final_decrement2 > 1e-14)) return;
+      // Damped where the decrement is large (self-concordance keeps it inside).
+      const double alpha = out_.final_decrement2 > 0.25 ? 1 / (1 + std::sqrt(out_.final_decrement2)) : 1.0;
+      const Vecd trial = path_.h + alpha * step;
+      double log_det = 0;
+      ++out_.factorisations;
+      if (!displacement_log_det(trial, 1.0, &log_det)) return;
+      path_.h = trial;
+      path_.q = data_.value(trial);
+      path_.f = path_.q / path_.mu - log_det;
+      barrier_.set_point(path_.h, 1.0);
+      ++out_.factorisations;
+      ++out_.newton_steps;
+    }
   }
 
   /// μ ← μ/factor (adapted to the last centering), then the predictor step.
@@ -207,6 +296,7 @@ class PathFollower {
   LongHorizonAnswer& out_;
   Path path_;
   int last_cg_ = 0;
+  std::unique_ptr<Eigen::MatrixXd> factor_;  ///< the final centering's preconditioner
 };
 
 /// d_max² of the taps recomputed from the original signals; the floating interior test at δ².
@@ -241,6 +331,7 @@ LongHorizonAnswer solve_long_horizon(const Vecd& z, const Vecd& r, double delta,
   const Path path = PathFollower(*data, sigma_r, o, out).run();
   out.taps = delta * path.h;
   out.lower_estimate = (path.q - 2.0 * static_cast<double>(out.horizon) * path.mu) * sigma_r * sigma_r;
+  out.mu = path.mu * sigma_r * sigma_r;
   finish(z, r, delta, out);
   return out;
 }

@@ -154,10 +154,16 @@ void certify_taps(const LpvModel<Rational>& model, const Experiment<Rational>& e
   // A fixed δ must hold exactly, but the solver meets ‖T_Δ‖ ≤ δ only up to its
   // feasibility tolerance, which is absolute in its scaled units: for a tiny or
   // zero δ the taps can exceed δ by orders of magnitude. Shrink them onto
-  // δ·(1 − 1e-8) (to zero for δ = 0) before rounding.
+  // δ·(1 − 1e-8) (to zero for δ = 0) before rounding. On the displacement
+  // horizons the verifier proves (C1) on a complement formed in doubles,
+  // whose proof needs λ_min ≳ 2·L²·u (Rump's shift plus the proved radius,
+  // verify/certificate/tap_gram_filter.h): there the margin is 4·L²·u
+  // (4.4e-8 at L = 10 000) when that is larger.
   double shrink = 1.0;
   if (o.objective.delta_fixed()) {
-    const double cap = o.objective.delta.approx * (1.0 - 1e-8);
+    const double L = static_cast<double>(horizon);
+    const double margin = displacement_applies(taps, horizon, ny, nz) ? std::max(1e-8, 4.0 * L * L * 0x1.0p-53) : 1e-8;
+    const double cap = o.objective.delta.approx * (1.0 - margin);
     if (!toeplitz_norm_at_most(taps, horizon, ny, nz, cap)) {
       const double norm = std::sqrt(toeplitz_norm2(taps, horizon, ny, nz));
       if (norm > cap) shrink = cap / norm;

@@ -289,7 +289,7 @@ PathDualBuild build_path_dual(const Mat<Rational>& z, const Mat<Rational>& r, Ei
   }
   if (!b.problem.empty()) return b;
   recipe.u_exponent = path_dual_exponent(U_d);
-  const PathDualGrid grid = path_dual_round(U_d, recipe.u_exponent);
+  const PathDualGrid grid = path_dual_round(std::exchange(U_d, Mat<double>()), recipe.u_exponent);  // frees U_d
   if (!grid.problem.empty()) return b.problem = grid.problem, b;
   const PathDualSums sums = path_dual_sums(recipe, grid.U, ny, nz);
   if (!sums.problem.empty()) return b.problem = sums.problem, b;

@@ -1,6 +1,7 @@
 #include "verify/psd/psd_filter.h"
 
 #include <cfenv>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -169,6 +170,74 @@ RC_GTEST_PROP(PsdFilterProperty, SingularGramIsNeverProvedPd, ()) {
   const Mat<Rational> G = gen::gram(B);
   RC_ASSERT(!run_psd_filter(G).proved_pd);
   RC_ASSERT(decide_psd(G).verdict == PsdVerdict::kPositiveSemidefinite);
+}
+
+/// The factor of the theorem's formula, row by row with no blocking: the
+/// independent reference for the filter's blocked loop (this file turns
+/// contraction off below, so each product and difference is rounded).
+Mat<double> row_by_row_cholesky(const Mat<double>& A);
+
+TEST(PsdFilterTest, BlockedCholeskyGivesTheRowByRowDoubles) {
+  // Sizes across the row blocks (16) and the column tiles (1024), with
+  // entries that are not exact in any short sum, so that a changed order of
+  // subtraction would change last bits.
+  for (const int n : {1, 15, 17, 50, 1030}) {
+    Mat<double> B = Mat<double>::Zero(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) B(i, j) = std::sin(1.0 + 0.37 * i + 0.11 * j * j) / 3.0;
+    Mat<double> A = B.transpose() * B / n;
+    A.diagonal().array() += 1.0 / 7.0;
+    const Mat<double> R = floating_cholesky_factor(A), expected = row_by_row_cholesky(A);
+    ASSERT_EQ(R.rows(), n);
+    EXPECT_TRUE((R.array() == expected.array()).all()) << "n = " << n;
+  }
+  Mat<double> indefinite(2, 2);
+  indefinite << 1, 2, 2, 1;
+  EXPECT_EQ(floating_cholesky_factor(indefinite).size(), 0);
+}
+
+TEST(PsdFilterTest, ProvedRadiusIsHonoured) {
+  // A = I proves PD for every X within r < 1/N of it (then X ⪰ (1 − N·r)·I
+  // by Gershgorin); with r = 1 the ball contains X = I − J, the singular
+  // all-ones complement, so the proof must fail.
+  const int n = 40;
+  std::vector<double> upper(static_cast<std::size_t>(n * n), 0.0);
+  for (int i = 0; i < n; ++i) upper[static_cast<std::size_t>(i * n + i)] = 1.0;
+  EXPECT_TRUE(run_psd_filter_within_radius(upper, n, Rational(1, 10 * n)).proved_pd);
+  EXPECT_FALSE(run_psd_filter_within_radius(upper, n, Rational(1)).proved_pd);
+  EXPECT_FALSE(run_psd_filter_within_radius(upper, n, Rational(-1)).proved_pd);
+  EXPECT_FALSE(run_psd_filter_within_radius(upper, n + 1, Rational(0)).proved_pd);
+}
+
+}  // namespace
+
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+namespace {
+
+Mat<double> row_by_row_cholesky(const Mat<double>& A) {
+  const Eigen::Index n = A.rows();
+  Mat<double> R = Mat<double>::Zero(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = i; j < n; ++j) {
+      double s = A(i, j);
+      for (Eigen::Index k = 0; k < i; ++k) {
+        const double p = R(k, i) * R(k, j);
+        s = s - p;
+      }
+      if (j == i) {
+        if (!(s > 0)) return {};
+        R(i, i) = std::sqrt(s);
+      } else {
+        R(i, j) = s / R(i, i);
+      }
+    }
+  }
+  return R;
 }
 
 }  // namespace

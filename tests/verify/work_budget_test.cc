@@ -133,6 +133,25 @@ TEST(WorkBudget, ALongRecordIsRefusedBeforeItsExactSimulationAndCheckedWithinThe
   EXPECT_EQ(data_file_reads(), reads + 1);
 }
 
+TEST(WorkBudget, OneOutputOneInputOnALongHorizonIsChargedItsProofInDoubles) {
+  // (C1) of order L: the exact route's L³, or for one output and one input
+  // from a horizon of 4096 on the proof in doubles, L³/6 + L²
+  // (verify/certificate/tap_gram_filter.h), counted here from its definition.
+  gen::ScratchDir dir("budget-structured");
+  const std::string path = dir.file("c.json");
+  const VerifyWorkLimits saved = verify_work_limits();
+  verify_work_limits().max_total_work = 1e13;  // nothing is counted without a limit
+  const auto declared = [&](long horizon) {
+    write_json(path, primal_certificate({{"data", {{"file", "d.csv"}, {"sha256", std::string(64, '0')}}}}, horizon));
+    charge_declared_work(read_certificate(path));
+    return total_work_charged();
+  };
+  const double L = 5000, below = 4000;
+  EXPECT_DOUBLE_EQ(declared(5000), L * L * L / 6 + L * L);
+  EXPECT_DOUBLE_EQ(declared(4000), below * below * below);
+  verify_work_limits() = saved;
+}
+
 TEST(WorkBudget, TheSimulationEstimateGrowsQuadraticallyWithTheRecordAndRestartsPerRecord) {
   gen::ScratchDir dir("budget-estimate");
   const std::string path = dir.file("c.json");

@@ -26,17 +26,28 @@
 ///     T is block banded (taps 0 … K−1), so T Tᵀ and TᵀT are block banded
 ///     with K − 1 blocks on each side, formed by the displacement recurrence
 ///     of verify/certificate/tap_gram.h in O(L·K) block entries.
+///  4. One output and one input with L ≥ kStructuredC1Horizon (4096): before the
+///     exact matrix, verify/certificate/tap_gram_filter.h tries to prove
+///     d²I − T Tᵀ PD from the complement formed in doubles with a proved
+///     radius (L² doubles instead of L² rationals: 0.8 GB at L = 10 000
+///     where the rationals took more than 11 GB). Only a proof of PD ends
+///     the check there; anything else goes on to the exact matrix as before,
+///     charged to the work budget at that point (the budget charged the
+///     proof only, verify/certificate/work_budget.h).
 
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/number_text.h"
 #include "verify/certificate/c1_check.h"
 #include "verify/certificate/tap_gram.h"
+#include "verify/certificate/tap_gram_filter.h"
 #include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
 #include "verify/psd/power_of_two.h"
+#include "verify/psd/work_limits.h"
 #include "verify/certificate/verdict_text.h"
 
 namespace lpvid {
@@ -84,9 +95,20 @@ C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, E
   const Rational inv_s = Rational(1) / s;
   const Rational d2 = delta2 * inv_s * inv_s;
   const Mat<Rational> scaled = taps.topRows(std::min(K, L)) * inv_s;  // Δ_t / s
-  const Mat<Rational> M = tap_gram_complement(scaled, L, ny, nz, d2);
   const std::string which = std::string(ny <= nz ? "d2*I - T*T'" : "d2*I - T'*T") + ", T = T_Delta/s, d2 = delta2/s^2" +
                             ", s = " + s_text + " (Schur complement of " + full + ")";
+  // 4. One output and one input on a long horizon: first the proof on the
+  //    complement formed in doubles with a proved radius (no L² rationals).
+  if (structured_c1_applies(L, ny, nz)) {
+    std::vector<Rational> t(static_cast<std::size_t>(scaled.rows()));
+    for (Eigen::Index k = 0; k < scaled.rows(); ++k) t[static_cast<std::size_t>(k)] = scaled(k, 0);
+    const TapGramFilterResult f = prove_tap_gram_complement_pd(t, L, d2);
+    if (f.proved_pd) return C1Outcome::holding("(C1) holds: " + which + " (size " + std::to_string(L) + ") is PD (" + f.reason + ")");
+    // The budget charged the proof only; the exact matrix is charged now.
+    const double m = static_cast<double>(L);
+    charge_total_work(m * m * m, "the exact (C1) matrix of order " + std::to_string(L) + " (its proof in doubles failed: " + f.reason + ")");
+  }
+  const Mat<Rational> M = tap_gram_complement(scaled, L, ny, nz, d2);
   const PsdResult psd = decide_psd(M);
   if (psd.verdict == PsdVerdict::kNotPsd) return C1Outcome::failing("(C1) fails: " + which + " is not PSD (" + psd.reason + ")");
   return C1Outcome::holding("(C1) holds: " + which + " (size " + std::to_string(M.rows()) + ") is " + psd_note(psd));

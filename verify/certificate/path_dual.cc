@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Cholesky>
 
@@ -270,17 +272,22 @@ PsdResult path_dual_psd(const PathDualRecipe& recipe, const Mat<double>& U_grid,
   // A = Ũ − γ·2^−e·I with the diagonal rounded down: A ⪰ 0 implies the exact matrix is.
   // A diagonal entry below the floor decides at once (eᵢᵀ(U − γ·I)eᵢ < 0);
   // the others lie in [0, Ũᵢᵢ] ⊂ [0, 2^53), so their doubles are finite.
+  // A is formed straight into the filter's buffer (upper triangle, row-major):
+  // no copy of Ũ, whose entries are exact doubles (radius 0).
   const Rational floor_units = recipe.floor * power_of_two(-recipe.u_exponent);
-  Mat<double> A = U_grid;
+  const std::size_t n = static_cast<std::size_t>(P);
+  std::vector<double> A(n * n, 0.0);
   PsdResult out;
   for (Eigen::Index i = 0; i < P; ++i) {
     const Rational exact = Rational(U_grid(i, i)) - floor_units;
     if (exact < 0) return negative_diagonal(i, P, recipe.floor);
     double d = nearest_double(exact);
     if (Rational(d) > exact) d = std::nextafter(d, -INFINITY);
-    A(i, i) = d;
+    const std::size_t row = static_cast<std::size_t>(i) * n;
+    A[row + static_cast<std::size_t>(i)] = d;
+    for (Eigen::Index j = i + 1; j < P; ++j) A[row + static_cast<std::size_t>(j)] = U_grid(i, j);
   }
-  const PsdFilterResult f = run_psd_filter_on_doubles(A);
+  const PsdFilterResult f = run_psd_filter_within_radius(std::move(A), n, Rational(0));
   if (f.proved_pd) {
     out.verdict = PsdVerdict::kPositiveDefinite;
     out.reason = f.reason;

@@ -10,6 +10,7 @@
 
 #include "data/csv_reader.h"
 #include "verify/psd/work_limits.h"
+#include "verify/certificate/tap_gram_filter.h"
 
 namespace lpvid {
 namespace {
@@ -101,7 +102,10 @@ void charge_declared_work(const Certificate& c) {
     charge_total_work(dual, std::to_string(horizons.size()) + (horizons.size() == 1 ? " dual point" : " dual points (class leaves)"));
   if (c.form == CertificateForm::kDelta && !is_class_claim(c.claim) && !is_dual_claim(c.claim)) {
     const double m = static_cast<double>(c.horizon) * std::min(ny, nz);  // (C1): δ²I − T_Δ T_Δᵀ, floating filter
-    charge_total_work(kWorkPerCube * m * m * m, "the (C1) check of order " + number(m));
+    if (structured_c1_applies(static_cast<long>(c.horizon), c.model.ny, c.model.nz()))
+      charge_total_work(structured_c1_work(static_cast<long>(c.horizon)), "the (C1) proof in doubles of order " + number(m));
+    else
+      charge_total_work(kWorkPerCube * m * m * m, "the (C1) check of order " + number(m));
   }
   if (records > 1) charge_total_work(kWorkPerRecord * static_cast<double>(records), std::to_string(records) + " records");
 }

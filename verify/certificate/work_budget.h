@@ -11,7 +11,9 @@
 ///    floating rebuild of order m = L·ny (or L·(ny+nz) for a dense Y1),
 ///    about m³ operations, and its exact sums, L²·(ny·nz)²;
 ///  - a primal point's (C1) check, of order L·min(ny, nz) (form "delta") or
-///    n (form "w"): m³;
+///    n (form "w"): m³; for one output and one input on a horizon of 4096 or
+///    more, the proof in doubles (verify/certificate/tap_gram_filter.h):
+///    L³/6 + L², and the exact matrix's m³ only if that proof fails;
 ///  - the records: more than --max-records is refused, each costs a fixed
 ///    amount; every data file's bytes are read, hashed and parsed once;
 ///  - the exact simulation: the state's numbers grow by about g bits per

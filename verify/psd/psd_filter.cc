@@ -24,14 +24,10 @@ static_assert(std::numeric_limits<double>::digits == 53, "psd_filter needs 53-bi
 #endif
 
 // Everything defined below this point rounds a·b and x − a·b separately
-// (the theorem in psd_filter.h assumes it). The pragmas come after the
-// #includes on purpose: they apply to our functions only. The kernel is also
+// (the theorem in psd_filter.h assumes it). Included after the other
+// #includes on purpose: it applies to our functions only. The kernel is also
 // probed at run time (contraction_problem()).
-#if defined(__clang__)
-#pragma clang fp contract(off)
-#elif defined(__GNUC__)
-#pragma GCC optimize("fp-contract=off")
-#endif
+#include "core/no_fp_contraction.h"
 
 namespace lpvid {
 namespace {
@@ -65,38 +61,70 @@ struct CholeskyRun {
   UpperMatrix R;               // rows 0..failed_step-1 valid when !completed
 };
 
+/// Rows per block and columns per tile of floating_cholesky.
+constexpr std::size_t kRowBlock = 16, kColumnTile = 1024;
+
+/// Subtracts the finished rows k ∈ [k0, k1) of R (stored in R's own rows)
+/// from the working rows of the block [i0, i1) (row i of `w` holds the
+/// columns j ≥ i at offset (i − i0)·n + j − i), k ascending for each entry,
+/// column tile by column tile.
+void subtract_finished_rows(const UpperMatrix& R, std::size_t k0, std::size_t k1, std::size_t i0, std::size_t i1,
+                            std::vector<double>& w) {
+  const std::size_t n = R.n;
+  for (std::size_t j0 = i0; j0 < n; j0 += kColumnTile) {
+    const std::size_t j1 = std::min(n, j0 + kColumnTile);
+    for (std::size_t k = k0; k < k1; ++k) {
+      const double* rk = &R.a[k * n];
+      for (std::size_t i = std::max(i0, k + 1); i < i1; ++i) {
+        const std::size_t lo = std::max(j0, i);
+        if (lo < j1) subtract_scaled_row(&w[(i - i0) * n + (lo - i)], rk + lo, rk[i], j1 - lo);
+      }
+    }
+  }
+}
+
 /// Row-oriented floating Cholesky of the upper triangle of `At` (see the
-/// formula in psd_filter.h): row i of R is computed from Ã's row i minus
-/// R_ki·(row k of R), k = 0, 1, …, i−1 in that order, then divided by
-/// R_ii = √(pivot). Stops at the first pivot that is not > 0 or the first
-/// non-finite entry.
-CholeskyRun floating_cholesky(const UpperMatrix& At) {
+/// formula in psd_filter.h), in place: row i of R is Ã's row i minus
+/// R_ki·(row k of R), k = 0, 1, …, i−1 in that order, divided by
+/// R_ii = √(pivot), and overwrites Ã's row i. Rows are taken kRowBlock at a
+/// time: every row finished before the block is subtracted from all of the
+/// block's rows (k ascending), then the block's own rows in turn, so every
+/// entry sees exactly the operations of the row-by-row loop in the same
+/// order (the same doubles), while each finished row is read once per block
+/// instead of once per row. Stops at the first pivot that is not > 0 or the
+/// first non-finite entry.
+CholeskyRun floating_cholesky(UpperMatrix At) {
   const std::size_t n = At.n;
   CholeskyRun run;
-  run.R.n = n;
-  run.R.a.assign(n * n, 0.0);
-  std::vector<double> w(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t len = n - i;
-    double* wi = w.data();
-    for (std::size_t j = 0; j < len; ++j) wi[j] = At.at(i, i + j);
-    for (std::size_t k = 0; k < i; ++k) subtract_scaled_row(wi, &run.R.a[k * n + i], run.R.at(k, i), len);
-    const double pivot = wi[0];
-    if (!(pivot > 0) || !std::isfinite(pivot)) {
-      run.failed_step = i;
-      return run;
-    }
-    const double d = std::sqrt(pivot);
-    double* ri = &run.R.a[i * n + i];
-    ri[0] = d;
-    bool finite = std::isfinite(d) && d > 0;
-    for (std::size_t j = 1; j < len; ++j) {
-      ri[j] = wi[j] / d;
-      finite = finite && std::isfinite(ri[j]);
-    }
-    if (!finite) {
-      run.failed_step = i;
-      return run;
+  run.R = std::move(At);
+  UpperMatrix& R = run.R;
+  std::vector<double> w(kRowBlock * n);
+  for (std::size_t i0 = 0; i0 < n; i0 += kRowBlock) {
+    const std::size_t i1 = std::min(n, i0 + kRowBlock);
+    for (std::size_t i = i0; i < i1; ++i)
+      for (std::size_t j = i; j < n; ++j) w[(i - i0) * n + (j - i)] = R.at(i, j);
+    subtract_finished_rows(R, 0, i0, i0, i1, w);
+    for (std::size_t i = i0; i < i1; ++i) {
+      double* wi = &w[(i - i0) * n];
+      const std::size_t len = n - i;
+      for (std::size_t k = i0; k < i; ++k) subtract_scaled_row(wi, &R.a[k * n + i], R.at(k, i), len);
+      const double pivot = wi[0];
+      if (!(pivot > 0) || !std::isfinite(pivot)) {
+        run.failed_step = i;
+        return run;
+      }
+      const double d = std::sqrt(pivot);
+      double* ri = &R.a[i * n + i];
+      ri[0] = d;
+      bool finite = std::isfinite(d) && d > 0;
+      for (std::size_t j = 1; j < len; ++j) {
+        ri[j] = wi[j] / d;
+        finite = finite && std::isfinite(ri[j]);
+      }
+      if (!finite) {
+        run.failed_step = i;
+        return run;
+      }
     }
   }
   run.completed = true;
@@ -154,30 +182,47 @@ std::string floating_environment_problem() {
   return contraction_problem();
 }
 
+/// What the true matrix may differ from A by, entrywise, beyond the
+/// theorem's underflow term: the rounding of rational entries to doubles
+/// (`rounded`), and a radius the caller has proved (`proved`). Without
+/// `candidate`, a matrix that is not proved PD is not factored a second
+/// time to look for a candidate direction (one buffer of N² doubles less).
+struct InputRadius {
+  bool rounded = false;
+  Rational proved{0};
+  bool candidate = true;
+};
+
 /// The theorem applied to A (upper triangle filled): proves PD every real
-/// matrix within the radius of A (rounding of the input when not
-/// `exact_entries`, always the underflow term).
-static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFilterResult out);
+/// matrix within the radius of A.
+static PsdFilterResult filter_prepared(UpperMatrix A, const InputRadius& radius, PsdFilterResult out);
+
+/// An empty matrix (PD) or a floating environment the theorem does not
+/// cover ("don't know"): true with *out set, before any work.
+static bool settled_before_the_filter(std::size_t n, PsdFilterResult& out) {
+  if (n == 0) {
+    out.proved_pd = true;
+    out.reason = "empty matrix";
+    return true;
+  }
+  if (std::string p = floating_environment_problem(); !p.empty()) {
+    out.reason = "filter skipped: " + p;
+    return true;
+  }
+  return false;
+}
 
 /// The checks both entry points share, then A = the upper triangle of
 /// `entry(i, j)` (doubles; a non-finite one stops with `not_finite`).
 template <typename Matrix, typename Entry>
-static PsdFilterResult filter_matrix(const Matrix& M, Entry entry, bool exact_entries, const char* not_finite) {
+static PsdFilterResult filter_matrix(const Matrix& M, Entry entry, const InputRadius& radius, const char* not_finite) {
   PsdFilterResult out;
   const Eigen::Index N = M.rows();
   if (N != M.cols()) {
     out.reason = "not square";
     return out;
   }
-  if (N == 0) {
-    out.proved_pd = true;
-    out.reason = "empty matrix";
-    return out;
-  }
-  if (std::string p = floating_environment_problem(); !p.empty()) {
-    out.reason = "filter skipped: " + p;
-    return out;
-  }
+  if (settled_before_the_filter(static_cast<std::size_t>(N), out)) return out;
   const std::size_t n = static_cast<std::size_t>(N);
   UpperMatrix A;
   A.n = n;
@@ -191,15 +236,52 @@ static PsdFilterResult filter_matrix(const Matrix& M, Entry entry, bool exact_en
       }
       A.at(i, j) = x;
     }
-  return filter_prepared(std::move(A), exact_entries, std::move(out));
+  return filter_prepared(std::move(A), radius, std::move(out));
 }
 
 PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
-  return filter_matrix(M, [](const Rational& q) { return nearest_double(q); }, false, "an entry is outside the double range");
+  return filter_matrix(M, [](const Rational& q) { return nearest_double(q); }, InputRadius{true, Rational(0), true},
+                       "an entry is outside the double range");
 }
 
 PsdFilterResult run_psd_filter_on_doubles(const Mat<double>& M) {
-  return filter_matrix(M, [](double x) { return x; }, true, "an entry is not finite");
+  return filter_matrix(M, [](double x) { return x; }, InputRadius{}, "an entry is not finite");
+}
+
+Mat<double> floating_cholesky_factor(const Mat<double>& A) {
+  const std::size_t n = static_cast<std::size_t>(A.rows());
+  UpperMatrix U;
+  U.n = n;
+  U.a.assign(n * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i; j < n; ++j) U.at(i, j) = A(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+  const CholeskyRun run = floating_cholesky(std::move(U));
+  if (!run.completed) return {};
+  Mat<double> R = Mat<double>::Zero(A.rows(), A.rows());
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i; j < n; ++j) R(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = run.R.at(i, j);
+  return R;
+}
+
+PsdFilterResult run_psd_filter_within_radius(std::vector<double> upper, std::size_t n, const Rational& radius) {
+  PsdFilterResult out;
+  if (upper.size() != n * n || radius < 0) {
+    out.reason = "bad input to the filter (buffer size or negative radius)";
+    return out;
+  }
+  if (settled_before_the_filter(n, out)) return out;
+  UpperMatrix A;
+  A.n = n;
+  A.a = std::move(upper);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j < i) A.at(i, j) = 0.0;  // the lower triangle is never read; keep it defined
+      if (!std::isfinite(A.at(i, j))) {
+        out.reason = "an entry is not finite";
+        return out;
+      }
+    }
+  return filter_prepared(std::move(A), InputRadius{false, radius, false}, std::move(out));
 }
 
 namespace {
@@ -236,26 +318,35 @@ bool scan_filter_entries(const UpperMatrix& A, FilterEntryScan* scan, PsdFilterR
 /// The constants of the theorem, exactly: the shift s = c + N·r with
 /// c = γ_{2(N+1)}/2·tr(A) + 4ηN(2(N+1) + maxdiag) and the radius r. False
 /// when N is too large for the error bound (4(N+1)u ≥ 1).
-bool filter_shift(std::size_t n, const FilterEntryScan& scan, bool exact_entries, Rational* shift) {
+bool filter_shift(std::size_t n, const FilterEntryScan& scan, const InputRadius& radius, Rational* shift) {
   const Rational u = power_of_two(-53), eta = power_of_two(-1074), Nq(static_cast<long>(n));
   const Rational two_n1 = Rational(2) * (Nq + Rational(1));
   if (!(Rational(2) * two_n1 * u < Rational(1))) return false;  // 4(N+1)u < 1
   const Rational gamma = two_n1 * u / (Rational(1) - two_n1 * u);  // γ_{2(N+1)}
   const Rational c =
       gamma / Rational(2) * scan.trace + Rational(4) * eta * Nq * (two_n1 + Rational(scan.maxdiag));
-  // Rad: the rounding of M to A (none when A is M itself, then only the η term is kept).
-  const Rational r = (exact_entries ? Rational(0) : Rational(2) * u * Rational(scan.maxabs)) + Rational(2) * eta;
+  // Rad: the rounding of M to A (none when A is M itself), the caller's
+  // proved radius, and the η term, always kept.
+  const Rational r =
+      (radius.rounded ? Rational(2) * u * Rational(scan.maxabs) : Rational(0)) + radius.proved + Rational(2) * eta;
   *shift = c + Nq * r;
   return true;
 }
 
 /// Floating Cholesky of fl(M) − s·I (diagonal rounded down): PD when it
 /// completes. Else looks for a candidate direction with the unshifted matrix.
-PsdFilterResult filter_cholesky(const UpperMatrix& A, const Rational& shift, PsdFilterResult out) {
-  UpperMatrix At = A;
-  for (std::size_t i = 0; i < A.n; ++i) At.at(i, i) = round_down(Rational(A.at(i, i)) - shift);
+PsdFilterResult filter_cholesky(UpperMatrix A, const Rational& shift, bool candidate, PsdFilterResult out) {
+  std::vector<double> diagonal(A.n);
+  for (std::size_t i = 0; i < A.n; ++i) diagonal[i] = A.at(i, i);
+  UpperMatrix At;
+  if (candidate) {
+    At = A;  // A stays for the unshifted factorisation below
+  } else {
+    At = std::move(A);
+  }
+  for (std::size_t i = 0; i < At.n; ++i) At.at(i, i) = round_down(Rational(diagonal[i]) - shift);
 
-  CholeskyRun shifted = floating_cholesky(At);
+  CholeskyRun shifted = floating_cholesky(std::move(At));
   std::ostringstream why;
   if (shifted.completed) {
     why << "floating Cholesky of fl(M) - s*I succeeded with s = " << out.shift
@@ -265,9 +356,13 @@ PsdFilterResult filter_cholesky(const UpperMatrix& A, const Rational& shift, Psd
     return out;
   }
   why << "floating Cholesky of fl(M) - s*I (s = " << out.shift << ") stopped at row " << shifted.failed_step;
+  if (!candidate) {
+    out.reason = why.str();
+    return out;
+  }
 
   // Not proved. Look for a candidate direction with the unshifted matrix.
-  CholeskyRun plain = floating_cholesky(A);
+  CholeskyRun plain = floating_cholesky(std::move(A));
   if (!plain.completed) {
     out.failed_row = static_cast<long>(plain.failed_step);
     out.negative_direction = negative_direction_from(plain);
@@ -282,16 +377,16 @@ PsdFilterResult filter_cholesky(const UpperMatrix& A, const Rational& shift, Psd
 
 }  // namespace
 
-static PsdFilterResult filter_prepared(UpperMatrix A, bool exact_entries, PsdFilterResult out) {
+static PsdFilterResult filter_prepared(UpperMatrix A, const InputRadius& radius, PsdFilterResult out) {
   FilterEntryScan scan;
   if (!scan_filter_entries(A, &scan, &out)) return out;
   Rational shift;
-  if (!filter_shift(A.n, scan, exact_entries, &shift)) {
+  if (!filter_shift(A.n, scan, radius, &shift)) {
     out.reason = "matrix too large for the error bound";
     return out;
   }
   out.shift = nearest_double(shift);
-  return filter_cholesky(A, shift, std::move(out));
+  return filter_cholesky(std::move(A), shift, radius.candidate, std::move(out));
 }
 
 }  // namespace lpvid

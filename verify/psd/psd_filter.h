@@ -42,8 +42,10 @@
 ///     the FPU), so Ã_ii ≤ A_ii − c − N·r holds exactly.
 ///   - Cholesky is our own row-oriented loop (below), which evaluates every
 ///     R_ij with exactly the left-to-right order above (the loop is
-///     vectorised across j, never re-associated across k). No BLAS, no Eigen
-///     LLT (blocked code is not what the theorem covers).
+///     vectorised across j, never re-associated across k; rows are taken in
+///     blocks that only change WHEN an entry's next subtraction happens,
+///     never their order). No BLAS, no Eigen LLT (their blocked updates sum
+///     in other orders, which the theorem does not cover).
 ///   - Any non-finite value, any R_jj ≤ 0 or NaN: "don't know".
 ///
 /// ASSUMPTIONS, each enforced:
@@ -62,7 +64,9 @@
 ///   - sqrt is correctly rounded (IEEE-754 requires it; std::sqrt on x86-64
 ///     is sqrtsd).
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/scalar.h"
 
@@ -94,6 +98,21 @@ PsdFilterResult run_psd_filter(const Mat<Rational>& M);
 /// The same for a matrix whose entries are exactly the given doubles (no
 /// rounding of the input: the radius keeps only the underflow term).
 PsdFilterResult run_psd_filter_on_doubles(const Mat<double>& M);
+
+/// The theorem for a matrix the caller has formed in doubles itself:
+/// `upper` is N×N row-major (only the upper triangle is read; the buffer is
+/// taken over and overwritten by the factor, so no copy of the N² doubles is
+/// made), and `radius` ≥ 0 is a bound the caller has PROVED on
+/// |X_ij − A_ij| for every entry of the true matrix X (added to Rad above,
+/// with the underflow term). Proves X positive definite, or says why not;
+/// it does not look for a candidate direction (that would need a second
+/// copy), so a matrix it cannot prove is left to the exact route.
+PsdFilterResult run_psd_filter_within_radius(std::vector<double> upper, std::size_t n, const Rational& radius);
+
+/// The upper-triangular floating factor R (RᵀR ≈ A) that the filter's
+/// Cholesky computes for the square A (upper triangle read, no shift), or an
+/// empty matrix where it stops: for tests and diagnostics.
+Mat<double> floating_cholesky_factor(const Mat<double>& A);
 
 /// Why the floating-point environment does not meet the assumptions above,
 /// or an empty string when it does (exposed for tests and diagnostics).
