@@ -244,10 +244,6 @@ PsdFilterResult run_psd_filter(const Mat<Rational>& M) {
                        "an entry is outside the double range");
 }
 
-PsdFilterResult run_psd_filter_on_doubles(const Mat<double>& M) {
-  return filter_matrix(M, [](double x) { return x; }, InputRadius{}, "an entry is not finite");
-}
-
 Mat<double> floating_cholesky_factor(const Mat<double>& A) {
   const std::size_t n = static_cast<std::size_t>(A.rows());
   UpperMatrix U;

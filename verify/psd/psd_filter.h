@@ -95,10 +95,6 @@ struct PsdFilterResult {
 /// only the upper triangle is read). Never throws for numeric reasons.
 PsdFilterResult run_psd_filter(const Mat<Rational>& M);
 
-/// The same for a matrix whose entries are exactly the given doubles (no
-/// rounding of the input: the radius keeps only the underflow term).
-PsdFilterResult run_psd_filter_on_doubles(const Mat<double>& M);
-
 /// The theorem for a matrix the caller has formed in doubles itself:
 /// `upper` is N×N row-major (only the upper triangle is read; the buffer is
 /// taken over and overwritten by the factor, so no copy of the N² doubles is
