@@ -1,5 +1,7 @@
 #include "core/helper_thread.h"
 
+#include "core/parallel_for.h"
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
@@ -88,6 +90,11 @@ void fork_join(HelperThread* helper, const std::function<void()>& side, const st
   }
   main();
   side();
+}
+
+std::unique_ptr<HelperThread> helper_for_order(long order) {
+  return order >= 1024 && default_thread_count() >= 2 && !inside_parallel_jobs() ? std::make_unique<HelperThread>()
+                                                                                   : nullptr;
 }
 
 }  // namespace lpvid

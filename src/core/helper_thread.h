@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -42,6 +43,12 @@ class HelperThread {
   std::exception_ptr error_;
   std::thread thread_;
 };
+
+/// A helper for a step of order `order` ≥ 1024 on a machine with two or more
+/// cores, outside the jobs of a parallel_for (whose workers already take the
+/// cores); nullptr otherwise. The rule of the verifier's dense steps (the
+/// compact dual's rebuild, the rigorous filter's Cholesky).
+std::unique_ptr<HelperThread> helper_for_order(long order);
 
 /// side() and main() on `helper` when there is one, else main() then side().
 void fork_join(HelperThread* helper, const std::function<void()>& side, const std::function<void()>& main);

@@ -180,8 +180,9 @@ Mat<double> row_by_row_cholesky(const Mat<double>& A);
 TEST(PsdFilterTest, BlockedCholeskyGivesTheRowByRowDoubles) {
   // Sizes across the row blocks (16) and the column tiles (1024), with
   // entries that are not exact in any short sum, so that a changed order of
-  // subtraction would change last bits.
-  for (const int n : {1, 15, 17, 50, 1030}) {
+  // subtraction would change last bits; 2100 is where the helper thread
+  // takes half of the columns (two columns tiles or more to the right).
+  for (const int n : {1, 15, 17, 50, 1030, 2100}) {
     Mat<double> B = Mat<double>::Zero(n, n);
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) B(i, j) = std::sin(1.0 + 0.37 * i + 0.11 * j * j) / 3.0;

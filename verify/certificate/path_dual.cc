@@ -11,7 +11,6 @@
 
 #include "core/helper_thread.h"
 #include "core/number_text.h"
-#include "core/parallel_for.h"
 #include "dense/llt_inverse.h"
 #include "dense/split_llt.h"
 #include "toeplitz/tap_toeplitz.h"
@@ -89,8 +88,7 @@ Mat<double> path_dual_floating_u(const PathDualRecipe& recipe, Eigen::Index ny, 
   // U = μ·L⁻ᵀL⁻¹ from the Cholesky factor (dense/llt_inverse.h: a third of the
   // work of two triangular solves on I, in wide vectors, shared with a helper
   // thread where the machine has two cores; the same bits either way)
-  const std::unique_ptr<HelperThread> helper =
-      P >= 1024 && default_thread_count() >= 2 && !inside_parallel_jobs() ? std::make_unique<HelperThread>() : nullptr;
+  const std::unique_ptr<HelperThread> helper = helper_for_order(static_cast<long>(P));
   SplitLlt llt;
   llt.compute_split(S, helper.get());
   S = Mat<double>();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include <mpfr.h>
 
 #include "core/gmp_raii.h"
+#include "core/helper_thread.h"
 #include "core/number_text.h"
 #include "verify/psd/power_of_two.h"
 
@@ -68,11 +70,13 @@ constexpr std::size_t kRowBlock = 16, kColumnTile = 1024;
 /// from the working rows of the block [i0, i1) (row i of `w` holds the
 /// columns j ≥ i at offset (i − i0)·n + j − i), k ascending for each entry,
 /// column tile by column tile.
+/// Only the columns [c0, c1) are touched, so two calls on disjoint column
+/// ranges may run at once and each entry sees the same operations.
 void subtract_finished_rows(const UpperMatrix& R, std::size_t k0, std::size_t k1, std::size_t i0, std::size_t i1,
-                            std::vector<double>& w) {
+                            std::vector<double>& w, std::size_t c0, std::size_t c1) {
   const std::size_t n = R.n;
-  for (std::size_t j0 = i0; j0 < n; j0 += kColumnTile) {
-    const std::size_t j1 = std::min(n, j0 + kColumnTile);
+  for (std::size_t j0 = std::max(c0, i0); j0 < c1; j0 += kColumnTile) {
+    const std::size_t j1 = std::min(c1, j0 + kColumnTile);
     for (std::size_t k = k0; k < k1; ++k) {
       const double* rk = &R.a[k * n];
       for (std::size_t i = std::max(i0, k + 1); i < i1; ++i) {
@@ -91,19 +95,28 @@ void subtract_finished_rows(const UpperMatrix& R, std::size_t k0, std::size_t k1
 /// block's rows (k ascending), then the block's own rows in turn, so every
 /// entry sees exactly the operations of the row-by-row loop in the same
 /// order (the same doubles), while each finished row is read once per block
-/// instead of once per row. Stops at the first pivot that is not > 0 or the
-/// first non-finite entry.
+/// instead of once per row. From order 1024 on a machine with two cores a
+/// helper thread takes the right half of the columns of that first step
+/// (core/helper_thread.h): every entry is still computed by one thread in
+/// the same order, so the doubles do not depend on it. Stops at the first
+/// pivot that is not > 0 or the first non-finite entry.
 CholeskyRun floating_cholesky(UpperMatrix At) {
   const std::size_t n = At.n;
   CholeskyRun run;
   run.R = std::move(At);
   UpperMatrix& R = run.R;
   std::vector<double> w(kRowBlock * n);
+  const std::unique_ptr<HelperThread> helper = helper_for_order(static_cast<long>(n));
   for (std::size_t i0 = 0; i0 < n; i0 += kRowBlock) {
     const std::size_t i1 = std::min(n, i0 + kRowBlock);
     for (std::size_t i = i0; i < i1; ++i)
       for (std::size_t j = i; j < n; ++j) w[(i - i0) * n + (j - i)] = R.at(i, j);
-    subtract_finished_rows(R, 0, i0, i0, i1, w);
+    const std::size_t mid = i0 + (n - i0) / 2;
+    if (helper && i0 > 0 && n - i0 >= 2 * kColumnTile)
+      helper->run([&] { subtract_finished_rows(R, 0, i0, i0, i1, w, mid, n); },
+                  [&] { subtract_finished_rows(R, 0, i0, i0, i1, w, i0, mid); });
+    else
+      subtract_finished_rows(R, 0, i0, i0, i1, w, i0, n);
     for (std::size_t i = i0; i < i1; ++i) {
       double* wi = &w[(i - i0) * n];
       const std::size_t len = n - i;
