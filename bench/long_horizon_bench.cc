@@ -24,6 +24,8 @@
 // and both certificates are written there for `lpvid-verify`. Not a test.
 // Usage: long_horizon_bench [sizes=3200,6400,10000] [delta=0.45] [newton_cg_sizes=none] [dense_sizes=none]
 //                           [certify_sizes=none] [out_dir=none]
+#include <filesystem>
+#include <system_error>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -232,6 +234,11 @@ int main(int argc, char** argv) {
   const std::vector<int> certify = bench::int_list(argc > 5 ? argv[5] : "");
   const std::string out_dir = argc > 6 ? argv[6] : "";
   if (newton_cg.empty()) return 0;
+  std::error_code made;
+  if (!out_dir.empty() && !std::filesystem::create_directories(out_dir, made) && made) {
+    std::fprintf(stderr, "long_horizon_bench: cannot create out_dir '%s' (%s)\n", out_dir.c_str(), made.message().c_str());
+    return 2;
+  }
   std::printf("\nExploratory Newton-CG path, min dmax^2 at delta = %g (SISO delayed-Delta case)\n", delta);
   std::printf("    n     L |   wall.s peak.MB conv | newton      CG sweeps | dmax2(h)     lower.est    gap.est  inside | "
               "dense lower  dense upper  dense.s | certified upper  cert.s | certified lower  cert.s  rel.gap peak.MB\n");

@@ -7,7 +7,8 @@
 //       consistent (exit 0), invalid: <reason> (exit 1), malformed (exit 2), read failure (exit 6).
 //   Limits on inputs (core/limits.h): --max-file-mb, --max-digits, --max-degree, --max-samples.
 //   Limits on work (verify/psd/work_limits.h): --max-dual-order, --max-exact-work,
-//   --max-total-work, --max-records; beyond them exit 8, nothing decided.
+//   --max-total-work, --max-floating-work, --max-records; beyond them exit 8,
+//   nothing decided.
 //
 // Each subcommand is registered by one add_*_subcommand function below and
 // run by the dispatch in run_lpvid_verify(). Usage errors exit with 2 (like
@@ -60,7 +61,8 @@ CLI::App* add_certificate_subcommand(CLI::App& app, CertificateArgs& args) {
                 "the data file to read instead of the recorded path (its sha256 must still match); without it a "
                 "missing recorded path falls back to the file of the same name beside the certificate");
   c->footer("Exit status: 0 the claim holds, 1 invalid (with the reason), 2 missing/malformed/too large input, 6 read "
-            "failure, 8 the check would exceed --max-dual-order, --max-exact-work, --max-total-work or --max-records "
+            "failure, 8 the check would exceed --max-dual-order, --max-exact-work, --max-total-work, --max-floating-work or "
+            "--max-records "
             "(not decided).");
   return c;
 }
@@ -77,9 +79,15 @@ void add_work_limit_options(CLI::App& app) {
                      std::to_string(static_cast<long long>(lpvid::kDefaultMaxExactWork)) + ")")
       ->check(CLI::PositiveNumber);
   app.add_option("--max-total-work", l.max_total_work,
-                 "most operations of one whole check (dual points, class leaves, records, data bytes, the exact "
+                 "most operations of one whole check (the dual points' exact sums, records, data bytes, the exact "
                  "simulation with its digit growth, exact eliminations), estimated before the work starts (default " +
                      std::to_string(static_cast<long long>(lpvid::kDefaultMaxTotalWork)) + ")")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--max-floating-work", l.max_floating_work,
+                 "most floating multiply-adds of one whole check's cubic steps, whose memory is bounded by their "
+                 "order (compact dual points' rebuilds, class leaves, the (C1) proof in doubles on a long horizon), "
+                 "estimated before the work starts (default " +
+                     std::to_string(static_cast<long long>(lpvid::kDefaultMaxFloatingWork)) + ")")
       ->check(CLI::PositiveNumber);
   app.add_option("--max-records", l.max_records,
                  "most records one certificate may name (default " + std::to_string(lpvid::kDefaultMaxRecords) + ")")

@@ -5,7 +5,8 @@
 /// matrix is PD or PSD, 1 it does not hold / NOT_PSD (a false claim is never
 /// code 0), 2 and 6 as for lpvid, 8 a check refused before it starts
 /// because it would exceed a work limit (--max-dual-order,
-/// --max-exact-work; neither answer). `lpvid oracle` judges another
+/// --max-exact-work, --max-total-work, --max-floating-work, --max-records;
+/// neither answer). `lpvid oracle` judges another
 /// implementation: 1 a claim of it was refuted (checked exactly), 3 it gave
 /// no usable answer for some case (or, with --strict, a suboptimal one).
 

@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -89,11 +90,13 @@ TEST(WorkBudget, AClassCertificateAboveTheTotalIsRefusedBeforeItsDataAreRead) {
   gen::ScratchDir dir("budget-class");
   const std::string path = dir.file("class.json");
   write_json(path, class_certificate("absent.csv", 8, 64));  // the data file does not exist
-  // 8 leaves of order 64: 8·64³ ≈ 2.1·10⁶ operations.
-  EXPECT_EQ(verify({"--max-total-work", "1e6", "certificate", path}), kExitWorkLimit);
-  // Within the limit the check goes on and then finds the data missing (not
-  // exit 8): the refusal above came before anything was read.
-  const int within = verify({"--max-total-work", "1e8", "certificate", path});
+  // 8 leaves of order 64: their rebuilds 8·64³ ≈ 2.1·10⁶ floating
+  // multiply-adds, their exact sums 8·64² ≈ 3.3·10⁴ operations.
+  EXPECT_EQ(verify({"--max-floating-work", "1e6", "certificate", path}), kExitWorkLimit);
+  EXPECT_EQ(verify({"--max-total-work", "3e4", "certificate", path}), kExitWorkLimit);
+  // Within the limits the check goes on and then finds the data missing (not
+  // exit 8): the refusals above came before anything was read.
+  const int within = verify({"--max-floating-work", "1e8", "--max-total-work", "1e8", "certificate", path});
   EXPECT_TRUE(within == kExitBadInput || within == kExitIo) << within;
 }
 
@@ -106,9 +109,9 @@ TEST(WorkBudget, DeclaredLeavesAreRefusedBeforeTheTextIsParsed) {
     text.replace(at, 6, "\"\\u006ceaf\"");
   ASSERT_EQ(text.find("\"leaf\""), std::string::npos);
   const VerifyWorkLimits saved = verify_work_limits();
-  verify_work_limits().max_total_work = 1e6;  // 8 leaves of order 64: about 2.1e6
+  verify_work_limits().max_floating_work = 1e6;  // 8 leaves of order 64: about 2.1e6
   EXPECT_THROW(refuse_declared_text(text, "escaped.json"), WorkLimitError);
-  verify_work_limits().max_total_work = 1e8;
+  verify_work_limits().max_floating_work = 1e8;
   EXPECT_NO_THROW(refuse_declared_text(text, "escaped.json"));
   EXPECT_NO_THROW(refuse_declared_text("{not json", "broken.json"));  // the parser says what is wrong
   verify_work_limits() = saved;
@@ -141,14 +144,39 @@ TEST(WorkBudget, OneOutputOneInputOnALongHorizonIsChargedItsProofInDoubles) {
   const std::string path = dir.file("c.json");
   const VerifyWorkLimits saved = verify_work_limits();
   verify_work_limits().max_total_work = 1e13;  // nothing is counted without a limit
+  verify_work_limits().max_floating_work = 1e13;
   const auto declared = [&](long horizon) {
     write_json(path, primal_certificate({{"data", {{"file", "d.csv"}, {"sha256", std::string(64, '0')}}}}, horizon));
     charge_declared_work(read_certificate(path));
-    return total_work_charged();
+    return std::make_pair(total_work_charged(), floating_work_charged());
   };
   const double L = 5000, below = 4000;
-  EXPECT_DOUBLE_EQ(declared(5000), L * L * L / 6 + L * L);
-  EXPECT_DOUBLE_EQ(declared(4000), below * below * below);
+  EXPECT_EQ(declared(5000), std::make_pair(0.0, L * L * L / 6 + L * L));  // in doubles: floating work
+  EXPECT_EQ(declared(4000), std::make_pair(below * below * below, 0.0));  // the exact matrix
+  verify_work_limits() = saved;
+}
+
+TEST(WorkBudget, TheDefaultsAdmitTheFullHorizonOfTenThousandSamples) {
+  // The declared parts of the two ends of a record of 10 000 samples, one
+  // output and one input, one Δ over the whole record: the upper end's
+  // (C1) proof in doubles (L³/6 + L²) and the lower end's compact dual
+  // point (a rebuild of order L, L³, and its exact sums, L²), each within
+  // lpvid-verify's defaults; one more leaf of that order is not.
+  gen::ScratchDir dir("budget-defaults");
+  const std::string path = dir.file("c.json");
+  const VerifyWorkLimits saved = verify_work_limits();
+  verify_work_limits() = default_verify_work_limits();
+  const double L = 10000;
+  write_json(path, primal_certificate({{"data", {{"file", "d.csv"}, {"sha256", std::string(64, '0')}}}}, 10000));
+  EXPECT_NO_THROW(charge_declared_work(read_certificate(path)));
+  EXPECT_DOUBLE_EQ(floating_work_charged(), L * L * L / 6 + L * L);
+  write_json(path, class_certificate("d.csv", 1, 10000));
+  EXPECT_NO_THROW(charge_declared_work(read_certificate(path)));
+  EXPECT_DOUBLE_EQ(floating_work_charged(), L * L * L);
+  EXPECT_DOUBLE_EQ(total_work_charged(), L * L);
+  EXPECT_NO_THROW(require_dual_order(10000));
+  write_json(path, class_certificate("d.csv", 2, 10000));
+  EXPECT_THROW(charge_declared_work(read_certificate(path)), WorkLimitError);
   verify_work_limits() = saved;
 }
 

@@ -46,6 +46,7 @@
 #include "verify/certificate/tap_gram_filter.h"
 #include "verify/psd/exact_psd.h"
 #include "core/gmp_raii.h"
+#include "verify/psd/check_progress.h"
 #include "verify/psd/power_of_two.h"
 #include "verify/psd/work_limits.h"
 #include "verify/certificate/verdict_text.h"
@@ -102,12 +103,15 @@ C1Outcome check_c1_delta_form(const Mat<Rational>& taps, Eigen::Index horizon, E
   if (structured_c1_applies(L, ny, nz)) {
     std::vector<Rational> t(static_cast<std::size_t>(scaled.rows()));
     for (Eigen::Index k = 0; k < scaled.rows(); ++k) t[static_cast<std::size_t>(k)] = scaled(k, 0);
+    check_progress(structured_c1_work(L), "(C1): the complement of order " + std::to_string(L) + " in doubles, its proof");
     const TapGramFilterResult f = prove_tap_gram_complement_pd(t, L, d2);
     if (f.proved_pd) return C1Outcome::holding("(C1) holds: " + which + " (size " + std::to_string(L) + ") is PD (" + f.reason + ")");
     // The budget charged the proof only; the exact matrix is charged now.
     const double m = static_cast<double>(L);
     charge_total_work(m * m * m, "the exact (C1) matrix of order " + std::to_string(L) + " (its proof in doubles failed: " + f.reason + ")");
   }
+  const double m = static_cast<double>(L * std::min(ny, nz));
+  check_progress(m * m * m, "(C1): the exact complement of order " + std::to_string(L * std::min(ny, nz)));
   const Mat<Rational> M = tap_gram_complement(scaled, L, ny, nz, d2);
   const PsdResult psd = decide_psd(M);
   if (psd.verdict == PsdVerdict::kNotPsd) return C1Outcome::failing("(C1) fails: " + which + " is not PSD (" + psd.reason + ")");

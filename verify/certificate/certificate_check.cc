@@ -436,12 +436,18 @@ CertificateVerdict with_claim(CertificateVerdict v, const Certificate& c) {
 }  // namespace
 
 namespace {
-/// ", estimated work W operations (--max-total-work L)" when the total is counted.
+/// ", estimated work W operations (--max-total-work L)" when the total is
+/// counted, and ", F floating multiply-adds (--max-floating-work M)" when
+/// floating work was charged.
 std::string total_work_text() {
-  const double limit = verify_work_limits().max_total_work;
-  if (limit <= 0) return "";
+  const VerifyWorkLimits& limits = verify_work_limits();
   std::ostringstream o;
-  o << std::setprecision(3) << ", estimated work " << total_work_charged() << " operations (--max-total-work " << limit << ")";
+  o << std::setprecision(3);
+  if (limits.max_total_work > 0)
+    o << ", estimated work " << total_work_charged() << " operations (--max-total-work " << limits.max_total_work << ")";
+  if (limits.max_floating_work > 0 && floating_work_charged() > 0)
+    o << ", " << floating_work_charged() << " floating multiply-adds (--max-floating-work " << limits.max_floating_work
+      << ")";
   return o.str();
 }
 }  // namespace

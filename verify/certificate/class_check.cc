@@ -8,6 +8,7 @@
 #include "verify/certificate/class_terms.h"
 #include "verify/certificate/path_dual.h"
 #include "verify/certificate/verdict_text.h"
+#include "verify/psd/check_progress.h"
 #include "verify/psd/exact_psd.h"
 #include "verify/psd/work_limits.h"
 
@@ -40,6 +41,8 @@ std::string path_leaf_terms(const DualPoint& d, const Mat<Rational>& z, const Ma
   const PathDualRecipe& p = d.path;
   if (p.taps.rows() != d.horizon) return "the recipe's taps do not have horizon rows";
   require_dual_order(static_cast<long>(d.horizon * ny));
+  check_progress(dual_step_work(d.horizon * ny), "a class leaf: its compact dual point of order " +
+                                                      std::to_string(d.horizon * ny));
   const PathDualGrid grid = path_dual_grid(p, ny, nz);
   if (!grid.problem.empty()) return "the dual recipe gives no point: " + grid.problem;
   const PathDualSums sums = path_dual_sums(p, grid.U, ny, nz);

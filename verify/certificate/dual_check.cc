@@ -8,6 +8,7 @@
 #include "verify/psd/exact_psd.h"
 #include "verify/certificate/path_dual.h"
 #include "verify/certificate/verdict_text.h"
+#include "verify/psd/check_progress.h"
 #include "verify/psd/work_limits.h"
 
 namespace lpvid {
@@ -35,6 +36,8 @@ CertificateVerdict check_path_dual(const Certificate& c, const Simulation<Ration
   const PathDualRecipe& p = c.dual.path;
   if (p.taps.rows() != L) return invalid_verdict("dual.taps has " + std::to_string(p.taps.rows()) + " rows, not the horizon", details);
   require_dual_order(static_cast<long>(L * c.model.ny));  // before the O((L·ny)³) floating rebuild
+  check_progress(dual_step_work(L * c.model.ny), "the compact dual: U of order " + std::to_string(L * c.model.ny) +
+                                                      " rebuilt in floating point from its recipe");
   const PathDualGrid grid = path_dual_grid(p, c.model.ny, c.model.nz());
   if (!grid.problem.empty()) return invalid_verdict("the dual recipe gives no point: " + grid.problem, details);
   return check_path_dual_on_grid(c, sim, r, grid.U, std::move(details), records);
@@ -46,6 +49,8 @@ CertificateVerdict check_path_dual_on_grid(const Certificate& c, const Simulatio
                                            const Mat<double>& U_grid, std::string details, const RecordLengths& records) {
   const Eigen::Index ny = c.model.ny, nz = c.model.nz(), L = c.dual.path.taps.rows();
   const PathDualRecipe& p = c.dual.path;
+  const double step = dual_step_work(U_grid.rows());
+  check_progress(step, "the compact dual: the exact sums of U and the correction E of the dual equality");
   const PathDualSums sums = path_dual_sums(p, U_grid, ny, nz);
   if (!sums.problem.empty()) return invalid_verdict("the dual recipe gives no point: " + sums.problem, details);
   const PathDualValue v = path_dual_value(p, sums, fir_adjoint_records(c.dual.g, sim.z, L, records), c.dual.g, c.dual.sigma, r, ny, nz);
@@ -60,6 +65,7 @@ CertificateVerdict check_path_dual_on_grid(const Certificate& c, const Simulatio
   d << "; ||E||_F^2 = " << approx_text(v.E_norm2, 3) << " <= x*u_floor";
   const Rational bound = dual_bound(v.terms, c.objective, c.delta2, c.dmax2, c.lambda);
   if (std::string why = bound_problem(c, bound, d); !why.empty()) return invalid_verdict(why, d.str());
+  check_progress(step, "the compact dual: U - u_floor*I of order " + std::to_string(U_grid.rows()) + ", its PSD proof");
   const PsdResult psd = path_dual_psd(p, U_grid, true);
   if (psd.verdict == PsdVerdict::kNotPsd)
     return invalid_verdict("U - u_floor*I is not PSD (" + psd.reason + "), so Y1 is not shown PSD", d.str());

@@ -50,6 +50,14 @@ struct PathDualRecipe {
   Rational floor;       ///< γ ≥ 0: U − γ·I ⪰ 0 and ‖E‖_F² ≤ x·γ are required
 };
 
+/// The work of one compact dual point of order m = L·ny as the budget counts
+/// it (its floating rebuild, m³; verify/certificate/work_budget.h): the
+/// scale at which its stages are announced (verify/psd/check_progress.h).
+inline double dual_step_work(Eigen::Index order) {
+  const double m = static_cast<double>(order);
+  return m * m * m;
+}
+
 /// Step 1: Ũ (integers held exactly in doubles, |Ũ| < 2^53), symmetric.
 /// `problem` is non-empty when the recipe does not produce one (t·I − TTᵀ not
 /// positive definite in floating point, or entries off the grid's range).

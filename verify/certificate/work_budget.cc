@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "data/csv_reader.h"
+#include "verify/psd/check_progress.h"
 #include "verify/psd/work_limits.h"
 #include "verify/certificate/tap_gram_filter.h"
 
@@ -92,18 +93,23 @@ void charge_declared_work(const Certificate& c) {
                          std::to_string(max_records) + "; raise it with --max-records");
   const double ny = c.model.ny, nz = c.model.nz();
   const bool dense = c.form == CertificateForm::kDualDelta;
-  double dual = 0;
+  double rebuild = 0, sums = 0;
   const std::vector<long> horizons = dual_horizons(c);
   for (const long L : horizons) {
     const double m = static_cast<double>(L) * (dense ? ny + nz : ny);
-    dual += kWorkPerCube * m * m * m + m * m * ny * nz;
+    rebuild += kWorkPerCube * m * m * m;
+    sums += m * m * ny * nz;
   }
-  if (!horizons.empty())
-    charge_total_work(dual, std::to_string(horizons.size()) + (horizons.size() == 1 ? " dual point" : " dual points (class leaves)"));
+  if (!horizons.empty()) {
+    const std::string points =
+        std::to_string(horizons.size()) + (horizons.size() == 1 ? " dual point" : " dual points (class leaves)");
+    charge_floating_work(rebuild, "the floating rebuild of " + points);
+    charge_total_work(sums, "the exact sums of " + points);
+  }
   if (c.form == CertificateForm::kDelta && !is_class_claim(c.claim) && !is_dual_claim(c.claim)) {
     const double m = static_cast<double>(c.horizon) * std::min(ny, nz);  // (C1): δ²I − T_Δ T_Δᵀ, floating filter
     if (structured_c1_applies(static_cast<long>(c.horizon), c.model.ny, c.model.nz()))
-      charge_total_work(structured_c1_work(static_cast<long>(c.horizon)), "the (C1) proof in doubles of order " + number(m));
+      charge_floating_work(structured_c1_work(static_cast<long>(c.horizon)), "the (C1) proof in doubles of order " + number(m));
     else
       charge_total_work(kWorkPerCube * m * m * m, "the (C1) check of order " + number(m));
   }
@@ -145,7 +151,7 @@ struct DeclaredSizes : nlohmann::json_sax<nlohmann::json> {
 }  // namespace
 
 void refuse_declared_text(std::string_view text, const std::string& file) {
-  const double limit = verify_work_limits().max_total_work;
+  const double limit = verify_work_limits().max_floating_work;
   if (limit <= 0) return;
   DeclaredSizes sizes;
   if (!nlohmann::json::sax_parse(text, &sizes) || sizes.points == 0) return;  // the parser says what is wrong
@@ -153,9 +159,9 @@ void refuse_declared_text(std::string_view text, const std::string& file) {
   const double work = sizes.points * kWorkPerCube * m * m * m;
   if (work > limit)
     throw WorkLimitError(file + " declares " + number(sizes.points) + " dual points (class leaves) of order up to " +
-                         number(m) + ": their rebuild alone is about " + number(work) +
-                         " operations, above --max-total-work " + number(limit) +
-                         " (refused before the numbers are read); raise it with --max-total-work");
+                         number(m) + ": their floating rebuild alone is about " + number(work) +
+                         " multiply-adds, above --max-floating-work " + number(limit) +
+                         " (refused before the numbers are read); raise it with --max-floating-work");
 }
 
 void charge_data_file(std::uintmax_t bytes, const std::string& path) {
@@ -183,11 +189,13 @@ double simulation_work(const Certificate& c, const std::vector<long>& rows, cons
 void charge_simulation(const Certificate& c, const std::vector<long>& rows, const DataBits& data) {
   long total = 0;
   for (const long r : rows) total += r;
-  charge_total_work(simulation_work(c, rows, data),
-                    "the exact simulation of " + std::to_string(total) + " rows (" + std::to_string(rows.size()) +
-                        (rows.size() == 1 ? " record" : " records") + ", numbers of up to " +
-                        number(std::max(data.signals, data.scheduling)) + " bits in the data, growing by about " +
-                        number(growth_bits(c, data.scheduling)) + " bits per sample)");
+  const double work = simulation_work(c, rows, data);
+  const std::string what = "the exact simulation of " + std::to_string(total) + " rows";
+  charge_total_work(work, what + " (" + std::to_string(rows.size()) + (rows.size() == 1 ? " record" : " records") +
+                              ", numbers of up to " + number(std::max(data.signals, data.scheduling)) +
+                              " bits in the data, growing by about " + number(growth_bits(c, data.scheduling)) +
+                              " bits per sample)");
+  check_progress(work, what + " and the convolutions of its z (about " + number(work) + " operations)");
 }
 
 namespace {

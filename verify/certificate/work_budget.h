@@ -1,6 +1,6 @@
 #pragma once
 /// The whole check of one certificate against --max-total-work
-/// (verify/psd/work_limits.h): its parts estimated from the sizes the
+/// and --max-floating-work (verify/psd/work_limits.h): its parts estimated from the sizes the
 /// certificate and its data declare, in the operations of max_exact_work
 /// (one modular multiply-add, or about one 64-bit limb operation of an exact
 /// product, or one floating multiply-add), each charged before its work
@@ -9,11 +9,13 @@
 ///
 ///  - the dual points: one per class leaf (one for a dual claim), each a
 ///    floating rebuild of order m = L·ny (or L·(ny+nz) for a dense Y1),
-///    about m³ operations, and its exact sums, L²·(ny·nz)²;
+///    about m³ multiply-adds against --max-floating-work, and its exact
+///    sums, L²·(ny·nz)² operations;
 ///  - a primal point's (C1) check, of order L·min(ny, nz) (form "delta") or
 ///    n (form "w"): m³; for one output and one input on a horizon of 4096 or
 ///    more, the proof in doubles (verify/certificate/tap_gram_filter.h):
-///    L³/6 + L², and the exact matrix's m³ only if that proof fails;
+///    L³/6 + L² multiply-adds against --max-floating-work, and the exact
+///    matrix's m³ only if that proof fails;
 ///  - the records: more than --max-records is refused, each costs a fixed
 ///    amount; every data file's bytes are read, hashed and parsed once;
 ///  - the exact simulation: the state's numbers grow by about g bits per
@@ -45,7 +47,7 @@ void charge_declared_work(const Certificate& c);
 /// counts the dual points the text declares (class leaves, a dual point) and
 /// their horizons and the model's outputs, and refuses (WorkLimitError) when
 /// their rebuild alone, as charge_declared_work estimates it, is beyond
-/// --max-total-work. Text that this pass cannot read is left to the parser
+/// --max-floating-work. Text that this pass cannot read is left to the parser
 /// (an early refusal only: charge_declared_work charges the parsed sizes).
 void refuse_declared_text(std::string_view text, const std::string& file);
 

@@ -3,6 +3,8 @@
 #include <atomic>
 #include <cstdio>
 
+#include "verify/psd/check_progress.h"
+
 namespace lpvid {
 
 VerifyWorkLimits& verify_work_limits() {
@@ -40,23 +42,44 @@ std::atomic<double>& total_work() {
   static std::atomic<double> total{0};
   return total;
 }
+
+std::atomic<double>& floating_work() {
+  static std::atomic<double> total{0};
+  return total;
+}
+
+/// Adds `work` to `total` unless that passes `limit` (then WorkLimitError
+/// naming the part, the sum, the limit and its option).
+void charge(std::atomic<double>& total, double limit, double work, const std::string& what, const char* kind,
+            const char* option) {
+  if (limit <= 0) return;
+  const double sum = total + work;
+  if (sum > limit) {
+    char text[200];
+    std::snprintf(text, sizeof text, "needs about %.3g %s, which brings the check's estimated total to %.3g, above the limit %.3g",
+                  work, kind, sum, limit);
+    throw WorkLimitError(what + " " + text + "; raise it with " + option);
+  }
+  total = sum;
+}
 }  // namespace
 
-void start_total_work() { total_work() = 0; }
+void start_total_work() {
+  total_work() = 0;
+  floating_work() = 0;
+  start_check_progress(verify_work_limits().max_total_work > 0);
+}
 
 double total_work_charged() { return total_work(); }
+double floating_work_charged() { return floating_work(); }
 
 void charge_total_work(double work, const std::string& what) {
-  const double limit = verify_work_limits().max_total_work;
-  if (limit <= 0) return;
-  const double total = total_work() + work;
-  if (total > limit) {
-    char text[160];
-    std::snprintf(text, sizeof text, "needs about %.3g operations, which brings the check's estimated total to %.3g, above the limit %.3g",
-                  work, total, limit);
-    throw WorkLimitError(what + " " + text + "; raise it with --max-total-work");
-  }
-  total_work() = total;
+  charge(total_work(), verify_work_limits().max_total_work, work, what, "operations", "--max-total-work");
+}
+
+void charge_floating_work(double work, const std::string& what) {
+  charge(floating_work(), verify_work_limits().max_floating_work, work, what, "floating multiply-adds",
+         "--max-floating-work");
 }
 
 }  // namespace lpvid

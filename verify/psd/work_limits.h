@@ -17,11 +17,18 @@
 ///    leaves, records, data bytes, the exact simulation with the growth of
 ///    its digits; verify/certificate/work_budget.h) charged before their
 ///    work starts, and every exact elimination when its estimate is known;
+///  - max_floating_work: the floating cubic steps of the whole check, in
+///    multiply-adds, counted apart from max_total_work because their memory
+///    is bounded by their order (a few L² doubles), not by their time as the
+///    exact numbers' is: the compact dual points' rebuilds (one per class
+///    leaf) and the (C1) proof in doubles of one output and one input on a
+///    long horizon (verify/certificate/work_budget.h); 1.2·10¹² admits the
+///    full horizon of 10 000 samples (docs/exit_codes.md);
 ///  - max_records: the records one certificate may name.
 ///
 /// The library's own callers (lpvid's builders, merge, oracle) run unlimited;
 /// `lpvid-verify` sets the defaults below for each run (--max-dual-order,
-/// --max-exact-work, --max-total-work, --max-records). Beyond a limit the check throws WorkLimitError and
+/// --max-exact-work, --max-total-work, --max-floating-work, --max-records). Beyond a limit the check throws WorkLimitError and
 /// `lpvid-verify` exits with kExitWorkLimit: nothing was decided.
 
 #include <stdexcept>
@@ -34,17 +41,20 @@ struct VerifyWorkLimits {
   double max_exact_work = 0;    ///< 0: unlimited
   double max_total_work = 0;    ///< 0: unlimited
   long max_records = 0;         ///< 0: unlimited
+  double max_floating_work = 0; ///< 0: unlimited
 };
 
 /// `lpvid-verify`'s defaults.
-inline constexpr long kDefaultMaxDualOrder = 2048;
+inline constexpr long kDefaultMaxDualOrder = 10000;
 inline constexpr double kDefaultMaxExactWork = 4e10;
-inline constexpr double kDefaultMaxTotalWork = 1e11;
+inline constexpr double kDefaultMaxTotalWork = 2e11;
 inline constexpr long kDefaultMaxRecords = 1000;
+inline constexpr double kDefaultMaxFloatingWork = 1.2e12;
 
-/// `lpvid-verify`'s defaults, all four.
+/// `lpvid-verify`'s defaults, all five.
 inline VerifyWorkLimits default_verify_work_limits() {
-  return {kDefaultMaxDualOrder, kDefaultMaxExactWork, kDefaultMaxTotalWork, kDefaultMaxRecords};
+  return {kDefaultMaxDualOrder, kDefaultMaxExactWork, kDefaultMaxTotalWork, kDefaultMaxRecords,
+          kDefaultMaxFloatingWork};
 }
 
 /// The process-wide limits (unlimited until a command line sets them).
@@ -68,10 +78,14 @@ void require_dual_order(long order);
 /// `what` ("the exact simulation of 40000 rows", ...) before that part
 /// starts and throws WorkLimitError naming it, the total and the limit when
 /// the total would exceed it. Nothing is counted while the limit is 0.
-/// require_exact_work charges its elimination too.
+/// require_exact_work charges its elimination too. charge_floating_work is
+/// the same against max_floating_work (start_total_work zeroes both and
+/// restarts the progress clock, verify/psd/check_progress.h).
 void start_total_work();
 void charge_total_work(double work, const std::string& what);
-/// The total charged since start_total_work.
+void charge_floating_work(double work, const std::string& what);
+/// The totals charged since start_total_work.
 double total_work_charged();
+double floating_work_charged();
 
 }  // namespace lpvid
