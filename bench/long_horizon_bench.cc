@@ -212,12 +212,14 @@ void newton_cg_row(int n, double delta, const std::vector<int>& dense, const std
     lower = certified_lower(model, exp, s, a, delta, out_dir);
     peak_certified = bench::peak_mb();
   }
-  std::printf("%5d %5ld | %8.1f %7.0f %-4s | %6d %7ld %6ld | %.6e %.6e %8.1e %-6s | %.6e %.6e %7.1f | %.9e %7.1f | "
+  char dense_text[64] = "-                               ";  // the dense interval, when it was run
+  if (!std::isnan(d.lower)) std::snprintf(dense_text, sizeof dense_text, "%.6e %.6e %7.1f", d.lower, d.upper, d.seconds);
+  std::printf("%5d %5ld | %8.1f %7.0f %-4s | %6d %7ld %6ld | %.6e %.6e %8.1e %-6s | %s | %.9e %7.1f | "
               "%.9e %7.1f %8.1e %7.0f\n",
               n, static_cast<long>(a.horizon), wall, peak, a.converged ? "yes" : "no", a.newton_steps, a.cg_iterations,
               a.factorisations, a.dmax2, a.lower_estimate, (a.dmax2 - a.lower_estimate) / a.dmax2, a.inside ? "yes" : "NO",
-              d.lower, d.upper, d.seconds, upper.first, upper.second, lower.value, lower.seconds,
-              (upper.first - lower.value) / upper.first, peak_certified);
+              dense_text, upper.first, upper.second, lower.value, lower.seconds, (upper.first - lower.value) / upper.first,
+              peak_certified);
   std::fflush(stdout);
 }
 
