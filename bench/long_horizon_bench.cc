@@ -24,13 +24,13 @@
 // and both certificates are written there for `lpvid-verify`. Not a test.
 // Usage: long_horizon_bench [sizes=3200,6400,10000] [delta=0.45] [newton_cg_sizes=none] [dense_sizes=none]
 //                           [certify_sizes=none] [out_dir=none]
-#include <filesystem>
-#include <system_error>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <utility>
 #include <vector>
 

@@ -11,6 +11,7 @@
 #include "data/csv_reader.h"
 #include "verify/psd/check_progress.h"
 #include "verify/psd/work_limits.h"
+#include "verify/certificate/path_dual.h"
 #include "verify/certificate/tap_gram_filter.h"
 
 namespace lpvid {
@@ -96,8 +97,9 @@ void charge_declared_work(const Certificate& c) {
   double rebuild = 0, sums = 0;
   const std::vector<long> horizons = dual_horizons(c);
   for (const long L : horizons) {
-    const double m = static_cast<double>(L) * (dense ? ny + nz : ny);
-    rebuild += kWorkPerCube * m * m * m;
+    const Eigen::Index order = L * (dense ? c.model.ny + c.model.nz() : c.model.ny);
+    const double m = static_cast<double>(order);
+    rebuild += kWorkPerCube * dual_step_work(order);
     sums += m * m * ny * nz;
   }
   if (!horizons.empty()) {
